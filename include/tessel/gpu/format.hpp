@@ -1,0 +1,56 @@
+// Pixel formats of textures and attachments, and the errors the gpu layer reports.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace tessel::gpu {
+
+// Thrown for misuse of the API: a bad size, a missing attribute, an index out of range, an
+// incomplete framebuffer. The message names what was wrong and where.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class Format : uint8_t {
+  RGBA8,            // unsigned normalized, 4 bytes
+  R8,               // unsigned normalized, 1 byte
+  RG8,              // unsigned normalized, 2 bytes
+  RGBA16F,          // half floats, 8 bytes
+  RGBA32F,          // floats, 16 bytes
+  Depth24,          // 24-bit unsigned normalized depth in a 32-bit word
+  Depth32F,         // float depth
+  Depth24Stencil8,  // depth in the low 24 bits, stencil in the high 8
+};
+
+struct FormatInfo {
+  const char* name;
+  uint8_t bytes;     // per texel
+  uint8_t channels;  // colour channels (depth formats: 1)
+  bool depth;
+  bool stencil;
+};
+
+constexpr FormatInfo format_info(Format f) {
+  switch (f) {
+    case Format::RGBA8: return {"RGBA8", 4, 4, false, false};
+    case Format::R8: return {"R8", 1, 1, false, false};
+    case Format::RG8: return {"RG8", 2, 2, false, false};
+    case Format::RGBA16F: return {"RGBA16F", 8, 4, false, false};
+    case Format::RGBA32F: return {"RGBA32F", 16, 4, false, false};
+    case Format::Depth24: return {"DEPTH24", 4, 1, true, false};
+    case Format::Depth32F: return {"DEPTH32F", 4, 1, true, false};
+    case Format::Depth24Stencil8: return {"DEPTH24_STENCIL8", 4, 1, true, true};
+  }
+  return {"?", 0, 0, false, false};
+}
+constexpr bool is_depth_format(Format f) { return format_info(f).depth; }
+constexpr bool is_color_format(Format f) { return !format_info(f).depth; }
+
+// IEEE half <-> float, exact for every half; float -> half rounds to nearest even.
+uint16_t float_to_half(float f);
+float half_to_float(uint16_t h);
+
+}  // namespace tessel::gpu

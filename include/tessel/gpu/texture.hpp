@@ -1,0 +1,166 @@
+// Textures, samplers and the GLSL texture functions.
+//
+// A Texture2D owns its mip levels, each stored row by row from the bottom row up (GL's
+// origin: the first row of uploaded data is t = 0). A level of a texture is also what a
+// framebuffer renders into. Cube maps are six square faces with their own levels.
+//
+// Sampling follows GL 4.6 §8.14 (LOD), §8.14.2 (filters), §8.14.2 wrap modes, §8.13 (cube
+// face selection) and §8.23 (depth comparison): implicit LOD comes from the derivatives of a
+// 2x2 quad (one LOD per quad, as llvmpipe computes it), true trilinear between levels.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tessel/gpu/format.hpp"
+#include "tessel/gpu/resource.hpp"
+#include "tessel/gpu/vec.hpp"
+
+namespace tessel::gpu {
+
+inline constexpr int kMaxTextureSize = 16384;
+
+enum class Filter : uint8_t {
+  Nearest,
+  Linear,
+  NearestMipmapNearest,
+  LinearMipmapNearest,
+  NearestMipmapLinear,
+  LinearMipmapLinear,
+};
+enum class Wrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat, ClampToBorder };
+enum class CompareFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
+
+struct SamplerState {
+  Filter min_filter = Filter::NearestMipmapLinear;  // GL's default
+  Filter mag_filter = Filter::Linear;
+  Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat, wrap_r = Wrap::Repeat;
+  glm::vec4 border_color{0.0f};
+  float lod_bias = 0.0f;
+  float min_lod = -1000.0f, max_lod = 1000.0f;
+  // Depth comparison (shadow maps): when on, a depth texture returns the fraction of the
+  // filtered texels that pass `ref <compare_func> texel` (GL_COMPARE_REF_TO_TEXTURE).
+  bool compare = false;
+  CompareFunc compare_func = CompareFunc::LessEqual;
+};
+
+// One mip level: width x height texels of the texture's format, rows bottom-up, tightly packed.
+struct Level {
+  int width = 0, height = 0;
+  std::vector<std::byte> data;
+  size_t row_bytes() const;
+};
+
+class Texture2D : public Resource {
+ public:
+  // levels = 0 means the full chain down to 1x1. Throws Error for a size outside
+  // [1, kMaxTextureSize] or too many levels.
+  Texture2D(Format format, int width, int height, int levels = 1);
+
+  Format format() const { return format_; }
+  int width(int level = 0) const { return levels_.at(level).width; }
+  int height(int level = 0) const { return levels_.at(level).height; }
+  int levels() const { return int(levels_.size()); }
+  const Level& level(int i) const { return levels_.at(i); }
+  Level& level_for_write(int i);  // flushes pending draws that use this texture
+
+  // Copies a whole level from tightly packed data in the texture's own format, rows bottom-up.
+  void upload(int level, const void* data, size_t bytes);
+  // Copies a whole level from RGBA8 data (rows bottom-up), converting to the texture's format.
+  void upload_rgba8(int level, const uint8_t* rgba, size_t bytes);
+  // Copies a whole level from float RGBA data, converting to the texture's format.
+  void upload_rgba32f(int level, const float* rgba, size_t bytes);
+  // Fills levels 1.. from level 0 by 2x2 box filtering (odd sizes: the last row/column is
+  // averaged with weights so that no texel is dropped). Depth formats are averaged as floats.
+  void generate_mipmaps();
+  // Adds levels so that the chain reaches 1x1, then generate_mipmaps().
+  void allocate_full_chain();
+
+  // One texel as floats: colour formats give RGBA (missing channels 0, alpha 1), depth
+  // formats give (depth, 0, 0, 1), stencil in .y for DEPTH24_STENCIL8.
+  glm::vec4 fetch(int level, int x, int y) const;
+  void store(int level, int x, int y, const glm::vec4& value);
+
+ private:
+  Format format_;
+  std::vector<Level> levels_;
+};
+
+class TextureCube : public Resource {
+ public:
+  // Faces in GL order: +X, -X, +Y, -Y, +Z, -Z.
+  TextureCube(Format format, int size, int levels = 1);
+  Texture2D& face(int i) { return *faces_.at(i); }
+  const Texture2D& face(int i) const { return *faces_.at(i); }
+  Format format() const { return faces_[0]->format(); }
+  int size() const { return faces_[0]->width(); }
+  int levels() const { return faces_[0]->levels(); }
+  void generate_mipmaps();
+
+ private:
+  std::array<std::unique_ptr<Texture2D>, 6> faces_;
+};
+
+// What a shader's uniforms hold to sample a texture.
+struct Sampler2D {
+  const Texture2D* texture = nullptr;
+  SamplerState state;
+};
+struct SamplerCube {
+  const TextureCube* texture = nullptr;
+  SamplerState state;
+};
+// A depth texture with comparison on (sampler2DShadow).
+struct Sampler2DShadow {
+  const Texture2D* texture = nullptr;
+  SamplerState state{.min_filter = Filter::Linear, .mag_filter = Filter::Linear,
+                     .wrap_s = Wrap::ClampToEdge, .wrap_t = Wrap::ClampToEdge,
+                     .wrap_r = Wrap::ClampToEdge, .border_color = glm::vec4(1.0f),
+                     .compare = true};
+};
+
+// --- the sampling functions (texture.cpp has the scalar core; these apply it per lane) ----
+namespace detail {
+// Samples at an explicit level of detail. A missing texture samples as (0,0,0,1).
+glm::vec4 sample_2d(const Sampler2D& s, float u, float v, float lod);
+glm::vec4 sample_cube(const SamplerCube& s, float x, float y, float z, float lod);
+float sample_2d_compare(const Sampler2DShadow& s, float u, float v, float ref, float lod);
+// LOD from the derivatives of the texture coordinates (GL 4.6 §8.14.1, equations 8.5-8.7).
+float lod_from_derivatives(float dudx, float dvdx, float dudy, float dvdy, int width, int height);
+glm::vec4 texel_fetch(const Texture2D* t, int x, int y, int level);
+}  // namespace detail
+
+// Implicit-LOD sampling. On eight lanes the LOD is taken per 2x2 quad from its derivatives;
+// on one lane there are no neighbours, and the base level (plus the bias) is used.
+Vec4<float> texture(const Sampler2D& s, const Vec2<float>& uv);
+Vec4<Float8> texture(const Sampler2D& s, const Vec2<Float8>& uv);
+Vec4<float> textureLod(const Sampler2D& s, const Vec2<float>& uv, float lod);
+Vec4<Float8> textureLod(const Sampler2D& s, const Vec2<Float8>& uv, Float8 lod);
+Vec4<float> textureGrad(const Sampler2D& s, const Vec2<float>& uv, const Vec2<float>& dx, const Vec2<float>& dy);
+Vec4<Float8> textureGrad(const Sampler2D& s, const Vec2<Float8>& uv, const Vec2<Float8>& dx, const Vec2<Float8>& dy);
+// textureProj: uv divided by the last component.
+template <class F> Vec4<F> textureProj(const Sampler2D& s, const Vec3<F>& uvq) {
+  return texture(s, Vec2<F>(uvq.x / uvq.z, uvq.y / uvq.z));
+}
+template <class F> Vec4<F> textureProj(const Sampler2D& s, const Vec4<F>& uvzq) {
+  return texture(s, Vec2<F>(uvzq.x / uvzq.w, uvzq.y / uvzq.w));
+}
+Vec4<float> texture(const SamplerCube& s, const Vec3<float>& dir);
+Vec4<Float8> texture(const SamplerCube& s, const Vec3<Float8>& dir);
+// Shadow lookup: (u, v, reference depth) -> fraction lit in [0, 1]; with LINEAR filtering the
+// four texels' comparisons are bilinearly weighted (hardware PCF).
+float texture(const Sampler2DShadow& s, const Vec3<float>& uvr);
+Float8 texture(const Sampler2DShadow& s, const Vec3<Float8>& uvr);
+template <class F> F textureProj(const Sampler2DShadow& s, const Vec4<F>& p) {
+  return texture(s, Vec3<F>(p.x / p.w, p.y / p.w, p.z / p.w));
+}
+Vec4<float> texelFetch(const Sampler2D& s, int x, int y, int level);
+Vec4<Float8> texelFetch(const Sampler2D& s, Int8 x, Int8 y, int level);
+glm::ivec2 textureSize(const Sampler2D& s, int level);
+
+}  // namespace tessel::gpu
