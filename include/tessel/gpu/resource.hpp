@@ -1,31 +1,35 @@
-// The base of buffers and textures: lets a context finish the draws that still read a
-// resource before the resource is changed, so an upload never races a deferred draw.
+// The base of buffers and textures: before a resource changes (or is destroyed), every
+// context that still has queued draws runs them, so an upload never races a deferred draw
+// that reads the resource (as a vertex buffer, a sampled texture or an attachment).
 #pragma once
 
 namespace tessel::gpu {
 
-class Context;
+// Whatever holds deferred work on resources (a Context). Registered while it exists.
+class PendingWork {
+ public:
+  virtual void flush() = 0;
+  virtual bool has_pending() const = 0;
+
+ protected:
+  PendingWork();
+  ~PendingWork();
+  PendingWork(const PendingWork&) = delete;
+  PendingWork& operator=(const PendingWork&) = delete;
+};
 
 class Resource {
  public:
   Resource() = default;
   Resource(const Resource&) = delete;
   Resource& operator=(const Resource&) = delete;
+  Resource(Resource&&) noexcept;
+  Resource& operator=(Resource&&) noexcept;
   virtual ~Resource();
 
-  // Called by a context when it queues a draw that uses this resource.
-  void mark_used_by(Context* ctx) const { pending_ = ctx; }
-  // Called by a context when its queued draws have run.
-  void release_from(const Context* ctx) const {
-    if (pending_ == ctx) pending_ = nullptr;
-  }
-
  protected:
-  // Resources call this before changing their contents.
+  // Resources call this before changing their contents: queued draws run first.
   void before_write() const;
-
- private:
-  mutable Context* pending_ = nullptr;
 };
 
 }  // namespace tessel::gpu

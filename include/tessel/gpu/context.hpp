@@ -1,0 +1,107 @@
+// The context: where draws are queued and executed.
+//
+//   gpu::Context ctx;                       // worker threads = hardware threads
+//   gpu::Framebuffer fb(&color, &depth);
+//   ctx.bind_framebuffer(&fb);
+//   ctx.clear({.color = {0, 0, 0, 1}, .depth = 1.0f});
+//   ctx.draw(MyShader{}, uniforms, layout, state, {.topology = Topology::Triangles, .count = 36});
+//   ctx.finish();                           // the attachments now hold the image
+//
+// Draws are deferred: they are recorded with copies of their state and uniforms, and run
+// together when the context flushes (finish(), a framebuffer change, a read, a change to a
+// resource a queued draw uses). Execution is sort-middle and tiled on all worker threads; the
+// image is bit-identical for any number of threads.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "tessel/gpu/buffer.hpp"
+#include "tessel/gpu/detail/pipeline.hpp"
+#include "tessel/gpu/detail/raster.hpp"
+#include "tessel/gpu/framebuffer.hpp"
+#include "tessel/gpu/shader.hpp"
+#include "tessel/gpu/state.hpp"
+
+namespace tessel::gpu {
+
+struct DrawCall {
+  Topology topology = Topology::Triangles;
+  uint32_t first = 0;   // first vertex (arrays) or first index (indexed)
+  uint32_t count = 0;   // vertices or indices
+  const Buffer* index_buffer = nullptr;  // indexed draw when set
+  IndexType index_type = IndexType::U32;
+  size_t index_offset = 0;  // bytes into index_buffer
+  int32_t base_vertex = 0;
+  uint32_t instance_count = 1;
+  uint32_t base_instance = 0;
+};
+
+struct ClearValues {
+  // Which attachments to clear: bit i = colour attachment i.
+  uint8_t color_attachments = 0xFF;
+  bool clear_color = true;
+  glm::vec4 color{0.0f, 0.0f, 0.0f, 0.0f};
+  bool clear_depth = true;
+  float depth = 1.0f;
+  bool clear_stencil = true;
+  uint8_t stencil = 0;
+};
+
+// Counters of everything run since the last reset_stats().
+using Stats = detail::Counters;
+
+class Context final : public PendingWork {
+ public:
+  // threads = 0: one worker per hardware thread.
+  explicit Context(int threads = 0);
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  int threads() const;
+  void set_threads(int threads);  // flushes first
+
+  // Binds where draws and clears go; flushes the queued work if the target changes. Throws
+  // Error if the framebuffer is incomplete.
+  void bind_framebuffer(Framebuffer* fb);
+  Framebuffer* framebuffer() const { return fb_; }
+
+  // Clears the bound framebuffer's attachments; obeys scissor and the write masks of `state`
+  // (colour masks of blend[i].write_mask, depth_write, stencil_front.write_mask).
+  void clear(const ClearValues& values, const RenderState& state = RenderState{});
+
+  // Queues a draw. Throws Error (and queues nothing) for a draw that is invalid: no
+  // framebuffer, an index or vertex range past its buffer, a required attribute that the
+  // layout does not enable, a bad enum or size. Primitives with NaN/Inf positions are dropped.
+  template <class S>
+  void draw(const S& shader, const typename S::Uniforms& uniforms, const VertexLayout& layout,
+            const RenderState& state, const DrawCall& call) {
+    submit(std::make_unique<detail::Program<S>>(shader, uniforms), layout, state, call,
+           detail::shader_attributes<S>());
+  }
+
+  // Runs everything queued; afterwards the attachments hold the results.
+  void flush() override;
+  void finish() { flush(); }
+  bool has_pending() const override;
+
+  const Stats& stats() const { return stats_; }
+  void reset_stats() { stats_ = {}; }
+
+ private:
+  void submit(std::unique_ptr<detail::ProgramBase> program, const VertexLayout& layout,
+              const RenderState& state, const DrawCall& call, uint32_t required_attribs);
+  detail::TargetView make_target() const;
+
+  struct Frame;
+  class WorkerPool;
+  Framebuffer* fb_ = nullptr;
+  std::unique_ptr<Frame> frame_;
+  std::unique_ptr<WorkerPool> pool_;
+  Stats stats_;
+};
+
+}  // namespace tessel::gpu

@@ -1,0 +1,167 @@
+// The records that flow between the stages of a frame. Internal: used by the templated
+// shading code (detail/raster.hpp) that is instantiated in the user's translation unit.
+//
+// A draw becomes a DrawRecord; the geometry phase turns its primitives into Prim records
+// (one per rasterized triangle, each followed by its attribute planes) and bins them into
+// 64x64 tiles; the raster phase runs each tile's Prims in submission order.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tessel/gpu/buffer.hpp"
+#include "tessel/gpu/shader.hpp"
+#include "tessel/gpu/state.hpp"
+#include "tessel/gpu/vec.hpp"
+
+namespace tessel::gpu {
+
+struct DrawCall;
+
+namespace detail {
+
+inline constexpr int kTileSize = 64;
+inline constexpr int kTileShift = 6;
+inline constexpr int kSubpixelBits = 8;
+inline constexpr int kSubpixelOne = 1 << kSubpixelBits;
+// Window coordinates are kept within +-kGuardBand pixels; beyond that, x and y are clipped.
+// With 8 sub-pixel bits that keeps positions under 2^24 and edge products under 2^49.
+inline constexpr float kGuardBand = 32768.0f;
+
+enum class PrimKind : uint8_t { Triangle, Clear };
+
+// Edge function at pixel (i, j): E = c + a*i + b*j; the pixel centre is inside when E > 0
+// (c already carries the fill rule's +1 for edges that own their samples).
+struct EdgeEq {
+  int64_t c, a, b;
+};
+
+// A triangle ready for the raster phase, followed in memory by 3*varyings floats: for each
+// varying component the plane (value at the anchor, d/dx, d/dy) of value/w (or of the value
+// itself for flat and noperspective components).
+struct Prim {
+  PrimKind kind = PrimKind::Triangle;
+  bool front = true;
+  uint32_t draw = 0;
+  uint32_t prim_id = 0;
+  int minx = 0, miny = 0, maxx = -1, maxy = -1;  // inclusive pixel bbox within the render area
+  EdgeEq e[3];
+  float xr = 0, yr = 0;     // anchor of the planes, window coordinates
+  float z[3] = {0, 0, 0};   // window depth plane
+  float oow[3] = {0, 0, 0}; // 1/w plane
+  const float* planes() const { return reinterpret_cast<const float*>(this + 1); }
+  float* planes() { return reinterpret_cast<float*>(this + 1); }
+};
+
+// What a clear command does to the pixels in its rectangle.
+struct ClearPrim {
+  Prim base;  // kind == Clear; minx..maxy is the rectangle
+  uint8_t color_mask_bits = 0;  // attachments to clear
+  std::array<glm::vec4, kMaxColorAttachments> color{};
+  std::array<uint8_t, kMaxColorAttachments> write_mask{};  // per attachment RGBA mask
+  bool clear_depth = false;
+  float depth = 1.0f;
+  bool clear_stencil = false;
+  uint8_t stencil = 0;
+  uint8_t stencil_write_mask = 0xFF;
+};
+
+struct ColorTarget {
+  std::byte* data = nullptr;
+  size_t row_bytes = 0;
+  Format format = Format::RGBA8;
+};
+
+// Where a draw's fragments go: the attachments of the bound framebuffer, as plain pointers.
+struct TargetView {
+  int width = 0, height = 0;
+  int color_count = 0;  // highest used attachment + 1
+  std::array<ColorTarget, kMaxColorAttachments> color{};
+  std::byte* depth = nullptr;
+  size_t depth_row_bytes = 0;
+  Format depth_format = Format::Depth32F;
+  bool has_stencil = false;
+};
+
+// Counters of one frame (summed over threads).
+struct Counters {
+  uint64_t vertices_shaded = 0;
+  uint64_t primitives_in = 0;
+  uint64_t primitives_clipped = 0;  // needed clipping
+  uint64_t primitives_culled = 0;
+  uint64_t triangles_setup = 0;
+  uint64_t fragments_shaded = 0;    // lanes covered when the shader ran
+  uint64_t fragments_written = 0;   // samples that passed every test
+};
+
+class ProgramBase;
+
+// One queued draw, with everything it needs copied out of the caller's objects.
+struct DrawRecord {
+  std::unique_ptr<ProgramBase> program;
+  RenderState state;
+  VertexLayout layout;
+  Topology topology = Topology::Triangles;  // after primitive-restart expansion
+  // The element stream: either `count` consecutive vertices from `first`, or the indices
+  // read from an index buffer / expanded by primitive restart, base vertex added.
+  bool indexed = false;
+  uint32_t first = 0, count = 0;
+  std::vector<uint32_t> indices;
+  uint32_t instance_count = 1, base_instance = 0;
+  uint32_t prim_count = 0;  // per instance
+  TargetView target;
+  // Derived once per draw: the viewport transform and the render area (viewport cut by
+  // scissor and framebuffer).
+  float vp_scale[3], vp_offset[3];
+  int area_x0, area_y0, area_x1, area_y1;  // inclusive-exclusive pixel rectangle
+  float guard_x, guard_y;                   // |x_clip| <= guard * w keeps x within the guard band
+  float depth_min, depth_max;
+  float depth_resolution;  // r of GL 4.6 §14.6.5 for units of polygon offset (fixed formats)
+  bool depth_float = false;
+  bool early_depth = true;  // the shader neither discards nor writes depth
+};
+
+// The shader of a draw with its uniforms; the two virtual calls are the only places where
+// the pipeline enters user code.
+class ProgramBase {
+ public:
+  virtual ~ProgramBase() = default;
+  int varyings = 0;
+  uint64_t flat = 0, noperspective = 0;
+  bool discards = false, writes_depth = false;
+  int outputs = 1;
+  // Fetches and shades n vertices (element ids, base vertex added) of one instance; writes
+  // clip positions and n * varyings floats.
+  virtual void shade_vertices(const DrawRecord& d, const uint32_t* ids, int n, uint32_t instance,
+                              glm::vec4* pos, float* vars) const = 0;
+  // Rasterizes and shades one triangle inside the tile rectangle [x0,x1) x [y0,y1).
+  virtual void raster(const DrawRecord& d, const Prim& p, int x0, int y0, int x1, int y1,
+                      Counters& c) const = 0;
+};
+
+// --- stage functions (each in its own .cpp) --------------------------------------------------
+
+// vertex_fetch.cpp: reads attribute `location` of vertex `id` in `instance` as 4 floats
+// (integers keep their bits when the attribute is an integer attribute).
+void fetch_attributes(const VertexLayout& layout, uint32_t id, uint32_t instance, float out[][4]);
+// Throws Error when a draw would read past a buffer (names the attribute and the numbers).
+void validate_vertex_range(const VertexLayout& layout, uint32_t max_id, uint32_t instance_end,
+                           uint32_t required_attribs);
+
+// fragment_ops.cpp: the per-sample tests and writes for one 4x2 group of lanes at pixel
+// (gx, gy); lanes are laid out as in vec.hpp's dFdx. `mask` bit i = lane i alive.
+unsigned depth_stencil_test(const DrawRecord& d, int gx, int gy, unsigned mask, const Float8& z,
+                            bool front);
+void write_colors(const DrawRecord& d, int gx, int gy, unsigned mask, const Vec4<Float8>* colors,
+                  int outputs);
+void clear_rect(const TargetView& t, const ClearPrim& c, int x0, int y0, int x1, int y1);
+
+// Lane offsets of a 4x2 group (two 2x2 quads side by side).
+inline constexpr int kLaneDx[8] = {0, 1, 0, 1, 2, 3, 2, 3};
+inline constexpr int kLaneDy[8] = {0, 0, 1, 1, 0, 0, 1, 1};
+
+}  // namespace detail
+}  // namespace tessel::gpu

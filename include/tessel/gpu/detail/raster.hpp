@@ -1,0 +1,148 @@
+// The per-shader half of the pipeline: vertex shading in batches of eight, and the raster
+// loop (tile -> 8x8 block -> 4x2 group of two quads) that interpolates varyings and runs the
+// fragment shader. Instantiated once per shader type, so the shader inlines into the loop.
+#pragma once
+
+#include <algorithm>
+#include <cstring>
+
+#include "tessel/gpu/detail/pipeline.hpp"
+
+namespace tessel::gpu::detail {
+
+template <class S> class Program final : public ProgramBase {
+ public:
+  using Uniforms = typename S::Uniforms;
+  template <class F> using Varyings = typename S::template Varyings<F>;
+
+  Program(const S& s, const Uniforms& u) : shader_(s), uniforms_(u) {
+    varyings = varying_count<S>();
+    flat = shader_flat<S>();
+    noperspective = shader_noperspective<S>();
+    discards = shader_discards<S>();
+    writes_depth = shader_writes_depth<S>();
+    outputs = shader_outputs<S>();
+  }
+
+  void shade_vertices(const DrawRecord& d, const uint32_t* ids, int n, uint32_t instance,
+                      glm::vec4* pos, float* vars) const override {
+    constexpr int K = varying_count<S>();
+    float attr[kLanes][kMaxVertexAttribs][4];
+    for (int base = 0; base < n; base += kLanes) {
+      const int m = std::min(kLanes, n - base);
+      VertexIn<Float8> in;
+      for (int l = 0; l < kLanes; ++l) {
+        const uint32_t id = ids[base + std::min(l, m - 1)];
+        fetch_attributes(d.layout, id, instance, attr[l]);
+        in.vertex_id[l] = int32_t(id);
+        in.instance_id[l] = int32_t(instance);
+      }
+      for (int a = 0; a < kMaxVertexAttribs; ++a) {
+        for (int l = 0; l < kLanes; ++l) {
+          in.attr[a].x[l] = attr[l][a][0];
+          in.attr[a].y[l] = attr[l][a][1];
+          in.attr[a].z[l] = attr[l][a][2];
+          in.attr[a].w[l] = attr[l][a][3];
+        }
+      }
+      Varyings<Float8> out{};
+      Vec4<Float8> p = shader_.vertex(uniforms_, in, out);
+      for (int l = 0; l < m; ++l) pos[base + l] = glm::vec4(p.x[l], p.y[l], p.z[l], p.w[l]);
+      if constexpr (K > 0) {
+        Float8 lanes[K];
+        std::memcpy(lanes, &out, sizeof lanes);
+        for (int l = 0; l < m; ++l)
+          for (int k = 0; k < K; ++k) vars[size_t(base + l) * K + k] = lanes[k][l];
+      }
+    }
+  }
+
+  void raster(const DrawRecord& d, const Prim& p, int x0, int y0, int x1, int y1,
+              Counters& c) const override {
+    const int minx = std::max(p.minx, x0), maxx = std::min(p.maxx, x1 - 1);
+    const int miny = std::max(p.miny, y0), maxy = std::min(p.maxy, y1 - 1);
+    if (minx > maxx || miny > maxy) return;
+    for (int by = miny & ~7; by <= maxy; by += 8) {
+      for (int bx = minx & ~7; bx <= maxx; bx += 8) {
+        // Classify the 8x8 block against each edge from its corner pixels.
+        bool inside_all = true, outside = false;
+        for (const EdgeEq& e : p.e) {
+          const int64_t e00 = e.c + e.a * bx + e.b * by;
+          const int64_t lo = e00 + std::min<int64_t>(0, e.a * 7) + std::min<int64_t>(0, e.b * 7);
+          const int64_t hi = e00 + std::max<int64_t>(0, e.a * 7) + std::max<int64_t>(0, e.b * 7);
+          if (hi <= 0) { outside = true; break; }
+          if (lo <= 0) inside_all = false;
+        }
+        if (outside) continue;
+        for (int gy = by; gy < by + 8; gy += 2) {
+          if (gy + 1 < miny || gy > maxy) continue;
+          for (int gx = bx; gx < bx + 8; gx += 4) {
+            if (gx + 3 < minx || gx > maxx) continue;
+            unsigned mask = 0;
+            for (int l = 0; l < kLanes; ++l) {
+              const int px = gx + kLaneDx[l], py = gy + kLaneDy[l];
+              if (px < minx || px > maxx || py < miny || py > maxy) continue;
+              if (!inside_all) {
+                bool in = true;
+                for (const EdgeEq& e : p.e) in = in && (e.c + e.a * px + e.b * py > 0);
+                if (!in) continue;
+              }
+              mask |= 1u << l;
+            }
+            if (mask) shade_group(d, p, gx, gy, mask, c);
+          }
+        }
+      }
+    }
+  }
+
+ private:
+  void shade_group(const DrawRecord& d, const Prim& p, int gx, int gy, unsigned mask,
+                   Counters& c) const {
+    constexpr int K = varying_count<S>();
+    static const Float8 lane_dx = Float8(vx::f32x8{0.5f, 1.5f, 0.5f, 1.5f, 2.5f, 3.5f, 2.5f, 3.5f});
+    static const Float8 lane_dy = Float8(vx::f32x8{0.5f, 0.5f, 1.5f, 1.5f, 0.5f, 0.5f, 1.5f, 1.5f});
+    const Float8 cx = Float8(float(gx)) + lane_dx, cy = Float8(float(gy)) + lane_dy;
+    const Float8 fx = cx - Float8(p.xr), fy = cy - Float8(p.yr);
+    Float8 z = Float8(p.z[0]) + Float8(p.z[1]) * fx + Float8(p.z[2]) * fy;
+    z = clamp(z, Float8(d.depth_min), Float8(d.depth_max));
+    const bool tests = d.state.depth_test || d.state.stencil_test;
+    if (tests && d.early_depth) {
+      mask = depth_stencil_test(d, gx, gy, mask, z, p.front);
+      if (!mask) return;
+    }
+    const Float8 oow = Float8(p.oow[0]) + Float8(p.oow[1]) * fx + Float8(p.oow[2]) * fy;
+    const Float8 w = Float8(1.0f) / oow;
+    Varyings<Float8> vary;
+    if constexpr (K > 0) {
+      Float8 lanes[K];
+      const float* pl = p.planes();
+      for (int k = 0; k < K; ++k) {
+        Float8 v = Float8(pl[3 * k]) + Float8(pl[3 * k + 1]) * fx + Float8(pl[3 * k + 2]) * fy;
+        if (!(((flat | noperspective) >> k) & 1)) v = v * w;
+        lanes[k] = v;
+      }
+      std::memcpy(&vary, lanes, sizeof lanes);
+    }
+    Fragment<Float8> f;
+    f.coord = Vec4<Float8>(cx, cy, z, oow);
+    f.front_facing = Mask8(p.front);
+    f.primitive_id = Int8(int32_t(p.prim_id));
+    for (auto& col : f.color) col = Vec4<Float8>(Float8(0.0f));
+    f.depth = z;
+    f.killed = Mask8(false);
+    shader_.fragment(uniforms_, vary, f);
+    if constexpr (shader_discards<S>()) mask &= ~f.killed.bits();
+    if constexpr (shader_writes_depth<S>()) z = clamp(f.depth, Float8(0.0f), Float8(1.0f));
+    c.fragments_shaded += unsigned(__builtin_popcount(mask));
+    if (tests && !d.early_depth) mask = depth_stencil_test(d, gx, gy, mask, z, p.front);
+    if (!mask) return;
+    write_colors(d, gx, gy, mask, f.color.data(), shader_outputs<S>());
+    c.fragments_written += unsigned(__builtin_popcount(mask));
+  }
+
+  S shader_;
+  Uniforms uniforms_;
+};
+
+}  // namespace tessel::gpu::detail

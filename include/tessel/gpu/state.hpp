@@ -1,0 +1,91 @@
+// Fixed-function state of a draw: viewport, rasterizer, depth/stencil, blending, masks.
+// Plain values with GL's defaults; a draw copies the state it is given.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "tessel/gpu/texture.hpp"  // CompareFunc
+
+namespace tessel::gpu {
+
+inline constexpr int kMaxColorAttachments = 8;
+inline constexpr int kMaxClipPlanes = 8;
+inline constexpr int kMaxViewportSize = 16384;
+
+enum class Topology : uint8_t { Points, Lines, LineStrip, LineLoop, Triangles, TriangleStrip, TriangleFan };
+enum class CullMode : uint8_t { None, Front, Back, FrontAndBack };
+enum class FrontFace : uint8_t { CCW, CW };
+enum class PolygonMode : uint8_t { Fill, Line, Point };
+enum class IndexType : uint8_t { U8, U16, U32 };
+
+enum class StencilOp : uint8_t { Keep, Zero, Replace, Incr, IncrWrap, Decr, DecrWrap, Invert };
+enum class BlendEquation : uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
+enum class BlendFactor : uint8_t {
+  Zero, One,
+  SrcColor, OneMinusSrcColor, DstColor, OneMinusDstColor,
+  SrcAlpha, OneMinusSrcAlpha, DstAlpha, OneMinusDstAlpha,
+  ConstantColor, OneMinusConstantColor, ConstantAlpha, OneMinusConstantAlpha,
+  SrcAlphaSaturate,
+};
+
+struct Rect {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
+struct StencilFace {
+  CompareFunc func = CompareFunc::Always;
+  uint8_t ref = 0;
+  uint8_t read_mask = 0xFF;
+  uint8_t write_mask = 0xFF;
+  StencilOp fail = StencilOp::Keep;        // stencil test failed
+  StencilOp depth_fail = StencilOp::Keep;  // stencil passed, depth failed
+  StencilOp pass = StencilOp::Keep;        // both passed
+};
+
+struct BlendTarget {
+  bool enabled = false;
+  BlendEquation eq_rgb = BlendEquation::Add, eq_alpha = BlendEquation::Add;
+  BlendFactor src_rgb = BlendFactor::One, dst_rgb = BlendFactor::Zero;
+  BlendFactor src_alpha = BlendFactor::One, dst_alpha = BlendFactor::Zero;
+  // Colour write mask, bit 0 = red .. bit 3 = alpha.
+  uint8_t write_mask = 0xF;
+};
+
+struct RenderState {
+  // An empty viewport (width 0) means the whole framebuffer.
+  Rect viewport;
+  float depth_near = 0.0f, depth_far = 1.0f;
+  bool scissor_test = false;
+  Rect scissor;
+
+  CullMode cull = CullMode::None;
+  FrontFace front_face = FrontFace::CCW;
+  PolygonMode polygon_mode = PolygonMode::Fill;
+  // Polygon offset for each polygon mode (GL_POLYGON_OFFSET_FILL / _LINE / _POINT).
+  bool offset_fill = false, offset_line = false, offset_point = false;
+  float offset_factor = 0.0f, offset_units = 0.0f;
+  float line_width = 1.0f;
+  float point_size = 1.0f;
+  bool depth_clamp = false;  // GL_DEPTH_CLAMP: no near/far clipping, depth clamped instead
+
+  // User clip planes in clip space: a vertex is kept where dot(plane, clip_position) >= 0.
+  uint8_t clip_plane_enable = 0;  // bit i enables plane i
+  std::array<glm::vec4, kMaxClipPlanes> clip_planes{};
+
+  bool depth_test = false;
+  CompareFunc depth_func = CompareFunc::Less;
+  bool depth_write = true;
+
+  bool stencil_test = false;
+  StencilFace stencil_front, stencil_back;
+
+  std::array<BlendTarget, kMaxColorAttachments> blend{};
+  glm::vec4 blend_color{0.0f};
+
+  bool primitive_restart = false;  // index 0xFF / 0xFFFF / 0xFFFFFFFF restarts (fixed index)
+};
+
+}  // namespace tessel::gpu

@@ -1,0 +1,288 @@
+// Per-sample operations after the fragment shader (GL 4.6 §17.3): stencil test, depth test,
+// blending, colour write masks, and the conversion to each attachment's format.
+//
+// Contract: only lanes whose bit is set in `mask` read or write an attachment; helper lanes
+// (run for derivatives) never write. Depth is compared in the buffer's own precision: 24-bit
+// buffers compare round(z * (2^24 - 1)).
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "stages.hpp"
+
+namespace tessel::gpu::detail {
+namespace {
+
+template <class T> inline bool compare(CompareFunc f, T a, T b) {
+  switch (f) {
+    case CompareFunc::Never: return false;
+    case CompareFunc::Less: return a < b;
+    case CompareFunc::Equal: return a == b;
+    case CompareFunc::LessEqual: return a <= b;
+    case CompareFunc::Greater: return a > b;
+    case CompareFunc::NotEqual: return a != b;
+    case CompareFunc::GreaterEqual: return a >= b;
+    case CompareFunc::Always: return true;
+  }
+  return false;
+}
+
+inline uint8_t stencil_op(StencilOp op, uint8_t s, uint8_t ref) {
+  switch (op) {
+    case StencilOp::Keep: return s;
+    case StencilOp::Zero: return 0;
+    case StencilOp::Replace: return ref;
+    case StencilOp::Incr: return s == 255 ? 255 : uint8_t(s + 1);
+    case StencilOp::IncrWrap: return uint8_t(s + 1);
+    case StencilOp::Decr: return s == 0 ? 0 : uint8_t(s - 1);
+    case StencilOp::DecrWrap: return uint8_t(s - 1);
+    case StencilOp::Invert: return uint8_t(~s);
+  }
+  return s;
+}
+
+inline uint32_t quantize24(float z) { return uint32_t(std::lrint(double(z) * 16777215.0)); }
+
+inline uint8_t to_unorm8(float c) {
+  c = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;  // NaN -> 0
+  return uint8_t(int(c * 255.0f + 0.5f));
+}
+
+glm::vec4 load_color(const ColorTarget& t, int x, int y) {
+  const std::byte* p = t.data + size_t(y) * t.row_bytes;
+  switch (t.format) {
+    case Format::RGBA8: {
+      const auto* q = reinterpret_cast<const uint8_t*>(p) + size_t(x) * 4;
+      return glm::vec4(q[0], q[1], q[2], q[3]) * (1.0f / 255.0f);
+    }
+    case Format::R8: {
+      const auto* q = reinterpret_cast<const uint8_t*>(p) + size_t(x);
+      return {q[0] / 255.0f, 0.0f, 0.0f, 1.0f};
+    }
+    case Format::RG8: {
+      const auto* q = reinterpret_cast<const uint8_t*>(p) + size_t(x) * 2;
+      return {q[0] / 255.0f, q[1] / 255.0f, 0.0f, 1.0f};
+    }
+    case Format::RGBA16F: {
+      uint16_t h[4];
+      std::memcpy(h, p + size_t(x) * 8, 8);
+      return {half_to_float(h[0]), half_to_float(h[1]), half_to_float(h[2]), half_to_float(h[3])};
+    }
+    case Format::RGBA32F: {
+      glm::vec4 v;
+      std::memcpy(&v, p + size_t(x) * 16, 16);
+      return v;
+    }
+    default: return glm::vec4(0.0f);
+  }
+}
+
+void store_color(const ColorTarget& t, int x, int y, const glm::vec4& c, uint8_t wmask) {
+  std::byte* p = t.data + size_t(y) * t.row_bytes;
+  switch (t.format) {
+    case Format::RGBA8: {
+      auto* q = reinterpret_cast<uint8_t*>(p) + size_t(x) * 4;
+      for (int i = 0; i < 4; ++i)
+        if (wmask & (1 << i)) q[i] = to_unorm8(c[i]);
+      break;
+    }
+    case Format::R8: {
+      auto* q = reinterpret_cast<uint8_t*>(p) + size_t(x);
+      if (wmask & 1) q[0] = to_unorm8(c.r);
+      break;
+    }
+    case Format::RG8: {
+      auto* q = reinterpret_cast<uint8_t*>(p) + size_t(x) * 2;
+      if (wmask & 1) q[0] = to_unorm8(c.r);
+      if (wmask & 2) q[1] = to_unorm8(c.g);
+      break;
+    }
+    case Format::RGBA16F: {
+      uint16_t h[4];
+      std::memcpy(h, p + size_t(x) * 8, 8);
+      for (int i = 0; i < 4; ++i)
+        if (wmask & (1 << i)) h[i] = float_to_half(c[i]);
+      std::memcpy(p + size_t(x) * 8, h, 8);
+      break;
+    }
+    case Format::RGBA32F: {
+      float v[4];
+      std::memcpy(v, p + size_t(x) * 16, 16);
+      for (int i = 0; i < 4; ++i)
+        if (wmask & (1 << i)) v[i] = c[i];
+      std::memcpy(p + size_t(x) * 16, v, 16);
+      break;
+    }
+    default: break;
+  }
+}
+
+inline glm::vec3 factor_rgb(BlendFactor f, const glm::vec4& s, const glm::vec4& d, const glm::vec4& k) {
+  switch (f) {
+    case BlendFactor::Zero: return glm::vec3(0.0f);
+    case BlendFactor::One: return glm::vec3(1.0f);
+    case BlendFactor::SrcColor: return glm::vec3(s);
+    case BlendFactor::OneMinusSrcColor: return glm::vec3(1.0f) - glm::vec3(s);
+    case BlendFactor::DstColor: return glm::vec3(d);
+    case BlendFactor::OneMinusDstColor: return glm::vec3(1.0f) - glm::vec3(d);
+    case BlendFactor::SrcAlpha: return glm::vec3(s.a);
+    case BlendFactor::OneMinusSrcAlpha: return glm::vec3(1.0f - s.a);
+    case BlendFactor::DstAlpha: return glm::vec3(d.a);
+    case BlendFactor::OneMinusDstAlpha: return glm::vec3(1.0f - d.a);
+    case BlendFactor::ConstantColor: return glm::vec3(k);
+    case BlendFactor::OneMinusConstantColor: return glm::vec3(1.0f) - glm::vec3(k);
+    case BlendFactor::ConstantAlpha: return glm::vec3(k.a);
+    case BlendFactor::OneMinusConstantAlpha: return glm::vec3(1.0f - k.a);
+    case BlendFactor::SrcAlphaSaturate: return glm::vec3(std::min(s.a, 1.0f - d.a));
+  }
+  return glm::vec3(0.0f);
+}
+
+inline float factor_alpha(BlendFactor f, const glm::vec4& s, const glm::vec4& d, const glm::vec4& k) {
+  switch (f) {
+    case BlendFactor::Zero: return 0.0f;
+    case BlendFactor::One: return 1.0f;
+    case BlendFactor::SrcColor: case BlendFactor::SrcAlpha: return s.a;
+    case BlendFactor::OneMinusSrcColor: case BlendFactor::OneMinusSrcAlpha: return 1.0f - s.a;
+    case BlendFactor::DstColor: case BlendFactor::DstAlpha: return d.a;
+    case BlendFactor::OneMinusDstColor: case BlendFactor::OneMinusDstAlpha: return 1.0f - d.a;
+    case BlendFactor::ConstantColor: case BlendFactor::ConstantAlpha: return k.a;
+    case BlendFactor::OneMinusConstantColor: case BlendFactor::OneMinusConstantAlpha: return 1.0f - k.a;
+    case BlendFactor::SrcAlphaSaturate: return 1.0f;
+  }
+  return 0.0f;
+}
+
+template <class T> inline T apply_equation(BlendEquation eq, T s, T sf, T d, T df) {
+  switch (eq) {
+    case BlendEquation::Add: return s * sf + d * df;
+    case BlendEquation::Subtract: return s * sf - d * df;
+    case BlendEquation::ReverseSubtract: return d * df - s * sf;
+    case BlendEquation::Min: return glm::min(s, d);  // factors unused (GL 4.6 §17.3.6.1)
+    case BlendEquation::Max: return glm::max(s, d);
+  }
+  return s;
+}
+
+// GL 4.6 §17.3.6: blending, with source, destination and constant clamped to [0, 1] for
+// fixed-point (unsigned normalized) attachments.
+glm::vec4 blend(const BlendTarget& b, glm::vec4 s, glm::vec4 d, glm::vec4 k, bool unorm) {
+  if (unorm) {
+    s = glm::clamp(s, 0.0f, 1.0f);
+    k = glm::clamp(k, 0.0f, 1.0f);
+  }
+  const glm::vec3 rgb = apply_equation(b.eq_rgb, glm::vec3(s), factor_rgb(b.src_rgb, s, d, k),
+                                       glm::vec3(d), factor_rgb(b.dst_rgb, s, d, k));
+  const float a = apply_equation(b.eq_alpha, s.a, factor_alpha(b.src_alpha, s, d, k), d.a,
+                                 factor_alpha(b.dst_alpha, s, d, k));
+  return {rgb, a};
+}
+
+}  // namespace
+
+unsigned depth_stencil_test(const DrawRecord& d, int gx, int gy, unsigned mask, const Float8& z,
+                            bool front) {
+  const TargetView& t = d.target;
+  if (!t.depth) return mask;  // no depth attachment: both tests pass (GL 4.6 §17.3.3, §17.3.4)
+  const RenderState& st = d.state;
+  const bool stencil = st.stencil_test && t.has_stencil;
+  const bool depth = st.depth_test;
+  if (!stencil && !depth) return mask;
+  const StencilFace& sf = front ? st.stencil_front : st.stencil_back;
+  unsigned out = 0;
+  for (unsigned m = mask; m; m &= m - 1) {
+    const int l = __builtin_ctz(m);
+    const int x = gx + kLaneDx[l], y = gy + kLaneDy[l];
+    std::byte* p = t.depth + size_t(y) * t.depth_row_bytes + size_t(x) * 4;
+    uint32_t word;
+    std::memcpy(&word, p, 4);
+    const float zf = z[l];
+    bool pass = true;
+    uint8_t s = uint8_t(word >> 24);
+    uint8_t s_new = s;
+    if (stencil) {
+      const bool spass = compare<uint8_t>(sf.func, sf.ref & sf.read_mask, s & sf.read_mask);
+      if (!spass) {
+        s_new = stencil_op(sf.fail, s, sf.ref);
+        pass = false;
+      }
+    }
+    bool zpass = true;
+    if (pass && depth) {
+      if (t.depth_format == Format::Depth32F) {
+        float stored;
+        std::memcpy(&stored, &word, 4);
+        zpass = compare(st.depth_func, zf, stored);
+      } else {
+        zpass = compare(st.depth_func, quantize24(zf), word & 0xFFFFFFu);
+      }
+      if (!zpass) pass = false;
+      if (stencil && !zpass) s_new = stencil_op(sf.depth_fail, s, sf.ref);
+    }
+    if (pass && stencil) s_new = stencil_op(sf.pass, s, sf.ref);
+    uint32_t new_word = word;
+    if (pass && depth && st.depth_write) {
+      if (t.depth_format == Format::Depth32F) std::memcpy(&new_word, &zf, 4);
+      else new_word = (word & 0xFF000000u) | quantize24(zf);
+    }
+    if (stencil && s_new != s) {
+      const uint8_t wm = sf.write_mask;
+      const uint8_t merged = uint8_t((s & ~wm) | (s_new & wm));
+      new_word = (new_word & 0x00FFFFFFu) | (uint32_t(merged) << 24);
+    }
+    if (new_word != word) std::memcpy(p, &new_word, 4);
+    if (pass) out |= 1u << l;
+  }
+  return out;
+}
+
+void write_colors(const DrawRecord& d, int gx, int gy, unsigned mask, const Vec4<Float8>* colors,
+                  int outputs) {
+  const TargetView& t = d.target;
+  const int n = std::min(outputs, t.color_count);
+  for (int i = 0; i < n; ++i) {
+    const ColorTarget& ct = t.color[i];
+    if (!ct.data) continue;
+    const BlendTarget& b = d.state.blend[i];
+    if (b.write_mask == 0) continue;
+    const bool unorm = ct.format == Format::RGBA8 || ct.format == Format::R8 || ct.format == Format::RG8;
+    const Vec4<Float8>& c = colors[i];
+    for (unsigned m = mask; m; m &= m - 1) {
+      const int l = __builtin_ctz(m);
+      const int x = gx + kLaneDx[l], y = gy + kLaneDy[l];
+      glm::vec4 s(c.x[l], c.y[l], c.z[l], c.w[l]);
+      if (b.enabled) s = blend(b, s, load_color(ct, x, y), d.state.blend_color, unorm);
+      store_color(ct, x, y, s, b.write_mask);
+    }
+  }
+}
+
+void clear_rect(const TargetView& t, const ClearPrim& c, int x0, int y0, int x1, int y1) {
+  for (int i = 0; i < t.color_count; ++i) {
+    if (!(c.color_mask_bits & (1u << i)) || !t.color[i].data || !c.write_mask[i]) continue;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) store_color(t.color[i], x, y, c.color[i], c.write_mask[i]);
+  }
+  if (t.depth && (c.clear_depth || (c.clear_stencil && t.has_stencil))) {
+    const float z = std::clamp(c.depth, 0.0f, 1.0f);
+    uint32_t zbits;
+    if (t.depth_format == Format::Depth32F) std::memcpy(&zbits, &z, 4);
+    else zbits = quantize24(z);
+    for (int y = y0; y < y1; ++y) {
+      std::byte* row = t.depth + size_t(y) * t.depth_row_bytes;
+      for (int x = x0; x < x1; ++x) {
+        uint32_t w;
+        std::memcpy(&w, row + size_t(x) * 4, 4);
+        if (c.clear_depth) w = t.depth_format == Format::Depth32F ? zbits : ((w & 0xFF000000u) | zbits);
+        if (c.clear_stencil && t.has_stencil) {
+          const uint8_t s = uint8_t(w >> 24);
+          const uint8_t m = c.stencil_write_mask;
+          w = (w & 0x00FFFFFFu) | (uint32_t(uint8_t((s & ~m) | (c.stencil & m))) << 24);
+        }
+        std::memcpy(row + size_t(x) * 4, &w, 4);
+      }
+    }
+  }
+}
+
+}  // namespace tessel::gpu::detail

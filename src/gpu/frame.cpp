@@ -1,0 +1,686 @@
+// A frame, top to bottom: how queued draws become pixels.
+//
+//   submit()    validates a draw and records it with copies of everything it reads
+//   flush()
+//     1. chunks        every draw is cut into numbered chunks of primitives, in submission
+//                      order (a clear is one chunk)
+//     2. geometry      all workers claim chunks: fetch + vertex shader (post-transform cache),
+//                      primitive assembly, clipping, divide + viewport, culling, setup, and
+//                      binning into the worker's own per-tile lists, tagged with the chunk
+//     3. raster        all workers claim 64x64 tiles; a tile's lists from every worker are
+//                      merged by chunk number, so primitives run in submission order and the
+//                      image does not depend on the number of threads or on timing
+//
+// Sort-middle, as in RASTER_NOTES §1; llvmpipe threads only step 3.
+#include <algorithm>
+#include <atomic>
+#include <climits>
+#include <cstring>
+#include <cmath>
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "stages.hpp"
+#include "tessel/gpu/context.hpp"
+
+namespace tessel::gpu {
+using namespace detail;
+
+namespace {
+
+constexpr uint32_t kChunkPrims = 1024;
+// Queued primitives beyond this flush early, so memory stays bounded.
+constexpr uint64_t kMaxPendingPrims = 4u << 20;
+constexpr int kCacheBits = 12;
+
+struct Command {
+  bool clear;
+  uint32_t index;
+};
+
+struct Chunk {
+  uint32_t command;
+  uint32_t instance;
+  uint32_t begin, end;  // primitives
+};
+
+struct BinEntry {
+  uint32_t chunk;
+  const Prim* prim;
+  const DrawRecord* draw;
+};
+
+struct Worker {
+  Arena arena;
+  std::vector<std::vector<BinEntry>> bins;
+  Counters counters;
+  // Post-transform vertex cache of the current chunk: element id -> slot.
+  std::vector<uint64_t> cache_tag;
+  std::vector<uint32_t> cache_slot;
+  uint32_t stamp = 0;
+  std::vector<uint32_t> ids;
+  std::vector<uint32_t> prim_slots;
+  std::vector<glm::vec4> pos;
+  std::vector<float> vars;
+  ClipVert clip_a[24], clip_b[24];
+};
+
+uint32_t prim_count(Topology t, uint32_t n) {
+  switch (t) {
+    case Topology::Points: return n;
+    case Topology::Lines: return n / 2;
+    case Topology::LineStrip: return n >= 2 ? n - 1 : 0;
+    case Topology::LineLoop: return n >= 2 ? n : 0;
+    case Topology::Triangles: return n / 3;
+    case Topology::TriangleStrip:
+    case Topology::TriangleFan: return n >= 3 ? n - 2 : 0;
+  }
+  return 0;
+}
+
+int prim_size(Topology t) {
+  switch (t) {
+    case Topology::Points: return 1;
+    case Topology::Lines: case Topology::LineStrip: case Topology::LineLoop: return 2;
+    default: return 3;
+  }
+}
+
+// Elements of primitive p, the provoking vertex last (GL 4.6 §10.1 and Table 13.2).
+void prim_elements(Topology t, uint32_t p, uint32_t n, uint32_t* e) {
+  switch (t) {
+    case Topology::Points: e[0] = p; break;
+    case Topology::Lines: e[0] = 2 * p; e[1] = 2 * p + 1; break;
+    case Topology::LineStrip: e[0] = p; e[1] = p + 1; break;
+    case Topology::LineLoop: e[0] = p; e[1] = (p + 1) % n; break;
+    case Topology::Triangles: e[0] = 3 * p; e[1] = 3 * p + 1; e[2] = 3 * p + 2; break;
+    case Topology::TriangleStrip:
+      // Odd triangles swap their first two vertices to keep the winding.
+      if (p & 1) { e[0] = p + 1; e[1] = p; } else { e[0] = p; e[1] = p + 1; }
+      e[2] = p + 2;
+      break;
+    case Topology::TriangleFan: e[0] = 0; e[1] = p + 1; e[2] = p + 2; break;
+  }
+}
+
+// Expands a strip/fan/loop/list with primitive restart into an independent list.
+std::vector<uint32_t> expand_restart(Topology& t, const std::vector<uint32_t>& idx, uint32_t restart) {
+  std::vector<uint32_t> out;
+  const Topology in = t;
+  size_t start = 0;
+  auto flush_run = [&](size_t a, size_t b) {  // [a, b)
+    const uint32_t n = uint32_t(b - a);
+    const uint32_t np = prim_count(in, n);
+    uint32_t e[3];
+    for (uint32_t p = 0; p < np; ++p) {
+      prim_elements(in, p, n, e);
+      for (int k = 0; k < prim_size(in); ++k) out.push_back(idx[a + e[k]]);
+    }
+  };
+  for (size_t i = 0; i <= idx.size(); ++i) {
+    if (i == idx.size() || idx[i] == restart) {
+      flush_run(start, i);
+      start = i + 1;
+    }
+  }
+  t = prim_size(in) == 1 ? Topology::Points : prim_size(in) == 2 ? Topology::Lines : Topology::Triangles;
+  return out;
+}
+
+bool finite(const glm::vec4& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+}  // namespace
+
+// --- worker pool ------------------------------------------------------------------------------
+class Context::WorkerPool {
+ public:
+  explicit WorkerPool(int n) : size_(n) {
+    for (int i = 1; i < n; ++i) threads_.emplace_back([this, i] { loop(i); });
+  }
+  ~WorkerPool() {
+    {
+      std::lock_guard lock(m_);
+      stop_ = true;
+      ++generation_;
+    }
+    cv_.notify_all();
+    for (auto& t : threads_) t.join();
+  }
+  int size() const { return size_; }
+  // Runs fn(i) for every worker i (0 on the calling thread) and waits for all.
+  void run(const std::function<void(int)>& fn) {
+    if (size_ == 1) {
+      fn(0);
+      return;
+    }
+    {
+      std::lock_guard lock(m_);
+      job_ = &fn;
+      running_ = size_ - 1;
+      ++generation_;
+    }
+    cv_.notify_all();
+    fn(0);
+    std::unique_lock lock(m_);
+    done_.wait(lock, [&] { return running_ == 0; });
+    job_ = nullptr;
+  }
+
+ private:
+  void loop(int index) {
+    uint64_t seen = 0;
+    for (;;) {
+      const std::function<void(int)>* job;
+      {
+        std::unique_lock lock(m_);
+        cv_.wait(lock, [&] { return generation_ != seen; });
+        seen = generation_;
+        if (stop_) return;
+        job = job_;
+      }
+      (*job)(index);
+      {
+        std::lock_guard lock(m_);
+        if (--running_ == 0) done_.notify_one();
+      }
+    }
+  }
+  int size_;
+  std::vector<std::thread> threads_;
+  std::mutex m_;
+  std::condition_variable cv_, done_;
+  const std::function<void(int)>* job_ = nullptr;
+  int running_ = 0;
+  uint64_t generation_ = 0;
+  bool stop_ = false;
+};
+
+// --- the frame --------------------------------------------------------------------------------
+struct Context::Frame {
+  std::vector<std::unique_ptr<DrawRecord>> draws;
+  std::vector<std::unique_ptr<ClearPrim>> clears;
+  std::vector<Command> commands;
+  std::vector<Chunk> chunks;
+  std::vector<Worker> workers;
+  TargetView target;
+  int tiles_x = 0, tiles_y = 0;
+  uint64_t pending_prims = 0;
+
+  void process_chunk(Worker& w, uint32_t chunk_index);
+  void process_draw_chunk(Worker& w, uint32_t chunk_index, const Chunk& ch, const DrawRecord& d);
+  void bin(Worker& w, uint32_t chunk, const DrawRecord* d, const Prim* p);
+  void raster_tile(Worker& w, int tile);
+};
+
+void Context::Frame::bin(Worker& w, uint32_t chunk, const DrawRecord* d, const Prim* p) {
+  const int tx0 = p->minx >> kTileShift, tx1 = p->maxx >> kTileShift;
+  const int ty0 = p->miny >> kTileShift, ty1 = p->maxy >> kTileShift;
+  for (int ty = ty0; ty <= ty1; ++ty) {
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      if (p->kind == PrimKind::Triangle && (tx1 > tx0 || ty1 > ty0)) {
+        // Trivial reject of tiles the bbox touches but the triangle misses.
+        const int x0 = std::max(tx * kTileSize, p->minx), x1 = std::min(tx * kTileSize + kTileSize - 1, p->maxx);
+        const int y0 = std::max(ty * kTileSize, p->miny), y1 = std::min(ty * kTileSize + kTileSize - 1, p->maxy);
+        bool out = false;
+        for (const EdgeEq& e : p->e) {
+          const int64_t hi = e.c + std::max(e.a * x0, e.a * x1) + std::max(e.b * y0, e.b * y1);
+          if (hi <= 0) { out = true; break; }
+        }
+        if (out) continue;
+      }
+      w.bins[size_t(ty) * tiles_x + tx].push_back({chunk, p, d});
+    }
+  }
+}
+
+void Context::Frame::process_chunk(Worker& w, uint32_t chunk_index) {
+  const Chunk& ch = chunks[chunk_index];
+  const Command& cmd = commands[ch.command];
+  if (cmd.clear) {
+    bin(w, chunk_index, nullptr, &clears[cmd.index]->base);
+    return;
+  }
+  process_draw_chunk(w, chunk_index, ch, *draws[cmd.index]);
+}
+
+void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const Chunk& ch,
+                                        const DrawRecord& d) {
+  const int K = d.program->varyings;
+  const int ps = prim_size(d.topology);
+  const uint32_t n_elements = d.indexed ? uint32_t(d.indices.size()) : d.count;
+  const uint32_t nprims = ch.end - ch.begin;
+
+  // 1. Vertex ids of the chunk's primitives, each shaded once (post-transform cache).
+  const size_t cache_size = size_t(1) << kCacheBits;
+  if (w.cache_tag.size() != cache_size) {
+    w.cache_tag.assign(cache_size, 0);
+    w.cache_slot.assign(cache_size, 0);
+  }
+  ++w.stamp;
+  w.ids.clear();
+  w.prim_slots.resize(size_t(nprims) * ps);
+  uint32_t e[3];
+  for (uint32_t p = 0; p < nprims; ++p) {
+    prim_elements(d.topology, ch.begin + p, n_elements, e);
+    for (int k = 0; k < ps; ++k) {
+      const uint32_t id = d.indexed ? d.indices[e[k]] : d.first + e[k];
+      const size_t h = (id * 2654435761u) >> (32 - kCacheBits);
+      const uint64_t tag = (uint64_t(w.stamp) << 32) | id;
+      uint32_t slot;
+      if (w.cache_tag[h] == tag) {
+        slot = w.cache_slot[h];
+      } else {
+        slot = uint32_t(w.ids.size());
+        w.ids.push_back(id);
+        w.cache_tag[h] = tag;
+        w.cache_slot[h] = slot;
+      }
+      w.prim_slots[size_t(p) * ps + k] = slot;
+    }
+  }
+  const size_t nv = w.ids.size();
+  w.pos.resize(nv);
+  w.vars.resize(nv * size_t(K) + 1);
+  d.program->shade_vertices(d, w.ids.data(), int(nv), ch.instance, w.pos.data(), w.vars.data());
+  w.counters.vertices_shaded += nv;
+
+  // 2. Assembly, clipping, setup, binning.
+  const ClipPlanes planes = make_clip_planes(d);
+  const bool fill = d.state.polygon_mode == PolygonMode::Fill;
+  Prim* out[2];
+  for (uint32_t p = 0; p < nprims; ++p) {
+    const uint32_t prim_id = ch.begin + p;
+    const uint32_t* s = &w.prim_slots[size_t(p) * ps];
+    ++w.counters.primitives_in;
+    bool ok = true;
+    for (int k = 0; k < ps; ++k) ok = ok && finite(w.pos[s[k]]);
+    if (!ok) continue;  // NaN or Inf position: the primitive is dropped
+    auto var_of = [&](uint32_t slot) { return &w.vars[size_t(slot) * K]; };
+
+    if (ps == 1) {
+      if (clip_code(planes, w.pos[s[0]])) continue;
+      const WinVert v = to_window(d, w.pos[s[0]], var_of(s[0]));
+      const int n = setup_point(d, v, prim_id, true, 0.0f, w.arena, w.counters, out);
+      for (int i = 0; i < n; ++i) bin(w, chunk_index, &d, out[i]);
+      continue;
+    }
+    if (ps == 2) {
+      const glm::vec4 &p0 = w.pos[s[0]], &p1 = w.pos[s[1]];
+      const unsigned c0 = clip_code(planes, p0), c1 = clip_code(planes, p1);
+      if (c0 & c1) continue;
+      const float* flat_src = var_of(s[1]);
+      WinVert a, b;
+      if ((c0 | c1) == 0) {
+        a = to_window(d, p0, var_of(s[0]));
+        b = to_window(d, p1, var_of(s[1]));
+      } else {
+        float t0, t1;
+        if (!clip_line(planes, c0 | c1, p0, p1, t0, t1)) continue;
+        ++w.counters.primitives_clipped;
+        ClipVert& ca = w.clip_a[0];
+        ClipVert& cb = w.clip_a[1];
+        ca.pos = p0 + (p1 - p0) * t0;
+        cb.pos = p0 + (p1 - p0) * t1;
+        const float *va = var_of(s[0]), *vb = var_of(s[1]);
+        for (int k = 0; k < K; ++k) {
+          ca.var[k] = va[k] + (vb[k] - va[k]) * t0;
+          cb.var[k] = va[k] + (vb[k] - va[k]) * t1;
+        }
+        a = to_window(d, ca.pos, ca.var);
+        b = to_window(d, cb.pos, cb.var);
+      }
+      const int n = setup_line(d, a, b, flat_src, prim_id, true, 0.0f, w.arena, w.counters, out);
+      for (int i = 0; i < n; ++i) bin(w, chunk_index, &d, out[i]);
+      continue;
+    }
+
+    // Triangles.
+    const float* flat_src = var_of(s[2]);
+    const glm::vec4 &p0 = w.pos[s[0]], &p1 = w.pos[s[1]], &p2 = w.pos[s[2]];
+    const unsigned c0 = clip_code(planes, p0), c1 = clip_code(planes, p1), c2 = clip_code(planes, p2);
+    if (c0 & c1 & c2) continue;
+    WinVert wv[24];
+    int nw;
+    if ((c0 | c1 | c2) == 0) {
+      wv[0] = to_window(d, p0, var_of(s[0]));
+      wv[1] = to_window(d, p1, var_of(s[1]));
+      wv[2] = to_window(d, p2, var_of(s[2]));
+      nw = 3;
+    } else {
+      ++w.counters.primitives_clipped;
+      for (int k = 0; k < 3; ++k) {
+        w.clip_a[k].pos = w.pos[s[k]];
+        std::copy_n(var_of(s[k]), K, w.clip_a[k].var);
+      }
+      ClipVert* poly;
+      nw = clip_polygon(planes, c0 | c1 | c2, w.clip_a, 3, w.clip_b, K, &poly);
+      for (int i = 0; i < nw; ++i) wv[i] = to_window(d, poly[i].pos, poly[i].var);
+    }
+    if (nw < 3) continue;
+    if (fill) {
+      for (int i = 1; i + 1 < nw; ++i) {
+        bool culled = false;
+        Prim* pr = setup_triangle(d, wv[0], wv[i], wv[i + 1], flat_src, prim_id, Facing::FromArea,
+                                  d.state.offset_fill, w.arena, w.counters, &culled);
+        if (culled) ++w.counters.primitives_culled;
+        if (pr) bin(w, chunk_index, &d, pr);
+      }
+      continue;
+    }
+    // Polygon mode line or point: facing of the whole (clipped) polygon, then its edges or
+    // its vertices (GL 4.6 §14.6.4).
+    double area = 0.0;
+    for (int i = 0; i < nw; ++i) {
+      const WinVert &a = wv[i], &b = wv[(i + 1) % nw];
+      area += double(a.x) * b.y - double(b.x) * a.y;
+    }
+    if (area == 0.0) continue;
+    const bool front = (d.state.front_face == FrontFace::CCW) == (area > 0.0);
+    const CullMode cm = d.state.cull;
+    if (cm == CullMode::FrontAndBack || (cm == CullMode::Front && front) || (cm == CullMode::Back && !front)) {
+      ++w.counters.primitives_culled;
+      continue;
+    }
+    const bool line = d.state.polygon_mode == PolygonMode::Line;
+    const bool offset = line ? d.state.offset_line : d.state.offset_point;
+    const float zoff = offset ? polygon_offset(d, wv[0], wv[1], wv[2]) : 0.0f;
+    for (int i = 0; i < nw; ++i) {
+      const int n = line ? setup_line(d, wv[i], wv[(i + 1) % nw], flat_src, prim_id, front, zoff, w.arena, w.counters, out)
+                         : setup_point(d, wv[i], prim_id, front, zoff, w.arena, w.counters, out);
+      for (int j = 0; j < n; ++j) bin(w, chunk_index, &d, out[j]);
+    }
+  }
+}
+
+void Context::Frame::raster_tile(Worker& w, int tile) {
+  const int tx = tile % tiles_x, ty = tile / tiles_x;
+  const int x0 = tx * kTileSize, y0 = ty * kTileSize;
+  const int x1 = std::min(x0 + kTileSize, target.width), y1 = std::min(y0 + kTileSize, target.height);
+  // Merge the workers' lists by chunk number (each list is already in chunk order).
+  const size_t nw = workers.size();
+  size_t head[64] = {};
+  for (;;) {
+    int best = -1;
+    uint32_t best_chunk = UINT32_MAX;
+    for (size_t i = 0; i < nw; ++i) {
+      const auto& list = workers[i].bins[size_t(tile)];
+      if (head[i] < list.size() && list[head[i]].chunk < best_chunk) {
+        best_chunk = list[head[i]].chunk;
+        best = int(i);
+      }
+    }
+    if (best < 0) break;
+    const auto& list = workers[size_t(best)].bins[size_t(tile)];
+    // Everything of this chunk in this list runs before the next chunk.
+    while (head[best] < list.size() && list[head[best]].chunk == best_chunk) {
+      const BinEntry& e = list[head[best]++];
+      if (e.prim->kind == PrimKind::Clear) {
+        const auto* c = reinterpret_cast<const ClearPrim*>(e.prim);
+        const int cx0 = std::max(x0, c->base.minx), cx1 = std::min(x1, c->base.maxx + 1);
+        const int cy0 = std::max(y0, c->base.miny), cy1 = std::min(y1, c->base.maxy + 1);
+        if (cx0 < cx1 && cy0 < cy1) clear_rect(target, *c, cx0, cy0, cx1, cy1);
+      } else {
+        e.draw->program->raster(*e.draw, *e.prim, x0, y0, x1, y1, w.counters);
+      }
+    }
+  }
+}
+
+// --- Context ----------------------------------------------------------------------------------
+Context::Context(int threads) : frame_(std::make_unique<Frame>()) { set_threads(threads); }
+
+Context::~Context() {
+  try {
+    flush();
+  } catch (...) {
+  }
+}
+
+int Context::threads() const { return pool_ ? pool_->size() : 1; }
+
+void Context::set_threads(int threads) {
+  if (threads < 0 || threads > 64) throw Error("Context: thread count " + std::to_string(threads) + " is outside 0..64");
+  flush();
+  if (threads == 0) threads = int(std::max(1u, std::min(64u, std::thread::hardware_concurrency())));
+  pool_.reset();
+  pool_ = std::make_unique<WorkerPool>(threads);
+}
+
+void Context::bind_framebuffer(Framebuffer* fb) {
+  if (fb) {
+    const std::string why = fb->incomplete_reason();
+    if (!why.empty()) throw Error("bind_framebuffer: incomplete framebuffer: " + why);
+    if (fb->width() > kMaxViewportSize || fb->height() > kMaxViewportSize)
+      throw Error("bind_framebuffer: " + std::to_string(fb->width()) + "x" + std::to_string(fb->height()) +
+                  " is larger than " + std::to_string(kMaxViewportSize) + " pixels a side");
+  }
+  flush();
+  fb_ = fb;
+}
+
+TargetView Context::make_target() const {
+  TargetView t;
+  t.width = fb_->width();
+  t.height = fb_->height();
+  for (int i = 0; i < kMaxColorAttachments; ++i) {
+    const Attachment& a = fb_->color[i];
+    if (!a.texture) continue;
+    // Attachments are written by the raster phase; the texture is not otherwise changed
+    // while the frame runs (any change flushes first).
+    Level& lv = const_cast<Level&>(a.texture->level(a.level));
+    t.color[i] = {lv.data.data(), lv.row_bytes(), a.texture->format()};
+    t.color_count = i + 1;
+  }
+  if (fb_->depth.texture) {
+    Level& lv = const_cast<Level&>(fb_->depth.texture->level(fb_->depth.level));
+    t.depth = lv.data.data();
+    t.depth_row_bytes = lv.row_bytes();
+    t.depth_format = fb_->depth.texture->format();
+    t.has_stencil = t.depth_format == Format::Depth24Stencil8;
+  }
+  return t;
+}
+
+bool Context::has_pending() const { return !frame_->commands.empty(); }
+
+static Rect render_area(const RenderState& s, int width, int height) {
+  Rect r{0, 0, width, height};
+  if (s.scissor_test) {
+    const int x0 = std::max(r.x, s.scissor.x), y0 = std::max(r.y, s.scissor.y);
+    const int x1 = std::min<int64_t>(int64_t(r.x) + r.width, int64_t(s.scissor.x) + std::max(0, s.scissor.width));
+    const int y1 = std::min<int64_t>(int64_t(r.y) + r.height, int64_t(s.scissor.y) + std::max(0, s.scissor.height));
+    r = {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+  }
+  return r;
+}
+
+void Context::clear(const ClearValues& v, const RenderState& state) {
+  if (!fb_) throw Error("clear: no framebuffer bound");
+  if (frame_->commands.empty()) frame_->target = make_target();
+  const Rect r = render_area(state, frame_->target.width, frame_->target.height);
+  if (r.width <= 0 || r.height <= 0) return;
+  auto c = std::make_unique<ClearPrim>();
+  c->base.kind = PrimKind::Clear;
+  c->base.minx = r.x;
+  c->base.miny = r.y;
+  c->base.maxx = r.x + r.width - 1;
+  c->base.maxy = r.y + r.height - 1;
+  c->color_mask_bits = v.clear_color ? v.color_attachments : 0;
+  for (int i = 0; i < kMaxColorAttachments; ++i) {
+    c->color[i] = v.color;
+    c->write_mask[i] = state.blend[i].write_mask;
+  }
+  c->clear_depth = v.clear_depth && state.depth_write;
+  c->depth = v.depth;
+  c->clear_stencil = v.clear_stencil;
+  c->stencil = v.stencil;
+  c->stencil_write_mask = state.stencil_front.write_mask;
+  frame_->commands.push_back({true, uint32_t(frame_->clears.size())});
+  frame_->clears.push_back(std::move(c));
+}
+
+void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& layout,
+                     const RenderState& state, const DrawCall& call, uint32_t required_attribs) {
+  if (!fb_) throw Error("draw: no framebuffer bound");
+  if (unsigned(call.topology) > unsigned(Topology::TriangleFan)) throw Error("draw: invalid topology " + std::to_string(int(call.topology)));
+  if (unsigned(state.cull) > unsigned(CullMode::FrontAndBack) || unsigned(state.front_face) > 1 ||
+      unsigned(state.polygon_mode) > 2 || unsigned(state.depth_func) > 7)
+    throw Error("draw: invalid enum in render state");
+  if (!(state.line_width > 0.0f) || !(state.point_size > 0.0f) || state.line_width > 1024.0f || state.point_size > 8192.0f)
+    throw Error("draw: line width " + std::to_string(state.line_width) + " / point size " +
+                std::to_string(state.point_size) + " out of range");
+  if (!std::isfinite(state.depth_near) || !std::isfinite(state.depth_far) ||
+      !std::isfinite(state.offset_factor) || !std::isfinite(state.offset_units))
+    throw Error("draw: depth range and polygon offset must be finite");
+  if (call.count == 0 || call.instance_count == 0) return;
+  if (uint64_t(call.base_instance) + call.instance_count > UINT32_MAX) throw Error("draw: instance range overflows");
+
+  auto d = std::make_unique<DrawRecord>();
+  d->program = std::move(program);
+  d->state = state;
+  d->layout = layout;
+  d->topology = call.topology;
+  d->instance_count = call.instance_count;
+  d->base_instance = call.base_instance;
+  uint32_t max_id = 0;
+  if (call.index_buffer) {
+    const size_t isz = call.index_type == IndexType::U8 ? 1 : call.index_type == IndexType::U16 ? 2 : 4;
+    if (unsigned(call.index_type) > 2) throw Error("draw: invalid index type");
+    const uint64_t begin = uint64_t(call.index_offset) + uint64_t(call.first) * isz;
+    const uint64_t end = begin + uint64_t(call.count) * isz;
+    if (call.index_offset % isz) throw Error("draw: index offset " + std::to_string(call.index_offset) + " is not aligned to the index size");
+    if (end > call.index_buffer->size())
+      throw Error("draw: indices [" + std::to_string(call.first) + ", " + std::to_string(uint64_t(call.first) + call.count) +
+                  ") need " + std::to_string(end) + " bytes but the index buffer has " + std::to_string(call.index_buffer->size()));
+    const std::byte* src = call.index_buffer->data() + begin;
+    const uint32_t restart = isz == 1 ? 0xFFu : isz == 2 ? 0xFFFFu : 0xFFFFFFFFu;
+    std::vector<uint32_t> raw(call.count);
+    for (uint32_t i = 0; i < call.count; ++i) {
+      uint32_t v = 0;
+      std::memcpy(&v, src + size_t(i) * isz, isz);
+      raw[i] = v;
+    }
+    if (state.primitive_restart) raw = expand_restart(d->topology, raw, restart);
+    d->indices.resize(raw.size());
+    for (size_t i = 0; i < raw.size(); ++i) {
+      const int64_t id = int64_t(raw[i]) + call.base_vertex;
+      if (id < 0 || id > INT32_MAX)
+        throw Error("draw: index " + std::to_string(raw[i]) + " at position " + std::to_string(i) +
+                    " plus base vertex " + std::to_string(call.base_vertex) + " is out of range");
+      d->indices[i] = uint32_t(id);
+      max_id = std::max(max_id, uint32_t(id));
+    }
+    d->indexed = true;
+    d->count = uint32_t(d->indices.size());
+  } else {
+    if (uint64_t(call.first) + call.count > uint64_t(INT32_MAX)) throw Error("draw: vertex range overflows");
+    d->first = call.first;
+    d->count = call.count;
+    max_id = call.first + call.count - 1;
+  }
+  validate_vertex_range(layout, max_id, call.base_instance + call.instance_count, required_attribs);
+  d->prim_count = prim_count(d->topology, d->count);
+  if (d->prim_count == 0) return;
+
+  if (frame_->commands.empty()) frame_->target = make_target();
+  d->target = frame_->target;
+  const int W = d->target.width, H = d->target.height;
+  Rect vp = state.viewport;
+  if (vp.width <= 0 || vp.height <= 0) vp = {0, 0, W, H};
+  vp.width = std::min(vp.width, kMaxViewportSize);
+  vp.height = std::min(vp.height, kMaxViewportSize);
+  vp.x = std::clamp(vp.x, -kMaxViewportSize, kMaxViewportSize);
+  vp.y = std::clamp(vp.y, -kMaxViewportSize, kMaxViewportSize);
+  // GL 4.6 §13.8.1: x_w = (x_ndc + 1) w/2 + x, as scale and offset.
+  d->vp_scale[0] = float(vp.width) * 0.5f;
+  d->vp_scale[1] = float(vp.height) * 0.5f;
+  d->vp_offset[0] = float(vp.x) + float(vp.width) * 0.5f;
+  d->vp_offset[1] = float(vp.y) + float(vp.height) * 0.5f;
+  const float n = std::clamp(state.depth_near, 0.0f, 1.0f), f = std::clamp(state.depth_far, 0.0f, 1.0f);
+  d->vp_scale[2] = (f - n) * 0.5f;
+  d->vp_offset[2] = (n + f) * 0.5f;
+  d->depth_min = std::min(n, f);
+  d->depth_max = std::max(n, f);
+  // |x_w| stays under the guard band: |x_ndc * s + o| <= G for |x_ndc| <= (G - |o|) / s.
+  d->guard_x = (kGuardBand - std::fabs(d->vp_offset[0])) / d->vp_scale[0];
+  d->guard_y = (kGuardBand - std::fabs(d->vp_offset[1])) / d->vp_scale[1];
+  const Rect area = render_area(state, W, H);
+  d->area_x0 = area.x;
+  d->area_y0 = area.y;
+  d->area_x1 = area.x + area.width;
+  d->area_y1 = area.y + area.height;
+  if (area.width <= 0 || area.height <= 0) return;
+  d->depth_float = d->target.depth && d->target.depth_format == Format::Depth32F;
+  d->depth_resolution = 1.0f / 16777216.0f;  // 2^-24 for 24-bit depth
+  d->early_depth = !d->program->discards && !d->program->writes_depth;
+
+  frame_->pending_prims += uint64_t(d->prim_count) * d->instance_count;
+  frame_->commands.push_back({false, uint32_t(frame_->draws.size())});
+  frame_->draws.push_back(std::move(d));
+  if (frame_->pending_prims > kMaxPendingPrims) flush();
+}
+
+void Context::flush() {
+  Frame& fr = *frame_;
+  if (fr.commands.empty()) return;
+  // 1. Chunks, numbered in submission order.
+  fr.chunks.clear();
+  for (uint32_t c = 0; c < fr.commands.size(); ++c) {
+    const Command& cmd = fr.commands[c];
+    if (cmd.clear) {
+      fr.chunks.push_back({c, 0, 0, 1});
+      continue;
+    }
+    const DrawRecord& d = *fr.draws[cmd.index];
+    for (uint32_t inst = 0; inst < d.instance_count; ++inst)
+      for (uint32_t b = 0; b < d.prim_count; b += kChunkPrims)
+        fr.chunks.push_back({c, d.base_instance + inst, b, std::min(d.prim_count, b + kChunkPrims)});
+  }
+  fr.tiles_x = (fr.target.width + kTileSize - 1) / kTileSize;
+  fr.tiles_y = (fr.target.height + kTileSize - 1) / kTileSize;
+  const int ntiles = fr.tiles_x * fr.tiles_y;
+  const int nthreads = pool_->size();
+  fr.workers.resize(size_t(nthreads));
+  for (Worker& w : fr.workers) {
+    w.arena.reset();
+    w.bins.resize(size_t(ntiles));
+    for (auto& b : w.bins) b.clear();
+    w.counters = {};
+  }
+
+  // 2. Geometry phase.
+  std::atomic<uint32_t> next_chunk{0};
+  const uint32_t nchunks = uint32_t(fr.chunks.size());
+  pool_->run([&](int wi) {
+    Worker& w = fr.workers[size_t(wi)];
+    for (uint32_t c; (c = next_chunk.fetch_add(1, std::memory_order_relaxed)) < nchunks;) fr.process_chunk(w, c);
+  });
+  // 3. Raster phase.
+  std::atomic<int> next_tile{0};
+  pool_->run([&](int wi) {
+    Worker& w = fr.workers[size_t(wi)];
+    for (int t; (t = next_tile.fetch_add(1, std::memory_order_relaxed)) < ntiles;) fr.raster_tile(w, t);
+  });
+
+  for (const Worker& w : fr.workers) {
+    const Counters& c = w.counters;
+    stats_.vertices_shaded += c.vertices_shaded;
+    stats_.primitives_in += c.primitives_in;
+    stats_.primitives_clipped += c.primitives_clipped;
+    stats_.primitives_culled += c.primitives_culled;
+    stats_.triangles_setup += c.triangles_setup;
+    stats_.fragments_shaded += c.fragments_shaded;
+    stats_.fragments_written += c.fragments_written;
+  }
+  fr.commands.clear();
+  fr.draws.clear();
+  fr.clears.clear();
+  fr.pending_prims = 0;
+}
+
+}  // namespace tessel::gpu

@@ -1,0 +1,49 @@
+#include "tessel/gpu/resource.hpp"
+
+#include <algorithm>
+#include <mutex>
+#include <vector>
+
+namespace tessel::gpu {
+namespace {
+std::mutex& registry_mutex() {
+  static std::mutex m;
+  return m;
+}
+std::vector<PendingWork*>& registry() {
+  static std::vector<PendingWork*> r;
+  return r;
+}
+}  // namespace
+
+PendingWork::PendingWork() {
+  std::lock_guard lock(registry_mutex());
+  registry().push_back(this);
+}
+
+PendingWork::~PendingWork() {
+  std::lock_guard lock(registry_mutex());
+  auto& r = registry();
+  r.erase(std::remove(r.begin(), r.end(), this), r.end());
+}
+
+Resource::Resource(Resource&&) noexcept { before_write(); }
+
+Resource& Resource::operator=(Resource&&) noexcept {
+  before_write();
+  return *this;
+}
+
+Resource::~Resource() { before_write(); }
+
+void Resource::before_write() const {
+  std::vector<PendingWork*> busy;
+  {
+    std::lock_guard lock(registry_mutex());
+    for (PendingWork* p : registry())
+      if (p->has_pending()) busy.push_back(p);
+  }
+  for (PendingWork* p : busy) p->flush();
+}
+
+}  // namespace tessel::gpu

@@ -1,0 +1,207 @@
+// Triangle setup: from window-space vertices to the edge equations and planes the raster
+// phase evaluates (GL 4.6 §14.6; the exact rules are llvmpipe's, see RASTER_NOTES §2).
+//
+// Contract:
+// - positions snap to 1/256 pixel: X = round_even((x - 0.5) * 256), so pixel (i, j) is
+//   sampled at the lattice point (256 i, 256 j) (its centre);
+// - facing and culling come from the sign of the snapped area; zero area is dropped;
+// - edge E(i, j) = c + a i + b j is positive inside; samples exactly on an edge belong to the
+//   triangle when the edge is a left edge (interior toward +x) or a horizontal edge with the
+//   interior toward +y (D3D's top-left rule run on GL's y-up window coordinates, which is
+//   what llvmpipe does for framebuffer objects) - so two triangles sharing an edge never
+//   both cover a sample on it, and never both miss it;
+// - depth, 1/w and varying/w are planes in screen space anchored at vertex 0.
+#include <algorithm>
+#include <cmath>
+
+#include "stages.hpp"
+
+namespace tessel::gpu::detail {
+
+WinVert to_window(const DrawRecord& d, const glm::vec4& pos, const float* var) {
+  const float oow = 1.0f / pos.w;
+  WinVert v;
+  v.x = pos.x * oow * d.vp_scale[0] + d.vp_offset[0];
+  v.y = pos.y * oow * d.vp_scale[1] + d.vp_offset[1];
+  v.z = pos.z * oow * d.vp_scale[2] + d.vp_offset[2];
+  v.oow = oow;
+  v.var = var;
+  return v;
+}
+
+static inline int32_t snap(float x) {
+  // Round half to even, as _mm_cvtps_epi32 does in llvmpipe.
+  return int32_t(std::nearbyint((x - 0.5f) * float(kSubpixelOne)));
+}
+
+float polygon_offset(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2) {
+  const double dx1 = v1.x - v0.x, dy1 = v1.y - v0.y, dx2 = v2.x - v0.x, dy2 = v2.y - v0.y;
+  const double det = dx1 * dy2 - dx2 * dy1;
+  double m = 0.0;
+  if (det != 0.0) {
+    const double dz1 = v1.z - v0.z, dz2 = v2.z - v0.z;
+    const double dzdx = (dz1 * dy2 - dz2 * dy1) / det;
+    const double dzdy = (dz2 * dx1 - dz1 * dx2) / det;
+    m = std::max(std::fabs(dzdx), std::fabs(dzdy));
+  }
+  double r = d.depth_resolution;
+  if (d.depth_float) {
+    // GL 4.6 §14.6.5: for floating-point depth, r = 2^(e - 23) with e the largest exponent
+    // of the primitive's z values.
+    const float zmax = std::max({std::fabs(v0.z), std::fabs(v1.z), std::fabs(v2.z)});
+    int e = 0;
+    std::frexp(zmax, &e);
+    r = std::ldexp(1.0, e - 1 - 23);
+  }
+  return float(m * d.state.offset_factor + r * d.state.offset_units);
+}
+
+// Plane (value at v0, d/dx, d/dy) through three values at the vertices.
+struct PlaneSolver {
+  double dx1, dy1, dx2, dy2, inv_det;
+  void solve(float a0, float a1, float a2, float* out) const {
+    const double d1 = double(a1) - a0, d2 = double(a2) - a0;
+    out[0] = a0;
+    out[1] = float((d1 * dy2 - d2 * dy1) * inv_det);
+    out[2] = float((d2 * dx1 - d1 * dx2) * inv_det);
+  }
+};
+
+Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2,
+                     const float* flat_src, uint32_t prim_id, Facing facing, bool apply_offset,
+                     Arena& arena, Counters& c, bool* culled) {
+  if (culled) *culled = false;
+  int64_t X[3] = {snap(v0.x), snap(v1.x), snap(v2.x)};
+  int64_t Y[3] = {snap(v0.y), snap(v1.y), snap(v2.y)};
+  int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+  if (area == 0) return nullptr;
+
+  bool front;
+  if (facing == Facing::FromArea) {
+    const bool ccw = area > 0;
+    front = (d.state.front_face == FrontFace::CCW) == ccw;
+    const CullMode cm = d.state.cull;
+    if (cm == CullMode::FrontAndBack || (cm == CullMode::Front && front) ||
+        (cm == CullMode::Back && !front)) {
+      if (culled) *culled = true;
+      return nullptr;
+    }
+  } else {
+    front = facing == Facing::Front;
+  }
+  // Edges are set up on the counter-clockwise order.
+  if (area < 0) {
+    std::swap(X[1], X[2]);
+    std::swap(Y[1], Y[2]);
+  }
+
+  int64_t minX = std::min({X[0], X[1], X[2]}), maxX = std::max({X[0], X[1], X[2]});
+  int64_t minY = std::min({Y[0], Y[1], Y[2]}), maxY = std::max({Y[0], Y[1], Y[2]});
+  // Pixels whose lattice point lies in [min, max): the last row/column can only be touched by
+  // an edge that does not own it.
+  int minx = int(minX >> kSubpixelBits), maxx = int((maxX - 1) >> kSubpixelBits);
+  int miny = int(minY >> kSubpixelBits), maxy = int((maxY - 1) >> kSubpixelBits);
+  if (minX & (kSubpixelOne - 1)) ++minx;  // first lattice point at or after min
+  if (minY & (kSubpixelOne - 1)) ++miny;
+  minx = std::max(minx, d.area_x0);
+  miny = std::max(miny, d.area_y0);
+  maxx = std::min(maxx, d.area_x1 - 1);
+  maxy = std::min(maxy, d.area_y1 - 1);
+  if (minx > maxx || miny > maxy) return nullptr;
+
+  const int K = d.program->varyings;
+  auto* p = static_cast<Prim*>(arena.allocate(sizeof(Prim) + sizeof(float) * 3 * size_t(K)));
+  new (p) Prim();
+  p->kind = PrimKind::Triangle;
+  p->front = front;
+  p->prim_id = prim_id;
+  p->minx = minx;
+  p->miny = miny;
+  p->maxx = maxx;
+  p->maxy = maxy;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    const int64_t dx = X[j] - X[i], dy = Y[j] - Y[i];
+    // E(P) = dx (Py - Yi) - dy (Px - Xi), positive to the left of i->j (the interior).
+    const bool owns_ties = dy < 0 || (dy == 0 && dx > 0);
+    p->e[i].a = -dy * kSubpixelOne;
+    p->e[i].b = dx * kSubpixelOne;
+    p->e[i].c = dy * X[i] - dx * Y[i] + (owns_ties ? 1 : 0);
+  }
+
+  // Planes from the float window positions, anchored at v0.
+  PlaneSolver s;
+  s.dx1 = double(v1.x) - v0.x;
+  s.dy1 = double(v1.y) - v0.y;
+  s.dx2 = double(v2.x) - v0.x;
+  s.dy2 = double(v2.y) - v0.y;
+  double det = s.dx1 * s.dy2 - s.dx2 * s.dy1;
+  if (std::fabs(det) < 1e-12) det = double(area) / double(kSubpixelOne * kSubpixelOne);
+  s.inv_det = 1.0 / det;
+  p->xr = v0.x;
+  p->yr = v0.y;
+  s.solve(v0.z, v1.z, v2.z, p->z);
+  if (apply_offset) p->z[0] += polygon_offset(d, v0, v1, v2);
+  s.solve(v0.oow, v1.oow, v2.oow, p->oow);
+  float* pl = p->planes();
+  const uint64_t flat = d.program->flat, noper = d.program->noperspective;
+  for (int k = 0; k < K; ++k, pl += 3) {
+    if ((flat >> k) & 1) {
+      pl[0] = flat_src[k];
+      pl[1] = pl[2] = 0.0f;
+    } else if ((noper >> k) & 1) {
+      s.solve(v0.var[k], v1.var[k], v2.var[k], pl);
+    } else {
+      s.solve(v0.var[k] * v0.oow, v1.var[k] * v1.oow, v2.var[k] * v2.oow, pl);
+    }
+  }
+  ++c.triangles_setup;
+  return p;
+}
+
+int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const float* flat_src,
+               uint32_t prim_id, bool front, float z_offset, Arena& arena, Counters& c, Prim** out) {
+  const float dx = v1.x - v0.x, dy = v1.y - v0.y;
+  if (dx == 0.0f && dy == 0.0f) return 0;
+  const float half = std::max(d.state.line_width, 1.0f) * 0.5f;
+  const bool x_major = std::fabs(dx) >= std::fabs(dy);
+  // Aliased lines (GL 4.6 §14.5.2.1): a parallelogram of the line's width along the minor
+  // axis. The sample owned by the last endpoint is excluded and the first included, as the
+  // diamond-exit rule gives: the parallelogram is moved by one sub-pixel step along the
+  // direction of travel when that direction is negative, so that the fill rule's owned edge
+  // is always at the start.
+  const float step = 1.0f / float(kSubpixelOne);
+  WinVert a = v0, b = v1;
+  if (x_major && dx < 0) { a.x += step; b.x += step; }
+  if (!x_major && dy < 0) { a.y += step; b.y += step; }
+  WinVert q[4] = {a, b, b, a};
+  if (x_major) {
+    q[0].y -= half; q[1].y -= half; q[2].y += half; q[3].y += half;
+  } else {
+    q[0].x += half; q[1].x += half; q[2].x -= half; q[3].x -= half;
+  }
+  for (auto& v : q) v.z += z_offset;
+  const Facing f = front ? Facing::Front : Facing::Back;
+  int n = 0;
+  if (Prim* p = setup_triangle(d, q[0], q[1], q[2], flat_src, prim_id, f, false, arena, c, nullptr)) out[n++] = p;
+  if (Prim* p = setup_triangle(d, q[0], q[2], q[3], flat_src, prim_id, f, false, arena, c, nullptr)) out[n++] = p;
+  return n;
+}
+
+int setup_point(const DrawRecord& d, const WinVert& v, uint32_t prim_id, bool front,
+                float z_offset, Arena& arena, Counters& c, Prim** out) {
+  const float half = std::max(d.state.point_size, 1.0f) * 0.5f;
+  WinVert q[4] = {v, v, v, v};
+  q[0].x -= half; q[0].y -= half;
+  q[1].x += half; q[1].y -= half;
+  q[2].x += half; q[2].y += half;
+  q[3].x -= half; q[3].y += half;
+  for (auto& w : q) w.z += z_offset;
+  const Facing f = front ? Facing::Front : Facing::Back;
+  int n = 0;
+  if (Prim* p = setup_triangle(d, q[0], q[1], q[2], v.var, prim_id, f, false, arena, c, nullptr)) out[n++] = p;
+  if (Prim* p = setup_triangle(d, q[0], q[2], q[3], v.var, prim_id, f, false, arena, c, nullptr)) out[n++] = p;
+  return n;
+}
+
+}  // namespace tessel::gpu::detail

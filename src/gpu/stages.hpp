@@ -1,0 +1,109 @@
+// Private: the non-templated stages of the geometry phase, each a function of plain structs.
+//   clip.cpp    clip codes and Sutherland-Hodgman clipping in homogeneous clip space
+//   setup.cpp   perspective divide, viewport, snapping, facing/culling, edge and plane setup
+//   arena.hpp   per-worker memory for the primitives of one frame
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "tessel/gpu/detail/pipeline.hpp"
+
+namespace tessel::gpu::detail {
+
+// Bump allocator; memory lives until reset(). Blocks never move, so pointers stay valid.
+class Arena {
+ public:
+  void* allocate(size_t bytes) {
+    bytes = (bytes + 15) & ~size_t(15);
+    if (used_ + bytes > cap_) grow(bytes);
+    void* p = blocks_[current_].get() + used_;
+    used_ += bytes;
+    total_ += bytes;
+    return p;
+  }
+  void reset() {
+    current_ = 0;
+    used_ = 0;
+    total_ = 0;
+    cap_ = blocks_.empty() ? 0 : sizes_[0];
+  }
+  size_t bytes_used() const { return total_; }
+
+ private:
+  void grow(size_t bytes) {
+    // Move to the next block that fits, or add one.
+    while (current_ + 1 < blocks_.size()) {
+      ++current_;
+      used_ = 0;
+      cap_ = sizes_[current_];
+      if (bytes <= cap_) return;
+    }
+    const size_t size = std::max<size_t>(bytes, size_t(1) << 20);
+    blocks_.emplace_back(new std::byte[size]);
+    sizes_.push_back(size);
+    current_ = blocks_.size() - 1;
+    used_ = 0;
+    cap_ = size;
+  }
+  std::vector<std::unique_ptr<std::byte[]>> blocks_;
+  std::vector<size_t> sizes_;
+  size_t current_ = 0, used_ = 0, cap_ = 0, total_ = 0;
+};
+
+// --- clip.cpp ---------------------------------------------------------------------------------
+// A vertex during clipping: clip-space position and its varyings.
+struct ClipVert {
+  glm::vec4 pos;
+  float var[kMaxVaryings];
+};
+
+// The half-spaces a primitive is clipped against: inside where dot(n, pos) + d >= 0.
+struct ClipPlanes {
+  int count = 0;
+  glm::vec4 n[6 + kMaxClipPlanes + 1];
+  float d[6 + kMaxClipPlanes + 1];
+};
+ClipPlanes make_clip_planes(const DrawRecord& draw);
+// Bit i set when pos is outside plane i. NaN counts as outside every plane.
+unsigned clip_code(const ClipPlanes& planes, const glm::vec4& pos);
+// Clips the convex polygon in[0..n) against the planes in `mask`; returns the vertex count
+// (0 when nothing is left) and points *out at the result (one of the two buffers).
+int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, ClipVert* b,
+                 int varyings, ClipVert** out);
+// Clips the segment p0-p1: the kept part is [t0, t1] of the parameter; false if none.
+bool clip_line(const ClipPlanes& planes, unsigned mask, const glm::vec4& p0, const glm::vec4& p1,
+               float& t0, float& t1);
+
+// --- setup.cpp --------------------------------------------------------------------------------
+// A vertex in window coordinates: x, y in pixels (y up), z in the depth range, 1/w.
+struct WinVert {
+  float x, y, z, oow;
+  const float* var;  // the vertex's varyings (clip-space values)
+};
+WinVert to_window(const DrawRecord& d, const glm::vec4& pos, const float* var);
+
+// How setup decides the facing of a triangle.
+enum class Facing : int8_t { FromArea = -1, Back = 0, Front = 1 };
+
+// Builds the Prim of one triangle in the arena: snap to 1/256 pixel, facing from the
+// snapped area (culled per the draw's cull mode when facing == FromArea), the edge
+// equations with the fill rule, the bbox cut to the render area, and the planes of depth,
+// 1/w and every varying (flat components from `flat_src`). z_offset is added to depth.
+// Returns nullptr when the triangle is culled, has zero area or covers no pixel.
+Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2,
+                     const float* flat_src, uint32_t prim_id, Facing facing, bool apply_offset,
+                     Arena& arena, Counters& c, bool* culled);
+// Polygon offset of GL 4.6 §14.6.5 for the plane through three window vertices.
+float polygon_offset(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2);
+// A line of the draw's line width between two window vertices, as up to two Prims
+// (GL's aliased wide line: a parallelogram along the minor axis). Returns the count.
+int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const float* flat_src,
+               uint32_t prim_id, bool front, float z_offset, Arena& arena, Counters& c, Prim** out);
+// A point of the draw's point size: a square, as up to two Prims.
+int setup_point(const DrawRecord& d, const WinVert& v, uint32_t prim_id, bool front,
+                float z_offset, Arena& arena, Counters& c, Prim** out);
+
+}  // namespace tessel::gpu::detail

@@ -1,0 +1,143 @@
+// Vertex fetch: reads each attribute of a vertex from its buffer and converts it to floats
+// (GL 4.6 §10.2 and §2.3.5.1 for normalized integers). Ranges are validated once per draw
+// (validate_vertex_range), so the fetch itself never reads out of bounds.
+#include <cstring>
+#include <string>
+
+#include "stages.hpp"
+
+namespace tessel::gpu {
+
+size_t attrib_type_size(AttribType t) {
+  switch (t) {
+    case AttribType::F32: case AttribType::I32: case AttribType::U32: return 4;
+    case AttribType::F16: case AttribType::I16: case AttribType::U16: return 2;
+    case AttribType::I8: case AttribType::U8: return 1;
+  }
+  return 4;
+}
+
+void Buffer::update(size_t offset, const void* data, size_t bytes) {
+  if (offset > data_.size() || bytes > data_.size() - offset)
+    throw Error("Buffer::update: range [" + std::to_string(offset) + ", " +
+                std::to_string(offset + bytes) + ") is past the end of a buffer of " +
+                std::to_string(data_.size()) + " bytes");
+  before_write();
+  if (bytes) std::memcpy(data_.data() + offset, data, bytes);
+}
+
+namespace detail {
+namespace {
+
+template <class T> inline T read(const std::byte* p) {
+  T v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+float component(const VertexAttrib& a, const std::byte* p) {
+  switch (a.type) {
+    case AttribType::F32: return read<float>(p);
+    case AttribType::F16: return half_to_float(read<uint16_t>(p));
+    case AttribType::I8: {
+      const float v = read<int8_t>(p);
+      return a.normalized ? std::max(v / 127.0f, -1.0f) : v;
+    }
+    case AttribType::U8: {
+      const float v = read<uint8_t>(p);
+      return a.normalized ? v / 255.0f : v;
+    }
+    case AttribType::I16: {
+      const float v = read<int16_t>(p);
+      return a.normalized ? std::max(v / 32767.0f, -1.0f) : v;
+    }
+    case AttribType::U16: {
+      const float v = read<uint16_t>(p);
+      return a.normalized ? v / 65535.0f : v;
+    }
+    case AttribType::I32: {
+      const double v = read<int32_t>(p);
+      return float(a.normalized ? std::max(v / 2147483647.0, -1.0) : v);
+    }
+    case AttribType::U32: {
+      const double v = read<uint32_t>(p);
+      return float(a.normalized ? v / 4294967295.0 : v);
+    }
+  }
+  return 0.0f;
+}
+
+int32_t integer_component(const VertexAttrib& a, const std::byte* p) {
+  switch (a.type) {
+    case AttribType::I8: return read<int8_t>(p);
+    case AttribType::U8: return read<uint8_t>(p);
+    case AttribType::I16: return read<int16_t>(p);
+    case AttribType::U16: return read<uint16_t>(p);
+    case AttribType::I32: return read<int32_t>(p);
+    case AttribType::U32: return int32_t(read<uint32_t>(p));
+    case AttribType::F32: return int32_t(read<float>(p));
+    case AttribType::F16: return int32_t(half_to_float(read<uint16_t>(p)));
+  }
+  return 0;
+}
+
+uint32_t effective_stride(const VertexAttrib& a, const VertexBinding& b) {
+  return b.stride ? b.stride : uint32_t(attrib_type_size(a.type) * size_t(a.components));
+}
+
+}  // namespace
+
+void fetch_attributes(const VertexLayout& layout, uint32_t id, uint32_t instance, float out[][4]) {
+  for (int i = 0; i < kMaxVertexAttribs; ++i) {
+    const VertexAttrib& a = layout.attribs[i];
+    if (!a.enabled) {
+      std::memcpy(out[i], layout.current[i].data(), sizeof(float) * 4);
+      continue;
+    }
+    const VertexBinding& b = layout.bindings[a.binding];
+    const uint32_t element = b.divisor ? instance / b.divisor : id;
+    const std::byte* p = b.buffer->data() + b.offset + a.offset + size_t(element) * effective_stride(a, b);
+    const size_t cs = attrib_type_size(a.type);
+    if (a.integer) {
+      int32_t v[4] = {0, 0, 0, 1};
+      for (int c = 0; c < a.components; ++c) v[c] = integer_component(a, p + c * cs);
+      std::memcpy(out[i], v, sizeof v);
+    } else {
+      float v[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+      for (int c = 0; c < a.components; ++c) v[c] = component(a, p + c * cs);
+      std::memcpy(out[i], v, sizeof v);
+    }
+  }
+}
+
+void validate_vertex_range(const VertexLayout& layout, uint32_t max_id, uint32_t instance_end,
+                           uint32_t required_attribs) {
+  for (int i = 0; i < kMaxVertexAttribs; ++i) {
+    const VertexAttrib& a = layout.attribs[i];
+    const std::string where = "vertex attribute " + std::to_string(i);
+    if (!a.enabled) {
+      if (required_attribs & (1u << i))
+        throw Error(where + " is read by the shader but not enabled in the vertex layout");
+      continue;
+    }
+    if (a.components < 1 || a.components > 4)
+      throw Error(where + ": " + std::to_string(a.components) + " components (1 to 4 allowed)");
+    if (a.binding < 0 || a.binding >= kMaxVertexBindings)
+      throw Error(where + ": binding " + std::to_string(a.binding) + " out of range");
+    const VertexBinding& b = layout.bindings[a.binding];
+    if (!b.buffer) throw Error(where + ": binding " + std::to_string(a.binding) + " has no buffer");
+    const size_t size = attrib_type_size(a.type) * size_t(a.components);
+    const size_t stride = effective_stride(a, b);
+    const uint64_t elements = b.divisor ? (instance_end == 0 ? 0 : (instance_end - 1) / b.divisor + 1)
+                                        : uint64_t(max_id) + 1;
+    if (elements == 0) continue;
+    const uint64_t end = uint64_t(b.offset) + a.offset + (elements - 1) * stride + size;
+    if (end > b.buffer->size())
+      throw Error(where + ": reading " + std::to_string(elements) + (b.divisor ? " instances" : " vertices") +
+                  " needs " + std::to_string(end) + " bytes but the buffer has " +
+                  std::to_string(b.buffer->size()));
+  }
+}
+
+}  // namespace detail
+}  // namespace tessel::gpu

@@ -1,0 +1,581 @@
+// Mesa llvmpipe reference oracle: see mesa_oracle.hpp.
+//
+// GL entry points come straight from libOpenGL (glvnd), which exports every core GL
+// function and dispatches to the context made current through libEGL.
+#include "mesa_oracle.hpp"
+
+#define GL_GLEXT_PROTOTYPES 1
+#define EGL_EGLEXT_PROTOTYPES 1
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <cstddef>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <stdexcept>
+#include <utility>
+
+namespace tessel::reference {
+namespace {
+
+std::string hex(uint32_t v) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "0x%04X", v);
+  return buf;
+}
+
+const char* gl_error_name(GLenum e) {
+  switch (e) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    case GL_STACK_OVERFLOW: return "GL_STACK_OVERFLOW";
+    case GL_STACK_UNDERFLOW: return "GL_STACK_UNDERFLOW";
+    default: return "unknown GL error";
+  }
+}
+
+const char* egl_error_name(EGLint e) {
+  switch (e) {
+    case EGL_SUCCESS: return "EGL_SUCCESS";
+    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
+    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
+    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
+    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
+    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
+    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
+    case EGL_BAD_CURRENT_SURFACE: return "EGL_BAD_CURRENT_SURFACE";
+    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
+    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
+    case EGL_BAD_NATIVE_PIXMAP: return "EGL_BAD_NATIVE_PIXMAP";
+    case EGL_BAD_NATIVE_WINDOW: return "EGL_BAD_NATIVE_WINDOW";
+    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
+    case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
+    case EGL_CONTEXT_LOST: return "EGL_CONTEXT_LOST";
+    default: return "unknown EGL error";
+  }
+}
+
+std::string egl_err(const char* what) {
+  EGLint e = eglGetError();
+  return std::string(what) + " failed (" + egl_error_name(e) + ", " + hex(uint32_t(e)) + ")";
+}
+
+bool has_ext(const char* list, const char* name) {
+  if (!list) return false;
+  const size_t n = std::strlen(name);
+  for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n) {
+    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
+  }
+  return false;
+}
+
+void check_gl(const char* what) {
+  GLenum first = glGetError();
+  if (first == GL_NO_ERROR) return;
+  std::string msg = std::string("MesaOracle: GL error after ") + what + ": " +
+                    gl_error_name(first) + " (" + hex(first) + ")";
+  // Drain any further queued errors so the next check starts clean.
+  for (int i = 0; i < 16; ++i) {
+    GLenum e = glGetError();
+    if (e == GL_NO_ERROR) break;
+    msg += std::string(", ") + gl_error_name(e);
+  }
+  throw std::runtime_error(msg);
+}
+
+// One EGLDisplay shared by all oracles; eglTerminate when the last one goes away (Mesa's
+// eglInitialize is not reference counted, so terminating per instance would break others).
+std::mutex g_display_mutex;
+EGLDisplay g_display = EGL_NO_DISPLAY;
+int g_display_refs = 0;
+std::string g_platform_name;
+
+EGLDisplay acquire_display(std::string* why, std::string* platform) {
+  std::lock_guard<std::mutex> lock(g_display_mutex);
+  if (g_display_refs > 0) {
+    ++g_display_refs;
+    *platform = g_platform_name;
+    return g_display;
+  }
+  // Force Mesa's software rasterizer unless the user chose otherwise.
+  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
+  setenv("GALLIUM_DRIVER", "llvmpipe", 0);
+
+  const char* client_exts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  std::string errors;
+
+  auto try_init = [&](EGLDisplay d, const char* name) -> bool {
+    if (d == EGL_NO_DISPLAY) {
+      errors += std::string(name) + ": " + egl_err("eglGetPlatformDisplay") + "; ";
+      return false;
+    }
+    EGLint major = 0, minor = 0;
+    if (!eglInitialize(d, &major, &minor)) {
+      errors += std::string(name) + ": " + egl_err("eglInitialize") + "; ";
+      return false;
+    }
+    g_display = d;
+    g_platform_name = name;
+    return true;
+  };
+
+  bool ok = false;
+  // 1. EGL_MESA_platform_surfaceless: no window system, no GPU needed.
+  if (get_platform_display && has_ext(client_exts, "EGL_MESA_platform_surfaceless")) {
+    ok = try_init(get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
+                                       nullptr),
+                  "surfaceless");
+  } else {
+    errors += "EGL_MESA_platform_surfaceless not advertised; ";
+  }
+  // 2. EGL_EXT_platform_device with Mesa's software device (EGL_MESA_device_software).
+  if (!ok && get_platform_display && has_ext(client_exts, "EGL_EXT_platform_device")) {
+    auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(
+        eglGetProcAddress("eglQueryDevicesEXT"));
+    auto query_device_string = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
+        eglGetProcAddress("eglQueryDeviceStringEXT"));
+    EGLDeviceEXT devices[16];
+    EGLint count = 0;
+    if (query_devices && query_device_string && query_devices(16, devices, &count)) {
+      for (EGLint i = 0; i < count && !ok; ++i) {
+        const char* dexts = query_device_string(devices[i], EGL_EXTENSIONS);
+        if (!has_ext(dexts, "EGL_MESA_device_software")) continue;
+        ok = try_init(get_platform_display(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr),
+                      "device (EGL_MESA_device_software)");
+      }
+    }
+  }
+  // 3. Default display with EGL_PLATFORM=surfaceless.
+  if (!ok) {
+    setenv("EGL_PLATFORM", "surfaceless", 0);
+    ok = try_init(eglGetDisplay(EGL_DEFAULT_DISPLAY), "EGL_DEFAULT_DISPLAY");
+  }
+  if (!ok) {
+    *why = "MesaOracle: no usable EGL display: " + errors;
+    return EGL_NO_DISPLAY;
+  }
+  g_display_refs = 1;
+  *platform = g_platform_name;
+  return g_display;
+}
+
+void release_display() {
+  std::lock_guard<std::mutex> lock(g_display_mutex);
+  if (g_display_refs > 0 && --g_display_refs == 0) {
+    eglTerminate(g_display);
+    eglReleaseThread();
+    g_display = EGL_NO_DISPLAY;
+  }
+}
+
+GLuint compile_shader(GLenum type, const std::string& src) {
+  GLuint s = glCreateShader(type);
+  const char* p = src.c_str();
+  glShaderSource(s, 1, &p, nullptr);
+  glCompileShader(s);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {0};
+    glGetShaderInfoLog(s, sizeof log, nullptr, log);
+    glDeleteShader(s);
+    throw std::runtime_error(std::string("MesaOracle: shader compile failed: ") + log);
+  }
+  return s;
+}
+
+GLuint build_program(bool flat, bool textured) {
+  const std::string interp = flat ? "flat " : "";
+  const std::string vs =
+      "#version 330 core\n"
+      "layout(location = 0) in vec4 a_pos;\n"
+      "layout(location = 1) in vec4 a_color;\n"
+      "layout(location = 2) in vec2 a_uv;\n"
+      "uniform float u_point_size;\n" +
+      interp + "out vec4 v_color;\n" +
+      "out vec2 v_uv;\n"
+      "void main() {\n"
+      "  gl_Position = a_pos;\n"
+      "  gl_PointSize = u_point_size;\n"
+      "  v_color = a_color;\n"
+      "  v_uv = a_uv;\n"
+      "}\n";
+  const std::string fs =
+      "#version 330 core\n" + interp + "in vec4 v_color;\n" +
+      "in vec2 v_uv;\n"
+      "uniform sampler2D u_tex;\n"
+      "layout(location = 0) out vec4 o_color;\n"
+      "void main() {\n" +
+      (textured ? "  o_color = v_color * texture(u_tex, v_uv);\n" : "  o_color = v_color;\n") +
+      "}\n";
+  GLuint v = compile_shader(GL_VERTEX_SHADER, vs);
+  GLuint f = 0;
+  try {
+    f = compile_shader(GL_FRAGMENT_SHADER, fs);
+  } catch (...) {
+    glDeleteShader(v);
+    throw;
+  }
+  GLuint prog = glCreateProgram();
+  glAttachShader(prog, v);
+  glAttachShader(prog, f);
+  glLinkProgram(prog);
+  glDeleteShader(v);
+  glDeleteShader(f);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(prog, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {0};
+    glGetProgramInfoLog(prog, sizeof log, nullptr, log);
+    glDeleteProgram(prog);
+    throw std::runtime_error(std::string("MesaOracle: program link failed: ") + log);
+  }
+  glUseProgram(prog);
+  glUniform1i(glGetUniformLocation(prog, "u_tex"), 0);
+  glUseProgram(0);
+  return prog;
+}
+
+}  // namespace
+
+struct MesaOracle::Impl {
+  EGLDisplay display = EGL_NO_DISPLAY;
+  EGLContext context = EGL_NO_CONTEXT;
+  std::string platform;
+  GLuint fbo = 0, color_rb = 0, depth_rb = 0;
+  GLuint vao = 0, vbo = 0, texture = 0;
+  GLuint programs[4] = {0, 0, 0, 0};  // index: flat + 2 * textured
+  GLint point_size_loc[4] = {-1, -1, -1, -1};
+
+  void make_current() {
+    if (eglGetCurrentContext() != context) {
+      if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
+        throw std::runtime_error("MesaOracle: " + egl_err("eglMakeCurrent"));
+    }
+  }
+
+  GLuint program(bool flat, bool textured, GLint* psize_loc) {
+    const int i = (flat ? 1 : 0) + (textured ? 2 : 0);
+    if (!programs[i]) {
+      programs[i] = build_program(flat, textured);
+      point_size_loc[i] = glGetUniformLocation(programs[i], "u_point_size");
+    }
+    *psize_loc = point_size_loc[i];
+    return programs[i];
+  }
+
+  ~Impl() {
+    if (context != EGL_NO_CONTEXT) {
+      if (eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+        for (GLuint p : programs)
+          if (p) glDeleteProgram(p);
+        if (texture) glDeleteTextures(1, &texture);
+        if (vbo) glDeleteBuffers(1, &vbo);
+        if (vao) glDeleteVertexArrays(1, &vao);
+        if (fbo) glDeleteFramebuffers(1, &fbo);
+        if (color_rb) glDeleteRenderbuffers(1, &color_rb);
+        if (depth_rb) glDeleteRenderbuffers(1, &depth_rb);
+      }
+      eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      eglDestroyContext(display, context);
+    }
+    if (display != EGL_NO_DISPLAY) release_display();
+  }
+};
+
+MesaOracle::MesaOracle(std::unique_ptr<Impl> impl, int width, int height)
+    : impl_(std::move(impl)), width_(width), height_(height) {}
+
+MesaOracle::~MesaOracle() = default;
+
+std::unique_ptr<MesaOracle> MesaOracle::create(int width, int height, std::string* why) {
+  std::string dummy;
+  if (!why) why = &dummy;
+  why->clear();
+  if (width <= 0 || height <= 0) {
+    *why = "MesaOracle: invalid size " + std::to_string(width) + "x" + std::to_string(height);
+    return nullptr;
+  }
+  try {
+    auto impl = std::make_unique<Impl>();
+    impl->display = acquire_display(why, &impl->platform);
+    if (impl->display == EGL_NO_DISPLAY) return nullptr;  // *why already set
+    EGLDisplay dpy = impl->display;
+
+    const char* dpy_exts = eglQueryString(dpy, EGL_EXTENSIONS);
+    if (!has_ext(dpy_exts, "EGL_KHR_surfaceless_context")) {
+      *why = "MesaOracle: EGL_KHR_surfaceless_context not supported";
+      return nullptr;
+    }
+    if (!eglBindAPI(EGL_OPENGL_API)) {
+      *why = "MesaOracle: " + egl_err("eglBindAPI(EGL_OPENGL_API)");
+      return nullptr;
+    }
+
+    // A config is irrelevant (we only draw into an FBO); use EGL_NO_CONFIG_KHR if possible.
+    EGLConfig config = nullptr;  // == EGL_NO_CONFIG_KHR
+    if (!has_ext(dpy_exts, "EGL_KHR_no_config_context") &&
+        !has_ext(dpy_exts, "EGL_MESA_configless_context")) {
+      const EGLint cfg_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+      EGLint n = 0;
+      if (!eglChooseConfig(dpy, cfg_attribs, &config, 1, &n) || n < 1) {
+        *why = "MesaOracle: no EGL config with EGL_OPENGL_BIT";
+        return nullptr;
+      }
+    }
+
+    // Desktop GL 3.3 core (not forward-compatible, so wide lines stay legal); fall back to
+    // a compatibility-profile context if core is refused.
+    const EGLint core_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3,
+                                   EGL_CONTEXT_MINOR_VERSION, 3,
+                                   EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                   EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                   EGL_NONE};
+    impl->context = eglCreateContext(dpy, config, EGL_NO_CONTEXT, core_attribs);
+    if (impl->context == EGL_NO_CONTEXT) {
+      const std::string core_err = egl_err("eglCreateContext(3.3 core)");
+      const EGLint compat_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3,
+                                       EGL_CONTEXT_MINOR_VERSION, 3,
+                                       EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                       EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
+                                       EGL_NONE};
+      impl->context = eglCreateContext(dpy, config, EGL_NO_CONTEXT, compat_attribs);
+      if (impl->context == EGL_NO_CONTEXT) {
+        *why = "MesaOracle: " + core_err + "; " + egl_err("eglCreateContext(3.3 compat)");
+        return nullptr;
+      }
+    }
+    if (!eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, impl->context)) {
+      *why = "MesaOracle: " + egl_err("eglMakeCurrent(surfaceless)");
+      return nullptr;
+    }
+
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    if (!renderer || !std::strstr(renderer, "llvmpipe")) {
+      *why = std::string("MesaOracle: GL_RENDERER is '") + (renderer ? renderer : "(null)") +
+             "', not llvmpipe (check LIBGL_ALWAYS_SOFTWARE / GALLIUM_DRIVER)";
+      return nullptr;
+    }
+    glGetError();  // discard anything left over from context creation
+
+    // Framebuffer: RGBA8 colour + DEPTH24_STENCIL8, single-sampled.
+    glGenFramebuffers(1, &impl->fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, impl->fbo);
+    glGenRenderbuffers(1, &impl->color_rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, impl->color_rb);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                              impl->color_rb);
+    glGenRenderbuffers(1, &impl->depth_rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, impl->depth_rb);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              impl->depth_rb);
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+      *why = "MesaOracle: framebuffer incomplete (" + hex(status) + ")";
+      return nullptr;
+    }
+    const GLenum draw_buf = GL_COLOR_ATTACHMENT0;
+    glDrawBuffers(1, &draw_buf);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+
+    // Fixed state: no dithering, no multisampling, tight pixel packing.
+    glDisable(GL_DITHER);
+    glDisable(GL_MULTISAMPLE);
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+
+    glGenVertexArrays(1, &impl->vao);
+    glBindVertexArray(impl->vao);
+    glGenBuffers(1, &impl->vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, impl->vbo);
+    const GLsizei stride = sizeof(OracleVertex);
+    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(offsetof(OracleVertex, pos)));
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(offsetof(OracleVertex, color)));
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(offsetof(OracleVertex, uv)));
+    glEnableVertexAttribArray(0);
+    glEnableVertexAttribArray(1);
+    glEnableVertexAttribArray(2);
+
+    GLenum err = glGetError();
+    if (err != GL_NO_ERROR) {
+      *why = std::string("MesaOracle: GL error during setup: ") + gl_error_name(err);
+      return nullptr;
+    }
+    return std::unique_ptr<MesaOracle>(new MesaOracle(std::move(impl), width, height));
+  } catch (const std::exception& e) {
+    *why = e.what();
+    return nullptr;
+  }
+}
+
+std::string MesaOracle::renderer() const {
+  impl_->make_current();
+  const char* s = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return s ? s : "";
+}
+
+std::string MesaOracle::version() const {
+  impl_->make_current();
+  const char* s = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  return s ? s : "";
+}
+
+std::string MesaOracle::egl_platform() const { return impl_->platform; }
+
+void MesaOracle::clear(const float rgba[4], float depth, int stencil) {
+  impl_->make_current();
+  glBindFramebuffer(GL_FRAMEBUFFER, impl_->fbo);
+  glDisable(GL_SCISSOR_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xFFFFFFFFu);
+  glClearColor(rgba[0], rgba[1], rgba[2], rgba[3]);
+  glClearDepth(depth);
+  glClearStencil(stencil);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  check_gl("glClear");
+}
+
+void MesaOracle::set_texture(const OracleTexture& t) {
+  if (t.width <= 0 || t.height <= 0 ||
+      t.rgba.size() < size_t(t.width) * size_t(t.height) * 4)
+    throw std::runtime_error("MesaOracle::set_texture: bad size / too little data");
+  impl_->make_current();
+  if (!impl_->texture) glGenTextures(1, &impl_->texture);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, impl_->texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               t.rgba.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+  if (t.mipmaps) {
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 1000);
+    glGenerateMipmap(GL_TEXTURE_2D);
+  } else {
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(t.min_filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GLint(t.mag_filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(t.wrap_s));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(t.wrap_t));
+  check_gl("set_texture");
+}
+
+void MesaOracle::draw(const std::vector<OracleVertex>& verts, const OracleState& s) {
+  impl_->make_current();
+  glBindFramebuffer(GL_FRAMEBUFFER, impl_->fbo);
+  glBindVertexArray(impl_->vao);
+  glBindBuffer(GL_ARRAY_BUFFER, impl_->vbo);
+
+  if (s.viewport[2] > 0 && s.viewport[3] > 0)
+    glViewport(s.viewport[0], s.viewport[1], s.viewport[2], s.viewport[3]);
+  else
+    glViewport(0, 0, width_, height_);
+  glDepthRange(0.0, 1.0);
+
+  if (s.depth_test) glEnable(GL_DEPTH_TEST); else glDisable(GL_DEPTH_TEST);
+  glDepthFunc(s.depth_func);
+  glDepthMask(s.depth_write ? GL_TRUE : GL_FALSE);
+
+  if (s.cull) glEnable(GL_CULL_FACE); else glDisable(GL_CULL_FACE);
+  glCullFace(s.cull_face);
+  glFrontFace(s.front_face);
+
+  if (s.blend) glEnable(GL_BLEND); else glDisable(GL_BLEND);
+  glBlendFuncSeparate(s.blend_src_rgb, s.blend_dst_rgb, s.blend_src_a, s.blend_dst_a);
+  glBlendEquationSeparate(s.blend_eq_rgb, s.blend_eq_a);
+  glBlendColor(s.blend_color[0], s.blend_color[1], s.blend_color[2], s.blend_color[3]);
+
+  if (s.scissor) glEnable(GL_SCISSOR_TEST); else glDisable(GL_SCISSOR_TEST);
+  glScissor(s.scissor_box[0], s.scissor_box[1], s.scissor_box[2], s.scissor_box[3]);
+
+  if (s.polygon_offset) glEnable(GL_POLYGON_OFFSET_FILL); else glDisable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(s.offset_factor, s.offset_units);
+
+  if (s.stencil_test) glEnable(GL_STENCIL_TEST); else glDisable(GL_STENCIL_TEST);
+  glStencilFunc(s.stencil_func, s.stencil_ref, s.stencil_mask);
+  glStencilOp(s.stencil_fail, s.stencil_zfail, s.stencil_zpass);
+  glStencilMask(s.stencil_write_mask);
+
+  glColorMask(s.color_mask[0], s.color_mask[1], s.color_mask[2], s.color_mask[3]);
+  glLineWidth(s.line_width);
+  glDisable(GL_DITHER);
+  check_gl("setting draw state");
+
+  GLint psize_loc = -1;
+  const GLuint prog = impl_->program(s.flat, s.textured, &psize_loc);
+  glUseProgram(prog);
+  if (psize_loc >= 0) glUniform1f(psize_loc, s.point_size);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, s.textured ? impl_->texture : 0);
+
+  if (!verts.empty()) {
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(verts.size() * sizeof(OracleVertex)),
+                 verts.data(), GL_STREAM_DRAW);
+    glDrawArrays(s.primitive, 0, GLsizei(verts.size()));
+  }
+  check_gl("glDrawArrays");
+}
+
+std::vector<uint8_t> MesaOracle::read_rgba8() {
+  impl_->make_current();
+  glBindFramebuffer(GL_FRAMEBUFFER, impl_->fbo);
+  glFinish();
+  std::vector<uint8_t> out(size_t(width_) * size_t(height_) * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+  check_gl("glReadPixels(GL_RGBA)");
+  return out;
+}
+
+std::vector<float> MesaOracle::read_depth() {
+  impl_->make_current();
+  glBindFramebuffer(GL_FRAMEBUFFER, impl_->fbo);
+  glFinish();
+  std::vector<float> out(size_t(width_) * size_t(height_));
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, out.data());
+  check_gl("glReadPixels(GL_DEPTH_COMPONENT)");
+  return out;
+}
+
+std::vector<uint8_t> MesaOracle::read_stencil() {
+  impl_->make_current();
+  glBindFramebuffer(GL_FRAMEBUFFER, impl_->fbo);
+  glFinish();
+  std::vector<uint8_t> out(size_t(width_) * size_t(height_));
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, out.data());
+  check_gl("glReadPixels(GL_STENCIL_INDEX)");
+  return out;
+}
+
+std::vector<uint32_t> MesaOracle::read_depth24() {
+  impl_->make_current();
+  glBindFramebuffer(GL_FRAMEBUFFER, impl_->fbo);
+  glFinish();
+  std::vector<uint32_t> out(size_t(width_) * size_t(height_));
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, width_, height_, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, out.data());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  check_gl("glReadPixels(GL_DEPTH_STENCIL)");
+  for (uint32_t& v : out) v >>= 8;  // drop the stencil byte
+  return out;
+}
+
+}  // namespace tessel::reference
