@@ -1,0 +1,275 @@
+// Tessel against Mesa llvmpipe (the oracle): the same draws, the same clip-space vertices,
+// compared pixel by pixel.
+//
+// Tolerances:
+// - coverage: identical on at least 99.99% of the compared pixels (in practice 0 mismatches
+//   are expected: both snap to 1/256 pixel and use the same fill rule);
+// - shaded colour: at most kColorTolerance (in 8-bit steps) per channel on pixels both cover,
+//   and at most 0.1% of pixels off by more than 1 step.
+// The suite shows that the coverage tolerance catches a real bug: the same draws offset by
+// half a pixel must fail it.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <random>
+
+#include "mesa_oracle.hpp"
+#include "shaders.hpp"
+#include "tessel/gpu/image.hpp"
+
+using namespace tessel::test;
+using tessel::reference::MesaOracle;
+using tessel::reference::OracleState;
+using tessel::reference::OracleVertex;
+
+namespace {
+
+constexpr int kColorTolerance = 2;
+
+struct Compared {
+  size_t pixels = 0;      // pixels compared
+  size_t covered = 0;     // covered by either
+  size_t coverage_mismatch = 0;
+  int max_channel_diff = 0;
+  size_t over_one = 0;    // pixels with a channel off by more than 1 (both covered)
+};
+
+// Coverage: a pixel is covered when it differs from the clear colour (alpha 0 clear, every
+// drawn colour has alpha 255).
+Compared compare(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+  Compared c;
+  c.pixels = a.size() / 4;
+  for (size_t i = 0; i < c.pixels; ++i) {
+    const bool ca = a[i * 4 + 3] != 0, cb = b[i * 4 + 3] != 0;
+    if (ca || cb) ++c.covered;
+    if (ca != cb) {
+      ++c.coverage_mismatch;
+      continue;
+    }
+    if (!ca) continue;
+    int m = 0;
+    for (int k = 0; k < 4; ++k) m = std::max(m, std::abs(int(a[i * 4 + k]) - int(b[i * 4 + k])));
+    c.max_channel_diff = std::max(c.max_channel_diff, m);
+    if (m > 1) ++c.over_one;
+  }
+  return c;
+}
+
+std::unique_ptr<MesaOracle> make_oracle(int w, int h) {
+  std::string why;
+  auto o = MesaOracle::create(w, h, &why);
+  if (!o) ADD_FAILURE() << "Mesa llvmpipe is not available: " << why;
+  return o;
+}
+
+// Renders the vertices with Tessel under the state that corresponds to `os`.
+std::vector<uint8_t> render_tessel(int w, int h, const std::vector<OracleVertex>& verts,
+                                   const RenderState& st, Topology topo, bool flat, int threads = 2,
+                                   const float clear_depth = 1.0f) {
+  Target t(w, h);
+  Context ctx(threads);
+  ctx.bind_framebuffer(&t.fb);
+  ctx.clear({.color = {0, 0, 0, 0}, .depth = clear_depth});
+  std::vector<TestVertex> tv(verts.size());
+  for (size_t i = 0; i < verts.size(); ++i) {
+    std::copy_n(verts[i].pos, 4, tv[i].pos);
+    std::copy_n(verts[i].color, 4, tv[i].color);
+    std::copy_n(verts[i].uv, 2, tv[i].uv);
+  }
+  Mesh m(tv);
+  if (flat) ctx.draw(FlatColorShader{}, {}, m.layout, st, {.topology = topo, .count = m.count});
+  else ctx.draw(ColorShader{}, {}, m.layout, st, {.topology = topo, .count = m.count});
+  ctx.finish();
+  return read_rgba8(t.color);
+}
+
+std::vector<uint8_t> render_mesa(MesaOracle& o, const std::vector<OracleVertex>& verts, const OracleState& s,
+                                 float clear_depth = 1.0f) {
+  const float clear[4] = {0, 0, 0, 0};
+  o.clear(clear, clear_depth, 0);
+  o.draw(verts, s);
+  return o.read_rgba8();
+}
+
+OracleVertex vertex_at(float x, float y, float z, float w, int W, int H, const float* color) {
+  OracleVertex v{};
+  clip_from_window(x, y, z, w, W, H, v.pos);
+  std::copy_n(color, 4, v.color);
+  return v;
+}
+
+// Random small triangles, one in each 32x32 cell of the target so they never overlap; random
+// sub-pixel positions, random winding, random clip w (so the divide is exercised too).
+std::vector<OracleVertex> cell_triangles(std::mt19937& rng, int W, int H, float offset, bool colorful) {
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<OracleVertex> v;
+  const int cell = 32;
+  for (int cy = 0; cy < H / cell; ++cy) {
+    for (int cx = 0; cx < W / cell; ++cx) {
+      const float w = 0.5f + 3.0f * u(rng);
+      const float white[4] = {1, 1, 1, 1};
+      for (int k = 0; k < 3; ++k) {
+        const float c[4] = {u(rng), u(rng), u(rng), 1.0f};
+        const float x = float(cx * cell) + 1.0f + 30.0f * u(rng) + offset;
+        const float y = float(cy * cell) + 1.0f + 30.0f * u(rng) + offset;
+        v.push_back(vertex_at(x, y, u(rng) * 2.0f - 1.0f, w, W, H, colorful ? c : white));
+      }
+    }
+  }
+  return v;
+}
+
+}  // namespace
+
+TEST(Mesa, OracleIsLlvmpipe) {
+  auto o = make_oracle(16, 16);
+  ASSERT_TRUE(o);
+  EXPECT_NE(o->renderer().find("llvmpipe"), std::string::npos) << o->renderer();
+}
+
+// Thousands of random triangles at random sub-pixel positions: coverage identical on at
+// least 99.99% of pixels.
+TEST(Mesa, CoverageOfRandomTrianglesMatches) {
+  const int W = 512, H = 256;
+  auto o = make_oracle(W, H);
+  ASSERT_TRUE(o);
+  std::mt19937 rng(1234);
+  size_t pixels = 0, covered = 0, mismatch = 0, triangles = 0;
+  for (int pass = 0; pass < 16; ++pass) {
+    const auto verts = cell_triangles(rng, W, H, 0.0f, false);
+    triangles += verts.size() / 3;
+    OracleState s;
+    const auto ref = render_mesa(*o, verts, s);
+    const auto got = render_tessel(W, H, verts, RenderState{}, Topology::Triangles, false);
+    const Compared c = compare(got, ref);
+    pixels += c.pixels;
+    covered += c.covered;
+    mismatch += c.coverage_mismatch;
+  }
+  std::printf("coverage: %zu triangles, %zu covered pixels, %zu mismatches\n", triangles, covered, mismatch);
+  EXPECT_GE(triangles, 2000u);
+  EXPECT_LE(double(mismatch), 1e-4 * double(pixels));
+  EXPECT_LE(double(mismatch), 1e-4 * double(covered)) << "mismatch rate over covered pixels";
+}
+
+// Large triangles reaching beyond the target (guard band, long edges), drawn one by one.
+TEST(Mesa, CoverageOfLargeTrianglesMatches) {
+  const int W = 128, H = 128;
+  auto o = make_oracle(W, H);
+  ASSERT_TRUE(o);
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<float> u(-400.0f, 528.0f);
+  size_t covered = 0, mismatch = 0;
+  for (int i = 0; i < 300; ++i) {
+    const float white[4] = {1, 1, 1, 1};
+    std::vector<OracleVertex> v;
+    for (int k = 0; k < 3; ++k) v.push_back(vertex_at(u(rng), u(rng), 0.0f, 1.0f, W, H, white));
+    const auto ref = render_mesa(*o, v, OracleState{});
+    const auto got = render_tessel(W, H, v, RenderState{}, Topology::Triangles, false, 1);
+    const Compared c = compare(got, ref);
+    covered += c.covered;
+    mismatch += c.coverage_mismatch;
+  }
+  std::printf("large triangles: %zu covered pixels, %zu mismatches\n", covered, mismatch);
+  EXPECT_LE(double(mismatch), 1e-4 * double(covered));
+}
+
+// The tolerance catches a real bug: Tessel's vertices moved by half a pixel must fail it.
+TEST(Mesa, HalfPixelOffsetWouldFail) {
+  const int W = 512, H = 256;
+  auto o = make_oracle(W, H);
+  ASSERT_TRUE(o);
+  std::mt19937 rng_a(1234), rng_b(1234);
+  const auto verts = cell_triangles(rng_a, W, H, 0.0f, false);
+  const auto shifted = cell_triangles(rng_b, W, H, 0.5f, false);
+  const auto ref = render_mesa(*o, verts, OracleState{});
+  const auto bad = render_tessel(W, H, shifted, RenderState{}, Topology::Triangles, false);
+  const Compared c = compare(bad, ref);
+  std::printf("half-pixel offset: %zu of %zu covered pixels differ\n", c.coverage_mismatch, c.covered);
+  EXPECT_GT(double(c.coverage_mismatch), 1e-4 * double(c.covered));
+}
+
+// Gouraud-interpolated colours with perspective (random w per vertex).
+TEST(Mesa, GouraudColoursMatch) {
+  const int W = 512, H = 256;
+  auto o = make_oracle(W, H);
+  ASSERT_TRUE(o);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<OracleVertex> v;
+  // Per-vertex w differs inside each triangle, so perspective correction matters.
+  for (int cy = 0; cy < H / 32; ++cy)
+    for (int cx = 0; cx < W / 32; ++cx)
+      for (int k = 0; k < 3; ++k) {
+        const float c[4] = {u(rng), u(rng), u(rng), 1.0f};
+        v.push_back(vertex_at(cx * 32 + 1 + 30 * u(rng), cy * 32 + 1 + 30 * u(rng), 0.0f, 0.5f + 3 * u(rng), W, H, c));
+      }
+  const auto ref = render_mesa(*o, v, OracleState{});
+  const auto got = render_tessel(W, H, v, RenderState{}, Topology::Triangles, false);
+  const Compared c = compare(got, ref);
+  std::printf("gouraud: %zu covered, %zu coverage mismatches, max channel diff %d, %zu pixels > 1\n",
+              c.covered, c.coverage_mismatch, c.max_channel_diff, c.over_one);
+  EXPECT_LE(double(c.coverage_mismatch), 1e-4 * double(c.covered));
+  EXPECT_LE(c.max_channel_diff, kColorTolerance);
+  EXPECT_LE(double(c.over_one), 1e-3 * double(c.covered));
+}
+
+TEST(Mesa, FlatColoursMatch) {
+  const int W = 256, H = 256;
+  auto o = make_oracle(W, H);
+  ASSERT_TRUE(o);
+  std::mt19937 rng(8);
+  const auto v = cell_triangles(rng, W, H, 0.0f, true);
+  OracleState s;
+  s.flat = true;
+  const auto ref = render_mesa(*o, v, s);
+  const auto got = render_tessel(W, H, v, RenderState{}, Topology::Triangles, true);
+  const Compared c = compare(got, ref);
+  EXPECT_EQ(c.coverage_mismatch, 0u);
+  EXPECT_LE(c.max_channel_diff, 1);
+}
+
+// Overlapping triangles with random depths, depth test LESS, then blended on top.
+TEST(Mesa, DepthTestedAndBlendedMatch) {
+  const int W = 256, H = 256;
+  auto o = make_oracle(W, H);
+  ASSERT_TRUE(o);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<OracleVertex> v;
+  for (int i = 0; i < 200; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const float c[4] = {u(rng), u(rng), u(rng), 1.0f};
+      v.push_back(vertex_at(u(rng) * 256, u(rng) * 256, u(rng) * 1.8f - 0.9f, 1.0f, W, H, c));
+    }
+  OracleState s;
+  s.depth_test = true;
+  RenderState st;
+  st.depth_test = true;
+  auto ref = render_mesa(*o, v, s);
+  auto got = render_tessel(W, H, v, st, Topology::Triangles, false);
+  Compared c = compare(got, ref);
+  std::printf("depth: %zu covered, %zu mismatches, max diff %d, %zu > 1\n", c.covered, c.coverage_mismatch,
+              c.max_channel_diff, c.over_one);
+  EXPECT_LE(double(c.coverage_mismatch), 1e-4 * double(c.covered));
+  EXPECT_LE(double(c.over_one), 2e-3 * double(c.covered));
+
+  // Blending: src alpha over.
+  for (auto& x : v) x.color[3] = 0.5f;
+  s.depth_test = false;
+  s.blend = true;
+  s.blend_src_rgb = 0x0302;  // GL_SRC_ALPHA
+  s.blend_dst_rgb = 0x0303;  // GL_ONE_MINUS_SRC_ALPHA
+  s.blend_src_a = 1;
+  s.blend_dst_a = 1;
+  st = RenderState{};
+  st.blend[0] = {.enabled = true, .src_rgb = BlendFactor::SrcAlpha, .dst_rgb = BlendFactor::OneMinusSrcAlpha,
+                 .src_alpha = BlendFactor::One, .dst_alpha = BlendFactor::One};
+  ref = render_mesa(*o, v, s);
+  got = render_tessel(W, H, v, st, Topology::Triangles, false);
+  c = compare(got, ref);
+  std::printf("blend: %zu covered, %zu mismatches, max diff %d, %zu > 1\n", c.covered, c.coverage_mismatch,
+              c.max_channel_diff, c.over_one);
+  EXPECT_LE(double(c.coverage_mismatch), 1e-4 * double(c.covered));
+  EXPECT_LE(c.max_channel_diff, kColorTolerance + 1);
+}
