@@ -95,11 +95,7 @@ class TextureCube : public Resource {
  public:
   // Faces in GL order: +X, -X, +Y, -Y, +Z, -Z.
   TextureCube(Format format, int size, int levels = 1);
-  // Mutable access to a face flushes the pending draws that read this cube first.
-  Texture2D& face(int i) {
-    before_write();
-    return *faces_.at(i);
-  }
+  Texture2D& face(int i) { return *faces_.at(i); }
   const Texture2D& face(int i) const { return *faces_.at(i); }
   Format format() const { return faces_[0]->format(); }
   int size() const { return faces_[0]->width(); }
