@@ -41,3 +41,246 @@ TEST(Draw, TriangleCoversItsInterior) {
   EXPECT_EQ(px(p, 32, 15, 15), 0xFF0000FFu);  // below the hypotenuse x + y = 32: centre sum 31
   EXPECT_EQ(px(p, 32, 16, 16), 0xFF000000u);  // centre sum 33 > 32
 }
+
+namespace {
+
+struct Offsets {
+  struct Uniforms {};
+  template <class F> struct Varyings { Vec4<F> color; };
+  static constexpr uint32_t attributes = 0b1011;
+  // attr 3: per-instance offset (x, y) and colour in z.
+  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
+    out.color = Vec4<F>(in.attr[3].z, F(1.0f), to_float(in.instance_id) * F(0.25f), F(1.0f));
+    return Vec4<F>(in.attr[0].x + in.attr[3].x, in.attr[0].y + in.attr[3].y, in.attr[0].z, in.attr[0].w);
+  }
+  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+    f.color[0] = v.color;
+  }
+};
+
+std::vector<uint8_t> render(int W, int H, const std::vector<TestVertex>& v, const DrawCall& call,
+                            const RenderState& st = RenderState{}, int threads = 2, bool flat = false) {
+  Target t(W, H);
+  Context ctx(threads);
+  ctx.bind_framebuffer(&t.fb);
+  ctx.clear({.color = {0, 0, 0, 0}});
+  Mesh m(v);
+  if (flat) ctx.draw(FlatColorShader{}, {}, m.layout, st, call);
+  else ctx.draw(ColorShader{}, {}, m.layout, st, call);
+  ctx.finish();
+  return read_rgba8(t.color);
+}
+
+size_t lit(const std::vector<uint8_t>& p) {
+  size_t n = 0;
+  for (size_t i = 3; i < p.size(); i += 4) n += p[i] != 0;
+  return n;
+}
+
+}  // namespace
+
+TEST(Draw, IndexedMatchesArraysForEveryIndexType) {
+  const int W = 32, H = 32;
+  std::vector<TestVertex> v = {wv(2, 2, 0, W, H), wv(30, 3, 0, W, H), wv(28, 29, 0, W, H), wv(3, 27, 0, W, H)};
+  const auto arrays = render(W, H, {v[0], v[1], v[2], v[0], v[2], v[3]}, {.count = 6});
+  const uint8_t i8[] = {0, 1, 2, 0, 2, 3};
+  const uint16_t i16[] = {0, 1, 2, 0, 2, 3};
+  const uint32_t i32[] = {0, 1, 2, 0, 2, 3};
+  const Buffer b8(i8, sizeof i8), b16(i16, sizeof i16), b32(i32, sizeof i32);
+  EXPECT_EQ(render(W, H, v, {.count = 6, .index_buffer = &b8, .index_type = IndexType::U8}), arrays);
+  EXPECT_EQ(render(W, H, v, {.count = 6, .index_buffer = &b16, .index_type = IndexType::U16}), arrays);
+  EXPECT_EQ(render(W, H, v, {.count = 6, .index_buffer = &b32, .index_type = IndexType::U32}), arrays);
+  // Base vertex: indices shifted down by one, base vertex 1, with a dummy vertex first.
+  std::vector<TestVertex> shifted = v;
+  shifted.insert(shifted.begin(), wv(0, 0, 0, W, H));
+  EXPECT_EQ(render(W, H, shifted, {.count = 6, .index_buffer = &b32, .base_vertex = 1}), arrays);
+  EXPECT_GT(lit(arrays), 600u);
+}
+
+TEST(Draw, StripsFansAndListsAgree) {
+  const int W = 32, H = 32;
+  const TestVertex a = wv(2, 2, 0, W, H), b = wv(30, 2, 0, W, H), c = wv(2, 30, 0, W, H), d = wv(30, 30, 0, W, H);
+  const auto list = render(W, H, {a, b, c, c, b, d}, {.count = 6});
+  EXPECT_EQ(render(W, H, {a, b, c, d}, {.topology = Topology::TriangleStrip, .count = 4}), list);
+  EXPECT_EQ(render(W, H, {a, b, d, c}, {.topology = Topology::TriangleFan, .count = 4}), list);
+  // With back-face culling, a strip's odd triangle keeps its winding (not culled).
+  RenderState st;
+  st.cull = CullMode::Back;
+  EXPECT_EQ(render(W, H, {a, b, c, d}, {.topology = Topology::TriangleStrip, .count = 4}, st), list);
+}
+
+TEST(Draw, PrimitiveRestart) {
+  const int W = 32, H = 32;
+  std::vector<TestVertex> v = {wv(2, 2, 0, W, H), wv(14, 2, 0, W, H), wv(2, 14, 0, W, H), wv(14, 14, 0, W, H),
+                               wv(18, 18, 0, W, H), wv(30, 18, 0, W, H), wv(18, 30, 0, W, H), wv(30, 30, 0, W, H)};
+  const uint16_t idx[] = {0, 1, 2, 3, 0xFFFF, 4, 5, 6, 7};
+  const Buffer ib(idx, sizeof idx);
+  RenderState st;
+  st.primitive_restart = true;
+  const auto got = render(W, H, v, {.topology = Topology::TriangleStrip, .count = 9, .index_buffer = &ib,
+                                    .index_type = IndexType::U16}, st);
+  const auto want = render(W, H, {v[0], v[1], v[2], v[2], v[1], v[3], v[4], v[5], v[6], v[6], v[5], v[7]}, {.count = 12});
+  EXPECT_EQ(got, want);
+  // Without restart, 0xFFFF is an index past the buffer: an error, nothing drawn.
+  Target t(W, H);
+  Context ctx(1);
+  ctx.bind_framebuffer(&t.fb);
+  Mesh m(v);
+  EXPECT_THROW(ctx.draw(ColorShader{}, {}, m.layout, RenderState{},
+                        {.topology = Topology::TriangleStrip, .count = 9, .index_buffer = &ib, .index_type = IndexType::U16}),
+               Error);
+}
+
+TEST(Draw, InstancingWithDivisor) {
+  const int W = 32, H = 32;
+  Target t(W, H);
+  Context ctx(2);
+  ctx.bind_framebuffer(&t.fb);
+  ctx.clear({.color = {0, 0, 0, 0}});
+  Mesh m({wv(0, 0, 0, W, H), wv(8, 0, 0, W, H), wv(0, 8, 0, W, H)});
+  const float offsets[] = {0.0f, 0.0f, 0.2f, 1.0f, 0.0f, 0.6f, 0.0f, 1.0f, 1.0f};  // ndc offsets: 16 px
+  const Buffer inst(offsets, sizeof offsets);
+  VertexLayout layout = m.layout;
+  layout.attrib(3, inst, 3, AttribType::F32, 12, 0, false, 1);
+  ctx.draw(Offsets{}, {}, layout, RenderState{}, {.count = 3, .instance_count = 3});
+  ctx.finish();
+  const auto p = read_rgba8(t.color);
+  auto at = [&](int x, int y) { return &p[(size_t(y) * W + x) * 4]; };
+  EXPECT_EQ(at(1, 1)[0], 51);   // instance 0: red 0.2
+  EXPECT_EQ(at(17, 1)[0], 153); // instance 1 at +16 x: red 0.6
+  EXPECT_EQ(at(17, 1)[2], 64);  // gl_InstanceID 1 -> blue 0.25
+  EXPECT_EQ(at(1, 17)[0], 255); // instance 2 at +16 y
+  EXPECT_EQ(at(1, 17)[2], 128);
+  // Past the instance buffer: 4 instances need 4 elements, the buffer has 3.
+  EXPECT_THROW(ctx.draw(Offsets{}, {}, layout, RenderState{}, {.count = 3, .instance_count = 4}), Error);
+}
+
+TEST(Draw, FlatTakesTheProvokingVertex) {
+  const int W = 16, H = 16;
+  const std::vector<TestVertex> v = {wv(0, 0, 0, W, H, {1, 0, 0, 1}), wv(16, 0, 0, W, H, {0, 1, 0, 1}),
+                                     wv(0, 16, 0, W, H, {0, 0, 1, 1})};
+  const auto p = render(W, H, v, {.count = 3}, RenderState{}, 1, true);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(p[(1 * W + 1) * 4 + i], i == 2 || i == 3 ? 255 : 0);  // last vertex: blue
+  // Strip triangle 1 is (v2, v1, v3) in GL order: its provoking vertex is v3.
+  const std::vector<TestVertex> s = {wv(0, 0, 0, W, H, {1, 0, 0, 1}), wv(16, 0, 0, W, H, {0, 1, 0, 1}),
+                                     wv(0, 16, 0, W, H, {0, 0, 1, 1}), wv(16, 16, 0, W, H, {1, 1, 0, 1})};
+  const auto q = render(W, H, s, {.topology = Topology::TriangleStrip, .count = 4}, RenderState{}, 1, true);
+  EXPECT_EQ(q[(14 * W + 14) * 4 + 0], 255);
+  EXPECT_EQ(q[(14 * W + 14) * 4 + 1], 255);
+}
+
+TEST(Draw, PerspectiveCorrectCheckerboard) {
+  // A quad tilted away from the camera, textured with an 8x8 checkerboard (nearest): the
+  // checker boundaries must lie where the projection puts them, not where screen-linear
+  // interpolation would.
+  const int W = 64, H = 64;
+  Target t(W, H);
+  Context ctx(2);
+  ctx.bind_framebuffer(&t.fb);
+  ctx.clear({.color = {0, 0, 0, 0}});
+  std::vector<uint8_t> checker(8 * 8 * 4);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x)
+      for (int k = 0; k < 4; ++k) checker[(y * 8 + x) * 4 + k] = ((x + y) & 1) ? 255 : 0;
+  Texture2D tex(Format::RGBA8, 8, 8);
+  tex.upload_rgba8(0, checker.data(), checker.size());
+  // Eye space: a floor quad from z = -1 (near) to z = -5 (far), x in [-1, 1], y = -0.5,
+  // projected with a 90-degree frustum: clip = (x, y, ..., -z).
+  auto v = [&](float x, float z, float s, float tt) {
+    TestVertex r{};
+    r.pos[0] = x; r.pos[1] = -0.5f; r.pos[2] = 0.0f; r.pos[3] = -z;
+    r.color[0] = r.color[1] = r.color[2] = r.color[3] = 1.0f;
+    r.uv[0] = s; r.uv[1] = tt;
+    return r;
+  };
+  Mesh m({v(-1, -1, 0, 0), v(1, -1, 1, 0), v(1, -5, 1, 1), v(-1, -1, 0, 0), v(1, -5, 1, 1), v(-1, -5, 0, 1)});
+  TexturedShader::Uniforms u;
+  u.tex = {&tex, {.min_filter = Filter::Nearest, .mag_filter = Filter::Nearest}};
+  ctx.draw(TexturedShader{}, u, m.layout, RenderState{}, {.count = 6});
+  ctx.finish();
+  const auto p = read_rgba8(t.color);
+  // For each row, the expected texel from the exact inverse projection: window y -> eye z.
+  int checked = 0;
+  for (int y = 0; y < H; ++y) {
+    const float yn = (y + 0.5f) / H * 2.0f - 1.0f;  // ndc y = -0.5 / -z
+    const float z = 0.5f / yn;                       // eye z (negative below the horizon)
+    if (!(z <= -1.0f && z >= -5.0f)) continue;
+    const float tcoord = (-z - 1.0f) / 4.0f;
+    for (int x = 0; x < W; ++x) {
+      const float xn = (x + 0.5f) / W * 2.0f - 1.0f;
+      const float ex = xn * -z;
+      if (ex < -1.0f || ex > 1.0f) continue;
+      const float s = (ex + 1.0f) / 2.0f;
+      const float fs = s * 8.0f, ft = tcoord * 8.0f;
+      // Skip samples within 5% of a texel of a boundary (float rounding may go either way);
+      // screen-linear interpolation is off by up to half a texel here, so it still fails.
+      if (std::fabs(fs - std::round(fs)) < 0.05f || std::fabs(ft - std::round(ft)) < 0.05f) continue;
+      const int want = ((int(fs) + int(ft)) & 1) ? 255 : 0;
+      ASSERT_EQ(p[(size_t(y) * W + x) * 4], want) << x << "," << y;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 300);
+}
+
+TEST(Draw, LinesAndPoints) {
+  const int W = 16, H = 16;
+  // A horizontal line from x = 2.5 to 12.5 at y = 5.5: pixels 2..11 (the last excluded).
+  auto line = render(W, H, {wv(2.5f, 5.5f, 0, W, H), wv(12.5f, 5.5f, 0, W, H)}, {.topology = Topology::Lines, .count = 2});
+  for (int x = 0; x < W; ++x) EXPECT_EQ(line[(5 * W + x) * 4 + 3], x >= 2 && x < 12 ? 255 : 0) << x;
+  EXPECT_EQ(lit(line), 10u);
+  // The same line drawn backwards covers 3..12 (diamond exit: the start is kept).
+  auto back = render(W, H, {wv(12.5f, 5.5f, 0, W, H), wv(2.5f, 5.5f, 0, W, H)}, {.topology = Topology::Lines, .count = 2});
+  EXPECT_EQ(lit(back), 10u);
+  EXPECT_EQ(back[(5 * W + 12) * 4 + 3], 255);
+  // A wide line: 3 pixels tall.
+  RenderState st;
+  st.line_width = 3.0f;
+  auto wide = render(W, H, {wv(2.5f, 5.5f, 0, W, H), wv(12.5f, 5.5f, 0, W, H)}, {.topology = Topology::Lines, .count = 2}, st);
+  EXPECT_EQ(lit(wide), 30u);
+  // A diagonal line lights one pixel per column.
+  auto diag = render(W, H, {wv(1.5f, 1.2f, 0, W, H), wv(14.5f, 10.3f, 0, W, H)}, {.topology = Topology::Lines, .count = 2});
+  EXPECT_EQ(lit(diag), 13u);
+  // Points: size 1 one pixel, size 4 a 4x4 square.
+  auto pt = render(W, H, {wv(4.5f, 4.5f, 0, W, H)}, {.topology = Topology::Points, .count = 1});
+  EXPECT_EQ(lit(pt), 1u);
+  EXPECT_EQ(pt[(4 * W + 4) * 4 + 3], 255);
+  st = RenderState{};
+  st.point_size = 4.0f;
+  auto big = render(W, H, {wv(8.0f, 8.0f, 0, W, H)}, {.topology = Topology::Points, .count = 1}, st);
+  EXPECT_EQ(lit(big), 16u);
+  // Line strip and loop: a square outline.
+  const std::vector<TestVertex> sq = {wv(2.5f, 2.5f, 0, W, H), wv(12.5f, 2.5f, 0, W, H), wv(12.5f, 12.5f, 0, W, H),
+                                      wv(2.5f, 12.5f, 0, W, H)};
+  EXPECT_EQ(lit(render(W, H, sq, {.topology = Topology::LineStrip, .count = 4})), 30u);
+  EXPECT_EQ(lit(render(W, H, sq, {.topology = Topology::LineLoop, .count = 4})), 40u);
+}
+
+TEST(Draw, PolygonModes) {
+  const int W = 16, H = 16;
+  const std::vector<TestVertex> tri = {wv(2.5f, 2.5f, 0, W, H), wv(12.5f, 2.5f, 0, W, H), wv(2.5f, 12.5f, 0, W, H)};
+  RenderState st;
+  st.polygon_mode = PolygonMode::Point;
+  EXPECT_EQ(lit(render(W, H, tri, {.count = 3}, st)), 3u);
+  st.polygon_mode = PolygonMode::Line;
+  const auto lines = render(W, H, tri, {.count = 3}, st);
+  EXPECT_GE(lit(lines), 28u);
+  EXPECT_EQ(lines[(5 * W + 5) * 4 + 3], 0);  // the inside stays empty
+  st.cull = CullMode::Front;                 // counter-clockwise is front: culled
+  EXPECT_EQ(lit(render(W, H, tri, {.count = 3}, st)), 0u);
+}
+
+TEST(Draw, SameImageForAnyThreadCount) {
+  const int W = 200, H = 150;
+  std::vector<TestVertex> v;
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (int i = 0; i < 3000 * 3; ++i) v.push_back(wv(u(rng) * W, u(rng) * H, u(rng) * 2 - 1, W, H, {u(rng), u(rng), u(rng), 0.5f}));
+  RenderState st;
+  st.depth_test = true;
+  st.blend[0] = {.enabled = true, .src_rgb = BlendFactor::SrcAlpha, .dst_rgb = BlendFactor::OneMinusSrcAlpha};
+  const auto one = render(W, H, v, {.count = uint32_t(v.size())}, st, 1);
+  EXPECT_EQ(render(W, H, v, {.count = uint32_t(v.size())}, st, 2), one);
+  EXPECT_EQ(render(W, H, v, {.count = uint32_t(v.size())}, st, 3), one);
+  EXPECT_EQ(render(W, H, v, {.count = uint32_t(v.size())}, st, 8), one);
+}

@@ -70,9 +70,15 @@ Texture2D level_marked(int size, bool distinct = false) {
   return t;
 }
 
+// Deferred work that is pending while armed; a flush disarms it.
 struct CountingWork final : PendingWork {
   int flushes = 0;
-  void flush() override { ++flushes; }
+  bool armed = false;
+  void flush() override {
+    armed = false;
+    ++flushes;
+  }
+  bool has_pending() const override { return armed; }
 };
 
 }  // namespace
@@ -317,28 +323,31 @@ TEST(Texture2D, MutationsFlushPendingWorkFirst) {
   Texture2D t(Format::RGBA8, 2, 2, 0);
   std::vector<uint8_t> d(16, 1);
   int expected = 0;
-  auto check = [&](auto&& fn) {
-    t.mark_used_by(&work);
+  auto check = [&](const char* what, auto&& fn) {
+    work.armed = true;
     fn();
-    EXPECT_EQ(work.flushes, ++expected);
+    EXPECT_EQ(work.flushes, ++expected) << what;
+    EXPECT_FALSE(work.armed) << what;
   };
-  check([&] { t.upload(0, d.data(), d.size()); });
-  check([&] { t.upload_rgba8(0, d.data(), d.size()); });
-  check([&] { t.store(0, 0, 0, glm::vec4(1.0f)); });
-  check([&] { t.generate_mipmaps(); });
-  check([&] { t.allocate_full_chain(); });
-  check([&] { (void)t.level_for_write(0); });
-  // Reading does not flush.
-  t.mark_used_by(&work);
-  (void)t.fetch(0, 0, 0);
-  EXPECT_EQ(work.flushes, expected);
-  t.release_from(&work);
-
+  check("upload", [&] { t.upload(0, d.data(), d.size()); });
+  check("upload_rgba8", [&] { t.upload_rgba8(0, d.data(), d.size()); });
+  check("upload_rgba32f", [&] {
+    const float f[4] = {1, 2, 3, 4};
+    t.upload_rgba32f(1, f, sizeof f);
+  });
+  check("store", [&] { t.store(0, 0, 0, glm::vec4(1.0f)); });
+  check("generate_mipmaps", [&] { t.generate_mipmaps(); });
+  check("allocate_full_chain", [&] { t.allocate_full_chain(); });
+  check("level_for_write", [&] { (void)t.level_for_write(0); });
   TextureCube c(Format::RGBA8, 2);
-  CountingWork cw;
-  c.mark_used_by(&cw);
-  c.face(3).store(0, 0, 0, glm::vec4(1.0f));
-  EXPECT_EQ(cw.flushes, 1);
+  check("cube generate_mipmaps", [&] { c.generate_mipmaps(); });
+  check("cube face store", [&] { c.face(3).store(0, 0, 0, glm::vec4(1.0f)); });
+  // Reading does not flush.
+  work.armed = true;
+  (void)t.fetch(0, 0, 0);
+  (void)texture(Sampler2D{&t, {}}, Vec2<float>(0.5f, 0.5f));
+  EXPECT_EQ(work.flushes, expected);
+  work.armed = false;
 }
 
 // --- mipmaps --------------------------------------------------------------------------------

@@ -24,6 +24,8 @@ class Buffer : public Resource {
   Buffer(const void* data, size_t bytes) { assign(data, bytes); }
   template <class T> explicit Buffer(std::span<const T> items) { assign(items.data(), items.size_bytes()); }
   template <class T> explicit Buffer(const std::vector<T>& items) { assign(items.data(), items.size() * sizeof(T)); }
+  // Queued draws that read this buffer run before its memory goes.
+  ~Buffer() override { before_write(); }
 
   void assign(const void* data, size_t bytes) {
     before_write();

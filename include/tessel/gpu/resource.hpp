@@ -28,7 +28,8 @@ class Resource {
   virtual ~Resource();
 
  protected:
-  // Resources call this before changing their contents: queued draws run first.
+  // Resources call this before changing their contents, and in their destructors (before
+  // their members go): queued draws run first.
   void before_write() const;
 };
 

@@ -61,6 +61,9 @@ class Texture2D : public Resource {
   // levels = 0 means the full chain down to 1x1. Throws Error for a size outside
   // [1, kMaxTextureSize] or too many levels.
   Texture2D(Format format, int width, int height, int levels = 1);
+  Texture2D(Texture2D&&) = default;
+  // Queued draws that use this texture run before its memory goes.
+  ~Texture2D() override { before_write(); }
 
   Format format() const { return format_; }
   int width(int level = 0) const { return levels_.at(level).width; }

@@ -46,9 +46,9 @@ template <class F> struct Vec4 {
   template <class F> inline V<F> operator*(const V<F>& a, F s) { return a * V<F>(s); }          \
   template <class F> inline V<F> operator*(F s, const V<F>& a) { return V<F>(s) * a; }          \
   template <class F> inline V<F> operator/(const V<F>& a, F s) { return a / V<F>(s); }          \
-  template <class F> inline V<F> operator*(const V<F>& a, float s) { return a * V<F>(F(s)); }   \
-  template <class F> inline V<F> operator*(float s, const V<F>& a) { return V<F>(F(s)) * a; }   \
-  template <class F> inline V<F> operator/(const V<F>& a, float s) { return a / V<F>(F(s)); }   \
+  template <class F> requires(!std::is_same_v<F, float>) inline V<F> operator*(const V<F>& a, float s) { return a * V<F>(F(s)); }   \
+  template <class F> requires(!std::is_same_v<F, float>) inline V<F> operator*(float s, const V<F>& a) { return V<F>(F(s)) * a; }   \
+  template <class F> requires(!std::is_same_v<F, float>) inline V<F> operator/(const V<F>& a, float s) { return a / V<F>(F(s)); }   \
   template <class F> inline V<F> operator-(const V<F>& a) { return V<F>(F(0.0f)) - a; }         \
   template <class F> inline V<F>& operator+=(V<F>& a, const V<F>& b) { return a = a + b; }      \
   template <class F> inline V<F>& operator-=(V<F>& a, const V<F>& b) { return a = a - b; }      \

@@ -1,0 +1,770 @@
+// Textures: storage, conversion, mipmap generation, and the scalar sampling core.
+#include "tessel/gpu/texture.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <type_traits>
+
+// Sampling helpers are forced inline: a glm::vec4 returned across a call boundary goes
+// through two 8-byte registers and stalls store forwarding when reloaded whole.
+#define TESSEL_INLINE inline __attribute__((always_inline))
+#define TESSEL_INLINE_LAMBDA __attribute__((always_inline))
+
+namespace tessel::gpu {
+
+namespace {
+
+std::string size_string(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+int full_chain_levels(int w, int h) {
+  int m = std::max(w, h), n = 1;
+  while (m > 1) {
+    m >>= 1;
+    ++n;
+  }
+  return n;
+}
+
+// --- texel encoding ----------------------------------------------------------------------
+
+constexpr double kD24Max = 16777215.0;
+
+inline float unorm8_to_float(uint8_t v) { return float(v) * (1.0f / 255.0f); }
+inline float sat(float c) { return c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f; }  // NaN -> 0
+// GL's float -> unorm conversion: round to nearest of clamp(c, 0, 1) * 255.
+inline uint8_t float_to_unorm8(float c) { return uint8_t(std::lrint(sat(c) * 255.0f)); }
+inline uint32_t float_to_unorm24(float d) { return uint32_t(std::llrint(double(sat(d)) * kD24Max)); }
+inline float unorm24_to_float(uint32_t d) { return float(double(d & 0xFFFFFFu) * (1.0 / kD24Max)); }
+
+template <Format F> TESSEL_INLINE glm::vec4 decode(const std::byte* p) {
+  if constexpr (F == Format::RGBA8) {
+    uint8_t b[4];
+    std::memcpy(b, p, 4);
+    return {unorm8_to_float(b[0]), unorm8_to_float(b[1]), unorm8_to_float(b[2]), unorm8_to_float(b[3])};
+  } else if constexpr (F == Format::R8) {
+    return {unorm8_to_float(uint8_t(p[0])), 0.0f, 0.0f, 1.0f};
+  } else if constexpr (F == Format::RG8) {
+    return {unorm8_to_float(uint8_t(p[0])), unorm8_to_float(uint8_t(p[1])), 0.0f, 1.0f};
+  } else if constexpr (F == Format::RGBA16F) {
+    uint16_t h[4];
+    std::memcpy(h, p, 8);
+    return {half_to_float(h[0]), half_to_float(h[1]), half_to_float(h[2]), half_to_float(h[3])};
+  } else if constexpr (F == Format::RGBA32F) {
+    glm::vec4 v;
+    std::memcpy(&v[0], p, 16);
+    return v;
+  } else if constexpr (F == Format::Depth24) {
+    uint32_t w;
+    std::memcpy(&w, p, 4);
+    return {unorm24_to_float(w), 0.0f, 0.0f, 1.0f};
+  } else if constexpr (F == Format::Depth32F) {
+    float d;
+    std::memcpy(&d, p, 4);
+    return {d, 0.0f, 0.0f, 1.0f};
+  } else {
+    static_assert(F == Format::Depth24Stencil8);
+    uint32_t w;
+    std::memcpy(&w, p, 4);
+    return {unorm24_to_float(w), float(w >> 24), 0.0f, 1.0f};
+  }
+}
+
+// Calls fn(std::integral_constant<Format, F>{}) for the runtime format f.
+template <class Fn> decltype(auto) with_format(Format f, Fn&& fn) {
+  using F = Format;
+  switch (f) {
+    case F::RGBA8: return fn(std::integral_constant<F, F::RGBA8>{});
+    case F::R8: return fn(std::integral_constant<F, F::R8>{});
+    case F::RG8: return fn(std::integral_constant<F, F::RG8>{});
+    case F::RGBA16F: return fn(std::integral_constant<F, F::RGBA16F>{});
+    case F::RGBA32F: return fn(std::integral_constant<F, F::RGBA32F>{});
+    case F::Depth24: return fn(std::integral_constant<F, F::Depth24>{});
+    case F::Depth32F: return fn(std::integral_constant<F, F::Depth32F>{});
+    case F::Depth24Stencil8: break;
+  }
+  return fn(std::integral_constant<F, F::Depth24Stencil8>{});
+}
+
+glm::vec4 decode_any(Format f, const std::byte* p) {
+  return with_format(f, [p](auto tag) { return decode<decltype(tag)::value>(p); });
+}
+
+void encode(Format f, std::byte* p, const glm::vec4& c) {
+  switch (f) {
+    case Format::RGBA8: {
+      const uint8_t b[4] = {float_to_unorm8(c.x), float_to_unorm8(c.y), float_to_unorm8(c.z), float_to_unorm8(c.w)};
+      std::memcpy(p, b, 4);
+      return;
+    }
+    case Format::R8: p[0] = std::byte(float_to_unorm8(c.x)); return;
+    case Format::RG8:
+      p[0] = std::byte(float_to_unorm8(c.x));
+      p[1] = std::byte(float_to_unorm8(c.y));
+      return;
+    case Format::RGBA16F: {
+      const uint16_t h[4] = {float_to_half(c.x), float_to_half(c.y), float_to_half(c.z), float_to_half(c.w)};
+      std::memcpy(p, h, 8);
+      return;
+    }
+    case Format::RGBA32F: std::memcpy(p, &c[0], 16); return;
+    case Format::Depth24: {
+      const uint32_t w = float_to_unorm24(c.x);
+      std::memcpy(p, &w, 4);
+      return;
+    }
+    case Format::Depth32F: {
+      const float d = sat(c.x);  // depth values are clamped to [0, 1]
+      std::memcpy(p, &d, 4);
+      return;
+    }
+    case Format::Depth24Stencil8: {
+      const float s = c.y > 0.0f ? (c.y < 255.0f ? c.y : 255.0f) : 0.0f;
+      const uint32_t w = float_to_unorm24(c.x) | (uint32_t(std::lrint(s)) << 24);
+      std::memcpy(p, &w, 4);
+      return;
+    }
+  }
+}
+
+bool is_unorm8(Format f) { return f == Format::RGBA8 || f == Format::R8 || f == Format::RG8; }
+
+// --- mipmap generation -------------------------------------------------------------------
+
+// The source texels (up to three) and weights that make one destination texel along an axis.
+// Even sizes: two texels, 1/2 each. Odd sizes 2n+1 -> n: texel x covers the source span
+// [x (2n+1)/n, (x+1)(2n+1)/n), i.e. texels 2x, 2x+1, 2x+2 with weights (n-x), n, (x+1) over
+// 2n+1, so every source texel contributes its full share. Size 1 stays 1.
+struct Taps {
+  int index[3];
+  float weight[3];
+  int count;
+};
+
+std::vector<Taps> axis_taps(int src, int dst) {
+  std::vector<Taps> taps(static_cast<size_t>(dst));
+  for (int x = 0; x < dst; ++x) {
+    Taps& t = taps[size_t(x)];
+    if (src == 1) {
+      t = {{0, 0, 0}, {1.0f, 0.0f, 0.0f}, 1};
+    } else if (src % 2 == 0) {
+      t = {{2 * x, 2 * x + 1, 0}, {0.5f, 0.5f, 0.0f}, 2};
+    } else {
+      const int n = dst;
+      const float inv = 1.0f / float(src);
+      t = {{2 * x, 2 * x + 1, 2 * x + 2}, {float(n - x) * inv, float(n) * inv, float(x + 1) * inv}, 3};
+    }
+  }
+  return taps;
+}
+
+void downsample(Format f, const Level& src, Level& dst) {
+  const std::vector<Taps> tx = axis_taps(src.width, dst.width);
+  const std::vector<Taps> ty = axis_taps(src.height, dst.height);
+  const size_t bpp = format_info(f).bytes;
+  if (is_unorm8(f)) {
+    // Average the stored bytes directly (exact for the 2x2 case), round half up.
+    const int ch = int(bpp);
+    const uint8_t* s = reinterpret_cast<const uint8_t*>(src.data.data());
+    uint8_t* d = reinterpret_cast<uint8_t*>(dst.data.data());
+    for (int y = 0; y < dst.height; ++y) {
+      const Taps& yt = ty[size_t(y)];
+      for (int x = 0; x < dst.width; ++x) {
+        const Taps& xt = tx[size_t(x)];
+        float acc[4] = {0, 0, 0, 0};
+        for (int j = 0; j < yt.count; ++j) {
+          const uint8_t* row = s + size_t(yt.index[j]) * size_t(src.width) * bpp;
+          for (int i = 0; i < xt.count; ++i) {
+            const float w = yt.weight[j] * xt.weight[i];
+            const uint8_t* px = row + size_t(xt.index[i]) * bpp;
+            for (int c = 0; c < ch; ++c) acc[c] += w * float(px[c]);
+          }
+        }
+        uint8_t* out = d + (size_t(y) * size_t(dst.width) + size_t(x)) * bpp;
+        for (int c = 0; c < ch; ++c) out[c] = uint8_t(std::min(255.0f, std::floor(acc[c] + 0.5f)));
+      }
+    }
+    return;
+  }
+  for (int y = 0; y < dst.height; ++y) {
+    const Taps& yt = ty[size_t(y)];
+    for (int x = 0; x < dst.width; ++x) {
+      const Taps& xt = tx[size_t(x)];
+      glm::vec4 acc(0.0f);
+      for (int j = 0; j < yt.count; ++j)
+        for (int i = 0; i < xt.count; ++i) {
+          const std::byte* px =
+              src.data.data() + (size_t(yt.index[j]) * size_t(src.width) + size_t(xt.index[i])) * bpp;
+          acc += (yt.weight[j] * xt.weight[i]) * decode_any(f, px);
+        }
+      encode(f, dst.data.data() + (size_t(y) * size_t(dst.width) + size_t(x)) * bpp, acc);
+    }
+  }
+}
+
+}  // namespace
+
+// --- Level / Texture2D -------------------------------------------------------------------
+
+size_t Level::row_bytes() const { return height > 0 ? data.size() / size_t(height) : 0; }
+
+Texture2D::Texture2D(Format format, int width, int height, int levels) : format_(format) {
+  const FormatInfo info = format_info(format);
+  if (info.bytes == 0) throw Error("Texture2D: unknown format " + std::to_string(int(format)));
+  if (width < 1 || width > kMaxTextureSize || height < 1 || height > kMaxTextureSize)
+    throw Error("Texture2D: size " + size_string(width, height) + " is outside 1.." +
+                std::to_string(kMaxTextureSize) + " (" + info.name + ")");
+  const int full = full_chain_levels(width, height);
+  if (levels < 0 || levels > full)
+    throw Error("Texture2D: " + std::to_string(levels) + " mip levels requested for a " +
+                size_string(width, height) + " texture, which has at most " + std::to_string(full));
+  if (levels == 0) levels = full;
+  levels_.resize(size_t(levels));
+  for (int i = 0; i < levels; ++i) {
+    Level& l = levels_[size_t(i)];
+    l.width = std::max(1, width >> i);
+    l.height = std::max(1, height >> i);
+    l.data.assign(size_t(l.width) * size_t(l.height) * info.bytes, std::byte{0});
+  }
+}
+
+Level& Texture2D::level_for_write(int i) {
+  before_write();
+  if (i < 0 || i >= levels())
+    throw Error("Texture2D::level_for_write: level " + std::to_string(i) + " out of range (texture has " +
+                std::to_string(levels()) + " levels)");
+  return levels_[size_t(i)];
+}
+
+void Texture2D::upload(int level, const void* data, size_t bytes) {
+  before_write();
+  if (level < 0 || level >= levels())
+    throw Error("Texture2D::upload: level " + std::to_string(level) + " out of range (texture has " +
+                std::to_string(levels()) + " levels)");
+  Level& l = levels_[size_t(level)];
+  if (bytes != l.data.size())
+    throw Error("Texture2D::upload: level " + std::to_string(level) + " of a " + size_string(l.width, l.height) +
+                " " + format_info(format_).name + " texture needs " + std::to_string(l.data.size()) +
+                " bytes, got " + std::to_string(bytes));
+  if (data == nullptr) throw Error("Texture2D::upload: null data");
+  std::memcpy(l.data.data(), data, bytes);
+}
+
+void Texture2D::upload_rgba8(int level, const uint8_t* rgba, size_t bytes) {
+  before_write();
+  if (level < 0 || level >= levels())
+    throw Error("Texture2D::upload_rgba8: level " + std::to_string(level) + " out of range (texture has " +
+                std::to_string(levels()) + " levels)");
+  Level& l = levels_[size_t(level)];
+  const size_t n = size_t(l.width) * size_t(l.height);
+  if (bytes != n * 4)
+    throw Error("Texture2D::upload_rgba8: level " + std::to_string(level) + " of a " +
+                size_string(l.width, l.height) + " texture needs " + std::to_string(n * 4) + " bytes, got " +
+                std::to_string(bytes));
+  if (rgba == nullptr) throw Error("Texture2D::upload_rgba8: null data");
+  if (format_ == Format::RGBA8) {
+    std::memcpy(l.data.data(), rgba, bytes);
+    return;
+  }
+  const size_t bpp = format_info(format_).bytes;
+  for (size_t i = 0; i < n; ++i) {
+    const uint8_t* s = rgba + i * 4;
+    glm::vec4 c(unorm8_to_float(s[0]), unorm8_to_float(s[1]), unorm8_to_float(s[2]), unorm8_to_float(s[3]));
+    if (format_ == Format::Depth24Stencil8) c.y = float(s[1]);  // stencil from green, as an integer
+    encode(format_, l.data.data() + i * bpp, c);
+  }
+}
+
+void Texture2D::upload_rgba32f(int level, const float* rgba, size_t bytes) {
+  before_write();
+  if (level < 0 || level >= levels())
+    throw Error("Texture2D::upload_rgba32f: level " + std::to_string(level) + " out of range (texture has " +
+                std::to_string(levels()) + " levels)");
+  Level& l = levels_[size_t(level)];
+  const size_t n = size_t(l.width) * size_t(l.height);
+  if (bytes != n * 16)
+    throw Error("Texture2D::upload_rgba32f: level " + std::to_string(level) + " of a " +
+                size_string(l.width, l.height) + " texture needs " + std::to_string(n * 16) + " bytes, got " +
+                std::to_string(bytes));
+  if (rgba == nullptr) throw Error("Texture2D::upload_rgba32f: null data");
+  if (format_ == Format::RGBA32F) {
+    std::memcpy(l.data.data(), rgba, bytes);
+    return;
+  }
+  const size_t bpp = format_info(format_).bytes;
+  for (size_t i = 0; i < n; ++i) {
+    const float* s = rgba + i * 4;
+    encode(format_, l.data.data() + i * bpp, glm::vec4(s[0], s[1], s[2], s[3]));
+  }
+}
+
+void Texture2D::generate_mipmaps() {
+  before_write();
+  for (size_t i = 1; i < levels_.size(); ++i) downsample(format_, levels_[i - 1], levels_[i]);
+}
+
+void Texture2D::allocate_full_chain() {
+  before_write();
+  const int w = levels_[0].width, h = levels_[0].height;
+  const int full = full_chain_levels(w, h);
+  const size_t bpp = format_info(format_).bytes;
+  for (int i = levels(); i < full; ++i) {
+    Level l;
+    l.width = std::max(1, w >> i);
+    l.height = std::max(1, h >> i);
+    l.data.assign(size_t(l.width) * size_t(l.height) * bpp, std::byte{0});
+    levels_.push_back(std::move(l));
+  }
+  generate_mipmaps();
+}
+
+glm::vec4 Texture2D::fetch(int level, int x, int y) const {
+  if (level < 0 || level >= levels())
+    throw Error("Texture2D::fetch: level " + std::to_string(level) + " out of range (texture has " +
+                std::to_string(levels()) + " levels)");
+  const Level& l = levels_[size_t(level)];
+  if (x < 0 || y < 0 || x >= l.width || y >= l.height)
+    throw Error("Texture2D::fetch: texel (" + std::to_string(x) + ", " + std::to_string(y) +
+                ") outside level " + std::to_string(level) + " of size " + size_string(l.width, l.height));
+  const size_t bpp = format_info(format_).bytes;
+  return decode_any(format_, l.data.data() + (size_t(y) * size_t(l.width) + size_t(x)) * bpp);
+}
+
+void Texture2D::store(int level, int x, int y, const glm::vec4& value) {
+  before_write();
+  if (level < 0 || level >= levels())
+    throw Error("Texture2D::store: level " + std::to_string(level) + " out of range (texture has " +
+                std::to_string(levels()) + " levels)");
+  Level& l = levels_[size_t(level)];
+  if (x < 0 || y < 0 || x >= l.width || y >= l.height)
+    throw Error("Texture2D::store: texel (" + std::to_string(x) + ", " + std::to_string(y) +
+                ") outside level " + std::to_string(level) + " of size " + size_string(l.width, l.height));
+  const size_t bpp = format_info(format_).bytes;
+  encode(format_, l.data.data() + (size_t(y) * size_t(l.width) + size_t(x)) * bpp, value);
+}
+
+// --- TextureCube -------------------------------------------------------------------------
+
+TextureCube::TextureCube(Format format, int size, int levels) {
+  if (size < 1 || size > kMaxTextureSize)
+    throw Error("TextureCube: face size " + std::to_string(size) + " is outside 1.." +
+                std::to_string(kMaxTextureSize));
+  for (auto& f : faces_) f = std::make_unique<Texture2D>(format, size, size, levels);
+}
+
+void TextureCube::generate_mipmaps() {
+  before_write();
+  for (auto& f : faces_) f->generate_mipmaps();
+}
+
+// --- sampling ----------------------------------------------------------------------------
+
+namespace {
+
+constexpr float kNoCoord = 1.0e30f;
+
+// NaN -> 0 and infinities to a large finite value, so index arithmetic stays defined.
+TESSEL_INLINE float sane(float s) {
+  if (!(s == s)) return 0.0f;
+  return s < -kNoCoord ? -kNoCoord : (s > kNoCoord ? kNoCoord : s);
+}
+
+TESSEL_INLINE int floor_to_int(float x) {
+  constexpr float lim = 1073741824.0f;  // 2^30: keeps i + 1 and the wrap arithmetic in range
+  if (!(x == x)) return 0;
+  if (x <= -lim) return -int(lim);
+  if (x >= lim) return int(lim);
+  return int(std::floor(x));
+}
+
+// GL 4.6 Table 8.20 applied to an integer texel coordinate; -1 means "border texel".
+TESSEL_INLINE int wrap_texel(int i, int size, Wrap mode) {
+  if (unsigned(i) < unsigned(size)) return i;  // inside: every mode leaves it alone
+  switch (mode) {
+    case Wrap::Repeat: {
+      int r = i % size;
+      return r < 0 ? r + size : r;
+    }
+    case Wrap::ClampToEdge: return i < 0 ? 0 : (i >= size ? size - 1 : i);
+    case Wrap::ClampToBorder: return (i < 0 || i >= size) ? -1 : i;
+    case Wrap::MirroredRepeat: {
+      const int m2 = 2 * size;
+      int r = i % m2;
+      if (r < 0) r += m2;
+      const int a = r - size;                   // fmod(coord, 2 size) - size
+      const int mirrored = a >= 0 ? a : -(1 + a);  // mirror(a)
+      return (size - 1) - mirrored;
+    }
+  }
+  return 0;
+}
+
+inline bool is_linear(Filter f) {
+  return f == Filter::Linear || f == Filter::LinearMipmapNearest || f == Filter::LinearMipmapLinear;
+}
+
+struct LevelRef {
+  const std::byte* data;
+  int w, h;
+};
+
+inline LevelRef level_ref(const Texture2D& t, int i) {
+  const Level& l = t.level(i);
+  return {l.data.data(), l.width, l.height};
+}
+
+// The border colour as a texel of the format: unsigned normalized formats clamp it to [0, 1],
+// missing channels read as 0 (alpha 1), depth formats read (d, 0, 0, 1).
+glm::vec4 border_for(Format f, const glm::vec4& b) {
+  switch (f) {
+    case Format::RGBA8: return glm::vec4(sat(b.x), sat(b.y), sat(b.z), sat(b.w));
+    case Format::R8: return glm::vec4(sat(b.x), 0.0f, 0.0f, 1.0f);
+    case Format::RG8: return glm::vec4(sat(b.x), sat(b.y), 0.0f, 1.0f);
+    case Format::RGBA16F:
+    case Format::RGBA32F: return b;
+    case Format::Depth24:
+    case Format::Depth24Stencil8: return glm::vec4(sat(b.x), 0.0f, 0.0f, 1.0f);
+    case Format::Depth32F: return glm::vec4(b.x, 0.0f, 0.0f, 1.0f);
+  }
+  return b;
+}
+
+struct Identity {
+  glm::vec4 operator()(const glm::vec4& v) const { return v; }
+};
+
+inline bool compare_passes(CompareFunc f, float ref, float d) {
+  switch (f) {
+    case CompareFunc::Never: return false;
+    case CompareFunc::Less: return ref < d;
+    case CompareFunc::Equal: return ref == d;
+    case CompareFunc::LessEqual: return ref <= d;
+    case CompareFunc::Greater: return ref > d;
+    case CompareFunc::NotEqual: return ref != d;
+    case CompareFunc::GreaterEqual: return ref >= d;
+    case CompareFunc::Always: return true;
+  }
+  return false;
+}
+
+// Depth comparison applied to a texel: 1 if `ref <func> depth` passes, else 0 (in .x).
+struct Compare {
+  CompareFunc func;
+  float ref;
+  bool clamp_depth;
+  glm::vec4 operator()(const glm::vec4& v) const {
+    const float d = clamp_depth ? sat(v.x) : v.x;
+    return glm::vec4(compare_passes(func, ref, d) ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+  }
+};
+
+TESSEL_INLINE glm::vec4 lerp(const glm::vec4& a, const glm::vec4& b, float t) { return a + (b - a) * t; }
+
+// Filters one level at (s, t) in [0,1] texture space (GL 4.6 §8.14.2, equations 8.9-8.11).
+// `border` is already passed through `xf`.
+template <Format F, class Xf>
+TESSEL_INLINE glm::vec4 sample_level(const LevelRef& L, Wrap ws, Wrap wt, float s, float t, bool linear, const glm::vec4& border,
+                       const Xf& xf) {
+  constexpr size_t bpp = format_info(F).bytes;
+  const float u = sane(s) * float(L.w);
+  const float v = sane(t) * float(L.h);
+  auto texel = [&](int i, int j) TESSEL_INLINE_LAMBDA -> glm::vec4 {
+    if (i < 0 || j < 0) return border;
+    return xf(decode<F>(L.data + (size_t(j) * size_t(L.w) + size_t(i)) * bpp));
+  };
+  if (!linear) return texel(wrap_texel(floor_to_int(u), L.w, ws), wrap_texel(floor_to_int(v), L.h, wt));
+  const float uu = u - 0.5f, vv = v - 0.5f;
+  const float fu = std::floor(uu), fv = std::floor(vv);
+  const float a = uu - fu, b = vv - fv;  // in [0, 1)
+  const int i0 = floor_to_int(fu), j0 = floor_to_int(fv);
+  const int x0 = wrap_texel(i0, L.w, ws), x1 = wrap_texel(i0 + 1, L.w, ws);
+  const int y0 = wrap_texel(j0, L.h, wt), y1 = wrap_texel(j0 + 1, L.h, wt);
+  const glm::vec4 bottom = lerp(texel(x0, y0), texel(x1, y0), a);
+  const glm::vec4 top = lerp(texel(x0, y1), texel(x1, y1), a);
+  return lerp(bottom, top, b);
+}
+
+// Which levels to read and how: the mag/min decision and mipmap selection of GL 4.6
+// §8.14 - §8.14.3 for one LOD.
+struct Plan {
+  int level0 = 0;
+  int level1 = -1;  // second level for *_MIPMAP_LINEAR, -1 if none
+  float blend = 0.0f;
+  bool linear = false;
+};
+
+Plan make_plan(const SamplerState& st, int levels, float lod) {
+  float l = lod + st.lod_bias;
+  if (!(l == l)) l = 0.0f;
+  l = std::max(l, st.min_lod);
+  l = std::min(l, st.max_lod);
+  Plan p;
+  // Magnification when lambda <= 0 (c = 0, as GL 4.6 and llvmpipe have it).
+  if (l <= 0.0f) {
+    p.linear = is_linear(st.mag_filter);
+    return p;
+  }
+  p.linear = is_linear(st.min_filter);
+  const int q = levels - 1;  // the last level the texture has (its effective MAX_LEVEL)
+  switch (st.min_filter) {
+    case Filter::Nearest:
+    case Filter::Linear: return p;
+    case Filter::NearestMipmapNearest:
+    case Filter::LinearMipmapNearest: {
+      if (l > 0.5f) p.level0 = int(std::min(std::ceil(l + 0.5f) - 1.0f, float(q)));
+      return p;
+    }
+    case Filter::NearestMipmapLinear:
+    case Filter::LinearMipmapLinear: {
+      if (l >= float(q)) {
+        p.level0 = q;
+        return p;
+      }
+      const float d1 = std::floor(l);
+      p.level0 = int(d1);
+      p.level1 = p.level0 + 1;
+      p.blend = l - d1;
+      return p;
+    }
+  }
+  return p;
+}
+
+template <Format F, class Xf>
+TESSEL_INLINE glm::vec4 run_plan(const Texture2D& tex, const Plan& p, const SamplerState& st, float s, float t,
+                   const glm::vec4& border, const Xf& xf) {
+  const glm::vec4 c0 = sample_level<F>(level_ref(tex, p.level0), st.wrap_s, st.wrap_t, s, t, p.linear, border, xf);
+  if (p.level1 < 0 || p.blend == 0.0f) return c0;
+  const glm::vec4 c1 = sample_level<F>(level_ref(tex, p.level1), st.wrap_s, st.wrap_t, s, t, p.linear, border, xf);
+  return lerp(c0, c1, p.blend);
+}
+
+inline bool fixed_point_depth(Format f) { return f != Format::Depth32F && f != Format::RGBA16F && f != Format::RGBA32F; }
+
+Compare make_compare(const Sampler2DShadow& s, float ref) {
+  const bool fixed = fixed_point_depth(s.texture->format());
+  if (fixed && ref == ref) ref = sat(ref);
+  return Compare{s.state.compare_func, ref, fixed};
+}
+
+// Cube map face selection, GL 4.6 §8.13 Table 8.19.
+struct FaceAxes {
+  int face;
+  float sc, tc, ma;
+};
+
+inline int select_face(float x, float y, float z) {
+  const float ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
+  if (ax >= ay && ax >= az) return x >= 0.0f ? 0 : 1;
+  if (ay >= az) return y >= 0.0f ? 2 : 3;
+  return z >= 0.0f ? 4 : 5;
+}
+
+inline FaceAxes face_axes(int face, float x, float y, float z) {
+  switch (face) {
+    case 0: return {0, -z, -y, std::fabs(x)};
+    case 1: return {1, z, -y, std::fabs(x)};
+    case 2: return {2, x, z, std::fabs(y)};
+    case 3: return {3, x, -z, std::fabs(y)};
+    case 4: return {4, x, -y, std::fabs(z)};
+    default: return {5, -x, -y, std::fabs(z)};
+  }
+}
+
+inline void face_st(int face, float x, float y, float z, float& s, float& t) {
+  const FaceAxes a = face_axes(face, x, y, z);
+  s = (a.sc / a.ma + 1.0f) * 0.5f;
+  t = (a.tc / a.ma + 1.0f) * 0.5f;
+}
+
+SamplerState cube_face_state(const SamplerState& st) {
+  SamplerState f = st;
+  f.wrap_s = f.wrap_t = f.wrap_r = Wrap::ClampToEdge;
+  return f;
+}
+
+const glm::vec4 kMissing(0.0f, 0.0f, 0.0f, 1.0f);
+
+// LOD of a 2x2 quad from lanes 4q (origin), 4q+1 (x neighbour), 4q+2 (y neighbour).
+inline float quad_lod(const Float8& u, const Float8& v, int q, int w, int h) {
+  const int o = q * 4;
+  return detail::lod_from_derivatives(u[o + 1] - u[o], v[o + 1] - v[o], u[o + 2] - u[o], v[o + 2] - v[o], w, h);
+}
+
+}  // namespace
+
+namespace detail {
+
+glm::vec4 sample_2d(const Sampler2D& s, float u, float v, float lod) {
+  if (s.texture == nullptr) return kMissing;
+  const Texture2D& tex = *s.texture;
+  const Plan p = make_plan(s.state, tex.levels(), lod);
+  const glm::vec4 border = border_for(tex.format(), s.state.border_color);
+  return with_format(tex.format(), [&](auto tag) {
+    return run_plan<decltype(tag)::value>(tex, p, s.state, u, v, border, Identity{});
+  });
+}
+
+glm::vec4 sample_cube(const SamplerCube& s, float x, float y, float z, float lod) {
+  if (s.texture == nullptr) return kMissing;
+  const int face = select_face(x, y, z);
+  float fs, ft;
+  face_st(face, x, y, z, fs, ft);
+  const Sampler2D face_sampler{&s.texture->face(face), cube_face_state(s.state)};
+  return sample_2d(face_sampler, fs, ft, lod);
+}
+
+float sample_2d_compare(const Sampler2DShadow& s, float u, float v, float ref, float lod) {
+  if (s.texture == nullptr) return 0.0f;
+  const Texture2D& tex = *s.texture;
+  const Plan p = make_plan(s.state, tex.levels(), lod);
+  const glm::vec4 border = border_for(tex.format(), s.state.border_color);
+  if (!s.state.compare) {
+    return with_format(tex.format(), [&](auto tag) {
+      return run_plan<decltype(tag)::value>(tex, p, s.state, u, v, border, Identity{}).x;
+    });
+  }
+  const Compare cmp = make_compare(s, ref);
+  const glm::vec4 cborder = cmp(border);
+  return with_format(tex.format(), [&](auto tag) {
+    return run_plan<decltype(tag)::value>(tex, p, s.state, u, v, cborder, cmp).x;
+  });
+}
+
+float lod_from_derivatives(float dudx, float dvdx, float dudy, float dvdy, int width, int height) {
+  const float w = float(width), h = float(height);
+  const float ux = dudx * w, vx = dvdx * h, uy = dudy * w, vy = dvdy * h;
+  const float px = std::sqrt(ux * ux + vx * vx);
+  const float py = std::sqrt(uy * uy + vy * vy);
+  const float rho = std::max(px, py);
+  if (rho == 0.0f) return -1000.0f;
+  return std::log2(rho);
+}
+
+glm::vec4 texel_fetch(const Texture2D* t, int x, int y, int level) {
+  if (t == nullptr) return kMissing;
+  if (level < 0 || level >= t->levels()) return glm::vec4(0.0f);
+  const Level& l = t->level(level);
+  if (x < 0 || y < 0 || x >= l.width || y >= l.height) return glm::vec4(0.0f);
+  const size_t bpp = format_info(t->format()).bytes;
+  return decode_any(t->format(), l.data.data() + (size_t(y) * size_t(l.width) + size_t(x)) * bpp);
+}
+
+}  // namespace detail
+
+// --- the GLSL functions ------------------------------------------------------------------
+
+namespace {
+
+inline Vec4<float> to_vec(const glm::vec4& c) { return {c.x, c.y, c.z, c.w}; }
+TESSEL_INLINE void put(Vec4<Float8>& r, int i, const glm::vec4& c) {
+  r.x[i] = c.x;
+  r.y[i] = c.y;
+  r.z[i] = c.z;
+  r.w[i] = c.w;
+}
+inline Vec4<Float8> missing8() { return {Float8(0.0f), Float8(0.0f), Float8(0.0f), Float8(1.0f)}; }
+
+}  // namespace
+
+Vec4<float> texture(const Sampler2D& s, const Vec2<float>& uv) { return to_vec(detail::sample_2d(s, uv.x, uv.y, 0.0f)); }
+
+Vec4<Float8> texture(const Sampler2D& s, const Vec2<Float8>& uv) {
+  if (s.texture == nullptr) return missing8();
+  const Texture2D& tex = *s.texture;
+  const glm::vec4 border = border_for(tex.format(), s.state.border_color);
+  Vec4<Float8> r;
+  with_format(tex.format(), [&](auto tag) {
+    constexpr Format F = decltype(tag)::value;
+    for (int q = 0; q < kLanes / 4; ++q) {
+      const Plan p = make_plan(s.state, tex.levels(), quad_lod(uv.x, uv.y, q, tex.width(), tex.height()));
+      for (int i = q * 4; i < q * 4 + 4; ++i)
+        put(r, i, run_plan<F>(tex, p, s.state, uv.x[i], uv.y[i], border, Identity{}));
+    }
+    return 0;
+  });
+  return r;
+}
+
+Vec4<float> textureLod(const Sampler2D& s, const Vec2<float>& uv, float lod) {
+  return to_vec(detail::sample_2d(s, uv.x, uv.y, lod));
+}
+
+Vec4<Float8> textureLod(const Sampler2D& s, const Vec2<Float8>& uv, Float8 lod) {
+  if (s.texture == nullptr) return missing8();
+  Vec4<Float8> r;
+  for (int i = 0; i < kLanes; ++i) put(r, i, detail::sample_2d(s, uv.x[i], uv.y[i], lod[i]));
+  return r;
+}
+
+Vec4<float> textureGrad(const Sampler2D& s, const Vec2<float>& uv, const Vec2<float>& dx, const Vec2<float>& dy) {
+  if (s.texture == nullptr) return to_vec(kMissing);
+  const float lod = detail::lod_from_derivatives(dx.x, dx.y, dy.x, dy.y, s.texture->width(), s.texture->height());
+  return to_vec(detail::sample_2d(s, uv.x, uv.y, lod));
+}
+
+Vec4<Float8> textureGrad(const Sampler2D& s, const Vec2<Float8>& uv, const Vec2<Float8>& dx, const Vec2<Float8>& dy) {
+  if (s.texture == nullptr) return missing8();
+  const int w = s.texture->width(), h = s.texture->height();
+  Vec4<Float8> r;
+  for (int i = 0; i < kLanes; ++i) {
+    const float lod = detail::lod_from_derivatives(dx.x[i], dx.y[i], dy.x[i], dy.y[i], w, h);
+    put(r, i, detail::sample_2d(s, uv.x[i], uv.y[i], lod));
+  }
+  return r;
+}
+
+Vec4<float> texture(const SamplerCube& s, const Vec3<float>& dir) {
+  return to_vec(detail::sample_cube(s, dir.x, dir.y, dir.z, 0.0f));
+}
+
+Vec4<Float8> texture(const SamplerCube& s, const Vec3<Float8>& dir) {
+  if (s.texture == nullptr) return missing8();
+  const int size = s.texture->size();
+  Vec4<Float8> r;
+  for (int q = 0; q < kLanes / 4; ++q) {
+    const int o = q * 4;
+    // Derivatives of the face coordinates, all three lanes projected on the origin's face.
+    const int face = select_face(dir.x[o], dir.y[o], dir.z[o]);
+    float s0, t0, s1, t1, s2, t2;
+    face_st(face, dir.x[o], dir.y[o], dir.z[o], s0, t0);
+    face_st(face, dir.x[o + 1], dir.y[o + 1], dir.z[o + 1], s1, t1);
+    face_st(face, dir.x[o + 2], dir.y[o + 2], dir.z[o + 2], s2, t2);
+    const float lod = detail::lod_from_derivatives(s1 - s0, t1 - t0, s2 - s0, t2 - t0, size, size);
+    for (int i = o; i < o + 4; ++i) put(r, i, detail::sample_cube(s, dir.x[i], dir.y[i], dir.z[i], lod));
+  }
+  return r;
+}
+
+float texture(const Sampler2DShadow& s, const Vec3<float>& uvr) {
+  return detail::sample_2d_compare(s, uvr.x, uvr.y, uvr.z, 0.0f);
+}
+
+Float8 texture(const Sampler2DShadow& s, const Vec3<Float8>& uvr) {
+  if (s.texture == nullptr) return Float8(0.0f);
+  const Texture2D& tex = *s.texture;
+  Float8 r;
+  for (int q = 0; q < kLanes / 4; ++q) {
+    const float lod = quad_lod(uvr.x, uvr.y, q, tex.width(), tex.height());
+    for (int i = q * 4; i < q * 4 + 4; ++i) r[i] = detail::sample_2d_compare(s, uvr.x[i], uvr.y[i], uvr.z[i], lod);
+  }
+  return r;
+}
+
+Vec4<float> texelFetch(const Sampler2D& s, int x, int y, int level) {
+  return to_vec(detail::texel_fetch(s.texture, x, y, level));
+}
+
+Vec4<Float8> texelFetch(const Sampler2D& s, Int8 x, Int8 y, int level) {
+  Vec4<Float8> r;
+  for (int i = 0; i < kLanes; ++i) put(r, i, detail::texel_fetch(s.texture, x[i], y[i], level));
+  return r;
+}
+
+glm::ivec2 textureSize(const Sampler2D& s, int level) {
+  if (s.texture == nullptr || level < 0 || level >= s.texture->levels()) return glm::ivec2(0);
+  return glm::ivec2(s.texture->width(level), s.texture->height(level));
+}
+
+}  // namespace tessel::gpu

@@ -1,0 +1,75 @@
+// Lane types and GLSL math: the one-lane and eight-lane paths agree, and the functions are
+// accurate.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "tessel/gpu/vec.hpp"
+
+using namespace tessel::gpu;
+
+TEST(Lanes, MasksAndSelect) {
+  const Mask8 m = Mask8::from_bits(0b10100101);
+  EXPECT_EQ(m.bits(), 0b10100101u);
+  const Float8 a(1.0f), b(2.0f);
+  const Float8 s = select(m, a, b);
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(s[i], (0b10100101 >> i) & 1 ? 1.0f : 2.0f);
+  EXPECT_TRUE(any(m));
+  EXPECT_FALSE(all(m));
+  EXPECT_TRUE(none(Mask8(false)));
+}
+
+TEST(Lanes, TranscendentalsAreAccurateAndAgreeAcrossWidths) {
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<float> u(-20.0f, 20.0f), pos(1e-6f, 100.0f);
+  for (int i = 0; i < 2000; ++i) {
+    float x[8], y[8];
+    for (int k = 0; k < 8; ++k) { x[k] = u(rng); y[k] = pos(rng); }
+    const Float8 X = Float8::load(x), Y = Float8::load(y);
+    const Float8 e = exp2(X), l = log2(Y), p = pow(Y, Float8(2.5f)), s = sin(X), c = cos(X);
+    for (int k = 0; k < 8; ++k) {
+      EXPECT_NEAR(e[k], std::exp2(x[k]), 3e-7f * std::exp2(x[k]));
+      EXPECT_NEAR(l[k], std::log2(y[k]), 2e-6f);
+      EXPECT_NEAR(p[k], std::pow(y[k], 2.5f), 3e-6f * std::pow(y[k], 2.5f));
+      EXPECT_NEAR(s[k], std::sin(x[k]), 2e-6f);
+      EXPECT_NEAR(c[k], std::cos(x[k]), 2e-6f);
+      // The one-lane path is the same computation.
+      EXPECT_EQ(e[k], exp2(x[k]));
+      EXPECT_EQ(l[k], log2(y[k]));
+      EXPECT_EQ(s[k], tessel::gpu::sin(x[k]));
+    }
+  }
+  EXPECT_EQ(pow(0.0f, 0.0f), 1.0f);
+  EXPECT_EQ(pow(0.0f, 3.0f), 0.0f);
+  EXPECT_TRUE(std::isinf(log2(0.0f)));
+}
+
+TEST(Lanes, GeometricFunctions) {
+  const Vec3<float> a(1, 2, 3), b(4, 5, 6);
+  EXPECT_EQ(dot(a, b), 32.0f);
+  const Vec3<float> c = cross(a, b);
+  EXPECT_EQ(c.x, -3.0f);
+  EXPECT_EQ(c.y, 6.0f);
+  EXPECT_EQ(c.z, -3.0f);
+  EXPECT_NEAR(length(normalize(a)), 1.0f, 1e-6f);
+  const Vec3<float> r = reflect(Vec3<float>(1, -1, 0), Vec3<float>(0, 1, 0));
+  EXPECT_EQ(r.y, 1.0f);
+  const Vec3<float> t = refract(Vec3<float>(0.8f, -0.6f, 0), Vec3<float>(0, 1, 0), 1.5f);  // total internal reflection
+  EXPECT_EQ(t.x, 0.0f);
+  EXPECT_EQ(floor(-1.5f), -2.0f);
+  EXPECT_EQ(fract(-1.25f), 0.75f);
+  EXPECT_EQ(smoothstep(0.0f, 1.0f, 0.5f), 0.5f);
+  EXPECT_EQ(clamp(Float8(3.0f), Float8(0.0f), Float8(1.0f))[0], 1.0f);
+}
+
+TEST(Lanes, DerivativesAreQuadDifferences) {
+  // Lane i is pixel (2*(i/4) + (i&1), (i>>1)&1) of a 4x2 block; v = 3x + 5y.
+  Float8 v;
+  for (int i = 0; i < 8; ++i) v[i] = 3.0f * float(2 * (i / 4) + (i & 1)) + 5.0f * float((i >> 1) & 1);
+  const Float8 dx = dFdx(v), dy = dFdy(v);
+  for (int i = 0; i < 8; ++i) {
+    EXPECT_EQ(dx[i], 3.0f);
+    EXPECT_EQ(dy[i], 5.0f);
+  }
+}
