@@ -284,3 +284,34 @@ TEST(Draw, SameImageForAnyThreadCount) {
   EXPECT_EQ(render(W, H, v, {.count = uint32_t(v.size())}, st, 3), one);
   EXPECT_EQ(render(W, H, v, {.count = uint32_t(v.size())}, st, 8), one);
 }
+
+TEST(Draw, MipmapLevelFromQuadDerivatives) {
+  // A 64x64 texture whose levels are solid, distinct colours, drawn on a 16x16 target so
+  // that one pixel steps 4 texels (LOD 2) and, scaled 2x, 8 texels (LOD 3).
+  Texture2D tex(Format::RGBA8, 64, 64, 0);
+  const glm::vec4 level_colors[] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}, {1, 1, 0, 1}, {0, 1, 1, 1}, {1, 0, 1, 1}, {1, 1, 1, 1}};
+  for (int l = 0; l < tex.levels(); ++l)
+    for (int y = 0; y < tex.height(l); ++y)
+      for (int x = 0; x < tex.width(l); ++x) tex.store(l, x, y, level_colors[l]);
+  for (float repeat : {1.0f, 2.0f}) {
+    const int W = 16, H = 16;
+    Target t(W, H);
+    Context ctx(2);
+    ctx.bind_framebuffer(&t.fb);
+    ctx.clear({.color = {0, 0, 0, 0}});
+    auto v = [&](float x, float y) {
+      TestVertex r = wv(x, y, 0, W, H);
+      r.uv[0] = x / W * repeat;
+      r.uv[1] = y / H * repeat;
+      return r;
+    };
+    Mesh m({v(0, 0), v(16, 0), v(16, 16), v(0, 0), v(16, 16), v(0, 16)});
+    TexturedShader::Uniforms u;
+    u.tex = {&tex, {.min_filter = Filter::NearestMipmapNearest, .mag_filter = Filter::Nearest}};
+    ctx.draw(TexturedShader{}, u, m.layout, RenderState{}, {.count = 6});
+    ctx.finish();
+    const glm::vec4 want = level_colors[repeat == 1.0f ? 2 : 3];
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) ASSERT_EQ(t.color.fetch(0, x, y), want) << x << "," << y << " repeat " << repeat;
+  }
+}
