@@ -14,6 +14,7 @@
 // Sort-middle, as in RASTER_NOTES §1; llvmpipe threads only step 3.
 #include <algorithm>
 #include <atomic>
+#include <exception>
 #include <climits>
 #include <cstring>
 #include <cmath>
@@ -152,8 +153,10 @@ class Context::WorkerPool {
     for (auto& t : threads_) t.join();
   }
   int size() const { return size_; }
-  // Runs fn(i) for every worker i (0 on the calling thread) and waits for all.
+  // Runs fn(i) for every worker i (0 on the calling thread) and waits for all, even when
+  // one throws; then rethrows the first exception.
   void run(const std::function<void(int)>& fn) {
+    error_ = nullptr;
     if (size_ == 1) {
       fn(0);
       return;
@@ -165,10 +168,17 @@ class Context::WorkerPool {
       ++generation_;
     }
     cv_.notify_all();
-    fn(0);
+    std::exception_ptr mine;
+    try {
+      fn(0);
+    } catch (...) {
+      mine = std::current_exception();
+    }
     std::unique_lock lock(m_);
     done_.wait(lock, [&] { return running_ == 0; });
     job_ = nullptr;
+    if (mine) std::rethrow_exception(mine);
+    if (error_) std::rethrow_exception(error_);
   }
 
  private:
@@ -183,9 +193,15 @@ class Context::WorkerPool {
         if (stop_) return;
         job = job_;
       }
-      (*job)(index);
+      std::exception_ptr e;
+      try {
+        (*job)(index);
+      } catch (...) {
+        e = std::current_exception();
+      }
       {
         std::lock_guard lock(m_);
+        if (e && !error_) error_ = e;
         if (--running_ == 0) done_.notify_one();
       }
     }
@@ -198,6 +214,7 @@ class Context::WorkerPool {
   int running_ = 0;
   uint64_t generation_ = 0;
   bool stop_ = false;
+  std::exception_ptr error_;
 };
 
 // --- the frame --------------------------------------------------------------------------------
@@ -464,6 +481,9 @@ void Context::bind_framebuffer(Framebuffer* fb) {
 }
 
 TargetView Context::make_target() const {
+  // The framebuffer's fields are public: check it again whenever a frame starts using it.
+  const std::string why = fb_->incomplete_reason();
+  if (!why.empty()) throw Error("framebuffer became incomplete after it was bound: " + why);
   TargetView t;
   t.width = fb_->width();
   t.height = fb_->height();
@@ -501,6 +521,7 @@ static Rect render_area(const RenderState& s, int width, int height) {
 
 void Context::clear(const ClearValues& v, const RenderState& state) {
   if (!fb_) throw Error("clear: no framebuffer bound");
+  if (!std::isfinite(v.depth)) throw Error("clear: depth value is not finite");
   if (frame_->commands.empty()) frame_->target = make_target();
   const Rect r = render_area(state, frame_->target.width, frame_->target.height);
   if (r.width <= 0 || r.height <= 0) return;
@@ -512,7 +533,7 @@ void Context::clear(const ClearValues& v, const RenderState& state) {
   c->base.maxy = r.y + r.height - 1;
   c->color_mask_bits = v.clear_color ? v.color_attachments : 0;
   for (int i = 0; i < kMaxColorAttachments; ++i) {
-    c->color[i] = v.color;
+    c->color[i] = v.per_attachment ? v.attachment_colors[i] : v.color;
     c->write_mask[i] = state.blend[i].write_mask;
   }
   c->clear_depth = v.clear_depth && state.depth_write;
@@ -539,6 +560,11 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
     throw Error("draw: depth range and polygon offset must be finite");
   if (call.count == 0 || call.instance_count == 0) return;
   if (uint64_t(call.base_instance) + call.instance_count > UINT32_MAX) throw Error("draw: instance range overflows");
+  for (int i = 0; i < kMaxClipPlanes; ++i)
+    if ((state.clip_plane_enable >> i) & 1)
+      for (int k = 0; k < 4; ++k)
+        if (!std::isfinite(state.clip_planes[i][k]) || std::fabs(state.clip_planes[i][k]) > 1e18f)
+          throw Error("draw: clip plane " + std::to_string(i) + " is not finite or too large");
 
   auto d = std::make_unique<DrawRecord>();
   d->program = std::move(program);
@@ -551,12 +577,15 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   if (call.index_buffer) {
     const size_t isz = call.index_type == IndexType::U8 ? 1 : call.index_type == IndexType::U16 ? 2 : 4;
     if (unsigned(call.index_type) > 2) throw Error("draw: invalid index type");
-    const uint64_t begin = uint64_t(call.index_offset) + uint64_t(call.first) * isz;
-    const uint64_t end = begin + uint64_t(call.count) * isz;
     if (call.index_offset % isz) throw Error("draw: index offset " + std::to_string(call.index_offset) + " is not aligned to the index size");
-    if (end > call.index_buffer->size())
+    // Overflow-safe: the indices [first, first + count) must lie in the buffer after the offset.
+    const size_t size = call.index_buffer->size();
+    const uint64_t available = call.index_offset <= size ? (size - call.index_offset) / isz : 0;
+    if (call.index_offset > size || uint64_t(call.first) + call.count > available)
       throw Error("draw: indices [" + std::to_string(call.first) + ", " + std::to_string(uint64_t(call.first) + call.count) +
-                  ") need " + std::to_string(end) + " bytes but the index buffer has " + std::to_string(call.index_buffer->size()));
+                  ") at byte offset " + std::to_string(call.index_offset) + " are past the end of an index buffer of " +
+                  std::to_string(size) + " bytes");
+    const uint64_t begin = uint64_t(call.index_offset) + uint64_t(call.first) * isz;
     const std::byte* src = call.index_buffer->data() + begin;
     const uint32_t restart = isz == 1 ? 0xFFu : isz == 2 ? 0xFFFFu : 0xFFFFFFFFu;
     std::vector<uint32_t> raw(call.count);
@@ -586,6 +615,11 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   validate_vertex_range(layout, max_id, call.base_instance + call.instance_count, required_attribs);
   d->prim_count = prim_count(d->topology, d->count);
   if (d->prim_count == 0) return;
+  // One draw runs as one frame; its chunk list is bounded (2^22 chunks of 1024 primitives).
+  const uint64_t chunks = uint64_t(d->instance_count) * ((d->prim_count + kChunkPrims - 1) / kChunkPrims);
+  if (chunks > (uint64_t(1) << 22))
+    throw Error("draw: " + std::to_string(uint64_t(d->prim_count) * d->instance_count) +
+                " primitives (instances included) in one draw is more than Tessel runs at once; split the draw");
 
   if (frame_->commands.empty()) frame_->target = make_target();
   d->target = frame_->target;
@@ -653,6 +687,16 @@ void Context::flush() {
     w.counters = {};
   }
 
+  // Whatever happens below, the queued work is consumed: a failed frame is dropped whole.
+  struct Drop {
+    Frame& fr;
+    ~Drop() {
+      fr.commands.clear();
+      fr.draws.clear();
+      fr.clears.clear();
+      fr.pending_prims = 0;
+    }
+  } drop{fr};
   // 2. Geometry phase.
   std::atomic<uint32_t> next_chunk{0};
   const uint32_t nchunks = uint32_t(fr.chunks.size());
@@ -677,10 +721,6 @@ void Context::flush() {
     stats_.fragments_shaded += c.fragments_shaded;
     stats_.fragments_written += c.fragments_written;
   }
-  fr.commands.clear();
-  fr.draws.clear();
-  fr.clears.clear();
-  fr.pending_prims = 0;
 }
 
 }  // namespace tessel::gpu

@@ -34,7 +34,13 @@ Resource& Resource::operator=(Resource&&) noexcept {
   return *this;
 }
 
-Resource::~Resource() { before_write(); }
+Resource::~Resource() {
+  try {
+    before_write();
+  } catch (...) {
+    // A destructor cannot report; the queued work was dropped with the failed flush.
+  }
+}
 
 void Resource::before_write() const {
   std::vector<PendingWork*> busy;

@@ -30,8 +30,16 @@ WinVert to_window(const DrawRecord& d, const glm::vec4& pos, const float* var) {
 }
 
 static inline int32_t snap(float x) {
-  // Round half to even, as _mm_cvtps_epi32 does in llvmpipe.
-  return int32_t(std::nearbyint((x - 0.5f) * float(kSubpixelOne)));
+  // Round half to even, as _mm_cvtps_epi32 does in llvmpipe. Callers pass finite positions
+  // within the guard band; the clamp keeps anything else defined.
+  const float limit = 2.0f * kGuardBand * float(kSubpixelOne);
+  const float v = std::nearbyint((x - 0.5f) * float(kSubpixelOne));
+  return int32_t(std::clamp(v, -limit, limit));
+}
+
+static inline bool usable(const WinVert& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.oow) &&
+         v.oow > 0.0f && std::fabs(v.x) <= 2.0f * kGuardBand && std::fabs(v.y) <= 2.0f * kGuardBand;
 }
 
 float polygon_offset(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2) {
@@ -71,6 +79,9 @@ Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, 
                      const float* flat_src, uint32_t prim_id, Facing facing, bool apply_offset,
                      Arena& arena, Counters& c, bool* culled) {
   if (culled) *culled = false;
+  // Clipping keeps positions finite and inside the guard band; a vertex that still is not
+  // (w rounded to 0, overflow in the interpolation) drops the triangle.
+  if (!usable(v0) || !usable(v1) || !usable(v2)) return nullptr;
   int64_t X[3] = {snap(v0.x), snap(v1.x), snap(v2.x)};
   int64_t Y[3] = {snap(v0.y), snap(v1.y), snap(v2.y)};
   int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);

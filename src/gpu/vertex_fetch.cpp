@@ -131,10 +131,16 @@ void validate_vertex_range(const VertexLayout& layout, uint32_t max_id, uint32_t
     const uint64_t elements = b.divisor ? (instance_end == 0 ? 0 : (instance_end - 1) / b.divisor + 1)
                                         : uint64_t(max_id) + 1;
     if (elements == 0) continue;
-    const uint64_t end = uint64_t(b.offset) + a.offset + (elements - 1) * stride + size;
-    if (end > b.buffer->size())
+    if (a.integer && (a.type == AttribType::F32 || a.type == AttribType::F16))
+      throw Error(where + ": an integer attribute must have an integer type");
+    // Overflow-safe end of the last element read.
+    uint64_t end = 0;
+    const bool overflow = __builtin_add_overflow(uint64_t(b.offset), uint64_t(a.offset), &end) ||
+                          __builtin_add_overflow(end, (elements - 1) * uint64_t(stride), &end) ||
+                          __builtin_add_overflow(end, uint64_t(size), &end);
+    if (overflow || end > b.buffer->size())
       throw Error(where + ": reading " + std::to_string(elements) + (b.divisor ? " instances" : " vertices") +
-                  " needs " + std::to_string(end) + " bytes but the buffer has " +
+                  " needs " + (overflow ? std::string("more") : std::to_string(end)) + " bytes but the buffer has " +
                   std::to_string(b.buffer->size()));
   }
 }

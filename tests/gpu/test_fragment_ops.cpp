@@ -288,3 +288,84 @@ TEST(MRT, EachOutputToItsAttachment) {
   EXPECT_EQ(b.fetch(0, 1, 1).g, 0.0f);  // masked
   EXPECT_EQ(c.fetch(0, 5, 2), glm::vec4(5.5f, 2.5f, 0.5f, 1.0f));  // gl_FragCoord
 }
+
+TEST(Clear, EachAttachmentItsOwnValue) {
+  Texture2D a(Format::RGBA8, W, H), b(Format::RGBA32F, W, H), d(Format::Depth24Stencil8, W, H);
+  Framebuffer fb;
+  fb.color[0].texture = &a;
+  fb.color[1].texture = &b;
+  fb.depth.texture = &d;
+  Context ctx(1);
+  ctx.bind_framebuffer(&fb);
+  ClearValues v{.depth = 0.25f, .stencil = 7};
+  v.per_attachment = true;
+  v.attachment_colors[0] = {1, 0, 0, 1};
+  v.attachment_colors[1] = {-2, 0.5f, 3, 1};
+  ctx.clear(v);
+  ctx.finish();
+  EXPECT_EQ(a.fetch(0, 1, 1), glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(b.fetch(0, 7, 7), glm::vec4(-2, 0.5f, 3, 1));  // float targets are not clamped
+  EXPECT_NEAR(d.fetch(0, 0, 0).x, 0.25f, 1e-7f);
+  EXPECT_EQ(d.fetch(0, 0, 0).y, 7.0f);
+  // Only attachment 1, depth untouched.
+  ctx.clear({.color_attachments = 0b10, .color = {0, 0, 0, 0}, .clear_depth = false, .clear_stencil = false});
+  ctx.finish();
+  EXPECT_EQ(a.fetch(0, 1, 1), glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(b.fetch(0, 1, 1), glm::vec4(0));
+  EXPECT_NEAR(d.fetch(0, 0, 0).x, 0.25f, 1e-7f);
+}
+
+namespace {
+// Discards the left half of the screen and writes depth 0.9 - red * 0.5.
+struct DiscardAndDepth {
+  struct Uniforms {};
+  template <class F> struct Varyings { Vec4<F> color; };
+  static constexpr bool discards = true;
+  static constexpr bool writes_depth = true;
+  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
+    out.color = in.attr[1];
+    return in.attr[0];
+  }
+  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+    f.discard(f.coord.x < F(4.0f));
+    f.depth = F(0.9f) - v.color.x * F(0.5f);
+    f.color[0] = v.color;
+  }
+};
+}  // namespace
+
+TEST(FragmentShader, DiscardAndDepthWriteUseLateTests) {
+  Fixture fx;
+  fx.ctx.clear({.color = {0, 0, 0, 1}, .depth = 0.6f});
+  RenderState st;
+  st.depth_test = true;
+  Mesh m(quad(-0.9f, {1, 0, 0, 1}));  // interpolated depth 0.05 would pass; written 0.4 passes too
+  fx.ctx.draw(DiscardAndDepth{}, {}, m.layout, st, {.count = m.count});
+  EXPECT_EQ(fx.pixel(2, 2), glm::vec4(0, 0, 0, 1));  // discarded
+  EXPECT_EQ(fx.pixel(6, 2), glm::vec4(1, 0, 0, 1));
+  EXPECT_NEAR(fx.depth(6, 2), 0.4f, 1e-6f);           // the shader's depth, not the plane's
+  EXPECT_NEAR(fx.depth(2, 2), 0.6f, 1e-6f);           // discarded fragments write nothing
+  // Green at written depth 0.9 fails LESS against 0.4 although its plane depth (0.05) passes.
+  Mesh g(quad(-0.9f, {0, 1, 0, 1}));
+  fx.ctx.draw(DiscardAndDepth{}, {}, g.layout, st, {.count = g.count});
+  EXPECT_EQ(fx.pixel(6, 2), glm::vec4(1, 0, 0, 1));
+}
+
+TEST(Viewport, MapsNdcToItsRectangleAndDepthRange) {
+  Fixture fx;
+  fx.ctx.clear({.color = {0, 0, 0, 0}, .depth = 1.0f});
+  RenderState st;
+  st.viewport = {2, 4, 4, 2};
+  st.depth_near = 0.2f;
+  st.depth_far = 0.6f;
+  st.depth_test = true;
+  st.depth_func = CompareFunc::Always;
+  fx.draw(quad(0.5f, {1, 1, 1, 1}), st);
+  fx.ctx.finish();
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const bool in = x >= 2 && x < 6 && y >= 4 && y < 6;
+      EXPECT_EQ(fx.t.color.fetch(0, x, y).r, in ? 1.0f : 0.0f) << x << "," << y;
+      if (in) EXPECT_NEAR(fx.t.depth.fetch(0, x, y).x, 0.2f + 0.4f * 0.75f, 1e-6f);
+    }
+}

@@ -153,3 +153,49 @@ TEST(Robustness, ResourceChangedWhileQueuedDrawsWait) {
   m.reset();
   EXPECT_EQ(s.lit(), 120u);  // below the diagonal x + y = 16 (its samples belong to the other side)
 }
+
+// Inputs found in review: each once reached undefined behaviour or an out-of-bounds read.
+TEST(Robustness, ReviewedEdgeCases) {
+  {  // gl_Position = vec4(0) hides a vertex; clipping must not produce w = 0 for setup.
+    Scene s;
+    Mesh m({tv(0, 0, 0, 0), tv(1, 0, 0, 1), tv(0, 1, 0, 1), tv(0, 0, 0, 1e8f), tv(0, 0, -2, 1), tv(1, 0.5f, 0, 1),
+            tv(-3e38f, 0, 0, 1), tv(3e38f, 0, 0, 1), tv(0, 1, 0, 1)});
+    s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 9});
+    s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.topology = Topology::LineStrip, .count = 9});
+    s.lit();
+  }
+  {  // Index offset so large that offset + size wraps around.
+    Scene s;
+    Mesh m({tv(-1, -1, 0, 1), tv(1, -1, 0, 1), tv(0, 1, 0, 1)});
+    const uint32_t idx[] = {0, 1, 2};
+    const Buffer ib(idx, sizeof idx);
+    EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{},
+                            {.count = 3, .index_buffer = &ib, .index_offset = SIZE_MAX - 3}), Error);
+    VertexLayout l = m.layout;
+    l.bindings[0].offset = SIZE_MAX - 15;  // binding offset that wraps
+    EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, l, RenderState{}, {.count = 3}), Error);
+    l = m.layout;
+    l.attribs[1].integer = true;  // integer attribute over float data
+    EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, l, RenderState{}, {.count = 3}), Error);
+    RenderState st;
+    st.clip_plane_enable = 1;
+    st.clip_planes[0] = {3e38f, 0, 0, 0};
+    EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, m.layout, st, {.count = 3}), Error);
+    EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 3, .instance_count = 0xFFFFFFFFu}), Error);
+    EXPECT_THROW(s.ctx.clear({.depth = NAN}), Error);
+  }
+  {  // The framebuffer changed after binding: checked again when a frame starts.
+    Context ctx(2);
+    Texture2D color(Format::RGBA8, 16, 16), r8(Format::R8, 16, 16);
+    Framebuffer fb(&color);
+    ctx.bind_framebuffer(&fb);
+    fb.depth.texture = &r8;
+    Mesh m({tv(-1, -1, 0, 1), tv(1, -1, 0, 1), tv(0, 1, 0, 1)});
+    RenderState st;
+    st.depth_test = true;
+    EXPECT_THROW(ctx.draw(ColorShader{}, {}, m.layout, st, {.count = 3}), Error);
+    fb.depth.texture = nullptr;
+    fb.color[0].level = 3;
+    EXPECT_THROW(ctx.clear({}), Error);
+  }
+}

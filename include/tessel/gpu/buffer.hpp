@@ -25,7 +25,7 @@ class Buffer : public Resource {
   template <class T> explicit Buffer(std::span<const T> items) { assign(items.data(), items.size_bytes()); }
   template <class T> explicit Buffer(const std::vector<T>& items) { assign(items.data(), items.size() * sizeof(T)); }
   // Queued draws that read this buffer run before its memory goes.
-  ~Buffer() override { before_write(); }
+  ~Buffer() override { flush_before_destruction(); }
 
   void assign(const void* data, size_t bytes) {
     before_write();

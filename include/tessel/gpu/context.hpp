@@ -44,6 +44,10 @@ struct ClearValues {
   uint8_t color_attachments = 0xFF;
   bool clear_color = true;
   glm::vec4 color{0.0f, 0.0f, 0.0f, 0.0f};
+  // Per-attachment values (glClearBufferfv): when set, attachment i is cleared to
+  // attachment_colors[i] instead of `color`.
+  bool per_attachment = false;
+  std::array<glm::vec4, kMaxColorAttachments> attachment_colors{};
   bool clear_depth = true;
   float depth = 1.0f;
   bool clear_stencil = true;

@@ -31,6 +31,13 @@ class Resource {
   // Resources call this before changing their contents, and in their destructors (before
   // their members go): queued draws run first.
   void before_write() const;
+  // The same for destructors: never throws (a failed flush drops the queued work).
+  void flush_before_destruction() const noexcept {
+    try {
+      before_write();
+    } catch (...) {
+    }
+  }
 };
 
 }  // namespace tessel::gpu

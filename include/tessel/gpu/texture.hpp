@@ -63,7 +63,7 @@ class Texture2D : public Resource {
   Texture2D(Format format, int width, int height, int levels = 1);
   Texture2D(Texture2D&&) = default;
   // Queued draws that use this texture run before its memory goes.
-  ~Texture2D() override { before_write(); }
+  ~Texture2D() override { flush_before_destruction(); }
 
   Format format() const { return format_; }
   int width(int level = 0) const { return levels_.at(level).width; }
