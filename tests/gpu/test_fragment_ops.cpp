@@ -366,6 +366,8 @@ TEST(Viewport, MapsNdcToItsRectangleAndDepthRange) {
     for (int x = 0; x < W; ++x) {
       const bool in = x >= 2 && x < 6 && y >= 4 && y < 6;
       EXPECT_EQ(fx.t.color.fetch(0, x, y).r, in ? 1.0f : 0.0f) << x << "," << y;
-      if (in) EXPECT_NEAR(fx.t.depth.fetch(0, x, y).x, 0.2f + 0.4f * 0.75f, 1e-6f);
+      if (in) {
+        EXPECT_NEAR(fx.t.depth.fetch(0, x, y).x, 0.2f + 0.4f * 0.75f, 1e-6f);
+      }
     }
 }
