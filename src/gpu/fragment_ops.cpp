@@ -13,20 +13,6 @@
 namespace tessel::gpu::detail {
 namespace {
 
-template <class T> inline bool compare(CompareFunc f, T a, T b) {
-  switch (f) {
-    case CompareFunc::Never: return false;
-    case CompareFunc::Less: return a < b;
-    case CompareFunc::Equal: return a == b;
-    case CompareFunc::LessEqual: return a <= b;
-    case CompareFunc::Greater: return a > b;
-    case CompareFunc::NotEqual: return a != b;
-    case CompareFunc::GreaterEqual: return a >= b;
-    case CompareFunc::Always: return true;
-  }
-  return false;
-}
-
 inline uint8_t stencil_op(StencilOp op, uint8_t s, uint8_t ref) {
   switch (op) {
     case StencilOp::Keep: return s;

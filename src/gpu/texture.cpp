@@ -434,20 +434,6 @@ struct Identity {
   glm::vec4 operator()(const glm::vec4& v) const { return v; }
 };
 
-inline bool compare_passes(CompareFunc f, float ref, float d) {
-  switch (f) {
-    case CompareFunc::Never: return false;
-    case CompareFunc::Less: return ref < d;
-    case CompareFunc::Equal: return ref == d;
-    case CompareFunc::LessEqual: return ref <= d;
-    case CompareFunc::Greater: return ref > d;
-    case CompareFunc::NotEqual: return ref != d;
-    case CompareFunc::GreaterEqual: return ref >= d;
-    case CompareFunc::Always: return true;
-  }
-  return false;
-}
-
 // Depth comparison applied to a texel: 1 if `ref <func> depth` passes, else 0 (in .x).
 struct Compare {
   CompareFunc func;
@@ -455,7 +441,7 @@ struct Compare {
   bool clamp_depth;
   glm::vec4 operator()(const glm::vec4& v) const {
     const float d = clamp_depth ? sat(v.x) : v.x;
-    return glm::vec4(compare_passes(func, ref, d) ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    return glm::vec4(compare(func, ref, d) ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
   }
 };
 

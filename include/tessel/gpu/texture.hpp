@@ -36,6 +36,21 @@ enum class Filter : uint8_t {
 enum class Wrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat, ClampToBorder };
 enum class CompareFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
 
+// Whether `a <func> b` passes: the depth test, the stencil test and shadow comparisons.
+template <class T> constexpr bool compare(CompareFunc f, T a, T b) {
+  switch (f) {
+    case CompareFunc::Never: return false;
+    case CompareFunc::Less: return a < b;
+    case CompareFunc::Equal: return a == b;
+    case CompareFunc::LessEqual: return a <= b;
+    case CompareFunc::Greater: return a > b;
+    case CompareFunc::NotEqual: return a != b;
+    case CompareFunc::GreaterEqual: return a >= b;
+    case CompareFunc::Always: return true;
+  }
+  return false;
+}
+
 struct SamplerState {
   Filter min_filter = Filter::NearestMipmapLinear;  // GL's default
   Filter mag_filter = Filter::Linear;
