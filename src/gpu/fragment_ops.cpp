@@ -29,78 +29,21 @@ inline uint8_t stencil_op(StencilOp op, uint8_t s, uint8_t ref) {
 
 inline uint32_t quantize24(float z) { return uint32_t(std::lrint(double(z) * 16777215.0)); }
 
-inline uint8_t to_unorm8(float c) {
-  c = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;  // NaN -> 0
-  return uint8_t(int(c * 255.0f + 0.5f));
-}
+size_t texel_bytes(Format f) { return format_info(f).bytes; }
 
 glm::vec4 load_color(const ColorTarget& t, int x, int y) {
-  const std::byte* p = t.data + size_t(y) * t.row_bytes;
-  switch (t.format) {
-    case Format::RGBA8: {
-      const auto* q = reinterpret_cast<const uint8_t*>(p) + size_t(x) * 4;
-      return glm::vec4(q[0], q[1], q[2], q[3]) * (1.0f / 255.0f);
-    }
-    case Format::R8: {
-      const auto* q = reinterpret_cast<const uint8_t*>(p) + size_t(x);
-      return {q[0] / 255.0f, 0.0f, 0.0f, 1.0f};
-    }
-    case Format::RG8: {
-      const auto* q = reinterpret_cast<const uint8_t*>(p) + size_t(x) * 2;
-      return {q[0] / 255.0f, q[1] / 255.0f, 0.0f, 1.0f};
-    }
-    case Format::RGBA16F: {
-      uint16_t h[4];
-      std::memcpy(h, p + size_t(x) * 8, 8);
-      return {half_to_float(h[0]), half_to_float(h[1]), half_to_float(h[2]), half_to_float(h[3])};
-    }
-    case Format::RGBA32F: {
-      glm::vec4 v;
-      std::memcpy(&v, p + size_t(x) * 16, 16);
-      return v;
-    }
-    default: return glm::vec4(0.0f);
-  }
+  return decode_texel(t.format, t.data + size_t(y) * t.row_bytes + size_t(x) * texel_bytes(t.format));
 }
 
-void store_color(const ColorTarget& t, int x, int y, const glm::vec4& c, uint8_t wmask) {
-  std::byte* p = t.data + size_t(y) * t.row_bytes;
-  switch (t.format) {
-    case Format::RGBA8: {
-      auto* q = reinterpret_cast<uint8_t*>(p) + size_t(x) * 4;
-      for (int i = 0; i < 4; ++i)
-        if (wmask & (1 << i)) q[i] = to_unorm8(c[i]);
-      break;
-    }
-    case Format::R8: {
-      auto* q = reinterpret_cast<uint8_t*>(p) + size_t(x);
-      if (wmask & 1) q[0] = to_unorm8(c.r);
-      break;
-    }
-    case Format::RG8: {
-      auto* q = reinterpret_cast<uint8_t*>(p) + size_t(x) * 2;
-      if (wmask & 1) q[0] = to_unorm8(c.r);
-      if (wmask & 2) q[1] = to_unorm8(c.g);
-      break;
-    }
-    case Format::RGBA16F: {
-      uint16_t h[4];
-      std::memcpy(h, p + size_t(x) * 8, 8);
-      for (int i = 0; i < 4; ++i)
-        if (wmask & (1 << i)) h[i] = float_to_half(c[i]);
-      std::memcpy(p + size_t(x) * 8, h, 8);
-      break;
-    }
-    case Format::RGBA32F: {
-      float v[4];
-      std::memcpy(v, p + size_t(x) * 16, 16);
-      for (int i = 0; i < 4; ++i)
-        if (wmask & (1 << i)) v[i] = c[i];
-      std::memcpy(p + size_t(x) * 16, v, 16);
-      break;
-    }
-    default: break;
+// Writes the channels in `wmask` (bit 0 = red); the others keep their stored values.
+void store_color(const ColorTarget& t, int x, int y, glm::vec4 c, uint8_t wmask) {
+  std::byte* p = t.data + size_t(y) * t.row_bytes + size_t(x) * texel_bytes(t.format);
+  if ((wmask & 0xF) != 0xF) {
+    const glm::vec4 old = decode_texel(t.format, p);
+    for (int i = 0; i < 4; ++i)
+      if (!(wmask & (1 << i))) c[i] = old[i];
   }
+  encode_texel(t.format, p, c);
 }
 
 inline glm::vec3 factor_rgb(BlendFactor f, const glm::vec4& s, const glm::vec4& d, const glm::vec4& k) {
@@ -231,7 +174,7 @@ void write_colors(const DrawRecord& d, int gx, int gy, unsigned mask, const Vec4
     if (!ct.data) continue;
     const BlendTarget& b = d.state.blend[i];
     if (b.write_mask == 0) continue;
-    const bool unorm = ct.format == Format::RGBA8 || ct.format == Format::R8 || ct.format == Format::RG8;
+    const bool unorm = is_unorm8_format(ct.format);
     const Vec4<Float8>& c = colors[i];
     for (unsigned m = mask; m; m &= m - 1) {
       const int l = __builtin_ctz(m);

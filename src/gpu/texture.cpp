@@ -87,11 +87,13 @@ template <class Fn> decltype(auto) with_format(Format f, Fn&& fn) {
   return fn(std::integral_constant<F, F::Depth24Stencil8>{});
 }
 
-glm::vec4 decode_any(Format f, const std::byte* p) {
+}  // namespace
+
+glm::vec4 detail::decode_texel(Format f, const std::byte* p) {
   return with_format(f, [p](auto tag) { return decode<decltype(tag)::value>(p); });
 }
 
-void encode(Format f, std::byte* p, const glm::vec4& c) {
+void detail::encode_texel(Format f, std::byte* p, const glm::vec4& c) {
   switch (f) {
     case Format::RGBA8: {
       const uint8_t b[4] = {float_to_unorm8(c.x), float_to_unorm8(c.y), float_to_unorm8(c.z), float_to_unorm8(c.w)};
@@ -128,7 +130,11 @@ void encode(Format f, std::byte* p, const glm::vec4& c) {
   }
 }
 
-bool is_unorm8(Format f) { return f == Format::RGBA8 || f == Format::R8 || f == Format::RG8; }
+namespace {
+using detail::decode_texel;
+using detail::encode_texel;
+
+bool is_unorm8(Format f) { return is_unorm8_format(f); }
 
 // --- mipmap generation -------------------------------------------------------------------
 
@@ -196,9 +202,9 @@ void downsample(Format f, const Level& src, Level& dst) {
         for (int i = 0; i < xt.count; ++i) {
           const std::byte* px =
               src.data.data() + (size_t(yt.index[j]) * size_t(src.width) + size_t(xt.index[i])) * bpp;
-          acc += (yt.weight[j] * xt.weight[i]) * decode_any(f, px);
+          acc += (yt.weight[j] * xt.weight[i]) * decode_texel(f, px);
         }
-      encode(f, dst.data.data() + (size_t(y) * size_t(dst.width) + size_t(x)) * bpp, acc);
+      encode_texel(f, dst.data.data() + (size_t(y) * size_t(dst.width) + size_t(x)) * bpp, acc);
     }
   }
 }
@@ -272,7 +278,7 @@ void Texture2D::upload_rgba8(int level, const uint8_t* rgba, size_t bytes) {
     const uint8_t* s = rgba + i * 4;
     glm::vec4 c(unorm8_to_float(s[0]), unorm8_to_float(s[1]), unorm8_to_float(s[2]), unorm8_to_float(s[3]));
     if (format_ == Format::Depth24Stencil8) c.y = float(s[1]);  // stencil from green, as an integer
-    encode(format_, l.data.data() + i * bpp, c);
+    encode_texel(format_, l.data.data() + i * bpp, c);
   }
 }
 
@@ -295,7 +301,7 @@ void Texture2D::upload_rgba32f(int level, const float* rgba, size_t bytes) {
   const size_t bpp = format_info(format_).bytes;
   for (size_t i = 0; i < n; ++i) {
     const float* s = rgba + i * 4;
-    encode(format_, l.data.data() + i * bpp, glm::vec4(s[0], s[1], s[2], s[3]));
+    encode_texel(format_, l.data.data() + i * bpp, glm::vec4(s[0], s[1], s[2], s[3]));
   }
 }
 
@@ -328,7 +334,7 @@ glm::vec4 Texture2D::fetch(int level, int x, int y) const {
     throw Error("Texture2D::fetch: texel (" + std::to_string(x) + ", " + std::to_string(y) +
                 ") outside level " + std::to_string(level) + " of size " + size_string(l.width, l.height));
   const size_t bpp = format_info(format_).bytes;
-  return decode_any(format_, l.data.data() + (size_t(y) * size_t(l.width) + size_t(x)) * bpp);
+  return decode_texel(format_, l.data.data() + (size_t(y) * size_t(l.width) + size_t(x)) * bpp);
 }
 
 void Texture2D::store(int level, int x, int y, const glm::vec4& value) {
@@ -341,7 +347,7 @@ void Texture2D::store(int level, int x, int y, const glm::vec4& value) {
     throw Error("Texture2D::store: texel (" + std::to_string(x) + ", " + std::to_string(y) +
                 ") outside level " + std::to_string(level) + " of size " + size_string(l.width, l.height));
   const size_t bpp = format_info(format_).bytes;
-  encode(format_, l.data.data() + (size_t(y) * size_t(l.width) + size_t(x)) * bpp, value);
+  encode_texel(format_, l.data.data() + (size_t(y) * size_t(l.width) + size_t(x)) * bpp, value);
 }
 
 // --- TextureCube -------------------------------------------------------------------------
@@ -634,7 +640,7 @@ glm::vec4 texel_fetch(const Texture2D* t, int x, int y, int level) {
   const Level& l = t->level(level);
   if (x < 0 || y < 0 || x >= l.width || y >= l.height) return glm::vec4(0.0f);
   const size_t bpp = format_info(t->format()).bytes;
-  return decode_any(t->format(), l.data.data() + (size_t(y) * size_t(l.width) + size_t(x)) * bpp);
+  return decode_texel(t->format(), l.data.data() + (size_t(y) * size_t(l.width) + size_t(x)) * bpp);
 }
 
 }  // namespace detail

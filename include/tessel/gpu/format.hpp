@@ -48,6 +48,8 @@ constexpr FormatInfo format_info(Format f) {
 }
 constexpr bool is_depth_format(Format f) { return format_info(f).depth; }
 constexpr bool is_color_format(Format f) { return !format_info(f).depth; }
+// Unsigned normalized 8-bit colour formats (values clamp to [0, 1] when stored or blended).
+constexpr bool is_unorm8_format(Format f) { return f == Format::RGBA8 || f == Format::R8 || f == Format::RG8; }
 
 // IEEE half <-> float, exact for every half; float -> half rounds to nearest even.
 uint16_t float_to_half(float f);

@@ -144,6 +144,10 @@ struct Sampler2DShadow {
 
 // --- the sampling functions (texture.cpp has the scalar core; these apply it per lane) ----
 namespace detail {
+// One texel of format f at p as floats (as Texture2D::fetch), and back (as Texture2D::store,
+// unorm values rounded to nearest after clamping). Used by the attachments' writes too.
+glm::vec4 decode_texel(Format f, const std::byte* p);
+void encode_texel(Format f, std::byte* p, const glm::vec4& c);
 // Samples at an explicit level of detail. A missing texture samples as (0,0,0,1).
 glm::vec4 sample_2d(const Sampler2D& s, float u, float v, float lod);
 glm::vec4 sample_cube(const SamplerCube& s, float x, float y, float z, float lod);
