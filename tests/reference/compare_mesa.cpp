@@ -62,6 +62,17 @@ std::unique_ptr<MesaOracle> make_oracle(int w, int h) {
   return o;
 }
 
+// The oracle's vertices as the tests' vertex layout (the same clip-space numbers).
+std::vector<TestVertex> to_test_vertices(const std::vector<OracleVertex>& verts) {
+  std::vector<TestVertex> tv(verts.size());
+  for (size_t i = 0; i < verts.size(); ++i) {
+    std::copy_n(verts[i].pos, 4, tv[i].pos);
+    std::copy_n(verts[i].color, 4, tv[i].color);
+    std::copy_n(verts[i].uv, 2, tv[i].uv);
+  }
+  return tv;
+}
+
 // Renders the vertices with Tessel under the state that corresponds to `os`.
 std::vector<uint8_t> render_tessel(int w, int h, const std::vector<OracleVertex>& verts,
                                    const RenderState& st, Topology topo, bool flat, int threads = 2,
@@ -70,13 +81,7 @@ std::vector<uint8_t> render_tessel(int w, int h, const std::vector<OracleVertex>
   Context ctx(threads);
   ctx.bind_framebuffer(&t.fb);
   ctx.clear({.color = {0, 0, 0, 0}, .depth = clear_depth});
-  std::vector<TestVertex> tv(verts.size());
-  for (size_t i = 0; i < verts.size(); ++i) {
-    std::copy_n(verts[i].pos, 4, tv[i].pos);
-    std::copy_n(verts[i].color, 4, tv[i].color);
-    std::copy_n(verts[i].uv, 2, tv[i].uv);
-  }
-  Mesh m(tv);
+  Mesh m(to_test_vertices(verts));
   if (flat) ctx.draw(FlatColorShader{}, {}, m.layout, st, {.topology = topo, .count = m.count});
   else ctx.draw(ColorShader{}, {}, m.layout, st, {.topology = topo, .count = m.count});
   ctx.finish();
@@ -318,13 +323,7 @@ TexResult compare_textured(int W, int H, const std::vector<OracleVertex>& v, con
   Context ctx(2);
   ctx.bind_framebuffer(&tg.fb);
   ctx.clear({.color = {0, 0, 0, 0}});
-  std::vector<TestVertex> tv(v.size());
-  for (size_t i = 0; i < v.size(); ++i) {
-    std::copy_n(v[i].pos, 4, tv[i].pos);
-    std::copy_n(v[i].color, 4, tv[i].color);
-    std::copy_n(v[i].uv, 2, tv[i].uv);
-  }
-  Mesh m(tv);
+  Mesh m(to_test_vertices(v));
   TexturedShader::Uniforms u;
   u.tex = {&tex, {.min_filter = min, .mag_filter = mag}};
   ctx.draw(TexturedShader{}, u, m.layout, RenderState{}, {.count = m.count});
