@@ -1,9 +1,11 @@
-// The tessel command. `tessel render` renders the built-in demo scene to a PNG.
+// The tessel command. `tessel render` renders the built-in demo scene to a PNG; `tessel bench`
+// renders the standard benchmark scenes, optionally beside Mesa's llvmpipe.
 #include <cstdio>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "bench.hpp"
 #include "demo.hpp"
 #include "tessel/gpu/format.hpp"
 
@@ -39,7 +41,42 @@ int main(int argc, char** argv) {
   render->add_option("-o,--output", out, "Output PNG file")->capture_default_str();
   render->add_flag("--stats", stats, "Print the pipeline's counters");
 
+  auto* bench = app.add_subcommand("bench", "Render the standard scenes and print the time per frame");
+  tessel::apps::BenchOptions bo;
+  std::vector<std::string> bench_sizes;
+  bench->add_option("--scene", bo.scenes, "Scene (repeatable): spheres-100k, spheres-1m, fill, textured; default all");
+  bench->add_option("--size", bench_sizes, "Image size WxH (repeatable); default 1920x1080 and 640x480");
+  bench->add_option("--threads", bo.threads, "Worker threads (repeatable); default 1 and 2")->check(CLI::Range(1, 64));
+  bench->add_option("--frames", bo.frames, "Timed frames per run (the median is reported)")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  bench->add_option("--warmup", bo.warmup, "Untimed frames before timing")->check(CLI::Range(0, 10000))->capture_default_str();
+  bench->add_flag("--instanced", bo.instanced, "Draw the sphere grids as one instanced draw instead of 100 draws");
+  bench->add_flag("--peer", bo.peer, "Also run each scene on Mesa llvmpipe (tessel_peer), alternating, and compare");
+  bench->add_option("--peer-path", bo.peer_path, "The tessel_peer program (default: next to tessel, then PATH)");
+  bench->add_option("--json", bo.json, "Write the results as a JSON array to this file");
+  bench->add_option("--images", bo.images, "Write each run's image into this folder");
+  bench->add_option("--max-diff", bo.max_diff_percent,
+                    "With --peer: exit with an error when more than this percentage of pixels differ by > 2/255");
+
   CLI11_PARSE(app, argc, argv);
+
+  if (bench->parsed()) {
+    for (const auto& sz : bench_sizes) {
+      int w = 0, h = 0;
+      if (!parse_size(sz, w, h) || w < 1 || h < 1 || w > 16384 || h > 16384) {
+        std::fprintf(stderr, "tessel bench: --size '%s': expected WxH with 1 <= W, H <= 16384\n", sz.c_str());
+        return 2;
+      }
+      bo.sizes.emplace_back(w, h);
+    }
+    try {
+      return tessel::apps::run_bench(bo);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "tessel bench: %s\n", e.what());
+      return 1;
+    }
+  }
 
   if (render->parsed()) {
     int w = 0, h = 0;

@@ -654,6 +654,9 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   d->depth_float = d->target.depth && d->target.depth_format == Format::Depth32F;
   d->depth_resolution = 1.0f / 16777216.0f;  // 2^-24 for 24-bit depth
   d->early_depth = !d->program->discards && !d->program->writes_depth;
+  d->fast_depth = d->target.depth && d->state.depth_test && !(d->state.stencil_test && d->target.has_stencil);
+  d->fast_color = d->target.color_count == 1 && d->target.color[0].data && d->target.color[0].format == Format::RGBA8 &&
+                  !d->state.blend[0].enabled && d->state.blend[0].write_mask == 0xF && d->program->outputs >= 1;
 
   frame_->pending_prims += uint64_t(d->prim_count) * d->instance_count;
   frame_->commands.push_back({false, uint32_t(frame_->draws.size())});

@@ -7,6 +7,10 @@
 #include <string>
 #include <type_traits>
 
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
+
 // Sampling helpers are forced inline: a glm::vec4 returned across a call boundary goes
 // through two 8-byte registers and stalls store forwarding when reloaded whole.
 #define TESSEL_INLINE inline __attribute__((always_inline))
@@ -662,9 +666,96 @@ inline Vec4<Float8> missing8() { return {Float8(0.0f), Float8(0.0f), Float8(0.0f
 
 Vec4<float> texture(const Sampler2D& s, const Vec2<float>& uv) { return to_vec(detail::sample_2d(s, uv.x, uv.y, 0.0f)); }
 
+namespace {
+
+// --- eight lanes at once for RGBA8 textures with REPEAT (power-of-two sizes) or
+// CLAMP_TO_EDGE: the same arithmetic as sample_level/run_plan above, lane-parallel, so the
+// results are bit-identical to the per-lane path.
+
+inline Int8 gather_u32(const std::byte* base, Int8 index) {
+#if defined(__AVX2__)
+  return Int8((vx::i32x8)_mm256_i32gather_epi32(reinterpret_cast<const int*>(base), (__m256i)index.v, 4));
+#else
+  Int8 r;
+  for (int i = 0; i < kLanes; ++i) std::memcpy(&r.v[i], base + size_t(uint32_t(index.v[i])) * 4, 4);
+  return r;
+#endif
+}
+
+TESSEL_INLINE Float8 sane8(Float8 s) {
+  s = select(s == s, s, Float8(0.0f));
+  return clamp(s, Float8(-kNoCoord), Float8(kNoCoord));
+}
+
+// floor_to_int for values that are already integral (or huge): clamp to +-2^30, convert.
+TESSEL_INLINE Int8 integral_to_int(Float8 f) {
+  return to_int(clamp(f, Float8(-1073741824.0f), Float8(1073741824.0f)));
+}
+
+TESSEL_INLINE Int8 wrap8(Int8 i, int size, Wrap mode) {
+  if (mode == Wrap::Repeat) return i & Int8(size - 1);  // power-of-two size
+  return min(max(i, Int8(0)), Int8(size - 1));           // ClampToEdge
+}
+
+TESSEL_INLINE Vec4<Float8> decode_rgba8(Int8 t) {
+  const Float8 k(1.0f / 255.0f);
+  return {to_float(t & Int8(0xFF)) * k, to_float((t >> 8) & Int8(0xFF)) * k, to_float((t >> 16) & Int8(0xFF)) * k,
+          to_float(Int8(vx::i32x8((vx::u32x8)t.v >> 24))) * k};
+}
+
+TESSEL_INLINE Vec4<Float8> lerp8(const Vec4<Float8>& a, const Vec4<Float8>& b, Float8 t) {
+  return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t, a.w + (b.w - a.w) * t};
+}
+
+Vec4<Float8> sample_level_rgba8(const LevelRef& L, Wrap ws, Wrap wt, Float8 s, Float8 t, bool linear) {
+  const Float8 u = sane8(s) * Float8(float(L.w));
+  const Float8 v = sane8(t) * Float8(float(L.h));
+  const Int8 row(L.w);
+  if (!linear) {
+    const Int8 x = wrap8(integral_to_int(floor(u)), L.w, ws), y = wrap8(integral_to_int(floor(v)), L.h, wt);
+    return decode_rgba8(gather_u32(L.data, y * row + x));
+  }
+  const Float8 uu = u - Float8(0.5f), vv = v - Float8(0.5f);
+  const Float8 fu = floor(uu), fv = floor(vv);
+  const Float8 a = uu - fu, b = vv - fv;
+  const Int8 i0 = integral_to_int(fu), j0 = integral_to_int(fv);
+  const Int8 x0 = wrap8(i0, L.w, ws), x1 = wrap8(i0 + Int8(1), L.w, ws);
+  const Int8 y0 = wrap8(j0, L.h, wt) * row, y1 = wrap8(j0 + Int8(1), L.h, wt) * row;
+  const Vec4<Float8> t00 = decode_rgba8(gather_u32(L.data, y0 + x0)), t10 = decode_rgba8(gather_u32(L.data, y0 + x1));
+  const Vec4<Float8> t01 = decode_rgba8(gather_u32(L.data, y1 + x0)), t11 = decode_rgba8(gather_u32(L.data, y1 + x1));
+  return lerp8(lerp8(t00, t10, a), lerp8(t01, t11, a), b);
+}
+
+Vec4<Float8> run_plan_rgba8(const Texture2D& tex, const Plan& p, const SamplerState& st, const Vec2<Float8>& uv) {
+  const Vec4<Float8> c0 = sample_level_rgba8(level_ref(tex, p.level0), st.wrap_s, st.wrap_t, uv.x, uv.y, p.linear);
+  if (p.level1 < 0 || p.blend == 0.0f) return c0;
+  const Vec4<Float8> c1 = sample_level_rgba8(level_ref(tex, p.level1), st.wrap_s, st.wrap_t, uv.x, uv.y, p.linear);
+  return lerp8(c0, c1, Float8(p.blend));
+}
+
+bool vector_path(const Texture2D& tex, const SamplerState& st) {
+  if (tex.format() != Format::RGBA8) return false;
+  const bool pow2_w = (tex.width() & (tex.width() - 1)) == 0, pow2_h = (tex.height() & (tex.height() - 1)) == 0;
+  const bool ok_s = st.wrap_s == Wrap::ClampToEdge || (st.wrap_s == Wrap::Repeat && pow2_w);
+  const bool ok_t = st.wrap_t == Wrap::ClampToEdge || (st.wrap_t == Wrap::Repeat && pow2_h);
+  // Gather indices are 32-bit: y * width + x must fit.
+  return ok_s && ok_t && int64_t(tex.width()) * tex.height() < (int64_t(1) << 31);
+}
+
+}  // namespace
+
 Vec4<Float8> texture(const Sampler2D& s, const Vec2<Float8>& uv) {
   if (s.texture == nullptr) return missing8();
   const Texture2D& tex = *s.texture;
+  if (vector_path(tex, s.state)) {
+    const Plan p0 = make_plan(s.state, tex.levels(), quad_lod(uv.x, uv.y, 0, tex.width(), tex.height()));
+    const Plan p1 = make_plan(s.state, tex.levels(), quad_lod(uv.x, uv.y, 1, tex.width(), tex.height()));
+    const Vec4<Float8> r0 = run_plan_rgba8(tex, p0, s.state, uv);
+    if (p0.level0 == p1.level0 && p0.level1 == p1.level1 && p0.blend == p1.blend && p0.linear == p1.linear) return r0;
+    const Vec4<Float8> r1 = run_plan_rgba8(tex, p1, s.state, uv);
+    const Mask8 first = Mask8::from_bits(0x0F);
+    return {select(first, r0.x, r1.x), select(first, r0.y, r1.y), select(first, r0.z, r1.z), select(first, r0.w, r1.w)};
+  }
   const glm::vec4 border = border_for(tex.format(), s.state.border_color);
   Vec4<Float8> r;
   with_format(tex.format(), [&](auto tag) {

@@ -38,9 +38,13 @@ struct Mask8 {
     return Mask8(((vx::i32x8{} + int(bits)) & bit) != 0);
   }
   unsigned bits() const {
+#if defined(__AVX__)
+    return unsigned(__builtin_ia32_movmskps256((float __attribute__((vector_size(32))))v));
+#else
     unsigned b = 0;
     for (int i = 0; i < kLanes; ++i) b |= (v[i] != 0 ? 1u : 0u) << i;
     return b;
+#endif
   }
   bool operator[](int i) const { return v[i] != 0; }
   friend Mask8 operator&(Mask8 a, Mask8 b) { return Mask8(a.v & b.v); }

@@ -122,6 +122,10 @@ struct DrawRecord {
   float depth_resolution;  // r of GL 4.6 §14.6.5 for units of polygon offset (fixed formats)
   bool depth_float = false;
   bool early_depth = true;  // the shader neither discards nor writes depth
+  // Common states that fragment_ops.cpp runs eight lanes at a time: a depth test without
+  // stencil; one RGBA8 colour attachment without blending, all channels written.
+  bool fast_depth = false;
+  bool fast_color = false;
 };
 
 // The shader of a draw with its uniforms; the two virtual calls are the only places where

@@ -1,0 +1,398 @@
+#include "bench.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+#include "scenes.hpp"
+#include "tessel/gpu/context.hpp"
+#include "tessel/gpu/image.hpp"
+
+namespace tessel::apps {
+using namespace tessel::gpu;
+
+namespace {
+
+// The scenes' Blinn-Phong (scenes README), per fragment in world space. Textured: the albedo
+// is the texture. Instanced: offset and albedo come from per-instance attributes 3 and 4.
+template <bool Textured, bool Instanced> struct ScenePhong {
+  struct Uniforms {
+    glm::mat4 viewproj;
+    glm::vec3 offset, albedo, eye, light;
+    Sampler2D tex;
+  };
+  template <class F> struct Varyings {
+    Vec3<F> p, n;
+    Vec2<F> uv;
+    Vec3<F> albedo;
+  };
+  static constexpr uint32_t attributes = Instanced ? 0b11111 : 0b111;
+
+  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+    if constexpr (Instanced) {
+      out.p = in.attr[0].xyz() + in.attr[3].xyz();
+      out.albedo = in.attr[4].xyz();
+    } else {
+      out.p = in.attr[0].xyz() + Vec3<F>(u.offset);
+      out.albedo = Vec3<F>(u.albedo);
+    }
+    out.n = in.attr[1].xyz();
+    out.uv = in.attr[2].xy();
+    return u.viewproj * Vec4<F>(out.p, F(1.0f));
+  }
+
+  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
+    const Vec3<F> N = normalize(v.n);
+    const Vec3<F> L = normalize(Vec3<F>(u.light) - v.p);
+    const Vec3<F> V = normalize(Vec3<F>(u.eye) - v.p);
+    const Vec3<F> H = normalize(L + V);
+    const F ndl = max(dot(N, L), F(0.0f));
+    const F spec = select(ndl > F(0.0f), pow(max(dot(N, H), F(0.0f)), F(scenes::kShininess)), F(0.0f));
+    Vec3<F> albedo = v.albedo;
+    if constexpr (Textured) albedo = texture(u.tex, v.uv).xyz();
+    const Vec3<F> c = albedo * F(scenes::kAmbient) + albedo * (ndl * F(scenes::kDiffuse)) +
+                      Vec3<F>(spec * F(scenes::kSpecular));
+    f.color[0] = Vec4<F>(c, F(1.0f));
+  }
+};
+
+struct Run {
+  std::string renderer;  // "tessel" or "llvmpipe"
+  std::string scene;
+  int width = 0, height = 0, threads = 0;
+  std::vector<double> ms;
+  double ms_median = 0;
+  double peak_rss_mb = 0;
+  uint64_t triangles = 0, fragments = 0;
+  std::string image;
+  std::vector<uint8_t> rgba;  // bottom-up
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Peak resident memory of this process since the last reset_peak_rss(), from /proc.
+double peak_rss_mb() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::strtod(line.c_str() + 6, nullptr) / 1024.0;
+  return 0;
+}
+void reset_peak_rss() {
+  std::ofstream out("/proc/self/clear_refs");
+  out << "5";  // Linux >= 4.0: resets VmHWM to the current RSS
+}
+
+// One scene on Tessel: `warmup` frames, then `frames` timed frames of clear + draws + finish.
+Run run_tessel(const scenes::Scene& s, int threads, int frames, int warmup, bool instanced) {
+  reset_peak_rss();
+  Run r;
+  r.renderer = "tessel";
+  r.scene = s.name;
+  r.width = s.width;
+  r.height = s.height;
+  r.threads = threads;
+  r.triangles = s.triangles();
+
+  Texture2D color(Format::RGBA8, s.width, s.height);
+  Texture2D depth(Format::Depth24Stencil8, s.width, s.height);
+  Framebuffer fb(&color, &depth);
+  Context ctx(threads);
+  ctx.bind_framebuffer(&fb);
+
+  const Buffer vbo(s.mesh.vertices), ibo(s.mesh.indices);
+  VertexLayout layout;
+  const uint32_t stride = scenes::Mesh::kStride * sizeof(float);
+  layout.attrib(0, vbo, 3, AttribType::F32, stride, 0);
+  layout.attrib(1, vbo, 3, AttribType::F32, stride, 3 * sizeof(float));
+  layout.attrib(2, vbo, 2, AttribType::F32, stride, 6 * sizeof(float));
+  instanced = instanced && s.instanceable;
+  std::vector<float> per_instance;
+  for (const scenes::Draw& d : s.draws)
+    per_instance.insert(per_instance.end(), {d.offset.x, d.offset.y, d.offset.z, d.albedo.x, d.albedo.y, d.albedo.z});
+  const Buffer instances(per_instance);
+  if (instanced) {
+    layout.attrib(3, instances, 3, AttribType::F32, 6 * sizeof(float), 0, false, 1);
+    layout.attrib(4, instances, 3, AttribType::F32, 6 * sizeof(float), 3 * sizeof(float), false, 1);
+  }
+
+  std::unique_ptr<Texture2D> tex;
+  if (s.textured) {
+    tex = std::make_unique<Texture2D>(Format::RGBA8, scenes::kTextureSize, scenes::kTextureSize, 0);
+    const auto px = scenes::texture_rgba8();
+    tex->upload_rgba8(0, px.data(), px.size());
+    tex->generate_mipmaps();
+  }
+
+  RenderState state;
+  state.depth_test = true;
+  state.cull = CullMode::Back;
+
+  auto frame = [&]<bool T, bool I>() {
+    ctx.clear({.color = {0, 0, 0, 1}, .depth = 1.0f});
+    typename ScenePhong<T, I>::Uniforms u{};
+    u.viewproj = s.projection * s.view;
+    u.eye = s.eye;
+    u.light = s.light;
+    u.tex.texture = tex.get();
+    u.tex.state.min_filter = Filter::LinearMipmapLinear;
+    u.tex.state.mag_filter = Filter::Linear;
+    if constexpr (I) {
+      const scenes::Draw& d = s.draws.front();
+      ctx.draw(ScenePhong<T, I>{}, u, layout, state,
+               {.topology = Topology::Triangles, .first = d.first_index, .count = d.index_count,
+                .index_buffer = &ibo, .instance_count = uint32_t(s.draws.size())});
+    } else {
+      for (const scenes::Draw& d : s.draws) {
+        u.offset = d.offset;
+        u.albedo = d.albedo;
+        ctx.draw(ScenePhong<T, I>{}, u, layout, state,
+                 {.topology = Topology::Triangles, .first = d.first_index, .count = d.index_count,
+                  .index_buffer = &ibo});
+      }
+    }
+    ctx.finish();
+  };
+  auto one = [&] {
+    if (s.textured) frame.template operator()<true, false>();
+    else if (instanced) frame.template operator()<false, true>();
+    else frame.template operator()<false, false>();
+  };
+
+  for (int i = 0; i < warmup; ++i) one();
+  ctx.reset_stats();
+  for (int i = 0; i < frames; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    one();
+    r.ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  r.ms_median = median(r.ms);
+  r.fragments = ctx.stats().fragments_shaded / uint64_t(std::max(1, frames));
+  r.rgba = read_rgba8(color);
+  r.peak_rss_mb = peak_rss_mb();
+  return r;
+}
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// The value of "key" in a one-line JSON object (numbers and plain strings only).
+std::string json_field(const std::string& json, const std::string& key) {
+  const std::string k = "\"" + key + "\":";
+  const auto at = json.find(k);
+  if (at == std::string::npos) return {};
+  size_t i = at + k.size();
+  while (i < json.size() && json[i] == ' ') ++i;
+  if (i < json.size() && json[i] == '"') {
+    std::string v;
+    for (++i; i < json.size() && json[i] != '"'; ++i) {
+      if (json[i] == '\\' && i + 1 < json.size()) ++i;
+      v += json[i];
+    }
+    return v;
+  }
+  const auto end = json.find_first_of(",}", i);
+  return json.substr(i, end - i);
+}
+
+std::string find_peer(const BenchOptions& o) {
+  namespace fs = std::filesystem;
+  if (!o.peer_path.empty()) return o.peer_path;
+  std::error_code ec;
+  const fs::path self = fs::canonical("/proc/self/exe", ec);
+  if (!ec) {
+    for (const fs::path& p : {self.parent_path() / "tessel_peer", self.parent_path().parent_path() / "bench/peer/tessel_peer"})
+      if (fs::exists(p, ec)) return p.string();
+  }
+  return "tessel_peer";  // from PATH
+}
+
+// One scene on llvmpipe, in a child process (so its memory is its own).
+Run run_peer(const std::string& peer, const scenes::Scene& s, int threads, int frames, int warmup,
+             bool instanced, const std::string& image) {
+  std::ostringstream cmd;
+  cmd << quote(peer) << " --scene " << quote(s.name) << " --size " << s.width << "x" << s.height
+      << " --threads " << threads << " --frames " << frames << " --warmup " << warmup
+      << (instanced ? " --instanced" : "") << " --image " << quote(image) << " 2>&1";
+  FILE* p = popen(cmd.str().c_str(), "r");
+  if (!p) throw std::runtime_error("cannot start the peer " + peer);
+  std::string out;
+  char buf[4096];
+  while (size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+  const int status = pclose(p);
+  const auto brace = out.rfind("{\"scene\"");
+  if (status != 0 || brace == std::string::npos) {
+    while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+    throw std::runtime_error("the llvmpipe peer failed (" + peer + "): " + (out.empty() ? "no output" : out));
+  }
+  const std::string json = out.substr(brace);
+  Run r;
+  r.renderer = "llvmpipe";
+  r.scene = s.name;
+  r.width = s.width;
+  r.height = s.height;
+  r.threads = threads;
+  r.triangles = s.triangles();
+  r.ms_median = std::strtod(json_field(json, "ms_median").c_str(), nullptr);
+  r.peak_rss_mb = std::strtod(json_field(json, "peak_rss_mb").c_str(), nullptr);
+  r.image = image;
+  const Image im = load_image(image);
+  if (im.width != s.width || im.height != s.height)
+    throw std::runtime_error("the peer image " + image + " has the wrong size");
+  r.rgba = im.pixels;
+  return r;
+}
+
+// Pixels where some channel differs by more than `tolerance`.
+uint64_t count_differing(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b, int tolerance) {
+  uint64_t n = 0;
+  for (size_t i = 0; i + 3 < a.size() && i + 3 < b.size(); i += 4) {
+    bool d = false;
+    for (int c = 0; c < 4; ++c) d = d || std::abs(int(a[i + c]) - int(b[i + c])) > tolerance;
+    n += d;
+  }
+  return n;
+}
+
+double mtris(const Run& r) { return r.ms_median > 0 ? double(r.triangles) / (r.ms_median * 1e3) : 0; }
+double mpix(const Run& r, uint64_t fragments) { return r.ms_median > 0 ? double(fragments) / (r.ms_median * 1e3) : 0; }
+
+std::string cpu_flags() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line, model, flags;
+  while (std::getline(in, line)) {
+    if (model.empty() && line.rfind("model name", 0) == 0) model = line.substr(line.find(':') + 2);
+    if (flags.empty() && line.rfind("flags", 0) == 0) flags = line.substr(line.find(':') + 2);
+  }
+  std::string simd;
+  std::istringstream fs(flags);
+  for (std::string f; fs >> f;)
+    if (f == "sse4_2" || f == "avx" || f == "avx2" || f == "fma" || f == "f16c" || f == "avx512f" || f == "avx512bw" ||
+        f == "avx512vl")
+      simd += (simd.empty() ? "" : " ") + f;
+  return model + " [" + simd + "]";
+}
+
+}  // namespace
+
+int run_bench(const BenchOptions& o) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> names = o.scenes.empty() ? scenes::scene_names() : o.scenes;
+  for (const auto& n : names)
+    if (!scenes::is_scene(n)) (void)scenes::make_scene(n, 1, 1);  // throws with the list of names
+  const auto sizes = o.sizes.empty() ? std::vector<std::pair<int, int>>{{1920, 1080}, {640, 480}} : o.sizes;
+  const auto threads = o.threads.empty() ? std::vector<int>{1, 2} : o.threads;
+  const bool several = sizes.size() * threads.size() > 1;
+
+  std::string image_dir = o.images, temp_dir;
+  if (o.peer && image_dir.empty()) {
+    char tmpl[] = "/tmp/tessel-bench-XXXXXX";
+    if (!mkdtemp(tmpl)) throw std::runtime_error("cannot create a temporary folder for the peer images");
+    temp_dir = image_dir = tmpl;
+  }
+  if (!image_dir.empty()) fs::create_directories(image_dir);
+  const std::string peer = o.peer ? find_peer(o) : "";
+
+  std::printf("CPU: %s\n", cpu_flags().c_str());
+  std::printf("%d frames after %d warm-up frames; ms = median per frame\n\n", o.frames, o.warmup);
+  if (o.peer)
+    std::printf("%-13s %9s %3s | %9s %7s %8s %7s | %9s %7s | %6s %7s %9s\n", "scene", "size", "thr", "tessel ms",
+                "Mtri/s", "Mpix/s", "MB", "llvmp ms", "MB", "speed", "diff>2", "diff %");
+  else
+    std::printf("%-13s %9s %3s | %9s %7s %8s %7s\n", "scene", "size", "thr", "ms", "Mtri/s", "Mpix/s", "MB");
+
+  std::ostringstream json;
+  json << "[\n";
+  bool first_json = true;
+  auto add_json = [&](const Run& r, uint64_t fragments, const std::string& extra) {
+    json << (first_json ? "" : ",\n") << "  {\"renderer\": \"" << r.renderer << "\", \"scene\": \"" << r.scene
+         << "\", \"width\": " << r.width << ", \"height\": " << r.height << ", \"threads\": " << r.threads
+         << ", \"ms_median\": " << r.ms_median << ", \"mtris_s\": " << mtris(r) << ", \"mpix_s\": " << mpix(r, fragments)
+         << ", \"peak_rss_mb\": " << r.peak_rss_mb << ", \"image\": \"" << r.image << "\"" << extra << "}";
+    first_json = false;
+  };
+
+  int failures = 0;
+  for (const auto& name : names)
+    for (const auto& [w, h] : sizes)
+      for (int t : threads) {
+        const scenes::Scene s = scenes::make_scene(name, w, h);
+        std::string stem = name;
+        if (several) stem += "_" + std::to_string(w) + "x" + std::to_string(h) + "_t" + std::to_string(t);
+        Run mine = run_tessel(s, t, o.frames, o.warmup, o.instanced);
+        if (!image_dir.empty()) {
+          mine.image = (fs::path(image_dir) / (stem + ".png")).string();
+          write_png(mine.image, w, h, 4, mine.rgba.data());
+        }
+        char size[32];
+        std::snprintf(size, sizeof size, "%dx%d", w, h);
+        std::printf("%-13s %9s %3d | %9.2f %7.3g %8.1f %7.1f", name.c_str(), size, t, mine.ms_median, mtris(mine),
+                    mpix(mine, mine.fragments), mine.peak_rss_mb);
+        if (!o.peer) {
+          std::printf("\n");
+          std::fflush(stdout);
+          add_json(mine, mine.fragments, "");
+          continue;
+        }
+        std::fflush(stdout);
+        Run theirs;
+        try {
+          theirs = run_peer(peer, s, t, o.frames, o.warmup, o.instanced,
+                            (fs::path(image_dir) / (stem + "_llvmpipe.png")).string());
+        } catch (const std::exception& e) {
+          std::printf("\n");
+          std::fprintf(stderr, "tessel bench: %s\n", e.what());
+          ++failures;
+          add_json(mine, mine.fragments, "");
+          continue;
+        }
+        const uint64_t diff = count_differing(mine.rgba, theirs.rgba, 2);
+        const double pct = 100.0 * double(diff) / (double(w) * h);
+        const double speed = mine.ms_median > 0 ? theirs.ms_median / mine.ms_median : 0;
+        if (o.max_diff_percent >= 0 && pct > o.max_diff_percent) {
+          std::fprintf(stderr, "tessel bench: %s %dx%d: %.3f%% of the pixels differ from llvmpipe by more than 2/255 (limit %.3f%%)\n",
+                       name.c_str(), w, h, pct, o.max_diff_percent);
+          ++failures;
+        }
+        std::printf(" | %9.2f %7.1f | %5.2fx %7llu %8.3f%%\n", theirs.ms_median, theirs.peak_rss_mb, speed,
+                    (unsigned long long)diff, pct);
+        std::fflush(stdout);
+        std::ostringstream extra;
+        extra << ", \"peer_ms_median\": " << theirs.ms_median << ", \"speedup\": " << speed
+              << ", \"pixels_differing\": " << diff << ", \"percent_differing\": " << pct;
+        add_json(mine, mine.fragments, extra.str());
+        add_json(theirs, mine.fragments, "");
+      }
+  json << "\n]\n";
+
+  if (!o.json.empty()) {
+    const std::string tmp = o.json + ".tmp";
+    {
+      std::ofstream out(tmp);
+      out << json.str();
+      if (!out) throw std::runtime_error("cannot write " + o.json);
+    }
+    fs::rename(tmp, o.json);
+  }
+  if (!temp_dir.empty()) fs::remove_all(temp_dir);
+  return failures ? 1 : 0;
+}
+
+}  // namespace tessel::apps

@@ -1,0 +1,28 @@
+// `tessel bench`: renders the standard scenes (bench/scenes) with Tessel, optionally side by
+// side with the llvmpipe peer (bench/peer), and reports medians, rates, memory and image
+// differences.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tessel::apps {
+
+struct BenchOptions {
+  std::vector<std::string> scenes;           // empty: all
+  std::vector<std::pair<int, int>> sizes;    // empty: 1920x1080 and 640x480
+  std::vector<int> threads;                  // empty: 1 and 2
+  int frames = 10, warmup = 3;
+  bool instanced = false;
+  bool peer = false;
+  std::string peer_path;  // the tessel_peer program; empty: next to this program, then PATH
+  std::string json;       // write results here
+  std::string images;     // write images into this folder
+  double max_diff_percent = -1;  // with peer: fail when more pixels than this differ by > 2/255
+};
+
+// Runs the benchmark and prints its table; returns the process exit code. Throws on errors
+// that stop the whole run (bad scene name, unwritable output).
+int run_bench(const BenchOptions& options);
+
+}  // namespace tessel::apps

@@ -1,0 +1,557 @@
+// tessel_peer: renders one of the standard benchmark scenes (bench/scenes, defined in
+// shared/scenes/README.md) through real OpenGL 3.3 core on Mesa llvmpipe, headless (EGL
+// surfaceless + an FBO), times it frame by frame and prints one line of JSON. It is the peer
+// that `tessel bench --peer` compares Tessel against.
+//
+//   tessel_peer --scene NAME --size WxH --threads N [--frames F] [--warmup W] [--instanced]
+//               [--image PATH]
+//
+// Exit codes: 0 success, 1 runtime failure (EGL, GL, I/O), 2 bad arguments.
+// GL entry points come straight from libOpenGL (glvnd), dispatched to the EGL context.
+#define GL_GLEXT_PROTOTYPES 1
+#define EGL_EGLEXT_PROTOTYPES 1
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scenes.hpp"
+
+namespace scenes = tessel::scenes;
+
+namespace {
+
+// ---- Command line --------------------------------------------------------------------------
+
+struct Options {
+  std::string scene, image;
+  int width = 0, height = 0, threads = 0, frames = 10, warmup = 3;
+  bool instanced = false;
+};
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+const char* const kUsage =
+    "usage: tessel_peer --scene NAME --size WxH --threads N [--frames F (10)] [--warmup W (3)]\n"
+    "                   [--instanced] [--image PATH]";
+
+// Parses a whole string as a decimal int in [lo, hi].
+int parse_int(const std::string& s, int lo, int hi, const std::string& what) {
+  int v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (s.empty() || ec != std::errc() || end != s.data() + s.size() || v < lo || v > hi)
+    throw UsageError(what + " must be an integer in [" + std::to_string(lo) + ", " +
+                     std::to_string(hi) + "], got '" + s + "'");
+  return v;
+}
+
+Options parse_args(int argc, char** argv) {
+  Options o;
+  bool have_size = false, have_threads = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    // Every option except --instanced takes one value: the next argument.
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw UsageError(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--scene") {
+      o.scene = value();
+    } else if (a == "--size") {
+      const std::string v = value();
+      const size_t x = v.find('x');
+      if (x == std::string::npos) throw UsageError("--size must be WxH, got '" + v + "'");
+      o.width = parse_int(v.substr(0, x), 1, 16384, "--size width");
+      o.height = parse_int(v.substr(x + 1), 1, 16384, "--size height");
+      have_size = true;
+    } else if (a == "--threads") {
+      o.threads = parse_int(value(), 1, 1024, "--threads");
+      have_threads = true;
+    } else if (a == "--frames") {
+      o.frames = parse_int(value(), 1, 100000, "--frames");
+    } else if (a == "--warmup") {
+      o.warmup = parse_int(value(), 0, 100000, "--warmup");
+    } else if (a == "--instanced") {
+      o.instanced = true;
+    } else if (a == "--image") {
+      o.image = value();
+      if (o.image.empty()) throw UsageError("--image needs a non-empty path");
+    } else {
+      throw UsageError("unknown argument '" + a + "'");
+    }
+  }
+  if (o.scene.empty()) throw UsageError("--scene is required");
+  if (!have_size) throw UsageError("--size is required");
+  if (!have_threads) throw UsageError("--threads is required");
+  return o;
+}
+
+// ---- Small helpers -------------------------------------------------------------------------
+
+// Throws with the name of the call if GL has recorded an error (draining the queue).
+void check_gl(const char* what) {
+  GLenum e = glGetError();
+  if (e == GL_NO_ERROR) return;
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "GL error 0x%04X", unsigned(e));
+  std::string msg = std::string(buf) + " after " + what;
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {}
+  throw std::runtime_error(msg);
+}
+
+std::runtime_error egl_error(const char* what) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, " (EGL error 0x%04X)", unsigned(eglGetError()));
+  return std::runtime_error(std::string(what) + " failed" + buf);
+}
+
+bool has_ext(const char* list, const char* name) {
+  if (!list) return false;
+  const size_t n = std::strlen(name);
+  for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n)
+    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
+  return false;
+}
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (const unsigned char c : s) {
+    if (c == '"') out += "\\\"";
+    else if (c == '\\') out += "\\\\";
+    else if (c == '\n') out += "\\n";
+    else if (c == '\t') out += "\\t";
+    else if (c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", unsigned(c));
+      out += buf;
+    } else out += char(c);
+  }
+  return out + "\"";
+}
+
+std::string fmt(double v, const char* f = "%.3f") {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+// Peak resident set size (VmHWM) in MB, or 0 if /proc is unavailable.
+double peak_rss_mb() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::strtod(line.c_str() + 6, nullptr) / 1024.0;
+  return 0.0;
+}
+
+// ---- EGL: a surfaceless desktop GL 3.3 core context ----------------------------------------
+
+// Owns the display and context; tears them down on destruction (also on error paths).
+struct EglContext {
+  EGLDisplay display = EGL_NO_DISPLAY;
+  EGLContext context = EGL_NO_CONTEXT;
+
+  EglContext() {
+    const char* client_exts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+        eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    // 1. EGL_MESA_platform_surfaceless: no window system, no GPU needed.
+    if (get_platform_display && has_ext(client_exts, "EGL_MESA_platform_surfaceless")) {
+      display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+      if (display != EGL_NO_DISPLAY && !eglInitialize(display, nullptr, nullptr))
+        display = EGL_NO_DISPLAY;
+    }
+    // 2. The default display, steered to the surfaceless platform.
+    if (display == EGL_NO_DISPLAY) {
+      setenv("EGL_PLATFORM", "surfaceless", 0);
+      display = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+      if (display == EGL_NO_DISPLAY) throw egl_error("eglGetDisplay");
+      if (!eglInitialize(display, nullptr, nullptr)) {
+        display = EGL_NO_DISPLAY;
+        throw egl_error("eglInitialize");
+      }
+    }
+    const char* exts = eglQueryString(display, EGL_EXTENSIONS);
+    if (!has_ext(exts, "EGL_KHR_surfaceless_context"))
+      throw std::runtime_error("EGL_KHR_surfaceless_context not supported");
+    if (!eglBindAPI(EGL_OPENGL_API)) throw egl_error("eglBindAPI(EGL_OPENGL_API)");
+    // We only draw into an FBO, so no config is needed where the driver allows that.
+    EGLConfig config = nullptr;  // == EGL_NO_CONFIG_KHR
+    if (!has_ext(exts, "EGL_KHR_no_config_context") &&
+        !has_ext(exts, "EGL_MESA_configless_context")) {
+      const EGLint attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+      EGLint n = 0;
+      if (!eglChooseConfig(display, attribs, &config, 1, &n) || n < 1)
+        throw std::runtime_error("no EGL config with EGL_OPENGL_BIT");
+    }
+    const EGLint ctx_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                                  EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                  EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    context = eglCreateContext(display, config, EGL_NO_CONTEXT, ctx_attribs);
+    if (context == EGL_NO_CONTEXT) throw egl_error("eglCreateContext(GL 3.3 core)");
+    if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
+      throw egl_error("eglMakeCurrent(surfaceless)");
+  }
+  ~EglContext() {
+    if (display == EGL_NO_DISPLAY) return;
+    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (context != EGL_NO_CONTEXT) eglDestroyContext(display, context);
+    eglTerminate(display);
+    eglReleaseThread();
+  }
+  EglContext(const EglContext&) = delete;
+  EglContext& operator=(const EglContext&) = delete;
+};
+
+// ---- Shaders -------------------------------------------------------------------------------
+
+// Blinn-Phong in world space (shared/scenes/README.md). Variants by #define: TEXTURED (albedo
+// from u_tex) and INSTANCED (offset and albedo from per-instance attributes 3 and 4).
+const char* const kVertexShader = R"(
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+#ifdef INSTANCED
+layout(location = 3) in vec3 a_offset;
+layout(location = 4) in vec3 a_albedo;
+flat out vec3 v_albedo;
+#else
+uniform vec3 u_offset;
+#endif
+uniform mat4 u_viewproj;  // projection * view, computed on the CPU
+out vec3 v_p;
+out vec3 v_n;
+out vec2 v_uv;
+void main() {
+#ifdef INSTANCED
+  vec3 p = a_pos + a_offset;
+  v_albedo = a_albedo;
+#else
+  vec3 p = a_pos + u_offset;
+#endif
+  v_p = p;
+  v_n = a_normal;
+  v_uv = a_uv;
+  gl_Position = u_viewproj * vec4(p, 1.0);
+}
+)";
+
+const char* const kFragmentShader = R"(
+in vec3 v_p;
+in vec3 v_n;
+in vec2 v_uv;
+#if defined(TEXTURED)
+uniform sampler2D u_tex;
+#elif defined(INSTANCED)
+flat in vec3 v_albedo;
+#else
+uniform vec3 u_albedo;
+#endif
+uniform vec3 u_light;
+uniform vec3 u_eye;
+layout(location = 0) out vec4 o_color;
+void main() {
+  vec3 N = normalize(v_n);
+  vec3 L = normalize(u_light - v_p);
+  vec3 V = normalize(u_eye - v_p);
+  vec3 H = normalize(L + V);
+  float ndl = max(dot(N, L), 0.0);
+  float spec = ndl > 0.0 ? pow(max(dot(N, H), 0.0), K_SHININESS) : 0.0;
+#if defined(TEXTURED)
+  vec3 albedo = texture(u_tex, v_uv).rgb;
+#elif defined(INSTANCED)
+  vec3 albedo = v_albedo;
+#else
+  vec3 albedo = u_albedo;
+#endif
+  o_color = vec4(K_AMBIENT * albedo + K_DIFFUSE * ndl * albedo + K_SPECULAR * spec * vec3(1.0),
+                 1.0);
+}
+)";
+
+GLuint compile_shader(GLenum type, const std::string& src) {
+  const GLuint s = glCreateShader(type);
+  const char* p = src.c_str();
+  glShaderSource(s, 1, &p, nullptr);
+  glCompileShader(s);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {0};
+    glGetShaderInfoLog(s, sizeof log, nullptr, log);
+    glDeleteShader(s);
+    throw std::runtime_error(std::string("shader compile failed: ") + log);
+  }
+  return s;
+}
+
+GLuint build_program(bool textured, bool instanced) {
+  // Header: version, variant defines and the material constants of scenes.hpp.
+  auto f = [](float v) { return "float(" + fmt(v, "%.9g") + ")"; };
+  std::string head = "#version 330 core\n";
+  if (textured) head += "#define TEXTURED 1\n";
+  if (instanced) head += "#define INSTANCED 1\n";
+  head += "#define K_AMBIENT " + f(scenes::kAmbient) + "\n#define K_DIFFUSE " +
+          f(scenes::kDiffuse) + "\n#define K_SPECULAR " + f(scenes::kSpecular) +
+          "\n#define K_SHININESS " + f(scenes::kShininess) + "\n";
+  const GLuint vs = compile_shader(GL_VERTEX_SHADER, head + kVertexShader);
+  const GLuint fs = compile_shader(GL_FRAGMENT_SHADER, head + kFragmentShader);
+  const GLuint prog = glCreateProgram();
+  glAttachShader(prog, vs);
+  glAttachShader(prog, fs);
+  glLinkProgram(prog);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(prog, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {0};
+    glGetProgramInfoLog(prog, sizeof log, nullptr, log);
+    throw std::runtime_error(std::string("program link failed: ") + log);
+  }
+  return prog;
+}
+
+const void* byte_offset(size_t bytes) { return reinterpret_cast<const void*>(bytes); }
+
+// ---- The benchmark -------------------------------------------------------------------------
+
+int run(const Options& opt, const scenes::Scene& scene) {
+  EglContext egl;
+  const char* renderer_c = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string renderer = renderer_c ? renderer_c : "";
+  if (renderer.find("llvmpipe") == std::string::npos)
+    throw std::runtime_error("GL_RENDERER is '" + renderer + "', not llvmpipe");
+  glGetError();  // discard anything left over from context creation
+  const int W = opt.width, H = opt.height;
+
+  // Framebuffer: RGBA8 colour + DEPTH24_STENCIL8 renderbuffers.
+  GLuint fbo = 0, rb[2] = {0, 0};
+  glGenFramebuffers(1, &fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glGenRenderbuffers(2, rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, W, H);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, W, H);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("framebuffer incomplete");
+  glViewport(0, 0, W, H);
+  check_gl("framebuffer setup");
+
+  // Geometry: one VAO with the interleaved vertex buffer and the index buffer.
+  GLuint vao = 0, buf[3] = {0, 0, 0};  // vertices, indices, instances
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glGenBuffers(3, buf);
+  glBindBuffer(GL_ARRAY_BUFFER, buf[0]);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(scene.mesh.vertices.size() * sizeof(float)),
+               scene.mesh.vertices.data(), GL_STATIC_DRAW);
+  const GLsizei stride = scenes::Mesh::kStride * sizeof(float);  // 32 bytes
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, byte_offset(0));
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, byte_offset(12));
+  glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride, byte_offset(24));
+  for (GLuint a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buf[1]);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(scene.mesh.indices.size() * sizeof(uint32_t)),
+               scene.mesh.indices.data(), GL_STATIC_DRAW);
+
+  // Instanced drawing: per-instance offset (attrib 3) and albedo (attrib 4), divisor 1.
+  const bool instanced = opt.instanced && scene.instanceable && !scene.draws.empty();
+  if (instanced) {
+    std::vector<float> inst;
+    for (const scenes::Draw& d : scene.draws)
+      inst.insert(inst.end(), {d.offset.x, d.offset.y, d.offset.z, d.albedo.x, d.albedo.y,
+                               d.albedo.z});
+    glBindBuffer(GL_ARRAY_BUFFER, buf[2]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(inst.size() * sizeof(float)), inst.data(),
+                 GL_STATIC_DRAW);
+    glVertexAttribPointer(3, 3, GL_FLOAT, GL_FALSE, 24, byte_offset(0));
+    glVertexAttribPointer(4, 3, GL_FLOAT, GL_FALSE, 24, byte_offset(12));
+    for (GLuint a = 3; a < 5; ++a) {
+      glEnableVertexAttribArray(a);
+      glVertexAttribDivisor(a, 1);
+    }
+  }
+  check_gl("vertex/index buffer setup");
+
+  // Texture (textured scene): 1024x1024 RGBA8, rows bottom-up, full mipmap chain.
+  GLuint tex = 0;
+  if (scene.textured) {
+    const std::vector<uint8_t> texels = scenes::texture_rgba8();
+    glGenTextures(1, &tex);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, scenes::kTextureSize, scenes::kTextureSize, 0,
+                 GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    check_gl("texture setup");
+  }
+
+  // Program and per-scene uniforms.
+  const GLuint prog = build_program(scene.textured, instanced);
+  glUseProgram(prog);
+  const glm::mat4 viewproj = scene.projection * scene.view;
+  glUniformMatrix4fv(glGetUniformLocation(prog, "u_viewproj"), 1, GL_FALSE,
+                     glm::value_ptr(viewproj));
+  glUniform3fv(glGetUniformLocation(prog, "u_light"), 1, glm::value_ptr(scene.light));
+  glUniform3fv(glGetUniformLocation(prog, "u_eye"), 1, glm::value_ptr(scene.eye));
+  if (scene.textured) glUniform1i(glGetUniformLocation(prog, "u_tex"), 0);
+  const GLint loc_offset = glGetUniformLocation(prog, "u_offset");  // -1 if unused: ignored
+  const GLint loc_albedo = glGetUniformLocation(prog, "u_albedo");
+  check_gl("program setup");
+
+  // Fixed state of the scenes README.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glFrontFace(GL_CCW);
+  glDisable(GL_BLEND);
+  glDisable(GL_DITHER);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClearDepth(1.0);
+  check_gl("render state setup");
+
+  // One frame: clear, every draw in order (or one instanced draw), then wait for the GPU.
+  auto frame = [&] {
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (instanced) {
+      const scenes::Draw& d = scene.draws.front();
+      glDrawElementsInstanced(GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
+                              byte_offset(size_t(d.first_index) * sizeof(uint32_t)),
+                              GLsizei(scene.draws.size()));
+    } else {
+      for (const scenes::Draw& d : scene.draws) {
+        glUniform3fv(loc_offset, 1, glm::value_ptr(d.offset));
+        glUniform3fv(loc_albedo, 1, glm::value_ptr(d.albedo));
+        glDrawElements(GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
+                       byte_offset(size_t(d.first_index) * sizeof(uint32_t)));
+      }
+    }
+    glFinish();
+  };
+
+  for (int i = 0; i < opt.warmup; ++i) frame();
+  check_gl("warm-up frames");
+  std::vector<double> ms;
+  for (int i = 0; i < opt.frames; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    frame();
+    const auto t1 = std::chrono::steady_clock::now();
+    ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+  }
+  check_gl("timed frames");
+
+  // Median (mean of the two middle values for an even count) and minimum.
+  std::vector<double> sorted = ms;
+  std::sort(sorted.begin(), sorted.end());
+  const size_t n = sorted.size();
+  const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+
+  // Read back the last frame (rows bottom-up) and write it as a PNG, top row first.
+  std::vector<uint8_t> pixels(size_t(W) * size_t(H) * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  check_gl("glReadPixels");
+  if (!opt.image.empty()) {
+    const std::string tmp = opt.image + ".tmp";
+    stbi_flip_vertically_on_write(1);
+    if (!stbi_write_png(tmp.c_str(), W, H, 4, pixels.data(), W * 4)) {
+      std::remove(tmp.c_str());
+      throw std::runtime_error("cannot write " + tmp);
+    }
+    if (std::rename(tmp.c_str(), opt.image.c_str()) != 0) {
+      std::remove(tmp.c_str());
+      throw std::runtime_error("cannot rename " + tmp + " to " + opt.image + ": " +
+                               std::strerror(errno));
+    }
+  }
+
+  glDeleteProgram(prog);
+  if (tex) glDeleteTextures(1, &tex);
+  glDeleteBuffers(3, buf);
+  glDeleteVertexArrays(1, &vao);
+  glDeleteRenderbuffers(2, rb);
+  glDeleteFramebuffers(1, &fbo);
+
+  // The result: exactly one line of JSON on stdout.
+  std::string ms_list;
+  for (const double v : ms) {
+    if (!ms_list.empty()) ms_list += ',';
+    ms_list += fmt(v);
+  }
+  std::string json = "{\"scene\":" + json_string(scene.name) +
+                     ",\"width\":" + std::to_string(W) + ",\"height\":" + std::to_string(H) +
+                     ",\"threads\":" + std::to_string(opt.threads) +
+                     ",\"instanced\":" + (instanced ? "true" : "false") +
+                     ",\"frames\":" + std::to_string(opt.frames) +
+                     ",\"ms_median\":" + fmt(median) + ",\"ms_min\":" + fmt(sorted.front()) +
+                     ",\"ms\":[" + ms_list + "],\"peak_rss_mb\":" + fmt(peak_rss_mb(), "%.1f") +
+                     ",\"triangles\":" + std::to_string(scene.triangles()) +
+                     ",\"renderer\":" + json_string(renderer) +
+                     ",\"image\":" + json_string(opt.image) + "}\n";
+  std::fputs(json.c_str(), stdout);
+  std::fflush(stdout);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options opt;
+  try {
+    opt = parse_args(argc, argv);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "tessel_peer: %s\n%s\n", e.what(), kUsage);
+    return 2;
+  }
+
+  // Pick llvmpipe and its thread count before anything touches EGL/Mesa.
+  setenv("LP_NUM_THREADS", std::to_string(opt.threads).c_str(), 1);
+  setenv("GALLIUM_DRIVER", "llvmpipe", 0);
+  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
+
+  scenes::Scene scene;
+  try {
+    scene = scenes::make_scene(opt.scene, opt.width, opt.height);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "tessel_peer: %s\n", e.what());
+    return 2;
+  }
+  try {
+    return run(opt, scene);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tessel_peer: %s\n", e.what());
+    return 1;
+  }
+}
