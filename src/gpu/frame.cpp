@@ -66,6 +66,10 @@ struct Worker {
   std::vector<uint32_t> prim_slots;
   std::vector<glm::vec4> pos;
   std::vector<float> vars;
+  // Per shaded vertex: clip code (kNotFinite when a coordinate is NaN/Inf) and, when the
+  // code is 0, the window position (computed once, shared by every primitive using it).
+  std::vector<unsigned> codes;
+  std::vector<WinVert> win;
   ClipVert clip_a[24], clip_b[24];
 };
 
@@ -306,35 +310,44 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
   d.program->shade_vertices(d, w.ids.data(), int(nv), ch.instance, w.pos.data(), w.vars.data());
   w.counters.vertices_shaded += nv;
 
-  // 2. Assembly, clipping, setup, binning.
+  // 2. Per vertex: clip code, and the window position of the vertices inside every plane.
   const ClipPlanes planes = make_clip_planes(d);
+  w.codes.resize(nv);
+  w.win.resize(nv);
+  for (size_t i = 0; i < nv; ++i) {
+    const glm::vec4& p = w.pos[i];
+    const unsigned code = finite(p) ? clip_code(planes, p) : kNotFinite;
+    w.codes[i] = code;
+    if (code == 0) w.win[i] = to_window(d, p, &w.vars[i * size_t(K)]);
+  }
+
+  // 3. Assembly, clipping, setup, binning.
   const bool fill = d.state.polygon_mode == PolygonMode::Fill;
   Prim* out[2];
   for (uint32_t p = 0; p < nprims; ++p) {
     const uint32_t prim_id = ch.begin + p;
     const uint32_t* s = &w.prim_slots[size_t(p) * ps];
     ++w.counters.primitives_in;
-    bool ok = true;
-    for (int k = 0; k < ps; ++k) ok = ok && finite(w.pos[s[k]]);
-    if (!ok) continue;  // NaN or Inf position: the primitive is dropped
+    unsigned any_code = 0;
+    for (int k = 0; k < ps; ++k) any_code |= w.codes[s[k]];
+    if (any_code & kNotFinite) continue;  // NaN or Inf position: the primitive is dropped
     auto var_of = [&](uint32_t slot) { return &w.vars[size_t(slot) * K]; };
 
     if (ps == 1) {
-      if (clip_code(planes, w.pos[s[0]])) continue;
-      const WinVert v = to_window(d, w.pos[s[0]], var_of(s[0]));
-      const int n = setup_point(d, v, prim_id, true, 0.0f, w.arena, w.counters, out);
+      if (w.codes[s[0]]) continue;
+      const int n = setup_point(d, w.win[s[0]], prim_id, true, 0.0f, w.arena, w.counters, out);
       for (int i = 0; i < n; ++i) bin(w, chunk_index, &d, out[i]);
       continue;
     }
     if (ps == 2) {
       const glm::vec4 &p0 = w.pos[s[0]], &p1 = w.pos[s[1]];
-      const unsigned c0 = clip_code(planes, p0), c1 = clip_code(planes, p1);
+      const unsigned c0 = w.codes[s[0]], c1 = w.codes[s[1]];
       if (c0 & c1) continue;
       const float* flat_src = var_of(s[1]);
       WinVert a, b;
       if ((c0 | c1) == 0) {
-        a = to_window(d, p0, var_of(s[0]));
-        b = to_window(d, p1, var_of(s[1]));
+        a = w.win[s[0]];
+        b = w.win[s[1]];
       } else {
         float t0, t1;
         if (!clip_line(planes, c0 | c1, p0, p1, t0, t1)) continue;
@@ -358,15 +371,23 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
 
     // Triangles.
     const float* flat_src = var_of(s[2]);
-    const glm::vec4 &p0 = w.pos[s[0]], &p1 = w.pos[s[1]], &p2 = w.pos[s[2]];
-    const unsigned c0 = clip_code(planes, p0), c1 = clip_code(planes, p1), c2 = clip_code(planes, p2);
+    const unsigned c0 = w.codes[s[0]], c1 = w.codes[s[1]], c2 = w.codes[s[2]];
     if (c0 & c1 & c2) continue;
+    if ((c0 | c1 | c2) == 0 && fill) {
+      // The common case: nothing to clip, one triangle.
+      bool culled = false;
+      Prim* pr = setup_triangle(d, w.win[s[0]], w.win[s[1]], w.win[s[2]], flat_src, prim_id, Facing::FromArea,
+                                d.state.offset_fill, w.arena, w.counters, &culled);
+      if (culled) ++w.counters.primitives_culled;
+      if (pr) bin(w, chunk_index, &d, pr);
+      continue;
+    }
     WinVert wv[24];
     int nw;
     if ((c0 | c1 | c2) == 0) {
-      wv[0] = to_window(d, p0, var_of(s[0]));
-      wv[1] = to_window(d, p1, var_of(s[1]));
-      wv[2] = to_window(d, p2, var_of(s[2]));
+      wv[0] = w.win[s[0]];
+      wv[1] = w.win[s[1]];
+      wv[2] = w.win[s[2]];
       nw = 3;
     } else {
       ++w.counters.primitives_clipped;

@@ -18,17 +18,6 @@
 
 namespace tessel::gpu::detail {
 
-WinVert to_window(const DrawRecord& d, const glm::vec4& pos, const float* var) {
-  const float oow = 1.0f / pos.w;
-  WinVert v;
-  v.x = pos.x * oow * d.vp_scale[0] + d.vp_offset[0];
-  v.y = pos.y * oow * d.vp_scale[1] + d.vp_offset[1];
-  v.z = pos.z * oow * d.vp_scale[2] + d.vp_offset[2];
-  v.oow = oow;
-  v.var = var;
-  return v;
-}
-
 static inline int32_t snap(float x) {
   // Round half to even, as _mm_cvtps_epi32 does in llvmpipe. Callers pass finite positions
   // within the guard band; the clamp keeps anything else defined.
@@ -37,9 +26,23 @@ static inline int32_t snap(float x) {
   return int32_t(std::clamp(v, -limit, limit));
 }
 
-static inline bool usable(const WinVert& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.oow) &&
-         v.oow > 0.0f && std::fabs(v.x) <= 2.0f * kGuardBand && std::fabs(v.y) <= 2.0f * kGuardBand;
+void snap_vertex(WinVert& v) {
+  v.usable = std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.oow) &&
+             v.oow > 0.0f && std::fabs(v.x) <= 2.0f * kGuardBand && std::fabs(v.y) <= 2.0f * kGuardBand;
+  v.sx = v.usable ? snap(v.x) : 0;
+  v.sy = v.usable ? snap(v.y) : 0;
+}
+
+WinVert to_window(const DrawRecord& d, const glm::vec4& pos, const float* var) {
+  const float oow = 1.0f / pos.w;
+  WinVert v;
+  v.x = pos.x * oow * d.vp_scale[0] + d.vp_offset[0];
+  v.y = pos.y * oow * d.vp_scale[1] + d.vp_offset[1];
+  v.z = pos.z * oow * d.vp_scale[2] + d.vp_offset[2];
+  v.oow = oow;
+  v.var = var;
+  snap_vertex(v);
+  return v;
 }
 
 float polygon_offset(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2) {
@@ -81,9 +84,9 @@ Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, 
   if (culled) *culled = false;
   // Clipping keeps positions finite and inside the guard band; a vertex that still is not
   // (w rounded to 0, overflow in the interpolation) drops the triangle.
-  if (!usable(v0) || !usable(v1) || !usable(v2)) return nullptr;
-  int64_t X[3] = {snap(v0.x), snap(v1.x), snap(v2.x)};
-  int64_t Y[3] = {snap(v0.y), snap(v1.y), snap(v2.y)};
+  if (!v0.usable || !v1.usable || !v2.usable) return nullptr;
+  int64_t X[3] = {v0.sx, v1.sx, v2.sx};
+  int64_t Y[3] = {v0.sy, v1.sy, v2.sy};
   int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
   if (area == 0) return nullptr;
 
@@ -191,7 +194,10 @@ int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const 
   } else {
     q[0].x += half; q[1].x += half; q[2].x -= half; q[3].x -= half;
   }
-  for (auto& v : q) v.z += z_offset;
+  for (auto& v : q) {
+    v.z += z_offset;
+    snap_vertex(v);
+  }
   const Facing f = front ? Facing::Front : Facing::Back;
   int n = 0;
   if (Prim* p = setup_triangle(d, q[0], q[1], q[2], flat_src, prim_id, f, false, arena, c, nullptr)) out[n++] = p;
@@ -207,7 +213,10 @@ int setup_point(const DrawRecord& d, const WinVert& v, uint32_t prim_id, bool fr
   q[1].x += half; q[1].y -= half;
   q[2].x += half; q[2].y += half;
   q[3].x -= half; q[3].y += half;
-  for (auto& w : q) w.z += z_offset;
+  for (auto& w : q) {
+    w.z += z_offset;
+    snap_vertex(w);
+  }
   const Facing f = front ? Facing::Front : Facing::Back;
   int n = 0;
   if (Prim* p = setup_triangle(d, q[0], q[1], q[2], v.var, prim_id, f, false, arena, c, nullptr)) out[n++] = p;

@@ -68,6 +68,7 @@ struct ClipPlanes {
 };
 ClipPlanes make_clip_planes(const DrawRecord& draw);
 // Bit i set when pos is outside plane i. NaN counts as outside every plane.
+inline constexpr unsigned kNotFinite = 1u << 31;  // a clip code for NaN/Inf positions
 unsigned clip_code(const ClipPlanes& planes, const glm::vec4& pos);
 // Clips the convex polygon in[0..n) against the planes in `mask`; returns the vertex count
 // (0 when nothing is left) and points *out at the result (one of the two buffers).
@@ -82,8 +83,13 @@ bool clip_line(const ClipPlanes& planes, unsigned mask, const glm::vec4& p0, con
 struct WinVert {
   float x, y, z, oow;
   const float* var;  // the vertex's varyings (clip-space values)
+  int32_t sx, sy;    // x, y snapped to the sub-pixel lattice (snap_vertex)
+  bool usable;       // finite, w > 0, inside twice the guard band: setup may use it
 };
+// Perspective divide and viewport transform; snaps the result (snap_vertex).
 WinVert to_window(const DrawRecord& d, const glm::vec4& pos, const float* var);
+// Recomputes sx, sy and usable after x or y changed.
+void snap_vertex(WinVert& v);
 
 // How setup decides the facing of a triangle.
 enum class Facing : int8_t { FromArea = -1, Back = 0, Front = 1 };

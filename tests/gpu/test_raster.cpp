@@ -203,10 +203,19 @@ TEST(Setup, SnapsToEighthBitSubpixelsAndCullsZeroArea) {
   Counters c;
   const float var[4] = {0, 0, 0, 0};
   // Two vertices 1/1024 pixel apart snap to the same point: zero area, dropped.
-  WinVert a{10.0f, 10.0f, 0, 1, var}, b{20.0f, 10.0f, 0, 1, var}, e{10.0f + 1.0f / 1024.0f, 10.0f, 0, 1, var};
+  auto vert = [&](float x, float y) {
+    WinVert v{};
+    v.x = x;
+    v.y = y;
+    v.oow = 1.0f;
+    v.var = var;
+    snap_vertex(v);
+    return v;
+  };
+  const WinVert a = vert(10.0f, 10.0f), b = vert(20.0f, 10.0f), e = vert(10.0f + 1.0f / 1024.0f, 10.0f);
   EXPECT_EQ(setup_triangle(d, a, b, e, var, 0, Facing::FromArea, false, arena, c, nullptr), nullptr);
   // Counter-clockwise is front by default; clockwise culled with CullMode::Back.
-  WinVert t{10.0f, 20.0f, 0, 1, var};
+  const WinVert t = vert(10.0f, 20.0f);
   Prim* p = setup_triangle(d, a, b, t, var, 0, Facing::FromArea, false, arena, c, nullptr);
   ASSERT_NE(p, nullptr);
   EXPECT_TRUE(p->front);

@@ -62,32 +62,63 @@ template <class S> class Program final : public ProgramBase {
     const int minx = std::max(p.minx, x0), maxx = std::min(p.maxx, x1 - 1);
     const int miny = std::max(p.miny, y0), maxy = std::min(p.maxy, y1 - 1);
     if (minx > maxx || miny > maxy) return;
+    const Int8 lane_dx(vx::i32x8{0, 1, 0, 1, 2, 3, 2, 3}), lane_dy(vx::i32x8{0, 0, 1, 1, 0, 0, 1, 1});
+    // With |a|, |b| < 2^26 an edge that crosses an 8x8 block stays below 2^30 in magnitude
+    // inside it, so its values are stepped in 32-bit lanes; larger steps (triangles
+    // thousands of pixels across) take the 64-bit per-lane path.
+    bool narrow = true;
+    for (const EdgeEq& e : p.e)
+      narrow = narrow && e.a > -(int64_t(1) << 26) && e.a < (int64_t(1) << 26) && e.b > -(int64_t(1) << 26) &&
+               e.b < (int64_t(1) << 26);
     for (int by = miny & ~7; by <= maxy; by += 8) {
       for (int bx = minx & ~7; bx <= maxx; bx += 8) {
-        // Classify the 8x8 block against each edge from its corner pixels.
-        bool inside_all = true, outside = false;
-        for (const EdgeEq& e : p.e) {
-          const int64_t e00 = e.c + e.a * bx + e.b * by;
-          const int64_t lo = e00 + std::min<int64_t>(0, e.a * 7) + std::min<int64_t>(0, e.b * 7);
-          const int64_t hi = e00 + std::max<int64_t>(0, e.a * 7) + std::max<int64_t>(0, e.b * 7);
+        // Classify the 8x8 block against each edge from its corner pixels: edges that do
+        // not cross it need no test inside.
+        unsigned crossing = 0;
+        bool outside = false;
+        int64_t e00[3];
+        for (int i = 0; i < 3; ++i) {
+          const EdgeEq& e = p.e[i];
+          e00[i] = e.c + e.a * bx + e.b * by;
+          const int64_t lo = e00[i] + std::min<int64_t>(0, e.a * 7) + std::min<int64_t>(0, e.b * 7);
+          const int64_t hi = e00[i] + std::max<int64_t>(0, e.a * 7) + std::max<int64_t>(0, e.b * 7);
           if (hi <= 0) { outside = true; break; }
-          if (lo <= 0) inside_all = false;
+          if (lo <= 0) crossing |= 1u << i;
         }
         if (outside) continue;
+        Int8 base[3];
+        int32_t step_a[3], step_b[3];
+        int ne = 0;
+        if (narrow) {
+          for (int i = 0; i < 3; ++i) {
+            if (!(crossing & (1u << i))) continue;
+            step_a[ne] = int32_t(p.e[i].a);
+            step_b[ne] = int32_t(p.e[i].b);
+            base[ne] = Int8(int32_t(e00[i])) + Int8(step_a[ne]) * lane_dx + Int8(step_b[ne]) * lane_dy;
+            ++ne;
+          }
+        }
         for (int gy = by; gy < by + 8; gy += 2) {
           if (gy + 1 < miny || gy > maxy) continue;
           for (int gx = bx; gx < bx + 8; gx += 4) {
             if (gx + 3 < minx || gx > maxx) continue;
-            unsigned mask = 0;
-            for (int l = 0; l < kLanes; ++l) {
-              const int px = gx + kLaneDx[l], py = gy + kLaneDy[l];
-              if (px < minx || px > maxx || py < miny || py > maxy) continue;
-              if (!inside_all) {
-                bool in = true;
-                for (const EdgeEq& e : p.e) in = in && (e.c + e.a * px + e.b * py > 0);
-                if (!in) continue;
+            unsigned mask = 0xFF;
+            if (gx < minx || gx + 3 > maxx || gy < miny || gy + 1 > maxy) {
+              const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
+              mask = ((px >= Int8(minx)) & (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy))).bits();
+            }
+            if (crossing) {
+              if (narrow) {
+                const int ox = gx - bx, oy = gy - by;
+                for (int k = 0; k < ne; ++k)
+                  mask &= ((base[k] + Int8(step_a[k] * ox + step_b[k] * oy)) > Int8(0)).bits();
+              } else {
+                for (int l = 0; l < kLanes; ++l) {
+                  const int px = gx + kLaneDx[l], py = gy + kLaneDy[l];
+                  for (int i = 0; i < 3; ++i)
+                    if ((crossing & (1u << i)) && !(p.e[i].c + p.e[i].a * px + p.e[i].b * py > 0)) mask &= ~(1u << l);
+                }
               }
-              mask |= 1u << l;
             }
             if (mask) shade_group(d, p, gx, gy, mask, c);
           }
