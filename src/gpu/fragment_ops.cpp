@@ -197,6 +197,54 @@ void write_rgba8(const ColorTarget& ct, int gx, int gy, unsigned mask, const Vec
   store_group(row0, row1, select(Mask8::from_bits(mask), px, load_group(row0, row1)));
 }
 
+// Sets the texels [x0, x1) x [y0, y1) of an image with `bytes`-byte texels (a divisor of 64)
+// to (old & keep) | set per byte, keep and set being one texel's pattern (set has no bits in
+// keep). keep all zero is a plain fill and never reads; keep all ones changes nothing.
+void fill_rect(std::byte* data, size_t row_bytes, size_t bytes, const uint8_t* keep, const uint8_t* set,
+               int x0, int y0, int x1, int y1) {
+  bool reads = false, writes = false;
+  for (size_t i = 0; i < bytes; ++i) {
+    reads |= keep[i] != 0;
+    writes |= keep[i] != 0xFF;
+  }
+  if (!writes) return;
+  // The pattern repeated over 64 bytes, so every 64-byte step of a row starts on a texel.
+  uint8_t kb[64], sb[64];
+  for (size_t i = 0; i < 64; ++i) {
+    kb[i] = keep[i % bytes];
+    sb[i] = set[i % bytes];
+  }
+  uint64_t kw[8], sw[8];
+  std::memcpy(kw, kb, 64);
+  std::memcpy(sw, sb, 64);
+  const size_t n = size_t(x1 - x0) * bytes;
+  for (int y = y0; y < y1; ++y) {
+    std::byte* p = data + size_t(y) * row_bytes + size_t(x0) * bytes;
+    size_t off = 0;
+    if (!reads) {
+      for (; off + 64 <= n; off += 64) std::memcpy(p + off, sb, 64);
+      std::memcpy(p + off, sb, n - off);
+      continue;
+    }
+    for (; off + 64 <= n; off += 64) {
+      uint64_t w[8];
+      std::memcpy(w, p + off, 64);
+      for (int j = 0; j < 8; ++j) w[j] = (w[j] & kw[j]) | sw[j];
+      std::memcpy(p + off, w, 64);
+    }
+    for (int j = 0; off + 8 <= n; off += 8, ++j) {
+      uint64_t w;
+      std::memcpy(&w, p + off, 8);
+      w = (w & kw[j]) | sw[j];
+      std::memcpy(p + off, &w, 8);
+    }
+    for (; off < n; ++off) {
+      const size_t k = off % 64;
+      p[off] = std::byte((uint8_t(p[off]) & kb[k]) | sb[k]);
+    }
+  }
+}
+
 }  // namespace
 
 unsigned depth_stencil_test(const DrawRecord& d, int gx, int gy, unsigned mask, const Float8& z,
@@ -279,30 +327,49 @@ void write_colors(const DrawRecord& d, int gx, int gy, unsigned mask, const Vec4
 }
 
 void clear_rect(const TargetView& t, const ClearPrim& c, int x0, int y0, int x1, int y1) {
+  if (x0 >= x1 || y0 >= y1) return;
+  // Colour: the clear colour is encoded once; the channels outside the write mask keep their
+  // bytes. Every colour format stores each channel in its own bytes and decodes and encodes
+  // stored values exactly, so this is what store_color does per pixel.
   for (int i = 0; i < t.color_count; ++i) {
-    if (!(c.color_mask_bits & (1u << i)) || !t.color[i].data || !c.write_mask[i]) continue;
-    for (int y = y0; y < y1; ++y)
-      for (int x = x0; x < x1; ++x) store_color(t.color[i], x, y, c.color[i], c.write_mask[i]);
-  }
-  if (t.depth && (c.clear_depth || (c.clear_stencil && t.has_stencil))) {
-    const float z = std::clamp(c.depth, 0.0f, 1.0f);
-    uint32_t zbits;
-    if (t.depth_format == Format::Depth32F) std::memcpy(&zbits, &z, 4);
-    else zbits = quantize24(z);
-    for (int y = y0; y < y1; ++y) {
-      std::byte* row = t.depth + size_t(y) * t.depth_row_bytes;
-      for (int x = x0; x < x1; ++x) {
-        uint32_t w;
-        std::memcpy(&w, row + size_t(x) * 4, 4);
-        if (c.clear_depth) w = t.depth_format == Format::Depth32F ? zbits : ((w & 0xFF000000u) | zbits);
-        if (c.clear_stencil && t.has_stencil) {
-          const uint8_t s = uint8_t(w >> 24);
-          const uint8_t m = c.stencil_write_mask;
-          w = (w & 0x00FFFFFFu) | (uint32_t(uint8_t((s & ~m) | (c.stencil & m))) << 24);
-        }
-        std::memcpy(row + size_t(x) * 4, &w, 4);
+    const ColorTarget& ct = t.color[i];
+    const uint8_t wmask = c.write_mask[i];
+    if (!(c.color_mask_bits & (1u << i)) || !ct.data || !wmask) continue;
+    const FormatInfo info = format_info(ct.format);
+    uint8_t set[16] = {}, keep[16] = {};
+    encode_texel(ct.format, reinterpret_cast<std::byte*>(set), c.color[i]);
+    const int per_channel = info.bytes / info.channels;
+    for (int ch = 0; ch < info.channels; ++ch) {
+      if (wmask & (1 << ch)) continue;
+      for (int b = 0; b < per_channel; ++b) {
+        keep[ch * per_channel + b] = 0xFF;
+        set[ch * per_channel + b] = 0;
       }
     }
+    fill_rect(ct.data, ct.row_bytes, info.bytes, keep, set, x0, y0, x1, y1);
+  }
+  // Depth and stencil share one 32-bit word: new = (old & keep) | set.
+  if (t.depth && (c.clear_depth || (c.clear_stencil && t.has_stencil))) {
+    uint32_t keep = 0xFFFFFFFFu, set = 0;
+    if (c.clear_depth) {
+      const float z = std::clamp(c.depth, 0.0f, 1.0f);
+      if (t.depth_format == Format::Depth32F) {
+        keep = 0;
+        std::memcpy(&set, &z, 4);
+      } else {
+        keep = 0xFF000000u;  // 24-bit depth: the high byte (stencil) stays
+        set = quantize24(z);
+      }
+    }
+    if (c.clear_stencil && t.has_stencil) {
+      const uint32_t m = uint32_t(c.stencil_write_mask) << 24;
+      keep &= ~m;
+      set = (set & ~m) | ((uint32_t(c.stencil) << 24) & m);
+    }
+    uint8_t kb[4], sb[4];
+    std::memcpy(kb, &keep, 4);
+    std::memcpy(sb, &set, 4);
+    fill_rect(t.depth, t.depth_row_bytes, 4, kb, sb, x0, y0, x1, y1);
   }
 }
 

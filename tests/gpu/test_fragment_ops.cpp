@@ -2,7 +2,12 @@
 // factor, write masks, scissor, polygon offset, multiple render targets.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
+#include <random>
+
 #include "shaders.hpp"
+#include "stages.hpp"
 #include "tessel/gpu/image.hpp"
 
 using namespace tessel::test;
@@ -370,4 +375,300 @@ TEST(Viewport, MapsNdcToItsRectangleAndDepthRange) {
         EXPECT_NEAR(fx.t.depth.fetch(0, x, y).x, 0.2f + 0.4f * 0.75f, 1e-6f);
       }
     }
+}
+
+// --- clears with scissor and partial write masks, every pixel checked -------------------------
+
+namespace {
+
+std::vector<std::byte> random_bytes(size_t n, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::vector<std::byte> v(n);
+  for (auto& b : v) b = std::byte(rng() >> 24);
+  return v;
+}
+
+// Fills level 0 with random bytes; returns them.
+std::vector<std::byte> randomize(Texture2D& t, uint32_t seed) {
+  std::vector<std::byte> v = random_bytes(t.level(0).data.size(), seed);
+  t.upload(0, v.data(), v.size());
+  return v;
+}
+
+template <class T> T read_at(const std::vector<std::byte>& v, size_t offset) {
+  T x;
+  std::memcpy(&x, v.data() + offset, sizeof x);
+  return x;
+}
+
+uint32_t float_bits(float f) {
+  uint32_t u;
+  std::memcpy(&u, &f, 4);
+  return u;
+}
+
+constexpr int CW = 100, CH = 70;            // more than one 64x64 tile each way
+constexpr Rect kClearScissor{13, 5, 70, 60};  // x 13..82, y 5..64
+bool in_scissor(int x, int y) {
+  return x >= kClearScissor.x && x < kClearScissor.x + kClearScissor.width && y >= kClearScissor.y &&
+         y < kClearScissor.y + kClearScissor.height;
+}
+
+}  // namespace
+
+TEST(Clear, ScissoredPartialMasksRgba8Depth24Stencil8) {
+  Texture2D color(Format::RGBA8, CW, CH), ds(Format::Depth24Stencil8, CW, CH);
+  Framebuffer fb(&color, &ds);
+  Context ctx(2);
+  ctx.bind_framebuffer(&fb);
+  struct Config { bool depth_write, clear_stencil; uint8_t color_mask, stencil_mask; };
+  const Config configs[] = {
+      {true, true, 0b1010, 0x3C},   // depth and part of the stencil
+      {false, true, 0b0001, 0x81},  // only part of the stencil
+      {true, false, 0b0110, 0xFF},  // only depth, stencil kept
+      {true, true, 0b1111, 0xFF},   // everything (plain fill)
+      {true, true, 0b0000, 0x00},   // colour and stencil masked off: depth only
+  };
+  const glm::vec4 clear_color{0.2f, 0.4f, 0.6f, 0.8f};
+  const uint8_t want_rgba[4] = {51, 102, 153, 204};
+  const uint32_t want_z = uint32_t(std::lrint(double(0.3f) * 16777215.0));
+  uint32_t seed = 10;
+  for (const Config& cfg : configs) {
+    const std::vector<std::byte> c0 = randomize(color, seed++), d0 = randomize(ds, seed++);
+    RenderState st;
+    st.scissor_test = true;
+    st.scissor = kClearScissor;
+    st.depth_write = cfg.depth_write;
+    st.blend[0].write_mask = cfg.color_mask;
+    st.stencil_front.write_mask = cfg.stencil_mask;
+    ctx.clear({.color = clear_color, .depth = 0.3f, .clear_stencil = cfg.clear_stencil, .stencil = 0xA5}, st);
+    ctx.finish();
+    const std::vector<std::byte>& c1 = color.level(0).data;
+    const std::vector<std::byte>& d1 = ds.level(0).data;
+    for (int y = 0; y < CH; ++y)
+      for (int x = 0; x < CW; ++x) {
+        const size_t o = (size_t(y) * CW + size_t(x)) * 4;
+        const bool in = in_scissor(x, y);
+        for (int ch = 0; ch < 4; ++ch) {
+          const uint8_t old = uint8_t(c0[o + size_t(ch)]);
+          const uint8_t want = in && (cfg.color_mask & (1 << ch)) ? want_rgba[ch] : old;
+          ASSERT_EQ(uint8_t(c1[o + size_t(ch)]), want) << x << "," << y << " channel " << ch;
+        }
+        const uint32_t old = read_at<uint32_t>(d0, o);
+        uint32_t want = old;
+        if (in) {
+          if (cfg.depth_write) want = (want & 0xFF000000u) | want_z;
+          if (cfg.clear_stencil) {
+            const uint32_t m = uint32_t(cfg.stencil_mask) << 24;
+            want = (want & ~m) | ((0xA5u << 24) & m);
+          }
+        }
+        ASSERT_EQ(read_at<uint32_t>(d1, o), want) << x << "," << y;
+      }
+  }
+  EXPECT_NEAR(ds.fetch(0, 40, 40).x, 0.3f, 1e-7f);
+}
+
+TEST(Clear, ScissoredPartialMasksFloatAndByteTargetsDepth32F) {
+  Texture2D h(Format::RGBA16F, CW, CH), f(Format::RGBA32F, CW, CH), r(Format::R8, CW, CH),
+      rg(Format::RG8, CW, CH), d(Format::Depth32F, CW, CH);
+  Framebuffer fb;
+  fb.color[0].texture = &h;
+  fb.color[1].texture = &f;
+  fb.color[2].texture = &r;
+  fb.color[3].texture = &rg;
+  fb.depth.texture = &d;
+  Context ctx(2);
+  ctx.bind_framebuffer(&fb);
+  const glm::vec4 clear_color{-1.5f, 0.1f, 70000.0f, 0.3f};  // 70000 is infinity in half
+  struct Config { bool depth_write; uint8_t masks[4]; };
+  const Config configs[] = {
+      {true, {0b0101, 0b1110, 0b0001, 0b0010}},
+      {false, {0b1010, 0b0001, 0b1110, 0b0001}},  // R8: only masked-off channels -> unchanged
+      {true, {0b1111, 0b1111, 0b1111, 0b1111}},
+  };
+  uint32_t seed = 100;
+  for (const Config& cfg : configs) {
+    Texture2D* tex[4] = {&h, &f, &r, &rg};
+    std::vector<std::byte> before[4];
+    for (int i = 0; i < 4; ++i) before[i] = randomize(*tex[i], seed++);
+    const std::vector<std::byte> d0 = randomize(d, seed++);
+    RenderState st;
+    st.scissor_test = true;
+    st.scissor = kClearScissor;
+    st.depth_write = cfg.depth_write;
+    st.stencil_front.write_mask = 0x0F;  // no stencil in Depth32F: ignored
+    for (int i = 0; i < 4; ++i) st.blend[i].write_mask = cfg.masks[i];
+    ctx.clear({.color = clear_color, .depth = 1.5f, .stencil = 0xFF}, st);  // depth clamps to 1
+    ctx.finish();
+    for (int y = 0; y < CH; ++y)
+      for (int x = 0; x < CW; ++x) {
+        const bool in = in_scissor(x, y);
+        const size_t px = size_t(y) * CW + size_t(x);
+        for (int c = 0; c < 4; ++c) {
+          const bool w = in && (cfg.masks[0] & (1 << c));
+          const uint16_t old = read_at<uint16_t>(before[0], px * 8 + size_t(c) * 2);
+          ASSERT_EQ(read_at<uint16_t>(h.level(0).data, px * 8 + size_t(c) * 2), w ? float_to_half(clear_color[c]) : old)
+              << "RGBA16F " << x << "," << y << " channel " << c;
+        }
+        for (int c = 0; c < 4; ++c) {
+          const bool w = in && (cfg.masks[1] & (1 << c));
+          const uint32_t old = read_at<uint32_t>(before[1], px * 16 + size_t(c) * 4);
+          ASSERT_EQ(read_at<uint32_t>(f.level(0).data, px * 16 + size_t(c) * 4), w ? float_bits(clear_color[c]) : old)
+              << "RGBA32F " << x << "," << y << " channel " << c;
+        }
+        {
+          const bool w = in && (cfg.masks[2] & 1);
+          ASSERT_EQ(uint8_t(r.level(0).data[px]), w ? uint8_t(0) : uint8_t(before[2][px])) << "R8 " << x << "," << y;
+        }
+        for (int c = 0; c < 2; ++c) {
+          const bool w = in && (cfg.masks[3] & (1 << c));
+          const uint8_t want = w ? uint8_t(c == 0 ? 0 : 26) : uint8_t(before[3][px * 2 + size_t(c)]);  // 0.1 -> 26
+          ASSERT_EQ(uint8_t(rg.level(0).data[px * 2 + size_t(c)]), want) << "RG8 " << x << "," << y << " channel " << c;
+        }
+        const uint32_t want_d = in && cfg.depth_write ? float_bits(1.0f) : read_at<uint32_t>(d0, px * 4);
+        ASSERT_EQ(read_at<uint32_t>(d.level(0).data, px * 4), want_d) << "Depth32F " << x << "," << y;
+      }
+  }
+}
+
+namespace {
+
+// The per-pixel clear as it was written first (store_color per pixel): the reference that
+// clear_rect must match bit for bit.
+void reference_clear(const detail::TargetView& t, const detail::ClearPrim& c, int x0, int y0, int x1, int y1) {
+  for (int i = 0; i < t.color_count; ++i) {
+    const detail::ColorTarget& ct = t.color[i];
+    if (!(c.color_mask_bits & (1u << i)) || !ct.data || !c.write_mask[i]) continue;
+    const size_t bytes = format_info(ct.format).bytes;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        std::byte* p = ct.data + size_t(y) * ct.row_bytes + size_t(x) * bytes;
+        glm::vec4 v = c.color[i];
+        if ((c.write_mask[i] & 0xF) != 0xF) {
+          const glm::vec4 old = detail::decode_texel(ct.format, p);
+          for (int k = 0; k < 4; ++k)
+            if (!(c.write_mask[i] & (1 << k))) v[k] = old[k];
+        }
+        detail::encode_texel(ct.format, p, v);
+      }
+  }
+  if (t.depth && (c.clear_depth || (c.clear_stencil && t.has_stencil))) {
+    const float z = std::clamp(c.depth, 0.0f, 1.0f);
+    uint32_t zbits;
+    if (t.depth_format == Format::Depth32F) std::memcpy(&zbits, &z, 4);
+    else zbits = uint32_t(std::lrint(double(z) * 16777215.0));
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        std::byte* p = t.depth + size_t(y) * t.depth_row_bytes + size_t(x) * 4;
+        uint32_t w;
+        std::memcpy(&w, p, 4);
+        if (c.clear_depth) w = t.depth_format == Format::Depth32F ? zbits : ((w & 0xFF000000u) | zbits);
+        if (c.clear_stencil && t.has_stencil) {
+          const uint8_t s = uint8_t(w >> 24);
+          const uint8_t m = c.stencil_write_mask;
+          w = (w & 0x00FFFFFFu) | (uint32_t(uint8_t((s & ~m) | (c.stencil & m))) << 24);
+        }
+        std::memcpy(p, &w, 4);
+      }
+  }
+}
+
+// An image with padded rows (the padding must stay untouched).
+struct PaddedImage {
+  size_t row_bytes;
+  std::vector<std::byte> data;
+  PaddedImage(int w, int h, size_t bytes, uint32_t seed)
+      : row_bytes(size_t(w) * bytes + 24), data(random_bytes(row_bytes * size_t(h), seed)) {}
+};
+
+}  // namespace
+
+TEST(ClearRect, MatchesPerPixelReferenceForEveryFormatAndMask) {
+  constexpr int w = 83, h = 9;
+  const Format colors[] = {Format::RGBA8, Format::R8, Format::RG8, Format::RGBA16F, Format::RGBA32F};
+  const glm::vec4 values[] = {{0.2f, 0.4f, 0.6f, 0.8f}, {-3.0f, 1.5f, NAN, 65519.0f}, {1e-6f, -0.0f, 0.5f, 1.0f}};
+  struct R { int x0, y0, x1, y1; };
+  const R rects[] = {{0, 0, w, h}, {3, 1, 80, 8}, {17, 2, 18, 3}, {5, 4, 22, 9}};
+  uint32_t seed = 1000;
+  for (Format f : colors)
+    for (unsigned mask = 1; mask < 16; ++mask)
+      for (const glm::vec4& v : values)
+        for (const R& r : rects) {
+          const size_t bytes = format_info(f).bytes;
+          PaddedImage a(w, h, bytes, seed++);
+          PaddedImage b = a;
+          detail::ClearPrim c;
+          c.color_mask_bits = 0b10;
+          c.color[1] = v;
+          c.write_mask[1] = uint8_t(mask);
+          detail::TargetView ta;
+          ta.width = w;
+          ta.height = h;
+          ta.color_count = 2;
+          ta.color[1] = {a.data.data(), a.row_bytes, f};
+          detail::TargetView tb = ta;
+          tb.color[1].data = b.data.data();
+          detail::clear_rect(ta, c, r.x0, r.y0, r.x1, r.y1);
+          reference_clear(tb, c, r.x0, r.y0, r.x1, r.y1);
+          ASSERT_TRUE(a.data == b.data) << format_info(f).name << " mask " << mask << " rect " << r.x0 << ","
+                                        << r.y0 << "-" << r.x1 << "," << r.y1;
+        }
+  // Every half (NaNs included) and every byte value survives a partially masked clear.
+  for (unsigned mask = 1; mask < 15; ++mask) {
+    for (Format f : {Format::RGBA16F, Format::RGBA8}) {
+      const int side = f == Format::RGBA16F ? 128 : 8;  // 128 * 128 * 4 halves = all 65536
+      detail::ColorTarget ct{nullptr, size_t(side) * format_info(f).bytes, f};
+      std::vector<std::byte> a(ct.row_bytes * size_t(side));
+      for (size_t i = 0; i < a.size() / 2; ++i) {
+        const uint16_t u = f == Format::RGBA16F ? uint16_t(i) : uint16_t((2 * i) & 0xFF) | uint16_t(((2 * i + 1) & 0xFF) << 8);
+        std::memcpy(a.data() + 2 * i, &u, 2);
+      }
+      std::vector<std::byte> b = a;
+      detail::ClearPrim c;
+      c.color_mask_bits = 1;
+      c.color[0] = {0.25f, 0.5f, 0.75f, 1.0f};
+      c.write_mask[0] = uint8_t(mask);
+      detail::TargetView ta;
+      ta.width = ta.height = side;
+      ta.color_count = 1;
+      ct.data = a.data();
+      ta.color[0] = ct;
+      detail::TargetView tb = ta;
+      tb.color[0].data = b.data();
+      detail::clear_rect(ta, c, 0, 0, side, side);
+      reference_clear(tb, c, 0, 0, side, side);
+      ASSERT_TRUE(a == b) << format_info(f).name << " mask " << mask;
+    }
+  }
+  // Depth and stencil.
+  const Format depths[] = {Format::Depth24, Format::Depth32F, Format::Depth24Stencil8};
+  for (Format f : depths)
+    for (int clear_depth = 0; clear_depth < 2; ++clear_depth)
+      for (int clear_stencil = 0; clear_stencil < 2; ++clear_stencil)
+        for (uint8_t smask : {uint8_t(0xFF), uint8_t(0x00), uint8_t(0x5A)})
+          for (float z : {0.3f, -1.0f, 2.0f, 1.0f / 3.0f})
+            for (const R& r : rects) {
+              PaddedImage a(w, h, 4, seed++);
+              PaddedImage b = a;
+              detail::ClearPrim c;
+              c.clear_depth = clear_depth;
+              c.depth = z;
+              c.clear_stencil = clear_stencil;
+              c.stencil = 0xC3;
+              c.stencil_write_mask = smask;
+              detail::TargetView ta;
+              ta.width = w;
+              ta.height = h;
+              ta.depth = a.data.data();
+              ta.depth_row_bytes = a.row_bytes;
+              ta.depth_format = f;
+              ta.has_stencil = f == Format::Depth24Stencil8;
+              detail::TargetView tb = ta;
+              tb.depth = b.data.data();
+              detail::clear_rect(ta, c, r.x0, r.y0, r.x1, r.y1);
+              reference_clear(tb, c, r.x0, r.y0, r.x1, r.y1);
+              ASSERT_TRUE(a.data == b.data) << format_info(f).name << " depth " << clear_depth << " stencil "
+                                            << clear_stencil << " mask " << int(smask) << " z " << z;
+            }
 }
