@@ -224,6 +224,9 @@ class Context::WorkerPool {
 // --- the frame --------------------------------------------------------------------------------
 struct Context::Frame {
   std::vector<std::unique_ptr<DrawRecord>> draws;
+  // Records of finished draws, kept so that the next frame reuses their index storage
+  // instead of allocating (and page-faulting) it again.
+  std::vector<std::unique_ptr<DrawRecord>> spare;
   std::vector<std::unique_ptr<ClearPrim>> clears;
   std::vector<Command> commands;
   std::vector<Chunk> chunks;
@@ -587,7 +590,17 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
         if (!std::isfinite(state.clip_planes[i][k]) || std::fabs(state.clip_planes[i][k]) > 1e18f)
           throw Error("draw: clip plane " + std::to_string(i) + " is not finite or too large");
 
-  auto d = std::make_unique<DrawRecord>();
+  std::unique_ptr<DrawRecord> d;
+  if (frame_->spare.empty()) {
+    d = std::make_unique<DrawRecord>();
+  } else {
+    d = std::move(frame_->spare.back());
+    frame_->spare.pop_back();
+    std::vector<uint32_t> storage = std::move(d->indices);
+    *d = DrawRecord{};
+    storage.clear();
+    d->indices = std::move(storage);
+  }
   d->program = std::move(program);
   d->state = state;
   d->layout = layout;
@@ -609,14 +622,28 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
     const uint64_t begin = uint64_t(call.index_offset) + uint64_t(call.first) * isz;
     const std::byte* src = call.index_buffer->data() + begin;
     const uint32_t restart = isz == 1 ? 0xFFu : isz == 2 ? 0xFFFFu : 0xFFFFFFFFu;
-    std::vector<uint32_t> raw(call.count);
-    for (uint32_t i = 0; i < call.count; ++i) {
+    if (isz == 4 && !state.primitive_restart && call.base_vertex == 0) {
+      // The common case: 32-bit indices used as they are; one copy and a maximum.
+      d->indices.resize(call.count);
+      std::memcpy(d->indices.data(), src, size_t(call.count) * 4);
+      uint32_t m = 0;
+      for (const uint32_t id : d->indices) m = std::max(m, id);
+      if (m > uint32_t(INT32_MAX)) {
+        const size_t at = size_t(std::find_if(d->indices.begin(), d->indices.end(),
+                                              [](uint32_t id) { return id > uint32_t(INT32_MAX); }) - d->indices.begin());
+        throw Error("draw: index " + std::to_string(d->indices[at]) + " at position " + std::to_string(at) +
+                    " plus base vertex 0 is out of range");
+      }
+      max_id = m;
+    }
+    std::vector<uint32_t> raw(d->indices.empty() ? call.count : 0);
+    for (uint32_t i = 0; i < uint32_t(raw.size()); ++i) {
       uint32_t v = 0;
       std::memcpy(&v, src + size_t(i) * isz, isz);
       raw[i] = v;
     }
     if (state.primitive_restart) raw = expand_restart(d->topology, raw, restart);
-    d->indices.resize(raw.size());
+    if (!raw.empty()) d->indices.resize(raw.size());
     for (size_t i = 0; i < raw.size(); ++i) {
       const int64_t id = int64_t(raw[i]) + call.base_vertex;
       if (id < 0 || id > INT32_MAX)
@@ -718,6 +745,11 @@ void Context::flush() {
     Frame& fr;
     ~Drop() {
       fr.commands.clear();
+      for (auto& d : fr.draws) {
+        if (fr.spare.size() >= 1024) break;
+        d->program.reset();
+        fr.spare.push_back(std::move(d));
+      }
       fr.draws.clear();
       fr.clears.clear();
       fr.pending_prims = 0;

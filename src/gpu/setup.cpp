@@ -13,6 +13,7 @@
 // - depth, 1/w and varying/w are planes in screen space anchored at vertex 0.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "stages.hpp"
 
@@ -125,7 +126,7 @@ Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, 
 
   const int K = d.program->varyings;
   auto* p = static_cast<Prim*>(arena.allocate(sizeof(Prim) + sizeof(float) * 3 * size_t(K)));
-  new (p) Prim();
+  new (p) Prim;  // no zeroing: every field is set below
   p->kind = PrimKind::Triangle;
   p->front = front;
   p->prim_id = prim_id;
@@ -157,17 +158,37 @@ Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, 
   s.solve(v0.z, v1.z, v2.z, p->z);
   if (apply_offset) p->z[0] += polygon_offset(d, v0, v1, v2);
   s.solve(v0.oow, v1.oow, v2.oow, p->oow);
+  // Varying planes, four at a time in double (structure of arrays: values at the anchor,
+  // then d/dx, then d/dy). Perspective-correct components are interpolated as value/w.
   float* pl = p->planes();
   const uint64_t flat = d.program->flat, noper = d.program->noperspective;
-  for (int k = 0; k < K; ++k, pl += 3) {
-    if ((flat >> k) & 1) {
-      pl[0] = flat_src[k];
-      pl[1] = pl[2] = 0.0f;
-    } else if ((noper >> k) & 1) {
-      s.solve(v0.var[k], v1.var[k], v2.var[k], pl);
-    } else {
-      s.solve(v0.var[k] * v0.oow, v1.var[k] * v1.oow, v2.var[k] * v2.oow, pl);
+  using d4 = double __attribute__((vector_size(32)));
+  using f4 = float __attribute__((vector_size(16)));
+  const d4 dx1 = d4{} + s.dx1, dy1 = d4{} + s.dy1, dx2 = d4{} + s.dx2, dy2 = d4{} + s.dy2, inv = d4{} + s.inv_det;
+  for (int k = 0; k < K; k += 4) {
+    f4 a[3];
+    const WinVert* v[3] = {&v0, &v1, &v2};
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 4; ++j) {
+        const int kk = std::min(k + j, K - 1);
+        const bool linear = ((flat | noper) >> kk) & 1;
+        a[i][j] = linear ? v[i]->var[kk] : v[i]->var[kk] * v[i]->oow;
+      }
     }
+    const d4 a0 = __builtin_convertvector(a[0], d4);
+    const d4 d1 = __builtin_convertvector(a[1], d4) - a0, d2 = __builtin_convertvector(a[2], d4) - a0;
+    const f4 ddx = __builtin_convertvector((d1 * dy2 - d2 * dy1) * inv, f4);
+    const f4 ddy = __builtin_convertvector((d2 * dx1 - d1 * dx2) * inv, f4);
+    const int n = std::min(4, K - k);
+    std::memcpy(pl + k, &a[0], sizeof(float) * size_t(n));
+    std::memcpy(pl + K + k, &ddx, sizeof(float) * size_t(n));
+    std::memcpy(pl + 2 * K + k, &ddy, sizeof(float) * size_t(n));
+  }
+  for (uint64_t f = flat; f; f &= f - 1) {
+    const int k = __builtin_ctzll(f);
+    if (k >= K) break;
+    pl[k] = flat_src[k];
+    pl[K + k] = pl[2 * K + k] = 0.0f;
   }
   ++c.triangles_setup;
   return p;

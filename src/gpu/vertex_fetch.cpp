@@ -1,6 +1,7 @@
 // Vertex fetch: reads each attribute of a vertex from its buffer and converts it to floats
 // (GL 4.6 §10.2 and §2.3.5.1 for normalized integers). Ranges are validated once per draw
 // (validate_vertex_range), so the fetch itself never reads out of bounds.
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -85,6 +86,66 @@ uint32_t effective_stride(const VertexAttrib& a, const VertexBinding& b) {
   return b.stride ? b.stride : uint32_t(attrib_type_size(a.type) * size_t(a.components));
 }
 
+// One enabled attribute of the element at p, as fetch_attributes gives it.
+void fetch_one(const VertexAttrib& a, const std::byte* p, float out[4]) {
+  const size_t cs = attrib_type_size(a.type);
+  if (a.integer) {
+    int32_t v[4] = {0, 0, 0, 1};
+    for (int c = 0; c < a.components; ++c) v[c] = integer_component(a, p + c * cs);
+    std::memcpy(out, v, sizeof v);
+  } else {
+    float v[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    for (int c = 0; c < a.components; ++c) v[c] = component(a, p + c * cs);
+    std::memcpy(out, v, sizeof v);
+  }
+}
+
+// --- eight vertices at once -------------------------------------------------------------------
+using f32x4 = float __attribute__((vector_size(16)));
+using f32x8 = float __attribute__((vector_size(32)));
+static_assert(sizeof(Float8) == sizeof(f32x8));
+
+inline void store_lanes(Float8& dst, f32x8 v) { std::memcpy(&dst, &v, sizeof v); }
+
+// Eight rows (x, y, z, w), one per lane, into the four lane vectors of `out`. Moves only, so
+// every bit pattern (integer attributes) survives.
+inline void transpose_store(const f32x4 (&r)[8], Vec4<Float8>& out) {
+  const f32x8 a0 = __builtin_shufflevector(r[0], r[4], 0, 1, 2, 3, 4, 5, 6, 7);
+  const f32x8 a1 = __builtin_shufflevector(r[1], r[5], 0, 1, 2, 3, 4, 5, 6, 7);
+  const f32x8 a2 = __builtin_shufflevector(r[2], r[6], 0, 1, 2, 3, 4, 5, 6, 7);
+  const f32x8 a3 = __builtin_shufflevector(r[3], r[7], 0, 1, 2, 3, 4, 5, 6, 7);
+  // t0 = x0 x1 y0 y1 | x4 x5 y4 y5, t1 = z0 z1 w0 w1 | z4 z5 w4 w5; t2, t3 the same for 2, 3, 6, 7.
+  const f32x8 t0 = __builtin_shufflevector(a0, a1, 0, 8, 1, 9, 4, 12, 5, 13);
+  const f32x8 t1 = __builtin_shufflevector(a0, a1, 2, 10, 3, 11, 6, 14, 7, 15);
+  const f32x8 t2 = __builtin_shufflevector(a2, a3, 0, 8, 1, 9, 4, 12, 5, 13);
+  const f32x8 t3 = __builtin_shufflevector(a2, a3, 2, 10, 3, 11, 6, 14, 7, 15);
+  store_lanes(out.x, __builtin_shufflevector(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13));
+  store_lanes(out.y, __builtin_shufflevector(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15));
+  store_lanes(out.z, __builtin_shufflevector(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13));
+  store_lanes(out.w, __builtin_shufflevector(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15));
+}
+
+// The same four values in every lane.
+inline void broadcast_store(const float v[4], Vec4<Float8>& out) {
+  f32x4 r;
+  std::memcpy(&r, v, sizeof r);
+  store_lanes(out.x, __builtin_shufflevector(r, r, 0, 0, 0, 0, 0, 0, 0, 0));
+  store_lanes(out.y, __builtin_shufflevector(r, r, 1, 1, 1, 1, 1, 1, 1, 1));
+  store_lanes(out.z, __builtin_shufflevector(r, r, 2, 2, 2, 2, 2, 2, 2, 2));
+  store_lanes(out.w, __builtin_shufflevector(r, r, 3, 3, 3, 3, 3, 3, 3, 3));
+}
+
+// C floats per lane read straight from memory; the rest (0, 0, 0, 1).
+template <int C>
+inline void fetch_f32(const std::byte* base, size_t stride, const uint32_t (&ids)[kLanes], Vec4<Float8>& out) {
+  f32x4 r[kLanes];
+  for (int l = 0; l < kLanes; ++l) {
+    r[l] = f32x4{0.0f, 0.0f, 0.0f, 1.0f};
+    std::memcpy(&r[l], base + size_t(ids[l]) * stride, sizeof(float) * C);
+  }
+  transpose_store(r, out);
+}
+
 }  // namespace
 
 void fetch_attributes(const VertexLayout& layout, uint32_t id, uint32_t instance, float out[][4]) {
@@ -96,17 +157,50 @@ void fetch_attributes(const VertexLayout& layout, uint32_t id, uint32_t instance
     }
     const VertexBinding& b = layout.bindings[a.binding];
     const uint32_t element = b.divisor ? instance / b.divisor : id;
-    const std::byte* p = b.buffer->data() + b.offset + a.offset + size_t(element) * effective_stride(a, b);
-    const size_t cs = attrib_type_size(a.type);
-    if (a.integer) {
-      int32_t v[4] = {0, 0, 0, 1};
-      for (int c = 0; c < a.components; ++c) v[c] = integer_component(a, p + c * cs);
-      std::memcpy(out[i], v, sizeof v);
-    } else {
-      float v[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-      for (int c = 0; c < a.components; ++c) v[c] = component(a, p + c * cs);
-      std::memcpy(out[i], v, sizeof v);
+    fetch_one(a, b.buffer->data() + b.offset + a.offset + size_t(element) * effective_stride(a, b), out[i]);
+  }
+}
+
+void fetch_attributes8(const VertexLayout& layout, const uint32_t* ids, int n, uint32_t instance,
+                       VertexIn<Float8>& in) {
+  uint32_t lane[kLanes];
+  for (int l = 0; l < kLanes; ++l) {
+    lane[l] = ids[std::min(l, n - 1)];
+    in.vertex_id[l] = int32_t(lane[l]);
+    in.instance_id[l] = int32_t(instance);
+  }
+  for (int i = 0; i < kMaxVertexAttribs; ++i) {
+    const VertexAttrib& a = layout.attribs[i];
+    Vec4<Float8>& out = in.attr[size_t(i)];
+    if (!a.enabled) {
+      broadcast_store(layout.current[size_t(i)].data(), out);
+      continue;
     }
+    const VertexBinding& b = layout.bindings[a.binding];
+    const size_t stride = effective_stride(a, b);
+    const std::byte* base = b.buffer->data() + b.offset + a.offset;
+    if (b.divisor) {  // one element for the whole instance
+      float v[4];
+      fetch_one(a, base + size_t(instance / b.divisor) * stride, v);
+      broadcast_store(v, out);
+      continue;
+    }
+    if (a.type == AttribType::F32 && !a.integer) {
+      switch (a.components) {
+        case 1: fetch_f32<1>(base, stride, lane, out); continue;
+        case 2: fetch_f32<2>(base, stride, lane, out); continue;
+        case 3: fetch_f32<3>(base, stride, lane, out); continue;
+        case 4: fetch_f32<4>(base, stride, lane, out); continue;
+        default: break;
+      }
+    }
+    f32x4 r[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+      float v[4];
+      fetch_one(a, base + size_t(lane[l]) * stride, v);
+      std::memcpy(&r[l], v, sizeof v);
+    }
+    transpose_store(r, out);
   }
 }
 

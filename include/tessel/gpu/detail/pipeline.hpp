@@ -39,9 +39,9 @@ struct EdgeEq {
   int64_t c, a, b;
 };
 
-// A triangle ready for the raster phase, followed in memory by 3*varyings floats: for each
-// varying component the plane (value at the anchor, d/dx, d/dy) of value/w (or of the value
-// itself for flat and noperspective components).
+// A triangle ready for the raster phase, followed in memory by 3*varyings floats: the planes
+// of value/w (or of the value itself for flat and noperspective components), as three arrays
+// of `varyings` floats: the values at the anchor, then d/dx, then d/dy.
 struct Prim {
   PrimKind kind = PrimKind::Triangle;
   bool front = true;
@@ -151,6 +151,11 @@ class ProgramBase {
 // vertex_fetch.cpp: reads attribute `location` of vertex `id` in `instance` as 4 floats
 // (integers keep their bits when the attribute is an integer attribute).
 void fetch_attributes(const VertexLayout& layout, uint32_t id, uint32_t instance, float out[][4]);
+// The same for the eight lanes of a vertex batch: vertices ids[0..n) (1 <= n <= 8; lanes n..7
+// repeat ids[n-1]) of `instance`, every location, vertex_id and instance_id; the values are
+// bit for bit those of fetch_attributes.
+void fetch_attributes8(const VertexLayout& layout, const uint32_t* ids, int n, uint32_t instance,
+                       VertexIn<Float8>& in);
 // Throws Error when a draw would read past a buffer (names the attribute and the numbers).
 void validate_vertex_range(const VertexLayout& layout, uint32_t max_id, uint32_t instance_end,
                            uint32_t required_attribs);

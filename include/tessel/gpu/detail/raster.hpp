@@ -27,24 +27,10 @@ template <class S> class Program final : public ProgramBase {
   void shade_vertices(const DrawRecord& d, const uint32_t* ids, int n, uint32_t instance,
                       glm::vec4* pos, float* vars) const override {
     constexpr int K = varying_count<S>();
-    float attr[kLanes][kMaxVertexAttribs][4];
     for (int base = 0; base < n; base += kLanes) {
       const int m = std::min(kLanes, n - base);
       VertexIn<Float8> in;
-      for (int l = 0; l < kLanes; ++l) {
-        const uint32_t id = ids[base + std::min(l, m - 1)];
-        fetch_attributes(d.layout, id, instance, attr[l]);
-        in.vertex_id[l] = int32_t(id);
-        in.instance_id[l] = int32_t(instance);
-      }
-      for (int a = 0; a < kMaxVertexAttribs; ++a) {
-        for (int l = 0; l < kLanes; ++l) {
-          in.attr[a].x[l] = attr[l][a][0];
-          in.attr[a].y[l] = attr[l][a][1];
-          in.attr[a].z[l] = attr[l][a][2];
-          in.attr[a].w[l] = attr[l][a][3];
-        }
-      }
+      fetch_attributes8(d.layout, ids + base, m, instance, in);
       Varyings<Float8> out{};
       Vec4<Float8> p = shader_.vertex(uniforms_, in, out);
       for (int l = 0; l < m; ++l) pos[base + l] = glm::vec4(p.x[l], p.y[l], p.z[l], p.w[l]);
@@ -149,7 +135,7 @@ template <class S> class Program final : public ProgramBase {
       Float8 lanes[K];
       const float* pl = p.planes();
       for (int k = 0; k < K; ++k) {
-        Float8 v = Float8(pl[3 * k]) + Float8(pl[3 * k + 1]) * fx + Float8(pl[3 * k + 2]) * fy;
+        Float8 v = Float8(pl[k]) + Float8(pl[K + k]) * fx + Float8(pl[2 * K + k]) * fy;
         if (!(((flat | noperspective) >> k) & 1)) v = v * w;
         lanes[k] = v;
       }
