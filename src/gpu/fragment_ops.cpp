@@ -157,8 +157,7 @@ template <class T> inline Mask8 compare8(CompareFunc f, T a, T b) {
   return Mask8(false);
 }
 
-unsigned depth_test8(const DrawRecord& d, int gx, int gy, unsigned mask, const Float8& z) {
-  const TargetView& t = d.target;
+unsigned depth_test8(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask, const Float8& z) {
   std::byte* row0 = t.depth + size_t(gy) * t.depth_row_bytes + size_t(gx) * 4;
   std::byte* row1 = row0 + t.depth_row_bytes;
   const Int8 stored = load_group(row0, row1);
@@ -247,11 +246,10 @@ void fill_rect(std::byte* data, size_t row_bytes, size_t bytes, const uint8_t* k
 
 }  // namespace
 
-unsigned depth_stencil_test(const DrawRecord& d, int gx, int gy, unsigned mask, const Float8& z,
-                            bool front) {
-  const TargetView& t = d.target;
+unsigned depth_stencil_test(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask,
+                            const Float8& z, bool front) {
   if (!t.depth) return mask;  // no depth attachment: both tests pass (GL 4.6 §17.3.3, §17.3.4)
-  if (d.fast_depth && gx + 4 <= t.width && gy + 2 <= t.height) return depth_test8(d, gx, gy, mask, z);
+  if (d.fast_depth && gx + 4 <= t.width && gy + 2 <= t.height) return depth_test8(d, t, gx, gy, mask, z);
   const RenderState& st = d.state;
   const bool stencil = st.stencil_test && t.has_stencil;
   const bool depth = st.depth_test;
@@ -304,9 +302,8 @@ unsigned depth_stencil_test(const DrawRecord& d, int gx, int gy, unsigned mask, 
   return out;
 }
 
-void write_colors(const DrawRecord& d, int gx, int gy, unsigned mask, const Vec4<Float8>* colors,
-                  int outputs) {
-  const TargetView& t = d.target;
+void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask,
+                  const Vec4<Float8>* colors, int outputs) {
   if (d.fast_color && gx + 4 <= t.width && gy + 2 <= t.height) return write_rgba8(t.color[0], gx, gy, mask, colors[0]);
   const int n = std::min(outputs, t.color_count);
   for (int i = 0; i < n; ++i) {

@@ -168,6 +168,20 @@ inline Int8 max(Int8 a, Int8 b) { return Int8(a.v > b.v ? a.v : b.v); }
 inline Float8 abs(Float8 a) { return float_from_bits(Int8(bits_of(a).v & 0x7FFFFFFF)); }
 inline float abs(float a) { return std::fabs(a); }
 
+// a * b + c with one rounding (GLSL fma). The same instruction for one lane and eight, so
+// both paths give the same bits; the library uses it for dot products, matrix products,
+// polynomials and interpolation.
+inline float fma(float a, float b, float c) { return __builtin_fmaf(a, b, c); }
+inline Float8 fma(Float8 a, Float8 b, Float8 c) {
+#if defined(__FMA__)
+  return Float8(__builtin_ia32_vfmaddps256(a.v, b.v, c.v));
+#else
+  Float8 r;
+  for (int i = 0; i < kLanes; ++i) r.v[i] = __builtin_fmaf(a.v[i], b.v[i], c.v[i]);
+  return r;
+#endif
+}
+
 inline Float8 sqrt(Float8 a) {
   Float8 r;
   for (int i = 0; i < kLanes; ++i) r.v[i] = __builtin_sqrtf(a.v[i]);
@@ -197,7 +211,28 @@ template <class F> inline F smoothstep(F e0, F e1, F x) {
   F t = saturate((x - e0) / (e1 - e0));
   return t * t * (F(3.0f) - F(2.0f) * t);
 }
-template <class F> inline F inversesqrt(F a) { return F(1.0f) / sqrt(a); }
+// 1/sqrt(a): the hardware estimate (12 bits) and one Newton step, about 22 correct bits;
+// 0 -> +inf, +inf -> 0, negative or NaN -> NaN. Used by normalize(). The scalar and the
+// eight-lane estimates are the same instruction per element, so both paths agree.
+inline Float8 inversesqrt(Float8 a) {
+#if defined(__AVX__)
+  const Float8 y = Float8(__builtin_ia32_rsqrtps256(a.v));
+  const Float8 r = y * fma(Float8(-0.5f) * a, y * y, Float8(1.5f));
+  return select(r == r, r, y);
+#else
+  return Float8(1.0f) / sqrt(a);
+#endif
+}
+inline float inversesqrt(float a) {
+#if defined(__AVX__)
+  using f4 = float __attribute__((vector_size(16)));
+  const float y = __builtin_ia32_rsqrtss(f4{a, 0.0f, 0.0f, 0.0f})[0];
+  const float r = y * fma(-0.5f * a, y * y, 1.5f);
+  return r == r ? r : y;
+#else
+  return 1.0f / sqrt(a);
+#endif
+}
 
 // exp2 and log2 by range reduction and minimax polynomials (relative error about 2e-7).
 // The same code runs for one lane and eight, so the reference path and the fast path agree
@@ -205,21 +240,22 @@ template <class F> inline F inversesqrt(F a) { return F(1.0f) / sqrt(a); }
 template <class F> inline F exp2(F x) {
   using I = IntOf<F>;
   x = clamp(x, F(-126.0f), F(127.0f));
-  F fi = floor(x + F(0.5f));
+  // Nearest integer: adding and subtracting 1.5 * 2^23 rounds to nearest even (exact for
+  // |x| < 2^22, which the clamp guarantees; NaN stays NaN and is caught by the clamp order).
+  F fi = (x + F(12582912.0f)) - F(12582912.0f);
   F f = x - fi;  // [-0.5, 0.5]
   // 2^f = e^(f ln 2): Taylor series to degree 7 (error below 1.2e-7 on this interval).
-  F p = F(1.5252734e-5f);
-  p = p * f + F(1.5403530e-4f);
-  p = p * f + F(1.3333558e-3f);
-  p = p * f + F(9.6181291e-3f);
-  p = p * f + F(5.5504109e-2f);
-  p = p * f + F(2.4022651e-1f);
-  p = p * f + F(6.9314718e-1f);
-  p = p * f + F(1.0f);
+  // Estrin's scheme: the same polynomial with a short dependency chain.
+  const F f2 = f * f, f4 = f2 * f2;
+  const F p01 = fma(F(6.9314718e-1f), f, F(1.0f)), p23 = fma(F(5.5504109e-2f), f, F(2.4022651e-1f));
+  const F p45 = fma(F(1.3333558e-3f), f, F(9.6181291e-3f)), p67 = fma(F(1.5252734e-5f), f, F(1.5403530e-4f));
+  const F p = fma(fma(p67, f2, p45), f4, fma(p23, f2, p01));
   I e = (to_int(fi) + I(127)) << 23;
   return p * float_from_bits(e);
 }
-template <class F> inline F log2(F x) {
+namespace detail {
+// log2 for finite x > 0 (no special cases).
+template <class F> inline F log2_positive(F x) {
   using I = IntOf<F>;
   // x = m * 2^e with m in [sqrt(1/2), sqrt(2)); log2(m) through atanh-series in s=(m-1)/(m+1).
   I bits = bits_of(x);
@@ -230,12 +266,14 @@ template <class F> inline F log2(F x) {
   F ef = to_float(e) + select(big, F(1.0f), F(0.0f));
   F s = (m - F(1.0f)) / (m + F(1.0f));
   F s2 = s * s;
-  F p = F(0.2222222f);
-  p = p * s2 + F(0.2857143f);
-  p = p * s2 + F(0.4f);
-  p = p * s2 + F(0.6666667f);
-  p = p * s2 + F(2.0f);
-  F r = ef + s * p * F(1.44269504f);
+  const F s4 = s2 * s2;
+  // 2 + 2/3 s2 + 2/5 s2^2 + 2/7 s2^3 + 2/9 s2^4, by Estrin's scheme (short dependency chain).
+  const F p = fma(fma(F(0.2222222f), s4, fma(F(0.2857143f), s2, F(0.4f))), s4, fma(F(0.6666667f), s2, F(2.0f)));
+  return fma(s * p, F(1.44269504f), ef);
+}
+}  // namespace detail
+template <class F> inline F log2(F x) {
+  F r = detail::log2_positive(x);
   // log2 of 0 is -inf, of a negative or NaN is NaN, of +inf is +inf.
   r = select(x == F(0.0f), F(-INFINITY), r);
   r = select(x < F(0.0f) || x != x, F(NAN), r);
@@ -246,7 +284,7 @@ template <class F> inline F exp(F x) { return exp2(x * F(1.44269504f)); }
 template <class F> inline F log(F x) { return log2(x) * F(0.69314718f); }
 // GLSL pow: undefined for x < 0; here pow(0, y>0) = 0 and pow(x, 0) = 1.
 template <class F> inline F pow(F x, F y) {
-  F r = exp2(y * log2(x));
+  F r = exp2(y * detail::log2_positive(x));
   r = select(x == F(0.0f), select(y == F(0.0f), F(1.0f), F(0.0f)), r);
   return select(y == F(0.0f), F(1.0f), r);
 }
@@ -260,12 +298,12 @@ template <class F> inline void sincos(F x, F& s, F& c) {
   I qi = to_int(q);
   F r2 = r * r;
   F sp = F(-1.9515296e-4f);
-  sp = sp * r2 + F(8.3321608e-3f);
-  sp = sp * r2 + F(-1.6666654e-1f);
+  sp = fma(sp, r2, F(8.3321608e-3f));
+  sp = fma(sp, r2, F(-1.6666654e-1f));
   F sr = r + r * r2 * sp;
   F cp = F(2.4433157e-5f);
-  cp = cp * r2 + F(-1.3887316e-3f);
-  cp = cp * r2 + F(4.1666646e-2f);
+  cp = fma(cp, r2, F(-1.3887316e-3f));
+  cp = fma(cp, r2, F(4.1666646e-2f));
   F cr = F(1.0f) - F(0.5f) * r2 + r2 * r2 * cp;
   auto swap = (qi & I(1)) != I(0);
   F s0 = select(swap, cr, sr);

@@ -89,12 +89,12 @@ template <class F, class Fn> inline Vec4<F> map2(const Vec4<F>& a, const Vec4<F>
 }
 
 // --- geometric functions (GLSL 4.60 §8.5) ----------------------------------------------------
-template <class F> inline F dot(const Vec2<F>& a, const Vec2<F>& b) { return a.x * b.x + a.y * b.y; }
+template <class F> inline F dot(const Vec2<F>& a, const Vec2<F>& b) { return fma(a.y, b.y, a.x * b.x); }
 template <class F> inline F dot(const Vec3<F>& a, const Vec3<F>& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
+  return fma(a.z, b.z, fma(a.y, b.y, a.x * b.x));
 }
 template <class F> inline F dot(const Vec4<F>& a, const Vec4<F>& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
+  return fma(a.w, b.w, fma(a.z, b.z, fma(a.y, b.y, a.x * b.x)));
 }
 template <class F> inline Vec3<F> cross(const Vec3<F>& a, const Vec3<F>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
@@ -102,7 +102,7 @@ template <class F> inline Vec3<F> cross(const Vec3<F>& a, const Vec3<F>& b) {
 template <class V> inline auto length(const V& a) { return sqrt(dot(a, a)); }
 template <class V> inline auto distance(const V& a, const V& b) { return length(a - b); }
 template <class V> inline V normalize(const V& a) {
-  auto inv = decltype(dot(a, a))(1.0f) / sqrt(dot(a, a));
+  auto inv = inversesqrt(dot(a, a));
   return a * inv;
 }
 // I - 2 dot(N, I) N
@@ -174,15 +174,14 @@ template <class F> inline Vec4<F> select(MaskOf<F> m, const Vec4<F>& a, const Ve
 
 // --- scalar uniform matrices times lane vectors ---------------------------------------------
 template <class F> inline Vec4<F> operator*(const glm::mat4& m, const Vec4<F>& v) {
-  return {F(m[0][0]) * v.x + F(m[1][0]) * v.y + F(m[2][0]) * v.z + F(m[3][0]) * v.w,
-          F(m[0][1]) * v.x + F(m[1][1]) * v.y + F(m[2][1]) * v.z + F(m[3][1]) * v.w,
-          F(m[0][2]) * v.x + F(m[1][2]) * v.y + F(m[2][2]) * v.z + F(m[3][2]) * v.w,
-          F(m[0][3]) * v.x + F(m[1][3]) * v.y + F(m[2][3]) * v.z + F(m[3][3]) * v.w};
+  auto row = [&](int r) {
+    return fma(F(m[3][r]), v.w, fma(F(m[2][r]), v.z, fma(F(m[1][r]), v.y, F(m[0][r]) * v.x)));
+  };
+  return {row(0), row(1), row(2), row(3)};
 }
 template <class F> inline Vec3<F> operator*(const glm::mat3& m, const Vec3<F>& v) {
-  return {F(m[0][0]) * v.x + F(m[1][0]) * v.y + F(m[2][0]) * v.z,
-          F(m[0][1]) * v.x + F(m[1][1]) * v.y + F(m[2][1]) * v.z,
-          F(m[0][2]) * v.x + F(m[1][2]) * v.y + F(m[2][2]) * v.z};
+  auto row = [&](int r) { return fma(F(m[2][r]), v.z, fma(F(m[1][r]), v.y, F(m[0][r]) * v.x)); };
+  return {row(0), row(1), row(2)};
 }
 
 // --- derivatives ------------------------------------------------------------------------------

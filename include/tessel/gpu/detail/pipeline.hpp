@@ -141,8 +141,9 @@ class ProgramBase {
   // clip positions and n * varyings floats.
   virtual void shade_vertices(const DrawRecord& d, const uint32_t* ids, int n, uint32_t instance,
                               glm::vec4* pos, float* vars) const = 0;
-  // Rasterizes and shades one triangle inside the tile rectangle [x0,x1) x [y0,y1).
-  virtual void raster(const DrawRecord& d, const Prim& p, int x0, int y0, int x1, int y1,
+  // Rasterizes and shades one triangle inside the tile rectangle [x0,x1) x [y0,y1), writing
+  // through `t` (the draw's attachments, or the raster phase's tile-local copies of them).
+  virtual void raster(const DrawRecord& d, const TargetView& t, const Prim& p, int x0, int y0, int x1, int y1,
                       Counters& c) const = 0;
 };
 
@@ -162,9 +163,9 @@ void validate_vertex_range(const VertexLayout& layout, uint32_t max_id, uint32_t
 
 // fragment_ops.cpp: the per-sample tests and writes for one 4x2 group of lanes at pixel
 // (gx, gy); lanes are laid out as in vec.hpp's dFdx. `mask` bit i = lane i alive.
-unsigned depth_stencil_test(const DrawRecord& d, int gx, int gy, unsigned mask, const Float8& z,
+unsigned depth_stencil_test(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask, const Float8& z,
                             bool front);
-void write_colors(const DrawRecord& d, int gx, int gy, unsigned mask, const Vec4<Float8>* colors,
+void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask, const Vec4<Float8>* colors,
                   int outputs);
 void clear_rect(const TargetView& t, const ClearPrim& c, int x0, int y0, int x1, int y1);
 

@@ -43,7 +43,7 @@ template <class S> class Program final : public ProgramBase {
     }
   }
 
-  void raster(const DrawRecord& d, const Prim& p, int x0, int y0, int x1, int y1,
+  void raster(const DrawRecord& d, const TargetView& t, const Prim& p, int x0, int y0, int x1, int y1,
               Counters& c) const override {
     const int minx = std::max(p.minx, x0), maxx = std::min(p.maxx, x1 - 1);
     const int miny = std::max(p.miny, y0), maxy = std::min(p.maxy, y1 - 1);
@@ -106,7 +106,7 @@ template <class S> class Program final : public ProgramBase {
                 }
               }
             }
-            if (mask) shade_group(d, p, gx, gy, mask, c);
+            if (mask) shade_group(d, t, p, gx, gy, mask, c);
           }
         }
       }
@@ -114,28 +114,28 @@ template <class S> class Program final : public ProgramBase {
   }
 
  private:
-  void shade_group(const DrawRecord& d, const Prim& p, int gx, int gy, unsigned mask,
+  void shade_group(const DrawRecord& d, const TargetView& t, const Prim& p, int gx, int gy, unsigned mask,
                    Counters& c) const {
     constexpr int K = varying_count<S>();
     static const Float8 lane_dx = Float8(vx::f32x8{0.5f, 1.5f, 0.5f, 1.5f, 2.5f, 3.5f, 2.5f, 3.5f});
     static const Float8 lane_dy = Float8(vx::f32x8{0.5f, 0.5f, 1.5f, 1.5f, 0.5f, 0.5f, 1.5f, 1.5f});
     const Float8 cx = Float8(float(gx)) + lane_dx, cy = Float8(float(gy)) + lane_dy;
     const Float8 fx = cx - Float8(p.xr), fy = cy - Float8(p.yr);
-    Float8 z = Float8(p.z[0]) + Float8(p.z[1]) * fx + Float8(p.z[2]) * fy;
+    Float8 z = fma(Float8(p.z[2]), fy, fma(Float8(p.z[1]), fx, Float8(p.z[0])));
     z = clamp(z, Float8(d.depth_min), Float8(d.depth_max));
     const bool tests = d.state.depth_test || d.state.stencil_test;
     if (tests && d.early_depth) {
-      mask = depth_stencil_test(d, gx, gy, mask, z, p.front);
+      mask = depth_stencil_test(d, t, gx, gy, mask, z, p.front);
       if (!mask) return;
     }
-    const Float8 oow = Float8(p.oow[0]) + Float8(p.oow[1]) * fx + Float8(p.oow[2]) * fy;
+    const Float8 oow = fma(Float8(p.oow[2]), fy, fma(Float8(p.oow[1]), fx, Float8(p.oow[0])));
     const Float8 w = Float8(1.0f) / oow;
     Varyings<Float8> vary;
     if constexpr (K > 0) {
       Float8 lanes[K];
       const float* pl = p.planes();
       for (int k = 0; k < K; ++k) {
-        Float8 v = Float8(pl[k]) + Float8(pl[K + k]) * fx + Float8(pl[2 * K + k]) * fy;
+        Float8 v = fma(Float8(pl[2 * K + k]), fy, fma(Float8(pl[K + k]), fx, Float8(pl[k])));
         if (!(((flat | noperspective) >> k) & 1)) v = v * w;
         lanes[k] = v;
       }
@@ -145,16 +145,16 @@ template <class S> class Program final : public ProgramBase {
     f.coord = Vec4<Float8>(cx, cy, z, oow);
     f.front_facing = Mask8(p.front);
     f.primitive_id = Int8(int32_t(p.prim_id));
-    for (auto& col : f.color) col = Vec4<Float8>(Float8(0.0f));
+    for (int i = 0; i < shader_outputs<S>(); ++i) f.color[size_t(i)] = Vec4<Float8>(Float8(0.0f));
     f.depth = z;
     f.killed = Mask8(false);
     shader_.fragment(uniforms_, vary, f);
     if constexpr (shader_discards<S>()) mask &= ~f.killed.bits();
     if constexpr (shader_writes_depth<S>()) z = clamp(f.depth, Float8(0.0f), Float8(1.0f));
     c.fragments_shaded += unsigned(__builtin_popcount(mask));
-    if (tests && !d.early_depth) mask = depth_stencil_test(d, gx, gy, mask, z, p.front);
+    if (tests && !d.early_depth) mask = depth_stencil_test(d, t, gx, gy, mask, z, p.front);
     if (!mask) return;
-    write_colors(d, gx, gy, mask, f.color.data(), shader_outputs<S>());
+    write_colors(d, t, gx, gy, mask, f.color.data(), shader_outputs<S>());
     c.fragments_written += unsigned(__builtin_popcount(mask));
   }
 
