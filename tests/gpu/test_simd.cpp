@@ -73,3 +73,42 @@ TEST(Lanes, DerivativesAreQuadDifferences) {
     EXPECT_EQ(dy[i], 5.0f);
   }
 }
+
+// Sixteen lanes are two halves of eight: every function gives, lane for lane, what the
+// one-lane path gives (so 16-lane shading of an 8x2 block matches two 8-lane groups).
+TEST(Lanes, SixteenLanesAgreeWithOneLane) {
+  const Mask16 m = Mask16::from_bits(0xA53Cu);
+  EXPECT_EQ(m.bits(), 0xA53Cu);
+  EXPECT_TRUE(any(m));
+  EXPECT_FALSE(all(m));
+  EXPECT_TRUE(all(Mask16(true)));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(0.001f, 8.0f);
+  Float16 x, y;
+  for (int i = 0; i < 16; ++i) {
+    x[i] = u(rng);
+    y[i] = u(rng) - 4.0f;
+  }
+  const Float16 s = select(m, x, y), p = pow(x, Float16(32.0f)), e = exp2(y), l = log2(x), r = inversesqrt(x);
+  const Float16 f = fma(x, y, Float16(1.5f)), fl = floor(y);
+  const Int16 bits = bits_of(x);
+  for (int i = 0; i < 16; ++i) {
+    EXPECT_EQ(s[i], (0xA53Cu >> i) & 1 ? x[i] : y[i]) << i;
+    EXPECT_EQ(p[i], pow(x[i], 32.0f)) << i;
+    EXPECT_EQ(e[i], exp2(y[i])) << i;
+    EXPECT_EQ(l[i], log2(x[i])) << i;
+    EXPECT_EQ(r[i], inversesqrt(x[i])) << i;
+    EXPECT_EQ(f[i], fma(x[i], y[i], 1.5f)) << i;
+    EXPECT_EQ(fl[i], std::floor(y[i])) << i;
+    EXPECT_EQ(bits[i], bits_of(x[i])) << i;
+    EXPECT_NEAR(r[i], 1.0f / std::sqrt(x[i]), 3e-7f * r[i]) << i;
+  }
+  // Derivatives: within each 2x2 quad of each 4x2 half.
+  Float16 v;
+  for (int i = 0; i < 16; ++i) v[i] = float(i * i);
+  const Float16 dx = dFdx(v), dy = dFdy(v);
+  EXPECT_EQ(dx[8], 81.0f - 64.0f);
+  EXPECT_EQ(dx[14], 225.0f - 196.0f);
+  EXPECT_EQ(dy[9], 121.0f - 81.0f);
+  EXPECT_EQ(dy[12], 196.0f - 144.0f);
+}

@@ -2,8 +2,8 @@
 //
 // A shader is written once as a template over a float type F. With F = float it runs on one
 // lane (the reference path, pixel history, unit tests); with F = Float8 it runs on eight
-// lanes at once (the fast path): a 4x2 pixel block made of two 2x2 quads, or eight vertices.
-// Masks follow F: bool for one lane, Mask8 for eight.
+// lanes at once: eight vertices, or a 4x2 pixel block made of two 2x2 quads; with F = Float16
+// on sixteen: an 8x2 block (two 4x2 blocks side by side). Masks follow F: bool, Mask8, Mask16.
 //
 // The types are thin wrappers over GCC/Clang vector extensions, so the compiler emits AVX2
 // (or SSE, or AVX-512) from the same source, depending on the build's -march.
@@ -22,103 +22,265 @@ namespace vx {
 using f32x8 = float __attribute__((vector_size(32)));
 using i32x8 = int32_t __attribute__((vector_size(32)));
 using u32x8 = uint32_t __attribute__((vector_size(32)));
+template <int N> struct Vectors;
+template <> struct Vectors<8> {
+  using f = f32x8;
+  using i = i32x8;
+  using u = u32x8;
+};
 }  // namespace vx
 
-struct Float8;
-struct Int8;
+// Eight lanes: one 256-bit vector. The free functions are hidden friends: found by
+// argument-dependent lookup, and plain (non-template) functions, so a float argument
+// converts implicitly. Sixteen lanes (below) are two eight-lane halves.
+template <int N> struct FloatN;
+template <int N> struct IntN;
 
-// Eight lane predicates; each lane is all ones (true) or zero (false).
-struct Mask8 {
-  vx::i32x8 v;
-  Mask8() = default;
-  constexpr explicit Mask8(vx::i32x8 m) : v(m) {}
-  explicit Mask8(bool b) : v(vx::i32x8{} + (b ? -1 : 0)) {}
-  static Mask8 from_bits(unsigned bits) {
-    const vx::i32x8 bit = {1, 2, 4, 8, 16, 32, 64, 128};
-    return Mask8(((vx::i32x8{} + int(bits)) & bit) != 0);
+// Lane predicates; each lane is all ones (true) or zero (false).
+template <int N> struct MaskN {
+  using V = typename vx::Vectors<N>::i;
+  V v;
+  MaskN() = default;
+  constexpr explicit MaskN(V m) : v(m) {}
+  explicit MaskN(bool b) : v(V{} + (b ? -1 : 0)) {}
+  static MaskN from_bits(unsigned bits) {
+    V bit;
+    for (int i = 0; i < N; ++i) bit[i] = int32_t(1u << i);
+    return MaskN(((V{} + int(bits)) & bit) != 0);
   }
   unsigned bits() const {
 #if defined(__AVX__)
-    return unsigned(__builtin_ia32_movmskps256((float __attribute__((vector_size(32))))v));
+    return unsigned(__builtin_ia32_movmskps256((vx::f32x8)v));
 #else
     unsigned b = 0;
-    for (int i = 0; i < kLanes; ++i) b |= (v[i] != 0 ? 1u : 0u) << i;
+    for (int i = 0; i < N; ++i) b |= (v[i] != 0 ? 1u : 0u) << i;
     return b;
 #endif
   }
   bool operator[](int i) const { return v[i] != 0; }
-  friend Mask8 operator&(Mask8 a, Mask8 b) { return Mask8(a.v & b.v); }
-  friend Mask8 operator|(Mask8 a, Mask8 b) { return Mask8(a.v | b.v); }
-  friend Mask8 operator^(Mask8 a, Mask8 b) { return Mask8(a.v ^ b.v); }
-  friend Mask8 operator!(Mask8 a) { return Mask8(~a.v); }
-  friend Mask8 operator~(Mask8 a) { return Mask8(~a.v); }
-  friend Mask8 operator&&(Mask8 a, Mask8 b) { return a & b; }
-  friend Mask8 operator||(Mask8 a, Mask8 b) { return a | b; }
-  Mask8& operator&=(Mask8 b) { v &= b.v; return *this; }
-  Mask8& operator|=(Mask8 b) { v |= b.v; return *this; }
+  friend MaskN operator&(MaskN a, MaskN b) { return MaskN(a.v & b.v); }
+  friend MaskN operator|(MaskN a, MaskN b) { return MaskN(a.v | b.v); }
+  friend MaskN operator^(MaskN a, MaskN b) { return MaskN(a.v ^ b.v); }
+  friend MaskN operator!(MaskN a) { return MaskN(~a.v); }
+  friend MaskN operator~(MaskN a) { return MaskN(~a.v); }
+  friend MaskN operator&&(MaskN a, MaskN b) { return a & b; }
+  friend MaskN operator||(MaskN a, MaskN b) { return a | b; }
+  MaskN& operator&=(MaskN b) { v &= b.v; return *this; }
+  MaskN& operator|=(MaskN b) { v |= b.v; return *this; }
+  friend bool any(MaskN m) { return m.bits() != 0; }
+  friend bool all(MaskN m) { return m.bits() == (N == 32 ? ~0u : (1u << N) - 1u); }
+  friend bool none(MaskN m) { return m.bits() == 0; }
+  friend MaskN select(MaskN m, MaskN a, MaskN b) { return MaskN((a.v & m.v) | (b.v & ~m.v)); }
 };
 
-inline bool any(Mask8 m) { return m.bits() != 0; }
-inline bool all(Mask8 m) { return m.bits() == 0xFFu; }
-inline bool none(Mask8 m) { return m.bits() == 0; }
-inline bool any(bool b) { return b; }
-inline bool all(bool b) { return b; }
-inline bool none(bool b) { return !b; }
-
-// Eight 32-bit integers.
-struct Int8 {
-  vx::i32x8 v;
-  Int8() = default;
-  constexpr Int8(vx::i32x8 x) : v(x) {}
-  Int8(int32_t s) : v(vx::i32x8{} + s) {}
+// 32-bit integers.
+template <int N> struct IntN {
+  using V = typename vx::Vectors<N>::i;
+  V v;
+  IntN() = default;
+  constexpr IntN(V x) : v(x) {}
+  IntN(int32_t s) : v(V{} + s) {}
   int32_t operator[](int i) const { return v[i]; }
   int32_t& operator[](int i) { return v[i]; }
-  friend Int8 operator+(Int8 a, Int8 b) { return a.v + b.v; }
-  friend Int8 operator-(Int8 a, Int8 b) { return a.v - b.v; }
-  friend Int8 operator*(Int8 a, Int8 b) { return a.v * b.v; }
-  friend Int8 operator&(Int8 a, Int8 b) { return a.v & b.v; }
-  friend Int8 operator|(Int8 a, Int8 b) { return a.v | b.v; }
-  friend Int8 operator^(Int8 a, Int8 b) { return a.v ^ b.v; }
-  friend Int8 operator<<(Int8 a, int s) { return a.v << s; }
-  friend Int8 operator>>(Int8 a, int s) { return a.v >> s; }
-  friend Mask8 operator==(Int8 a, Int8 b) { return Mask8(a.v == b.v); }
-  friend Mask8 operator!=(Int8 a, Int8 b) { return Mask8(a.v != b.v); }
-  friend Mask8 operator<(Int8 a, Int8 b) { return Mask8(a.v < b.v); }
-  friend Mask8 operator<=(Int8 a, Int8 b) { return Mask8(a.v <= b.v); }
-  friend Mask8 operator>(Int8 a, Int8 b) { return Mask8(a.v > b.v); }
-  friend Mask8 operator>=(Int8 a, Int8 b) { return Mask8(a.v >= b.v); }
+  friend IntN operator+(IntN a, IntN b) { return a.v + b.v; }
+  friend IntN operator-(IntN a, IntN b) { return a.v - b.v; }
+  friend IntN operator*(IntN a, IntN b) { return a.v * b.v; }
+  friend IntN operator&(IntN a, IntN b) { return a.v & b.v; }
+  friend IntN operator|(IntN a, IntN b) { return a.v | b.v; }
+  friend IntN operator^(IntN a, IntN b) { return a.v ^ b.v; }
+  friend IntN operator<<(IntN a, int s) { return a.v << s; }
+  friend IntN operator>>(IntN a, int s) { return a.v >> s; }
+  friend MaskN<N> operator==(IntN a, IntN b) { return MaskN<N>(a.v == b.v); }
+  friend MaskN<N> operator!=(IntN a, IntN b) { return MaskN<N>(a.v != b.v); }
+  friend MaskN<N> operator<(IntN a, IntN b) { return MaskN<N>(a.v < b.v); }
+  friend MaskN<N> operator<=(IntN a, IntN b) { return MaskN<N>(a.v <= b.v); }
+  friend MaskN<N> operator>(IntN a, IntN b) { return MaskN<N>(a.v > b.v); }
+  friend MaskN<N> operator>=(IntN a, IntN b) { return MaskN<N>(a.v >= b.v); }
+  friend IntN select(MaskN<N> m, IntN a, IntN b) { return IntN((a.v & m.v) | (b.v & ~m.v)); }
+  friend IntN min(IntN a, IntN b) { return IntN(a.v < b.v ? a.v : b.v); }
+  friend IntN max(IntN a, IntN b) { return IntN(a.v > b.v ? a.v : b.v); }
 };
 
-// Eight floats.
-struct Float8 {
-  vx::f32x8 v;
-  Float8() = default;
-  constexpr Float8(vx::f32x8 x) : v(x) {}
-  Float8(float s) : v(vx::f32x8{} + s) {}
-  static Float8 load(const float* p) {
-    Float8 r;
+// Floats.
+template <int N> struct FloatN {
+  using V = typename vx::Vectors<N>::f;
+  using I = typename vx::Vectors<N>::i;
+  V v;
+  FloatN() = default;
+  constexpr FloatN(V x) : v(x) {}
+  FloatN(float s) : v(V{} + s) {}
+  static FloatN load(const float* p) {
+    FloatN r;
     std::memcpy(&r.v, p, sizeof r.v);
     return r;
   }
   void store(float* p) const { std::memcpy(p, &v, sizeof v); }
   float operator[](int i) const { return v[i]; }
   float& operator[](int i) { return v[i]; }
-  friend Float8 operator+(Float8 a, Float8 b) { return a.v + b.v; }
-  friend Float8 operator-(Float8 a, Float8 b) { return a.v - b.v; }
-  friend Float8 operator*(Float8 a, Float8 b) { return a.v * b.v; }
-  friend Float8 operator/(Float8 a, Float8 b) { return a.v / b.v; }
-  friend Float8 operator-(Float8 a) { return -a.v; }
-  Float8& operator+=(Float8 b) { v += b.v; return *this; }
-  Float8& operator-=(Float8 b) { v -= b.v; return *this; }
-  Float8& operator*=(Float8 b) { v *= b.v; return *this; }
-  Float8& operator/=(Float8 b) { v /= b.v; return *this; }
-  friend Mask8 operator<(Float8 a, Float8 b) { return Mask8(a.v < b.v); }
-  friend Mask8 operator<=(Float8 a, Float8 b) { return Mask8(a.v <= b.v); }
-  friend Mask8 operator>(Float8 a, Float8 b) { return Mask8(a.v > b.v); }
-  friend Mask8 operator>=(Float8 a, Float8 b) { return Mask8(a.v >= b.v); }
-  friend Mask8 operator==(Float8 a, Float8 b) { return Mask8(a.v == b.v); }
-  friend Mask8 operator!=(Float8 a, Float8 b) { return Mask8(a.v != b.v); }
+  friend FloatN operator+(FloatN a, FloatN b) { return a.v + b.v; }
+  friend FloatN operator-(FloatN a, FloatN b) { return a.v - b.v; }
+  friend FloatN operator*(FloatN a, FloatN b) { return a.v * b.v; }
+  friend FloatN operator/(FloatN a, FloatN b) { return a.v / b.v; }
+  friend FloatN operator-(FloatN a) { return -a.v; }
+  FloatN& operator+=(FloatN b) { v += b.v; return *this; }
+  FloatN& operator-=(FloatN b) { v -= b.v; return *this; }
+  FloatN& operator*=(FloatN b) { v *= b.v; return *this; }
+  FloatN& operator/=(FloatN b) { v /= b.v; return *this; }
+  friend MaskN<N> operator<(FloatN a, FloatN b) { return MaskN<N>(a.v < b.v); }
+  friend MaskN<N> operator<=(FloatN a, FloatN b) { return MaskN<N>(a.v <= b.v); }
+  friend MaskN<N> operator>(FloatN a, FloatN b) { return MaskN<N>(a.v > b.v); }
+  friend MaskN<N> operator>=(FloatN a, FloatN b) { return MaskN<N>(a.v >= b.v); }
+  friend MaskN<N> operator==(FloatN a, FloatN b) { return MaskN<N>(a.v == b.v); }
+  friend MaskN<N> operator!=(FloatN a, FloatN b) { return MaskN<N>(a.v != b.v); }
+
+  friend IntN<N> bits_of(FloatN a) { return IntN<N>((I)a.v); }
+  // Truncation toward zero, like a C cast.
+  friend IntN<N> to_int(FloatN a) { return __builtin_convertvector(a.v, I); }
+  friend FloatN select(MaskN<N> m, FloatN a, FloatN b) { return FloatN((V)((((I)a.v) & m.v) | (((I)b.v) & ~m.v))); }
+  friend FloatN min(FloatN a, FloatN b) { return FloatN(a.v < b.v ? a.v : b.v); }
+  friend FloatN max(FloatN a, FloatN b) { return FloatN(a.v > b.v ? a.v : b.v); }
+  friend FloatN abs(FloatN a) { return FloatN((V)(((I)a.v) & 0x7FFFFFFF)); }
+  friend FloatN sqrt(FloatN a) {
+    FloatN r;
+    for (int i = 0; i < N; ++i) r.v[i] = __builtin_sqrtf(a.v[i]);
+    return r;
+  }
+  // a * b + c with one rounding (GLSL fma): the same instruction for one lane and N, so
+  // both paths give the same bits. Dot and matrix products, polynomials and interpolation
+  // use it.
+  friend FloatN fma(FloatN a, FloatN b, FloatN c) {
+#if defined(__FMA__)
+    return FloatN(__builtin_ia32_vfmaddps256(a.v, b.v, c.v));
+#else
+    FloatN r;
+    for (int i = 0; i < N; ++i) r.v[i] = __builtin_fmaf(a.v[i], b.v[i], c.v[i]);
+    return r;
+#endif
+  }
+  // 1/sqrt(a): the hardware estimate (12 bits) and one Newton step, about 22 correct bits;
+  // 0 -> +inf, +inf -> 0, negative or NaN -> NaN. Used by normalize(). The one-lane and the
+  // N-lane estimates are the same instruction per element, so both paths agree.
+  friend FloatN inversesqrt(FloatN a) {
+#if defined(__AVX__)
+    const FloatN y = FloatN(__builtin_ia32_rsqrtps256(a.v));
+    const FloatN r = y * fma(FloatN(-0.5f) * a, y * y, FloatN(1.5f));
+    return select(r == r, r, y);
+#else
+    return FloatN(1.0f) / sqrt(a);
+#endif
+  }
+
 };
+
+template <int N> inline FloatN<N> float_from_bits(IntN<N> a) { return FloatN<N>((typename vx::Vectors<N>::f)a.v); }
+template <int N> inline FloatN<N> to_float(IntN<N> a) {
+  return FloatN<N>(__builtin_convertvector(a.v, typename vx::Vectors<N>::f));
+}
+
+using Mask8 = MaskN<8>;
+using Int8 = IntN<8>;
+using Float8 = FloatN<8>;
+
+// Sixteen lanes: two groups of eight side by side (an 8x2 pixel block). Every operation is
+// two independent eight-lane operations, which the CPU overlaps: a long dependent chain of
+// shading math keeps both vector pipes busy.
+using Mask16 = MaskN<16>;
+using Int16 = IntN<16>;
+using Float16 = FloatN<16>;
+template <> struct MaskN<16> {
+  Mask8 lo, hi;
+  MaskN() = default;
+  MaskN(Mask8 l, Mask8 h) : lo(l), hi(h) {}
+  explicit MaskN(bool b) : lo(b), hi(b) {}
+  static MaskN from_bits(unsigned bits) { return {Mask8::from_bits(bits & 0xFF), Mask8::from_bits(bits >> 8)}; }
+  unsigned bits() const { return lo.bits() | (hi.bits() << 8); }
+  bool operator[](int i) const { return i < 8 ? lo[i] : hi[i - 8]; }
+  friend MaskN operator&(MaskN a, MaskN b) { return {a.lo & b.lo, a.hi & b.hi}; }
+  friend MaskN operator|(MaskN a, MaskN b) { return {a.lo | b.lo, a.hi | b.hi}; }
+  friend MaskN operator^(MaskN a, MaskN b) { return {a.lo ^ b.lo, a.hi ^ b.hi}; }
+  friend MaskN operator!(MaskN a) { return {!a.lo, !a.hi}; }
+  friend MaskN operator~(MaskN a) { return {~a.lo, ~a.hi}; }
+  friend MaskN operator&&(MaskN a, MaskN b) { return a & b; }
+  friend MaskN operator||(MaskN a, MaskN b) { return a | b; }
+  MaskN& operator&=(MaskN b) { return *this = *this & b; }
+  MaskN& operator|=(MaskN b) { return *this = *this | b; }
+  friend bool any(MaskN m) { return m.bits() != 0; }
+  friend bool all(MaskN m) { return m.bits() == 0xFFFFu; }
+  friend bool none(MaskN m) { return m.bits() == 0; }
+  friend MaskN select(MaskN m, MaskN a, MaskN b) { return {select(m.lo, a.lo, b.lo), select(m.hi, a.hi, b.hi)}; }
+};
+
+template <> struct IntN<16> {
+  Int8 lo, hi;
+  IntN() = default;
+  IntN(Int8 l, Int8 h) : lo(l), hi(h) {}
+  IntN(int32_t s) : lo(s), hi(s) {}
+  int32_t operator[](int i) const { return i < 8 ? lo[i] : hi[i - 8]; }
+  int32_t& operator[](int i) { return i < 8 ? lo[i] : hi[i - 8]; }
+#define TESSEL_TWIN_OP(op) \
+  friend IntN operator op(IntN a, IntN b) { return {a.lo op b.lo, a.hi op b.hi}; }
+  TESSEL_TWIN_OP(+) TESSEL_TWIN_OP(-) TESSEL_TWIN_OP(*) TESSEL_TWIN_OP(&) TESSEL_TWIN_OP(|) TESSEL_TWIN_OP(^)
+#undef TESSEL_TWIN_OP
+  friend IntN operator<<(IntN a, int s) { return {a.lo << s, a.hi << s}; }
+  friend IntN operator>>(IntN a, int s) { return {a.lo >> s, a.hi >> s}; }
+#define TESSEL_TWIN_CMP(op) \
+  friend Mask16 operator op(IntN a, IntN b) { return {a.lo op b.lo, a.hi op b.hi}; }
+  TESSEL_TWIN_CMP(==) TESSEL_TWIN_CMP(!=) TESSEL_TWIN_CMP(<) TESSEL_TWIN_CMP(<=) TESSEL_TWIN_CMP(>) TESSEL_TWIN_CMP(>=)
+#undef TESSEL_TWIN_CMP
+  friend IntN select(Mask16 m, IntN a, IntN b) { return {select(m.lo, a.lo, b.lo), select(m.hi, a.hi, b.hi)}; }
+  friend IntN min(IntN a, IntN b) { return {min(a.lo, b.lo), min(a.hi, b.hi)}; }
+  friend IntN max(IntN a, IntN b) { return {max(a.lo, b.lo), max(a.hi, b.hi)}; }
+};
+
+template <> struct FloatN<16> {
+  Float8 lo, hi;
+  FloatN() = default;
+  FloatN(Float8 l, Float8 h) : lo(l), hi(h) {}
+  FloatN(float s) : lo(s), hi(s) {}
+  static FloatN load(const float* p) { return {Float8::load(p), Float8::load(p + 8)}; }
+  void store(float* p) const {
+    lo.store(p);
+    hi.store(p + 8);
+  }
+  float operator[](int i) const { return i < 8 ? lo[i] : hi[i - 8]; }
+  float& operator[](int i) { return i < 8 ? lo[i] : hi[i - 8]; }
+#define TESSEL_TWIN_OP(op) \
+  friend FloatN operator op(FloatN a, FloatN b) { return {a.lo op b.lo, a.hi op b.hi}; } \
+  FloatN& operator op##=(FloatN b) { return *this = *this op b; }
+  TESSEL_TWIN_OP(+) TESSEL_TWIN_OP(-) TESSEL_TWIN_OP(*) TESSEL_TWIN_OP(/)
+#undef TESSEL_TWIN_OP
+  friend FloatN operator-(FloatN a) { return {-a.lo, -a.hi}; }
+#define TESSEL_TWIN_CMP(op) \
+  friend Mask16 operator op(FloatN a, FloatN b) { return {a.lo op b.lo, a.hi op b.hi}; }
+  TESSEL_TWIN_CMP(==) TESSEL_TWIN_CMP(!=) TESSEL_TWIN_CMP(<) TESSEL_TWIN_CMP(<=) TESSEL_TWIN_CMP(>) TESSEL_TWIN_CMP(>=)
+#undef TESSEL_TWIN_CMP
+  friend Int16 bits_of(FloatN a) { return {bits_of(a.lo), bits_of(a.hi)}; }
+  friend Int16 to_int(FloatN a) { return {to_int(a.lo), to_int(a.hi)}; }
+  friend FloatN select(Mask16 m, FloatN a, FloatN b) { return {select(m.lo, a.lo, b.lo), select(m.hi, a.hi, b.hi)}; }
+  friend FloatN min(FloatN a, FloatN b) { return {min(a.lo, b.lo), min(a.hi, b.hi)}; }
+  friend FloatN max(FloatN a, FloatN b) { return {max(a.lo, b.lo), max(a.hi, b.hi)}; }
+  friend FloatN abs(FloatN a) { return {abs(a.lo), abs(a.hi)}; }
+  friend FloatN sqrt(FloatN a) { return {sqrt(a.lo), sqrt(a.hi)}; }
+  friend FloatN fma(FloatN a, FloatN b, FloatN c) { return {fma(a.lo, b.lo, c.lo), fma(a.hi, b.hi, c.hi)}; }
+  friend FloatN inversesqrt(FloatN a) { return {inversesqrt(a.lo), inversesqrt(a.hi)}; }
+};
+inline Float16 float_from_bits(Int16 a) { return {float_from_bits(a.lo), float_from_bits(a.hi)}; }
+inline Float16 to_float(Int16 a) { return {to_float(a.lo), to_float(a.hi)}; }
+
+// Halves of sixteen lanes as eight, and back.
+inline Float8 lo_half(Float16 a) { return a.lo; }
+inline Float8 hi_half(Float16 a) { return a.hi; }
+inline Float16 join(Float8 lo, Float8 hi) { return {lo, hi}; }
+inline Int8 lo_half(Int16 a) { return a.lo; }
+inline Int8 hi_half(Int16 a) { return a.hi; }
+inline Int16 join(Int8 lo, Int8 hi) { return {lo, hi}; }
+inline Mask8 lo_half(Mask16 a) { return a.lo; }
+inline Mask8 hi_half(Mask16 a) { return a.hi; }
+inline Mask16 join(Mask8 lo, Mask8 hi) { return {lo, hi}; }
+
+inline bool any(bool b) { return b; }
+inline bool all(bool b) { return b; }
+inline bool none(bool b) { return !b; }
 
 // --- what goes with a float type ----------------------------------------------------------
 template <class F> struct LaneTraits;
@@ -127,67 +289,39 @@ template <> struct LaneTraits<float> {
   using Int = int32_t;
   static constexpr int width = 1;
 };
-template <> struct LaneTraits<Float8> {
-  using Mask = Mask8;
-  using Int = Int8;
-  static constexpr int width = kLanes;
+template <int N> struct LaneTraits<FloatN<N>> {
+  using Mask = MaskN<N>;
+  using Int = IntN<N>;
+  static constexpr int width = N;
 };
 template <class F> using MaskOf = typename LaneTraits<F>::Mask;
 template <class F> using IntOf = typename LaneTraits<F>::Int;
 template <class F> inline constexpr int lane_width = LaneTraits<F>::width;
 template <class F> inline constexpr bool is_lanes = lane_width<F> > 1;
 
-// --- bit casts and conversions -------------------------------------------------------------
-inline Int8 bits_of(Float8 a) { return Int8((vx::i32x8)a.v); }
-inline Float8 float_from_bits(Int8 a) { return Float8((vx::f32x8)a.v); }
+// --- one lane -------------------------------------------------------------------------------
 inline int32_t bits_of(float a) { int32_t r; std::memcpy(&r, &a, 4); return r; }
 inline float float_from_bits(int32_t a) { float r; std::memcpy(&r, &a, 4); return r; }
-inline Float8 to_float(Int8 a) { return __builtin_convertvector(a.v, vx::f32x8); }
 inline float to_float(int32_t a) { return float(a); }
-// Truncation toward zero, like a C cast.
-inline Int8 to_int(Float8 a) { return __builtin_convertvector(a.v, vx::i32x8); }
 inline int32_t to_int(float a) { return int32_t(a); }
-
-// --- selection -----------------------------------------------------------------------------
-inline Float8 select(Mask8 m, Float8 a, Float8 b) {
-  return float_from_bits(Int8((bits_of(a).v & m.v) | (bits_of(b).v & ~m.v)));
-}
-inline Int8 select(Mask8 m, Int8 a, Int8 b) { return Int8((a.v & m.v) | (b.v & ~m.v)); }
-inline Mask8 select(Mask8 m, Mask8 a, Mask8 b) { return Mask8((a.v & m.v) | (b.v & ~m.v)); }
 inline float select(bool m, float a, float b) { return m ? a : b; }
 inline int32_t select(bool m, int32_t a, int32_t b) { return m ? a : b; }
 inline bool select(bool m, bool a, bool b) { return m ? a : b; }
-
-// --- elementwise math, one definition for both widths where possible -----------------------
-inline Float8 min(Float8 a, Float8 b) { return Float8(a.v < b.v ? a.v : b.v); }
-inline Float8 max(Float8 a, Float8 b) { return Float8(a.v > b.v ? a.v : b.v); }
 inline float min(float a, float b) { return a < b ? a : b; }
 inline float max(float a, float b) { return a > b ? a : b; }
-inline Int8 min(Int8 a, Int8 b) { return Int8(a.v < b.v ? a.v : b.v); }
-inline Int8 max(Int8 a, Int8 b) { return Int8(a.v > b.v ? a.v : b.v); }
-inline Float8 abs(Float8 a) { return float_from_bits(Int8(bits_of(a).v & 0x7FFFFFFF)); }
 inline float abs(float a) { return std::fabs(a); }
-
-// a * b + c with one rounding (GLSL fma). The same instruction for one lane and eight, so
-// both paths give the same bits; the library uses it for dot products, matrix products,
-// polynomials and interpolation.
+inline float sqrt(float a) { return __builtin_sqrtf(a); }
 inline float fma(float a, float b, float c) { return __builtin_fmaf(a, b, c); }
-inline Float8 fma(Float8 a, Float8 b, Float8 c) {
-#if defined(__FMA__)
-  return Float8(__builtin_ia32_vfmaddps256(a.v, b.v, c.v));
+inline float inversesqrt(float a) {
+#if defined(__AVX__)
+  using f4 = float __attribute__((vector_size(16)));
+  const float y = __builtin_ia32_rsqrtss(f4{a, 0.0f, 0.0f, 0.0f})[0];
+  const float r = y * fma(-0.5f * a, y * y, 1.5f);
+  return r == r ? r : y;
 #else
-  Float8 r;
-  for (int i = 0; i < kLanes; ++i) r.v[i] = __builtin_fmaf(a.v[i], b.v[i], c.v[i]);
-  return r;
+  return 1.0f / sqrt(a);
 #endif
 }
-
-inline Float8 sqrt(Float8 a) {
-  Float8 r;
-  for (int i = 0; i < kLanes; ++i) r.v[i] = __builtin_sqrtf(a.v[i]);
-  return r;
-}
-inline float sqrt(float a) { return __builtin_sqrtf(a); }
 
 // floor/ceil/round via the conversion instructions; valid for |x| < 2^31, and values beyond
 // 2^23 are already integers.
@@ -211,29 +345,6 @@ template <class F> inline F smoothstep(F e0, F e1, F x) {
   F t = saturate((x - e0) / (e1 - e0));
   return t * t * (F(3.0f) - F(2.0f) * t);
 }
-// 1/sqrt(a): the hardware estimate (12 bits) and one Newton step, about 22 correct bits;
-// 0 -> +inf, +inf -> 0, negative or NaN -> NaN. Used by normalize(). The scalar and the
-// eight-lane estimates are the same instruction per element, so both paths agree.
-inline Float8 inversesqrt(Float8 a) {
-#if defined(__AVX__)
-  const Float8 y = Float8(__builtin_ia32_rsqrtps256(a.v));
-  const Float8 r = y * fma(Float8(-0.5f) * a, y * y, Float8(1.5f));
-  return select(r == r, r, y);
-#else
-  return Float8(1.0f) / sqrt(a);
-#endif
-}
-inline float inversesqrt(float a) {
-#if defined(__AVX__)
-  using f4 = float __attribute__((vector_size(16)));
-  const float y = __builtin_ia32_rsqrtss(f4{a, 0.0f, 0.0f, 0.0f})[0];
-  const float r = y * fma(-0.5f * a, y * y, 1.5f);
-  return r == r ? r : y;
-#else
-  return 1.0f / sqrt(a);
-#endif
-}
-
 // exp2 and log2 by range reduction and minimax polynomials (relative error about 2e-7).
 // The same code runs for one lane and eight, so the reference path and the fast path agree
 // to the last bit.

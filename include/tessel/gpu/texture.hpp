@@ -185,4 +185,25 @@ Vec4<float> texelFetch(const Sampler2D& s, int x, int y, int level);
 Vec4<Float8> texelFetch(const Sampler2D& s, Int8 x, Int8 y, int level);
 glm::ivec2 textureSize(const Sampler2D& s, int level);
 
+// Sixteen lanes (two 4x2 groups side by side) sample as their two halves of eight.
+inline Vec4<Float16> texture(const Sampler2D& s, const Vec2<Float16>& uv) {
+  return join(texture(s, lo_half(uv)), texture(s, hi_half(uv)));
+}
+inline Vec4<Float16> textureLod(const Sampler2D& s, const Vec2<Float16>& uv, Float16 lod) {
+  return join(textureLod(s, lo_half(uv), lo_half(lod)), textureLod(s, hi_half(uv), hi_half(lod)));
+}
+inline Vec4<Float16> textureGrad(const Sampler2D& s, const Vec2<Float16>& uv, const Vec2<Float16>& dx,
+                                 const Vec2<Float16>& dy) {
+  return join(textureGrad(s, lo_half(uv), lo_half(dx), lo_half(dy)), textureGrad(s, hi_half(uv), hi_half(dx), hi_half(dy)));
+}
+inline Vec4<Float16> texture(const SamplerCube& s, const Vec3<Float16>& dir) {
+  return join(texture(s, lo_half(dir)), texture(s, hi_half(dir)));
+}
+inline Float16 texture(const Sampler2DShadow& s, const Vec3<Float16>& uvr) {
+  return join(texture(s, lo_half(uvr)), texture(s, hi_half(uvr)));
+}
+inline Vec4<Float16> texelFetch(const Sampler2D& s, Int16 x, Int16 y, int level) {
+  return join(texelFetch(s, lo_half(x), lo_half(y), level), texelFetch(s, hi_half(x), hi_half(y), level));
+}
+
 }  // namespace tessel::gpu

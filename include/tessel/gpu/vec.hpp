@@ -198,6 +198,9 @@ inline Float8 dFdy(Float8 v) {
   vx::f32x8 b = __builtin_shufflevector(v.v, v.v, 0, 1, 0, 1, 4, 5, 4, 5);
   return t - b;
 }
+// Sixteen lanes are two such groups of eight side by side (an 8x2 block).
+inline Float16 dFdx(Float16 v) { return {dFdx(v.lo), dFdx(v.hi)}; }
+inline Float16 dFdy(Float16 v) { return {dFdy(v.lo), dFdy(v.hi)}; }
 inline float dFdx(float) { return 0.0f; }
 inline float dFdy(float) { return 0.0f; }
 template <class F> inline F fwidth(F v) { return abs(dFdx(v)) + abs(dFdy(v)); }
@@ -205,5 +208,16 @@ template <class F> inline Vec2<F> dFdx(const Vec2<F>& v) { return {dFdx(v.x), dF
 template <class F> inline Vec2<F> dFdy(const Vec2<F>& v) { return {dFdy(v.x), dFdy(v.y)}; }
 template <class F> inline Vec3<F> dFdx(const Vec3<F>& v) { return {dFdx(v.x), dFdx(v.y), dFdx(v.z)}; }
 template <class F> inline Vec3<F> dFdy(const Vec3<F>& v) { return {dFdy(v.x), dFdy(v.y), dFdy(v.z)}; }
+
+// --- sixteen lanes as two halves of eight ------------------------------------------------------
+inline Vec2<Float8> lo_half(const Vec2<Float16>& v) { return {lo_half(v.x), lo_half(v.y)}; }
+inline Vec2<Float8> hi_half(const Vec2<Float16>& v) { return {hi_half(v.x), hi_half(v.y)}; }
+inline Vec3<Float8> lo_half(const Vec3<Float16>& v) { return {lo_half(v.x), lo_half(v.y), lo_half(v.z)}; }
+inline Vec3<Float8> hi_half(const Vec3<Float16>& v) { return {hi_half(v.x), hi_half(v.y), hi_half(v.z)}; }
+inline Vec4<Float8> lo_half(const Vec4<Float16>& v) { return {lo_half(v.x), lo_half(v.y), lo_half(v.z), lo_half(v.w)}; }
+inline Vec4<Float8> hi_half(const Vec4<Float16>& v) { return {hi_half(v.x), hi_half(v.y), hi_half(v.z), hi_half(v.w)}; }
+inline Vec4<Float16> join(const Vec4<Float8>& a, const Vec4<Float8>& b) {
+  return {join(a.x, b.x), join(a.y, b.y), join(a.z, b.z), join(a.w, b.w)};
+}
 
 }  // namespace tessel::gpu

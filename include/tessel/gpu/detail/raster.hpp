@@ -84,77 +84,117 @@ template <class S> class Program final : public ProgramBase {
             ++ne;
           }
         }
-        for (int gy = by; gy < by + 8; gy += 2) {
-          if (gy + 1 < miny || gy > maxy) continue;
-          for (int gx = bx; gx < bx + 8; gx += 4) {
-            if (gx + 3 < minx || gx > maxx) continue;
-            unsigned mask = 0xFF;
-            if (gx < minx || gx + 3 > maxx || gy < miny || gy + 1 > maxy) {
-              const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
-              mask = ((px >= Int8(minx)) & (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy))).bits();
-            }
-            if (crossing) {
-              if (narrow) {
-                const int ox = gx - bx, oy = gy - by;
-                for (int k = 0; k < ne; ++k)
-                  mask &= ((base[k] + Int8(step_a[k] * ox + step_b[k] * oy)) > Int8(0)).bits();
-              } else {
-                for (int l = 0; l < kLanes; ++l) {
-                  const int px = gx + kLaneDx[l], py = gy + kLaneDy[l];
-                  for (int i = 0; i < 3; ++i)
-                    if ((crossing & (1u << i)) && !(p.e[i].c + p.e[i].a * px + p.e[i].b * py > 0)) mask &= ~(1u << l);
-                }
+        // The coverage of the 4x2 group at (gx, gy), cut to the bbox.
+        auto group_mask = [&](int gx, int gy) -> unsigned {
+          if (gx + 3 < minx || gx > maxx) return 0;
+          unsigned mask = 0xFF;
+          if (gx < minx || gx + 3 > maxx || gy < miny || gy + 1 > maxy) {
+            const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
+            mask = ((px >= Int8(minx)) & (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy))).bits();
+          }
+          if (crossing && mask) {
+            if (narrow) {
+              const int ox = gx - bx, oy = gy - by;
+              for (int k = 0; k < ne; ++k)
+                mask &= ((base[k] + Int8(step_a[k] * ox + step_b[k] * oy)) > Int8(0)).bits();
+            } else {
+              for (int l = 0; l < kLanes; ++l) {
+                const int px = gx + kLaneDx[l], py = gy + kLaneDy[l];
+                for (int i = 0; i < 3; ++i)
+                  if ((crossing & (1u << i)) && !(p.e[i].c + p.e[i].a * px + p.e[i].b * py > 0)) mask &= ~(1u << l);
               }
             }
-            if (mask) shade_group(d, t, p, gx, gy, mask, c);
           }
+          return mask;
+        };
+        for (int gy = by; gy < by + 8; gy += 2) {
+          if (gy + 1 < miny || gy > maxy) continue;
+          // Two groups side by side shade together as sixteen lanes (independent halves
+          // keep both vector pipes busy); a lone group shades as eight.
+          const unsigned m0 = group_mask(bx, gy), m1 = group_mask(bx + 4, gy);
+          if (m0 && m1) shade<Float16>(d, t, p, bx, gy, m0 | (m1 << 8), c);
+          else if (m0) shade<Float8>(d, t, p, bx, gy, m0, c);
+          else if (m1) shade<Float8>(d, t, p, bx + 4, gy, m1, c);
         }
       }
     }
   }
 
  private:
-  void shade_group(const DrawRecord& d, const TargetView& t, const Prim& p, int gx, int gy, unsigned mask,
-                   Counters& c) const {
+  // Depth/stencil test of the 8 (one group at gx) or 16 lanes (groups at gx and gx + 4).
+  template <class F>
+  static unsigned test(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask, const F& z, bool front) {
+    if constexpr (lane_width<F> == 8) {
+      return depth_stencil_test(d, t, gx, gy, mask, z, front);
+    } else {
+      unsigned lo = mask & 0xFF, hi = mask >> 8;
+      if (lo) lo = depth_stencil_test(d, t, gx, gy, lo, lo_half(z), front);
+      if (hi) hi = depth_stencil_test(d, t, gx + 4, gy, hi, hi_half(z), front);
+      return lo | (hi << 8);
+    }
+  }
+
+  // flatten: the shader and every GLSL function it calls are inlined here, so lane values
+  // stay in registers (16-lane values passed to an out-of-line call go through memory).
+  template <class F>
+  __attribute__((flatten)) void shade(const DrawRecord& d, const TargetView& t, const Prim& p, int gx, int gy, unsigned mask,
+             Counters& c) const {
     constexpr int K = varying_count<S>();
-    static const Float8 lane_dx = Float8(vx::f32x8{0.5f, 1.5f, 0.5f, 1.5f, 2.5f, 3.5f, 2.5f, 3.5f});
-    static const Float8 lane_dy = Float8(vx::f32x8{0.5f, 0.5f, 1.5f, 1.5f, 0.5f, 0.5f, 1.5f, 1.5f});
-    const Float8 cx = Float8(float(gx)) + lane_dx, cy = Float8(float(gy)) + lane_dy;
-    const Float8 fx = cx - Float8(p.xr), fy = cy - Float8(p.yr);
-    Float8 z = fma(Float8(p.z[2]), fy, fma(Float8(p.z[1]), fx, Float8(p.z[0])));
-    z = clamp(z, Float8(d.depth_min), Float8(d.depth_max));
+    constexpr int N = lane_width<F>;
+    constexpr int outputs = shader_outputs<S>();
+    F lane_dx, lane_dy;  // pixel centres of the lanes relative to (gx, gy)
+    for (int l = 0; l < N; ++l) {
+      lane_dx[l] = float(kLaneDx[l % 8] + 4 * (l / 8)) + 0.5f;
+      lane_dy[l] = float(kLaneDy[l % 8]) + 0.5f;
+    }
+    const F cx = F(float(gx)) + lane_dx, cy = F(float(gy)) + lane_dy;
+    const F fx = cx - F(p.xr), fy = cy - F(p.yr);
+    F z = fma(F(p.z[2]), fy, fma(F(p.z[1]), fx, F(p.z[0])));
+    z = clamp(z, F(d.depth_min), F(d.depth_max));
     const bool tests = d.state.depth_test || d.state.stencil_test;
     if (tests && d.early_depth) {
-      mask = depth_stencil_test(d, t, gx, gy, mask, z, p.front);
+      mask = test(d, t, gx, gy, mask, z, p.front);
       if (!mask) return;
     }
-    const Float8 oow = fma(Float8(p.oow[2]), fy, fma(Float8(p.oow[1]), fx, Float8(p.oow[0])));
-    const Float8 w = Float8(1.0f) / oow;
-    Varyings<Float8> vary;
+    const F oow = fma(F(p.oow[2]), fy, fma(F(p.oow[1]), fx, F(p.oow[0])));
+    const F w = F(1.0f) / oow;
+    Varyings<F> vary;
     if constexpr (K > 0) {
-      Float8 lanes[K];
+      F lanes[K];
       const float* pl = p.planes();
       for (int k = 0; k < K; ++k) {
-        Float8 v = fma(Float8(pl[2 * K + k]), fy, fma(Float8(pl[K + k]), fx, Float8(pl[k])));
+        F v = fma(F(pl[2 * K + k]), fy, fma(F(pl[K + k]), fx, F(pl[k])));
         if (!(((flat | noperspective) >> k) & 1)) v = v * w;
         lanes[k] = v;
       }
       std::memcpy(&vary, lanes, sizeof lanes);
     }
-    Fragment<Float8> f;
-    f.coord = Vec4<Float8>(cx, cy, z, oow);
-    f.front_facing = Mask8(p.front);
-    f.primitive_id = Int8(int32_t(p.prim_id));
-    for (int i = 0; i < shader_outputs<S>(); ++i) f.color[size_t(i)] = Vec4<Float8>(Float8(0.0f));
+    Fragment<F> f;
+    f.coord = Vec4<F>(cx, cy, z, oow);
+    f.front_facing = MaskOf<F>(p.front);
+    f.primitive_id = IntOf<F>(int32_t(p.prim_id));
+    for (int i = 0; i < outputs; ++i) f.color[size_t(i)] = Vec4<F>(F(0.0f));
     f.depth = z;
-    f.killed = Mask8(false);
+    f.killed = MaskOf<F>(false);
     shader_.fragment(uniforms_, vary, f);
     if constexpr (shader_discards<S>()) mask &= ~f.killed.bits();
-    if constexpr (shader_writes_depth<S>()) z = clamp(f.depth, Float8(0.0f), Float8(1.0f));
+    if constexpr (shader_writes_depth<S>()) z = clamp(f.depth, F(0.0f), F(1.0f));
     c.fragments_shaded += unsigned(__builtin_popcount(mask));
-    if (tests && !d.early_depth) mask = depth_stencil_test(d, t, gx, gy, mask, z, p.front);
+    if (tests && !d.early_depth) mask = test(d, t, gx, gy, mask, z, p.front);
     if (!mask) return;
-    write_colors(d, t, gx, gy, mask, f.color.data(), shader_outputs<S>());
+    if constexpr (N == 8) {
+      write_colors(d, t, gx, gy, mask, f.color.data(), outputs);
+    } else {
+      Vec4<Float8> half[outputs];
+      if (mask & 0xFF) {
+        for (int i = 0; i < outputs; ++i) half[i] = lo_half(f.color[size_t(i)]);
+        write_colors(d, t, gx, gy, mask & 0xFF, half, outputs);
+      }
+      if (mask >> 8) {
+        for (int i = 0; i < outputs; ++i) half[i] = hi_half(f.color[size_t(i)]);
+        write_colors(d, t, gx + 4, gy, mask >> 8, half, outputs);
+      }
+    }
     c.fragments_written += unsigned(__builtin_popcount(mask));
   }
 
