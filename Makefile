@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= 2
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build run test asan bench clean
+.PHONY: all deps configure build run test asan bench bench-peer clean
 
 all: build
 
@@ -31,8 +31,14 @@ asan: deps
 	@cmake --build build-asan -j $(JOBS)
 	@cd build-asan && ctest --output-on-failure -j $(JOBS) -L asan
 
+# Micro-benchmarks of each pipeline stage (Google Benchmark).
 bench: build
 	@$(BUILD)/bench/tessel_bench_micro
+
+# The standard scenes on Tessel and on Mesa llvmpipe, side by side (README, Performance).
+bench-peer: build
+	@mkdir -p out/bench
+	@$(BUILD)/apps/tessel bench --peer --images out/bench --json out/bench/bench.json
 
 clean:
 	rm -rf $(BUILD) build-asan out

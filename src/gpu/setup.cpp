@@ -158,31 +158,20 @@ Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, 
   s.solve(v0.z, v1.z, v2.z, p->z);
   if (apply_offset) p->z[0] += polygon_offset(d, v0, v1, v2);
   s.solve(v0.oow, v1.oow, v2.oow, p->oow);
-  // Varying planes, four at a time in double (structure of arrays: values at the anchor,
-  // then d/dx, then d/dy). Perspective-correct components are interpolated as value/w.
+  // Varying planes (structure of arrays: values at the anchor, then d/dx, then d/dy).
+  // Perspective-correct components are interpolated as value/w.
   float* pl = p->planes();
   const uint64_t flat = d.program->flat, noper = d.program->noperspective;
-  using d4 = double __attribute__((vector_size(32)));
-  using f4 = float __attribute__((vector_size(16)));
-  const d4 dx1 = d4{} + s.dx1, dy1 = d4{} + s.dy1, dx2 = d4{} + s.dx2, dy2 = d4{} + s.dy2, inv = d4{} + s.inv_det;
-  for (int k = 0; k < K; k += 4) {
-    f4 a[3];
-    const WinVert* v[3] = {&v0, &v1, &v2};
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 4; ++j) {
-        const int kk = std::min(k + j, K - 1);
-        const bool linear = ((flat | noper) >> kk) & 1;
-        a[i][j] = linear ? v[i]->var[kk] : v[i]->var[kk] * v[i]->oow;
-      }
-    }
-    const d4 a0 = __builtin_convertvector(a[0], d4);
-    const d4 d1 = __builtin_convertvector(a[1], d4) - a0, d2 = __builtin_convertvector(a[2], d4) - a0;
-    const f4 ddx = __builtin_convertvector((d1 * dy2 - d2 * dy1) * inv, f4);
-    const f4 ddy = __builtin_convertvector((d2 * dx1 - d1 * dx2) * inv, f4);
-    const int n = std::min(4, K - k);
-    std::memcpy(pl + k, &a[0], sizeof(float) * size_t(n));
-    std::memcpy(pl + K + k, &ddx, sizeof(float) * size_t(n));
-    std::memcpy(pl + 2 * K + k, &ddy, sizeof(float) * size_t(n));
+  const uint64_t linear = flat | noper;
+  for (int k = 0; k < K; ++k) {
+    const bool lin = (linear >> k) & 1;
+    const float a0 = lin ? v0.var[k] : v0.var[k] * v0.oow;
+    const float a1 = lin ? v1.var[k] : v1.var[k] * v1.oow;
+    const float a2 = lin ? v2.var[k] : v2.var[k] * v2.oow;
+    const double d1 = double(a1) - a0, d2 = double(a2) - a0;
+    pl[k] = a0;
+    pl[K + k] = float((d1 * s.dy2 - d2 * s.dy1) * s.inv_det);
+    pl[2 * K + k] = float((d2 * s.dx1 - d1 * s.dx2) * s.inv_det);
   }
   for (uint64_t f = flat; f; f &= f - 1) {
     const int k = __builtin_ctzll(f);
