@@ -56,6 +56,11 @@ template <class S> class Program final : public ProgramBase {
     for (const EdgeEq& e : p.e)
       narrow = narrow && e.a > -(int64_t(1) << 26) && e.a < (int64_t(1) << 26) && e.b > -(int64_t(1) << 26) &&
                e.b < (int64_t(1) << 26);
+    // Covered 4x2 groups are shaded two at a time as sixteen lanes (two independent halves
+    // keep both vector pipes busy through the shader's long dependency chains); `pending`
+    // waits for a partner. Groups of one triangle never overlap, so the order is free.
+    Pos pending{0, 0};
+    unsigned pending_mask = 0;
     for (int by = miny & ~7; by <= maxy; by += 8) {
       for (int bx = minx & ~7; bx <= maxx; bx += 8) {
         // Classify the 8x8 block against each edge from its corner pixels: edges that do
@@ -109,27 +114,37 @@ template <class S> class Program final : public ProgramBase {
         };
         for (int gy = by; gy < by + 8; gy += 2) {
           if (gy + 1 < miny || gy > maxy) continue;
-          // Two groups side by side shade together as sixteen lanes (independent halves
-          // keep both vector pipes busy); a lone group shades as eight.
-          const unsigned m0 = group_mask(bx, gy), m1 = group_mask(bx + 4, gy);
-          if (m0 && m1) shade<Float16>(d, t, p, bx, gy, m0 | (m1 << 8), c);
-          else if (m0) shade<Float8>(d, t, p, bx, gy, m0, c);
-          else if (m1) shade<Float8>(d, t, p, bx + 4, gy, m1, c);
+          for (int gx = bx; gx < bx + 8; gx += 4) {
+            const unsigned m = group_mask(gx, gy);
+            if (!m) continue;
+            if (!pending_mask) {
+              pending = {gx, gy};
+              pending_mask = m;
+            } else {
+              shade<Float16>(d, t, p, pending, {gx, gy}, pending_mask | (m << 8), c);
+              pending_mask = 0;
+            }
+          }
         }
       }
     }
+    if (pending_mask) shade<Float8>(d, t, p, pending, pending, pending_mask, c);
   }
 
  private:
-  // Depth/stencil test of the 8 (one group at gx) or 16 lanes (groups at gx and gx + 4).
+  struct Pos {
+    int x, y;
+  };
+
+  // Depth/stencil test of the 8 lanes of group a, or the 16 of groups a and b.
   template <class F>
-  static unsigned test(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask, const F& z, bool front) {
+  static unsigned test(const DrawRecord& d, const TargetView& t, Pos a, Pos b, unsigned mask, const F& z, bool front) {
     if constexpr (lane_width<F> == 8) {
-      return depth_stencil_test(d, t, gx, gy, mask, z, front);
+      return depth_stencil_test(d, t, a.x, a.y, mask, z, front);
     } else {
       unsigned lo = mask & 0xFF, hi = mask >> 8;
-      if (lo) lo = depth_stencil_test(d, t, gx, gy, lo, lo_half(z), front);
-      if (hi) hi = depth_stencil_test(d, t, gx + 4, gy, hi, hi_half(z), front);
+      if (lo) lo = depth_stencil_test(d, t, a.x, a.y, lo, lo_half(z), front);
+      if (hi) hi = depth_stencil_test(d, t, b.x, b.y, hi, hi_half(z), front);
       return lo | (hi << 8);
     }
   }
@@ -137,23 +152,30 @@ template <class S> class Program final : public ProgramBase {
   // flatten: the shader and every GLSL function it calls are inlined here, so lane values
   // stay in registers (16-lane values passed to an out-of-line call go through memory).
   template <class F>
-  __attribute__((flatten)) void shade(const DrawRecord& d, const TargetView& t, const Prim& p, int gx, int gy, unsigned mask,
-             Counters& c) const {
+  // Shades the 4x2 group at a (eight lanes), or the groups at a and b (sixteen lanes: a in
+  // lanes 0-7, b in lanes 8-15).
+  __attribute__((flatten)) void shade(const DrawRecord& d, const TargetView& t, const Prim& p, Pos a, Pos b,
+                                      unsigned mask, Counters& c) const {
     constexpr int K = varying_count<S>();
     constexpr int N = lane_width<F>;
     constexpr int outputs = shader_outputs<S>();
-    F lane_dx, lane_dy;  // pixel centres of the lanes relative to (gx, gy)
-    for (int l = 0; l < N; ++l) {
-      lane_dx[l] = float(kLaneDx[l % 8] + 4 * (l / 8)) + 0.5f;
-      lane_dy[l] = float(kLaneDy[l % 8]) + 0.5f;
+    // Pixel centres of the lanes.
+    const Float8 dx8(vx::f32x8{0.5f, 1.5f, 0.5f, 1.5f, 2.5f, 3.5f, 2.5f, 3.5f});
+    const Float8 dy8(vx::f32x8{0.5f, 0.5f, 1.5f, 1.5f, 0.5f, 0.5f, 1.5f, 1.5f});
+    F cx, cy;
+    if constexpr (N == 8) {
+      cx = Float8(float(a.x)) + dx8;
+      cy = Float8(float(a.y)) + dy8;
+    } else {
+      cx = join(Float8(float(a.x)) + dx8, Float8(float(b.x)) + dx8);
+      cy = join(Float8(float(a.y)) + dy8, Float8(float(b.y)) + dy8);
     }
-    const F cx = F(float(gx)) + lane_dx, cy = F(float(gy)) + lane_dy;
     const F fx = cx - F(p.xr), fy = cy - F(p.yr);
     F z = fma(F(p.z[2]), fy, fma(F(p.z[1]), fx, F(p.z[0])));
     z = clamp(z, F(d.depth_min), F(d.depth_max));
     const bool tests = d.state.depth_test || d.state.stencil_test;
     if (tests && d.early_depth) {
-      mask = test(d, t, gx, gy, mask, z, p.front);
+      mask = test(d, t, a, b, mask, z, p.front);
       if (!mask) return;
     }
     const F oow = fma(F(p.oow[2]), fy, fma(F(p.oow[1]), fx, F(p.oow[0])));
@@ -180,19 +202,19 @@ template <class S> class Program final : public ProgramBase {
     if constexpr (shader_discards<S>()) mask &= ~f.killed.bits();
     if constexpr (shader_writes_depth<S>()) z = clamp(f.depth, F(0.0f), F(1.0f));
     c.fragments_shaded += unsigned(__builtin_popcount(mask));
-    if (tests && !d.early_depth) mask = test(d, t, gx, gy, mask, z, p.front);
+    if (tests && !d.early_depth) mask = test(d, t, a, b, mask, z, p.front);
     if (!mask) return;
     if constexpr (N == 8) {
-      write_colors(d, t, gx, gy, mask, f.color.data(), outputs);
+      write_colors(d, t, a.x, a.y, mask, f.color.data(), outputs);
     } else {
       Vec4<Float8> half[outputs];
       if (mask & 0xFF) {
         for (int i = 0; i < outputs; ++i) half[i] = lo_half(f.color[size_t(i)]);
-        write_colors(d, t, gx, gy, mask & 0xFF, half, outputs);
+        write_colors(d, t, a.x, a.y, mask & 0xFF, half, outputs);
       }
       if (mask >> 8) {
         for (int i = 0; i < outputs; ++i) half[i] = hi_half(f.color[size_t(i)]);
-        write_colors(d, t, gx + 4, gy, mask >> 8, half, outputs);
+        write_colors(d, t, b.x, b.y, mask >> 8, half, outputs);
       }
     }
     c.fragments_written += unsigned(__builtin_popcount(mask));
