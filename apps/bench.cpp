@@ -22,19 +22,31 @@ using namespace tessel::gpu;
 
 namespace {
 
+// What ScenePhong interpolates: position and normal; uv when textured; the albedo when it
+// comes per instance (otherwise it is a uniform, as in the peer's GLSL, whose compiler drops
+// unused varyings just as these types do).
+template <class F, bool Textured, bool Instanced> struct PhongVaryings {
+  Vec3<F> p, n;
+};
+template <class F> struct PhongVaryings<F, true, false> {
+  Vec3<F> p, n;
+  Vec2<F> uv;
+};
+template <class F> struct PhongVaryings<F, false, true> {
+  Vec3<F> p, n;
+  Vec3<F> albedo;
+};
+
 // The scenes' Blinn-Phong (scenes README), per fragment in world space. Textured: the albedo
 // is the texture. Instanced: offset and albedo come from per-instance attributes 3 and 4.
 template <bool Textured, bool Instanced> struct ScenePhong {
+  static_assert(!(Textured && Instanced), "the textured scene is not instanced");
   struct Uniforms {
     glm::mat4 viewproj;
     glm::vec3 offset, albedo, eye, light;
     Sampler2D tex;
   };
-  template <class F> struct Varyings {
-    Vec3<F> p, n;
-    Vec2<F> uv;
-    Vec3<F> albedo;
-  };
+  template <class F> using Varyings = PhongVaryings<F, Textured, Instanced>;
   static constexpr uint32_t attributes = Instanced ? 0b11111 : 0b111;
 
   template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
@@ -43,10 +55,9 @@ template <bool Textured, bool Instanced> struct ScenePhong {
       out.albedo = in.attr[4].xyz();
     } else {
       out.p = in.attr[0].xyz() + Vec3<F>(u.offset);
-      out.albedo = Vec3<F>(u.albedo);
     }
     out.n = in.attr[1].xyz();
-    out.uv = in.attr[2].xy();
+    if constexpr (Textured) out.uv = in.attr[2].xy();
     return u.viewproj * Vec4<F>(out.p, F(1.0f));
   }
 
@@ -57,8 +68,10 @@ template <bool Textured, bool Instanced> struct ScenePhong {
     const Vec3<F> H = normalize(L + V);
     const F ndl = max(dot(N, L), F(0.0f));
     const F spec = select(ndl > F(0.0f), pow(max(dot(N, H), F(0.0f)), F(scenes::kShininess)), F(0.0f));
-    Vec3<F> albedo = v.albedo;
+    Vec3<F> albedo;
     if constexpr (Textured) albedo = texture(u.tex, v.uv).xyz();
+    else if constexpr (Instanced) albedo = v.albedo;
+    else albedo = Vec3<F>(u.albedo);
     const Vec3<F> c = albedo * F(scenes::kAmbient) + albedo * (ndl * F(scenes::kDiffuse)) +
                       Vec3<F>(spec * F(scenes::kSpecular));
     f.color[0] = Vec4<F>(c, F(1.0f));
