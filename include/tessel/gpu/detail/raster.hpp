@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "tessel/gpu/detail/fast_ops.hpp"
 #include "tessel/gpu/detail/pipeline.hpp"
 
 namespace tessel::gpu::detail {
@@ -137,16 +138,25 @@ template <class S> class Program final : public ProgramBase {
   };
 
   // Depth/stencil test of the 8 lanes of group a, or the 16 of groups a and b.
+  static unsigned test8(const DrawRecord& d, const TargetView& t, Pos a, unsigned mask, const Float8& z, bool front) {
+    if (d.fast_depth && a.x + 4 <= t.width && a.y + 2 <= t.height) return depth_test8(d, t, a.x, a.y, mask, z);
+    return depth_stencil_test(d, t, a.x, a.y, mask, z, front);
+  }
   template <class F>
   static unsigned test(const DrawRecord& d, const TargetView& t, Pos a, Pos b, unsigned mask, const F& z, bool front) {
     if constexpr (lane_width<F> == 8) {
-      return depth_stencil_test(d, t, a.x, a.y, mask, z, front);
+      return test8(d, t, a, mask, z, front);
     } else {
       unsigned lo = mask & 0xFF, hi = mask >> 8;
-      if (lo) lo = depth_stencil_test(d, t, a.x, a.y, lo, lo_half(z), front);
-      if (hi) hi = depth_stencil_test(d, t, b.x, b.y, hi, hi_half(z), front);
+      if (lo) lo = test8(d, t, a, lo, lo_half(z), front);
+      if (hi) hi = test8(d, t, b, hi, hi_half(z), front);
       return lo | (hi << 8);
     }
+  }
+  static void write8(const DrawRecord& d, const TargetView& t, Pos a, unsigned mask, const Vec4<Float8>* colors,
+                     int outputs) {
+    if (d.fast_color && a.x + 4 <= t.width && a.y + 2 <= t.height) return write_rgba8(t.color[0], a.x, a.y, mask, colors[0]);
+    write_colors(d, t, a.x, a.y, mask, colors, outputs);
   }
 
   // flatten: the shader and every GLSL function it calls are inlined here, so lane values
@@ -205,16 +215,16 @@ template <class S> class Program final : public ProgramBase {
     if (tests && !d.early_depth) mask = test(d, t, a, b, mask, z, p.front);
     if (!mask) return;
     if constexpr (N == 8) {
-      write_colors(d, t, a.x, a.y, mask, f.color.data(), outputs);
+      write8(d, t, a, mask, f.color.data(), outputs);
     } else {
       Vec4<Float8> half[outputs];
       if (mask & 0xFF) {
         for (int i = 0; i < outputs; ++i) half[i] = lo_half(f.color[size_t(i)]);
-        write_colors(d, t, a.x, a.y, mask & 0xFF, half, outputs);
+        write8(d, t, a, mask & 0xFF, half, outputs);
       }
       if (mask >> 8) {
         for (int i = 0; i < outputs; ++i) half[i] = hi_half(f.color[size_t(i)]);
-        write_colors(d, t, b.x, b.y, mask >> 8, half, outputs);
+        write8(d, t, b, mask >> 8, half, outputs);
       }
     }
     c.fragments_written += unsigned(__builtin_popcount(mask));
