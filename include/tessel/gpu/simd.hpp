@@ -157,14 +157,13 @@ template <int N> struct FloatN {
     return r;
 #endif
   }
-  // 1/sqrt(a): the hardware estimate (12 bits) and one Newton step, about 22 correct bits;
-  // 0 -> +inf, +inf -> 0, negative or NaN -> NaN. Used by normalize(). The one-lane and the
-  // N-lane estimates are the same instruction per element, so both paths agree.
+  // 1/sqrt(a) for a > 0 (GLSL leaves a <= 0 undefined; here 0 and +inf give NaN): the
+  // hardware estimate (12 bits) and one Newton step, about 22 correct bits. Used by
+  // normalize(). The one-lane and N-lane estimates are the same instruction per element.
   friend FloatN inversesqrt(FloatN a) {
 #if defined(__AVX__)
     const FloatN y = FloatN(__builtin_ia32_rsqrtps256(a.v));
-    const FloatN r = y * fma(FloatN(-0.5f) * a, y * y, FloatN(1.5f));
-    return select(r == r, r, y);
+    return y * fma(FloatN(-0.5f) * a, y * y, FloatN(1.5f));
 #else
     return FloatN(1.0f) / sqrt(a);
 #endif
@@ -316,8 +315,7 @@ inline float inversesqrt(float a) {
 #if defined(__AVX__)
   using f4 = float __attribute__((vector_size(16)));
   const float y = __builtin_ia32_rsqrtss(f4{a, 0.0f, 0.0f, 0.0f})[0];
-  const float r = y * fma(-0.5f * a, y * y, 1.5f);
-  return r == r ? r : y;
+  return y * fma(-0.5f * a, y * y, 1.5f);
 #else
   return 1.0f / sqrt(a);
 #endif
