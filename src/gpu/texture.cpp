@@ -775,13 +775,14 @@ TESSEL_INLINE Rgba16 bilinear_rgba16(const LevelRef& L, Wrap ws, Wrap wt, Float8
   return r;
 }
 
-Vec4<Float8> run_plan_rgba8_linear(const Texture2D& tex, const Plan& p, const SamplerState& st, const Vec2<Float8>& uv) {
+// Both quads use levels p.level0 and p.level1 (if any); quad q blends them by blend[q].
+Vec4<Float8> run_plan_rgba8_linear(const Texture2D& tex, const Plan& p, const float blend[2], const SamplerState& st,
+                                   const Vec2<Float8>& uv) {
   Rgba16 c = bilinear_rgba16(level_ref(tex, p.level0), st.wrap_s, st.wrap_t, uv.x, uv.y);
-  if (p.level1 >= 0 && p.blend != 0.0f) {
+  if (p.level1 >= 0 && (blend[0] != 0.0f || blend[1] != 0.0f)) {
     const Rgba16 c1 = bilinear_rgba16(level_ref(tex, p.level1), st.wrap_s, st.wrap_t, uv.x, uv.y);
-    const __m256i w = _mm256_set1_epi16(int16_t(std::lrint(p.blend * 256.0f)));
-    c.half[0] = lerp16(c.half[0], c1.half[0], w);
-    c.half[1] = lerp16(c.half[1], c1.half[1], w);
+    c.half[0] = lerp16(c.half[0], c1.half[0], _mm256_set1_epi16(int16_t(std::lrint(blend[0] * 256.0f))));
+    c.half[1] = lerp16(c.half[1], c1.half[1], _mm256_set1_epi16(int16_t(std::lrint(blend[1] * 256.0f))));
   }
   // Back to one RGBA8 word per lane (lanes in order), then to float channels.
   const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi16(c.half[0], c.half[1]), 0xD8);
@@ -791,7 +792,10 @@ Vec4<Float8> run_plan_rgba8_linear(const Texture2D& tex, const Plan& p, const Sa
 
 Vec4<Float8> run_plan_rgba8(const Texture2D& tex, const Plan& p, const SamplerState& st, const Vec2<Float8>& uv) {
 #if defined(__AVX2__)
-  if (p.linear) return run_plan_rgba8_linear(tex, p, st, uv);
+  if (p.linear) {
+    const float blend[2] = {p.blend, p.blend};
+    return run_plan_rgba8_linear(tex, p, blend, st, uv);
+  }
 #endif
   const Vec4<Float8> c0 = sample_level_rgba8(level_ref(tex, p.level0), st.wrap_s, st.wrap_t, uv.x, uv.y, p.linear);
   if (p.level1 < 0 || p.blend == 0.0f) return c0;
@@ -816,6 +820,13 @@ Vec4<Float8> texture(const Sampler2D& s, const Vec2<Float8>& uv) {
   if (vector_path(tex, s.state)) {
     const Plan p0 = make_plan(s.state, tex.levels(), quad_lod(uv.x, uv.y, 0, tex.width(), tex.height()));
     const Plan p1 = make_plan(s.state, tex.levels(), quad_lod(uv.x, uv.y, 1, tex.width(), tex.height()));
+#if defined(__AVX2__)
+    // Two quads on the same levels (the LOD differs only in the mip blend): one pass.
+    if (p0.linear && p1.linear && p0.level0 == p1.level0 && p0.level1 == p1.level1) {
+      const float blend[2] = {p0.blend, p1.blend};
+      return run_plan_rgba8_linear(tex, p0, blend, s.state, uv);
+    }
+#endif
     const Vec4<Float8> r0 = run_plan_rgba8(tex, p0, s.state, uv);
     if (p0.level0 == p1.level0 && p0.level1 == p1.level1 && p0.blend == p1.blend && p0.linear == p1.linear) return r0;
     const Vec4<Float8> r1 = run_plan_rgba8(tex, p1, s.state, uv);
