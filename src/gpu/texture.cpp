@@ -727,52 +727,46 @@ Vec4<Float8> sample_level_rgba8(const LevelRef& L, Wrap ws, Wrap wt, Float8 s, F
 }
 
 #if defined(__AVX2__)
-// Bilinear and trilinear filtering of RGBA8 texels in 16-bit fixed point, four lanes' RGBA
-// per 256-bit register (as llvmpipe's AoS path does): 8-bit weights, each lerp rounded to
-// 8 bits. Fewer instructions and registers than filtering four float channels.
+// Bilinear and trilinear filtering of RGBA8 texels in 16-bit fixed point, as llvmpipe's AoS
+// path does (8-bit weights, each lerp rounded to 8 bits), but without shuffles: each lane's
+// texel is split into its even bytes (R, B) and odd bytes (G, A) as 16-bit fields, and every
+// lerp works on those fields in place.
 struct Rgba16 {
-  __m256i half[2];  // lanes 0-3 and 4-7: 16 x u16 = 4 lanes x RGBA, values 0..255
+  __m256i even, odd;  // per lane: R | B << 16 and G | A << 16, values 0..255
 };
 
-// Per-lane weights (0..256) of lanes 0-3 (h = 0) or 4-7, each repeated for the 4 channels.
-TESSEL_INLINE __m256i spread_weights(Int8 w, int h) {
+// The weight of each lane (0..256) in both 16-bit halves of the lane.
+TESSEL_INLINE __m256i weight_pair(Int8 w) {
   const __m256i v = (__m256i)w.v;
-  const __m256i w64 = _mm256_cvtepu32_epi64(h == 0 ? _mm256_castsi256_si128(v) : _mm256_extracti128_si256(v, 1));
-  const __m256i pattern = _mm256_setr_epi8(0, 1, 0, 1, 0, 1, 0, 1, 8, 9, 8, 9, 8, 9, 8, 9,  //
-                                           0, 1, 0, 1, 0, 1, 0, 1, 8, 9, 8, 9, 8, 9, 8, 9);
-  return _mm256_shuffle_epi8(w64, pattern);
+  return _mm256_or_si256(v, _mm256_slli_epi32(v, 16));
 }
-// The RGBA8 texels of lanes 0-3 (h = 0) or 4-7 as 16-bit channels.
-TESSEL_INLINE __m256i expand(Int8 texels, int h) {
-  const __m256i v = (__m256i)texels.v;
-  return _mm256_cvtepu8_epi16(h == 0 ? _mm256_castsi256_si128(v) : _mm256_extracti128_si256(v, 1));
-}
-// (a * (256 - w) + b * w + 128) >> 8: at most 255 * 256 + 128, so u16 holds it.
+// (a * (256 - w) + b * w + 128) >> 8 per 16-bit field: at most 255 * 256 + 128, so u16 holds it.
 TESSEL_INLINE __m256i lerp16(__m256i a, __m256i b, __m256i w) {
   const __m256i inv = _mm256_sub_epi16(_mm256_set1_epi16(256), w);
   const __m256i sum = _mm256_add_epi16(_mm256_mullo_epi16(a, inv), _mm256_mullo_epi16(b, w));
   return _mm256_srli_epi16(_mm256_add_epi16(sum, _mm256_set1_epi16(128)), 8);
+}
+TESSEL_INLINE Rgba16 split(Int8 texels) {
+  const __m256i t = (__m256i)texels.v, mask = _mm256_set1_epi32(0x00FF00FF);
+  return {_mm256_and_si256(t, mask), _mm256_and_si256(_mm256_srli_epi32(t, 8), mask)};
+}
+TESSEL_INLINE Rgba16 lerp16(const Rgba16& a, const Rgba16& b, __m256i w) {
+  return {lerp16(a.even, b.even, w), lerp16(a.odd, b.odd, w)};
 }
 
 TESSEL_INLINE Rgba16 bilinear_rgba16(const LevelRef& L, Wrap ws, Wrap wt, Float8 s, Float8 t) {
   const Float8 u = sane8(s) * Float8(float(L.w)) - Float8(0.5f);
   const Float8 v = sane8(t) * Float8(float(L.h)) - Float8(0.5f);
   const Float8 fu = floor(u), fv = floor(v);
-  const Int8 wa = to_int((u - fu) * Float8(256.0f)), wb = to_int((v - fv) * Float8(256.0f));
+  const __m256i wa = weight_pair(to_int((u - fu) * Float8(256.0f)));
+  const __m256i wb = weight_pair(to_int((v - fv) * Float8(256.0f)));
   const Int8 i0 = integral_to_int(fu), j0 = integral_to_int(fv);
   const Int8 row(L.w);
   const Int8 x0 = wrap8(i0, L.w, ws), x1 = wrap8(i0 + Int8(1), L.w, ws);
   const Int8 y0 = wrap8(j0, L.h, wt) * row, y1 = wrap8(j0 + Int8(1), L.h, wt) * row;
-  const Int8 g00 = gather_u32(L.data, y0 + x0), g10 = gather_u32(L.data, y0 + x1);
-  const Int8 g01 = gather_u32(L.data, y1 + x0), g11 = gather_u32(L.data, y1 + x1);
-  Rgba16 r;
-  for (int h = 0; h < 2; ++h) {
-    const __m256i a = spread_weights(wa, h), b = spread_weights(wb, h);
-    const __m256i bottom = lerp16(expand(g00, h), expand(g10, h), a);
-    const __m256i top = lerp16(expand(g01, h), expand(g11, h), a);
-    r.half[h] = lerp16(bottom, top, b);
-  }
-  return r;
+  const Rgba16 t00 = split(gather_u32(L.data, y0 + x0)), t10 = split(gather_u32(L.data, y0 + x1));
+  const Rgba16 t01 = split(gather_u32(L.data, y1 + x0)), t11 = split(gather_u32(L.data, y1 + x1));
+  return lerp16(lerp16(t00, t10, wa), lerp16(t01, t11, wa), wb);
 }
 
 // Both quads use levels p.level0 and p.level1 (if any); quad q blends them by blend[q].
@@ -781,11 +775,10 @@ Vec4<Float8> run_plan_rgba8_linear(const Texture2D& tex, const Plan& p, const fl
   Rgba16 c = bilinear_rgba16(level_ref(tex, p.level0), st.wrap_s, st.wrap_t, uv.x, uv.y);
   if (p.level1 >= 0 && (blend[0] != 0.0f || blend[1] != 0.0f)) {
     const Rgba16 c1 = bilinear_rgba16(level_ref(tex, p.level1), st.wrap_s, st.wrap_t, uv.x, uv.y);
-    c.half[0] = lerp16(c.half[0], c1.half[0], _mm256_set1_epi16(int16_t(std::lrint(blend[0] * 256.0f))));
-    c.half[1] = lerp16(c.half[1], c1.half[1], _mm256_set1_epi16(int16_t(std::lrint(blend[1] * 256.0f))));
+    const int16_t w0 = int16_t(std::lrint(blend[0] * 256.0f)), w1 = int16_t(std::lrint(blend[1] * 256.0f));
+    c = lerp16(c, c1, _mm256_setr_epi16(w0, w0, w0, w0, w0, w0, w0, w0, w1, w1, w1, w1, w1, w1, w1, w1));
   }
-  // Back to one RGBA8 word per lane (lanes in order), then to float channels.
-  const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi16(c.half[0], c.half[1]), 0xD8);
+  const __m256i packed = _mm256_or_si256(c.even, _mm256_slli_epi32(c.odd, 8));
   return decode_rgba8(Int8((vx::i32x8)packed));
 }
 #endif
