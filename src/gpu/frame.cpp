@@ -22,6 +22,7 @@
 #include <functional>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <thread>
 
 #include "stages.hpp"
@@ -489,6 +490,17 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
   };
   const BinEntry* e = next();
   if (!e) return;  // nothing touches this tile
+  const BinEntry* second = next();
+  auto run_clear = [&](const TargetView& v, const BinEntry& entry) {
+    const auto* c = reinterpret_cast<const ClearPrim*>(entry.prim);
+    const int cx0 = std::max(x0, c->base.minx), cx1 = std::min(x1, c->base.maxx + 1);
+    const int cy0 = std::max(y0, c->base.miny), cy1 = std::min(y1, c->base.maxy + 1);
+    if (cx0 < cx1 && cy0 < cy1) clear_rect(v, *c, cx0, cy0, cx1, cy1);
+  };
+  if (!second && e->prim->kind == PrimKind::Clear) {
+    run_clear(target, *e);  // a tile that is only cleared needs no local copy
+    return;
+  }
 
   // Tile-local copies of the attachments (one colour attachment at most, and depth): 64 rows
   // of 64 pixels packed together stay in the L1 cache, where rows of the whole image would
@@ -525,15 +537,9 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
     }
   }
 
-  for (; e; e = next()) {
-    if (e->prim->kind == PrimKind::Clear) {
-      const auto* c = reinterpret_cast<const ClearPrim*>(e->prim);
-      const int cx0 = std::max(x0, c->base.minx), cx1 = std::min(x1, c->base.maxx + 1);
-      const int cy0 = std::max(y0, c->base.miny), cy1 = std::min(y1, c->base.maxy + 1);
-      if (cx0 < cx1 && cy0 < cy1) clear_rect(view, *c, cx0, cy0, cx1, cy1);
-    } else {
-      e->draw->program->raster(*e->draw, view, *e->prim, x0, y0, x1, y1, w.counters);
-    }
+  for (; e; e = second ? std::exchange(second, nullptr) : next()) {
+    if (e->prim->kind == PrimKind::Clear) run_clear(view, *e);
+    else e->draw->program->raster(*e->draw, view, *e->prim, x0, y0, x1, y1, w.counters);
   }
 
   if (local) {

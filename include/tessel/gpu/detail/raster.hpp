@@ -45,7 +45,9 @@ template <class S> class Program final : public ProgramBase {
   }
 
   void raster(const DrawRecord& d, const TargetView& t, const Prim& p, int x0, int y0, int x1, int y1,
-              Counters& c) const override {
+              Counters& counters) const override {
+    // Fragment counts are kept in registers here and added to the worker's counters once.
+    FragmentCounts c;
     const int minx = std::max(p.minx, x0), maxx = std::min(p.maxx, x1 - 1);
     const int miny = std::max(p.miny, y0), maxy = std::min(p.maxy, y1 - 1);
     if (minx > maxx || miny > maxy) return;
@@ -130,11 +132,16 @@ template <class S> class Program final : public ProgramBase {
       }
     }
     if (pending_mask) shade<Float8>(d, t, p, pending, pending, pending_mask, c);
+    counters.fragments_shaded += c.fragments_shaded;
+    counters.fragments_written += c.fragments_written;
   }
 
  private:
   struct Pos {
     int x, y;
+  };
+  struct FragmentCounts {
+    uint64_t fragments_shaded = 0, fragments_written = 0;
   };
 
   // Depth/stencil test of the 8 lanes of group a, or the 16 of groups a and b.
@@ -165,7 +172,7 @@ template <class S> class Program final : public ProgramBase {
   // Shades the 4x2 group at a (eight lanes), or the groups at a and b (sixteen lanes: a in
   // lanes 0-7, b in lanes 8-15).
   __attribute__((flatten)) void shade(const DrawRecord& d, const TargetView& t, const Prim& p, Pos a, Pos b,
-                                      unsigned mask, Counters& c) const {
+                                      unsigned mask, FragmentCounts& c) const {
     constexpr int K = varying_count<S>();
     constexpr int N = lane_width<F>;
     constexpr int outputs = shader_outputs<S>();
