@@ -112,3 +112,28 @@ TEST(Lanes, SixteenLanesAgreeWithOneLane) {
   EXPECT_EQ(dy[9], 121.0f - 81.0f);
   EXPECT_EQ(dy[12], 196.0f - 144.0f);
 }
+
+// A whole-number exponent shared by all lanes takes repeated squaring; other exponents the
+// exp2/log2 route. Both are accurate, and one lane agrees with eight.
+TEST(Lanes, PowWithWholeExponents) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (float e : {1.0f, 2.0f, 5.0f, 32.0f, 64.0f, 2.5f, 65.0f}) {
+    Float8 x;
+    for (int i = 0; i < 8; ++i) x[i] = u(rng);
+    const Float8 p = pow(x, Float8(e));
+    for (int i = 0; i < 8; ++i) {
+      const float want = std::pow(x[i], e);
+      EXPECT_NEAR(p[i], want, 4e-6f * want + 1e-30f) << "x " << x[i] << " e " << e;
+      EXPECT_EQ(p[i], pow(x[i], e)) << "one lane and eight differ at e " << e;
+    }
+  }
+  EXPECT_EQ(pow(0.0f, 32.0f), 0.0f);
+  EXPECT_EQ(pow(0.5f, 1.0f), 0.5f);
+  // Exponents that differ between lanes use the general route.
+  Float8 y(32.0f);
+  y[3] = 8.0f;
+  const Float8 p = pow(Float8(0.9f), y);
+  EXPECT_NEAR(p[3], std::pow(0.9f, 8.0f), 1e-6f);
+  EXPECT_NEAR(p[0], std::pow(0.9f, 32.0f), 1e-6f);
+}

@@ -391,8 +391,27 @@ template <class F> inline F log2(F x) {
 }
 template <class F> inline F exp(F x) { return exp2(x * F(1.44269504f)); }
 template <class F> inline F log(F x) { return log2(x) * F(0.69314718f); }
-// GLSL pow: undefined for x < 0; here pow(0, y>0) = 0 and pow(x, 0) = 1.
+namespace detail {
+inline float first_lane(float v) { return v; }
+template <int N> inline float first_lane(const FloatN<N>& v) { return v[0]; }
+// x^n for n >= 1 by repeated squaring.
+template <class F> inline F pow_int(F x, int n) {
+  F r(1.0f);
+  for (;;) {
+    if (n & 1) r = r * x;
+    n >>= 1;
+    if (n == 0) return r;
+    x = x * x;
+  }
+}
+}  // namespace detail
+// GLSL pow: undefined for x < 0; here pow(0, y>0) = 0 and pow(x, 0) = 1. An exponent that is
+// the same whole number 1..64 in every lane (a material's shininess, usually a constant the
+// compiler sees) is computed by repeated squaring: exact to a few roundings and a fraction
+// of the cost of exp2(y log2 x).
 template <class F> inline F pow(F x, F y) {
+  const float y0 = detail::first_lane(y);
+  if (y0 >= 1.0f && y0 <= 64.0f && y0 == float(int(y0)) && all(y == F(y0))) return detail::pow_int(x, int(y0));
   F r = exp2(y * detail::log2_positive(x));
   r = select(x == F(0.0f), select(y == F(0.0f), F(1.0f), F(0.0f)), r);
   return select(y == F(0.0f), F(1.0f), r);
