@@ -40,13 +40,6 @@ static inline float plane_distance(const ClipPlanes& p, int i, const glm::vec4& 
   return p.n[i].x * v.x + p.n[i].y * v.y + p.n[i].z * v.z + p.n[i].w * v.w + p.d[i];
 }
 
-unsigned clip_code(const ClipPlanes& planes, const glm::vec4& pos) {
-  unsigned code = 0;
-  for (int i = 0; i < planes.count; ++i)
-    if (!(plane_distance(planes, i, pos) >= 0.0f)) code |= 1u << i;  // NaN: outside
-  return code;
-}
-
 static void lerp_vertex(const ClipVert& in, const ClipVert& out, float t, int varyings, ClipVert& r) {
   r.pos = in.pos + (out.pos - in.pos) * t;
   for (int k = 0; k < varyings; ++k) r.var[k] = in.var[k] + (out.var[k] - in.var[k]) * t;

@@ -324,7 +324,7 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     const glm::vec4& p = w.pos[i];
     const unsigned code = finite(p) ? clip_code(planes, p) : kNotFinite;
     w.codes[i] = code;
-    if (code == 0) w.win[i] = to_window(d, p, &w.vars[i * size_t(K)]);
+    if (code == 0) to_window(d, p, &w.vars[i * size_t(K)], w.win[i]);
   }
 
   // 3. Assembly, clipping, setup, binning.

@@ -19,33 +19,6 @@
 
 namespace tessel::gpu::detail {
 
-static inline int32_t snap(float x) {
-  // Round half to even, as _mm_cvtps_epi32 does in llvmpipe. Callers pass finite positions
-  // within the guard band; the clamp keeps anything else defined.
-  const float limit = 2.0f * kGuardBand * float(kSubpixelOne);
-  const float v = std::nearbyint((x - 0.5f) * float(kSubpixelOne));
-  return int32_t(std::clamp(v, -limit, limit));
-}
-
-void snap_vertex(WinVert& v) {
-  v.usable = std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.oow) &&
-             v.oow > 0.0f && std::fabs(v.x) <= 2.0f * kGuardBand && std::fabs(v.y) <= 2.0f * kGuardBand;
-  v.sx = v.usable ? snap(v.x) : 0;
-  v.sy = v.usable ? snap(v.y) : 0;
-}
-
-WinVert to_window(const DrawRecord& d, const glm::vec4& pos, const float* var) {
-  const float oow = 1.0f / pos.w;
-  WinVert v;
-  v.x = pos.x * oow * d.vp_scale[0] + d.vp_offset[0];
-  v.y = pos.y * oow * d.vp_scale[1] + d.vp_offset[1];
-  v.z = pos.z * oow * d.vp_scale[2] + d.vp_offset[2];
-  v.oow = oow;
-  v.var = var;
-  snap_vertex(v);
-  return v;
-}
-
 float polygon_offset(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2) {
   const double dx1 = v1.x - v0.x, dy1 = v1.y - v0.y, dx2 = v2.x - v0.x, dy2 = v2.y - v0.y;
   const double det = dx1 * dy2 - dx2 * dy1;

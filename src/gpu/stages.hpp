@@ -4,6 +4,8 @@
 //   arena.hpp   per-worker memory for the primitives of one frame
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -67,9 +69,18 @@ struct ClipPlanes {
   float d[6 + kMaxClipPlanes + 1];
 };
 ClipPlanes make_clip_planes(const DrawRecord& draw);
-// Bit i set when pos is outside plane i. NaN counts as outside every plane.
+// Bit i set when pos is outside plane i. NaN counts as outside every plane. Inline: it runs
+// once per shaded vertex.
 inline constexpr unsigned kNotFinite = 1u << 31;  // a clip code for NaN/Inf positions
-unsigned clip_code(const ClipPlanes& planes, const glm::vec4& pos);
+inline unsigned clip_code(const ClipPlanes& planes, const glm::vec4& pos) {
+  unsigned code = 0;
+  for (int i = 0; i < planes.count; ++i) {
+    const float dist = planes.n[i].x * pos.x + planes.n[i].y * pos.y + planes.n[i].z * pos.z +
+                       planes.n[i].w * pos.w + planes.d[i];
+    if (!(dist >= 0.0f)) code |= 1u << i;  // NaN: outside
+  }
+  return code;
+}
 // Clips the convex polygon in[0..n) against the planes in `mask`; returns the vertex count
 // (0 when nothing is left) and points *out at the result (one of the two buffers).
 int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, ClipVert* b,
@@ -86,10 +97,36 @@ struct WinVert {
   int32_t sx, sy;    // x, y snapped to the sub-pixel lattice (snap_vertex)
   bool usable;       // finite, w > 0, inside twice the guard band: setup may use it
 };
-// Perspective divide and viewport transform; snaps the result (snap_vertex).
-WinVert to_window(const DrawRecord& d, const glm::vec4& pos, const float* var);
+// Snapping to the sub-pixel lattice: X = round_even((x - 0.5) * 256), as _mm_cvtps_epi32
+// does in llvmpipe. Callers pass finite positions within the guard band; the clamp keeps
+// anything else defined.
+inline int32_t snap(float x) {
+  const float limit = 2.0f * kGuardBand * float(kSubpixelOne);
+  const float v = std::nearbyint((x - 0.5f) * float(kSubpixelOne));
+  return int32_t(std::clamp(v, -limit, limit));
+}
 // Recomputes sx, sy and usable after x or y changed.
-void snap_vertex(WinVert& v);
+inline void snap_vertex(WinVert& v) {
+  v.usable = std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.oow) &&
+             v.oow > 0.0f && std::fabs(v.x) <= 2.0f * kGuardBand && std::fabs(v.y) <= 2.0f * kGuardBand;
+  v.sx = v.usable ? snap(v.x) : 0;
+  v.sy = v.usable ? snap(v.y) : 0;
+}
+// Perspective divide and viewport transform, then snap_vertex. Inline: once per vertex.
+inline void to_window(const DrawRecord& d, const glm::vec4& pos, const float* var, WinVert& v) {
+  const float oow = 1.0f / pos.w;
+  v.x = pos.x * oow * d.vp_scale[0] + d.vp_offset[0];
+  v.y = pos.y * oow * d.vp_scale[1] + d.vp_offset[1];
+  v.z = pos.z * oow * d.vp_scale[2] + d.vp_offset[2];
+  v.oow = oow;
+  v.var = var;
+  snap_vertex(v);
+}
+inline WinVert to_window(const DrawRecord& d, const glm::vec4& pos, const float* var) {
+  WinVert v;
+  to_window(d, pos, var, v);
+  return v;
+}
 
 // How setup decides the facing of a triangle.
 enum class Facing : int8_t { FromArea = -1, Back = 0, Front = 1 };
