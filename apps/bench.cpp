@@ -314,6 +314,10 @@ int run_bench(const BenchOptions& o) {
   const auto threads = o.threads.empty() ? std::vector<int>{1, 2} : o.threads;
   const bool several = sizes.size() * threads.size() > 1;
 
+  if (!o.json.empty()) {
+    const fs::path parent = fs::absolute(fs::path(o.json)).parent_path();
+    if (!fs::is_directory(parent)) throw std::runtime_error("--json " + o.json + ": folder " + parent.string() + " does not exist");
+  }
   std::string image_dir = o.images, temp_dir;
   if (o.peer && image_dir.empty()) {
     char tmpl[] = "/tmp/tessel-bench-XXXXXX";
