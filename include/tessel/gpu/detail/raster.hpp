@@ -64,6 +64,54 @@ template <class S> class Program final : public ProgramBase {
     // waits for a partner. Groups of one triangle never overlap, so the order is free.
     Pos pending{0, 0};
     unsigned pending_mask = 0;
+    auto emit = [&](Pos g, unsigned m) {
+      if (!pending_mask) {
+        pending = g;
+        pending_mask = m;
+      } else {
+        shade<Float16>(d, t, p, pending, g, pending_mask | (m << 8), c);
+        pending_mask = 0;
+      }
+    };
+    // Small triangles (most of a tessellated mesh): no block classification; the 4x2 groups
+    // of the bbox are tested directly. When every edge spans under 56 pixels in x and y
+    // (|a|, |b| = 256 |dy|, 256 |dx| with dx, dy in 1/256 pixel), the whole triangle does,
+    // and at any pixel of its bbox E = dx (256 j - Y) - dy (256 i - X) stays below
+    // 2 * (60 * 256)^2 < 2^29 in magnitude: 32-bit lanes hold it. (The bbox alone is not
+    // enough: it is cut to the render area, and a huge triangle can show a small part.)
+    bool small = true;
+    constexpr int64_t kSmall = int64_t(56) << (2 * kSubpixelBits);
+    for (const EdgeEq& e : p.e) small = small && e.a > -kSmall && e.a < kSmall && e.b > -kSmall && e.b < kSmall;
+    if (small) {
+      const int gx0 = minx & ~3, gy0 = miny & ~1;
+      Int8 base[3];
+      int32_t sa[3], sb[3];
+      for (int i = 0; i < 3; ++i) {
+        const EdgeEq& e = p.e[i];
+        sa[i] = int32_t(e.a);
+        sb[i] = int32_t(e.b);
+        base[i] = Int8(int32_t(e.c + e.a * gx0 + e.b * gy0)) + Int8(sa[i]) * lane_dx + Int8(sb[i]) * lane_dy;
+      }
+      for (int gy = gy0; gy <= maxy; gy += 2) {
+        for (int gx = gx0; gx <= maxx; gx += 4) {
+          unsigned mask = 0xFF;
+          if (gx < minx || gx + 3 > maxx || gy < miny || gy + 1 > maxy) {
+            const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
+            mask = ((px >= Int8(minx)) & (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy))).bits();
+          }
+          const int ox = gx - gx0, oy = gy - gy0;
+          const Mask8 in = ((base[0] + Int8(sa[0] * ox + sb[0] * oy)) > Int8(0)) &
+                           ((base[1] + Int8(sa[1] * ox + sb[1] * oy)) > Int8(0)) &
+                           ((base[2] + Int8(sa[2] * ox + sb[2] * oy)) > Int8(0));
+          mask &= in.bits();
+          if (mask) emit({gx, gy}, mask);
+        }
+      }
+      if (pending_mask) shade<Float8>(d, t, p, pending, pending, pending_mask, c);
+      counters.fragments_shaded += c.fragments_shaded;
+      counters.fragments_written += c.fragments_written;
+      return;
+    }
     for (int by = miny & ~7; by <= maxy; by += 8) {
       for (int bx = minx & ~7; bx <= maxx; bx += 8) {
         // Classify the 8x8 block against each edge from its corner pixels: edges that do
@@ -119,14 +167,7 @@ template <class S> class Program final : public ProgramBase {
           if (gy + 1 < miny || gy > maxy) continue;
           for (int gx = bx; gx < bx + 8; gx += 4) {
             const unsigned m = group_mask(gx, gy);
-            if (!m) continue;
-            if (!pending_mask) {
-              pending = {gx, gy};
-              pending_mask = m;
-            } else {
-              shade<Float16>(d, t, p, pending, {gx, gy}, pending_mask | (m << 8), c);
-              pending_mask = 0;
-            }
+            if (m) emit({gx, gy}, m);
           }
         }
       }
