@@ -212,7 +212,7 @@ template <class S> class Program final : public ProgramBase {
   template <class F>
   // Shades the 4x2 group at a (eight lanes), or the groups at a and b (sixteen lanes: a in
   // lanes 0-7, b in lanes 8-15).
-  __attribute__((flatten)) void shade(const DrawRecord& d, const TargetView& t, const Prim& p, Pos a, Pos b,
+  __attribute__((flatten, always_inline)) inline void shade(const DrawRecord& d, const TargetView& t, const Prim& p, Pos a, Pos b,
                                       unsigned mask, FragmentCounts& c) const {
     constexpr int K = varying_count<S>();
     constexpr int N = lane_width<F>;
