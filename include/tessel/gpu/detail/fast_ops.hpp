@@ -18,16 +18,18 @@
 
 namespace tessel::gpu::detail {
 
+#define TESSEL_FAST_INLINE inline __attribute__((always_inline))
+
 // A 4x2 group is two rows of four pixels; lanes map to them as kLaneDx/kLaneDy say.
 using i32x4 = int32_t __attribute__((vector_size(16)));
 
-inline Int8 load_group(const std::byte* row0, const std::byte* row1) {
+TESSEL_FAST_INLINE Int8 load_group(const std::byte* row0, const std::byte* row1) {
   i32x4 a, b;
   std::memcpy(&a, row0, 16);
   std::memcpy(&b, row1, 16);
   return Int8(__builtin_shufflevector(a, b, 0, 1, 4, 5, 2, 3, 6, 7));
 }
-inline void store_group(std::byte* row0, std::byte* row1, Int8 v) {
+TESSEL_FAST_INLINE void store_group(std::byte* row0, std::byte* row1, Int8 v) {
   const i32x4 a = __builtin_shufflevector(v.v, v.v, 0, 1, 4, 5);
   const i32x4 b = __builtin_shufflevector(v.v, v.v, 2, 3, 6, 7);
   std::memcpy(row0, &a, 16);
@@ -35,7 +37,7 @@ inline void store_group(std::byte* row0, std::byte* row1, Int8 v) {
 }
 
 // round(z * (2^24 - 1)) in double, per lane (z already in [0, 1]).
-inline Int8 quantize24x8(const Float8& z) {
+TESSEL_FAST_INLINE Int8 quantize24x8(const Float8& z) {
 #if defined(__AVX2__)
   const __m256 v = (__m256)z.v;
   const __m256d k = _mm256_set1_pd(16777215.0);
@@ -49,7 +51,7 @@ inline Int8 quantize24x8(const Float8& z) {
 #endif
 }
 
-template <class T> inline Mask8 compare8(CompareFunc f, T a, T b) {
+template <class T> TESSEL_FAST_INLINE Mask8 compare8(CompareFunc f, T a, T b) {
   switch (f) {
     case CompareFunc::Never: return Mask8(false);
     case CompareFunc::Less: return a < b;
@@ -65,7 +67,7 @@ template <class T> inline Mask8 compare8(CompareFunc f, T a, T b) {
 
 // Depth test (and write) of the group at (gx, gy); needs d.fast_depth and the group inside
 // the target. Returns the passing lanes.
-inline unsigned depth_test8(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask, const Float8& z) {
+TESSEL_FAST_INLINE unsigned depth_test8(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask, const Float8& z) {
   std::byte* row0 = t.depth + size_t(gy) * t.depth_row_bytes + size_t(gx) * 4;
   std::byte* row1 = row0 + t.depth_row_bytes;
   const Int8 stored = load_group(row0, row1);
@@ -85,7 +87,7 @@ inline unsigned depth_test8(const DrawRecord& d, const TargetView& t, int gx, in
   return bits;
 }
 
-inline Int8 to_unorm8(Float8 c) {
+TESSEL_FAST_INLINE Int8 to_unorm8(Float8 c) {
   c = min(max(c, Float8(0.0f)), Float8(1.0f)) * Float8(255.0f);  // NaN -> 0, as sat()
 #if defined(__AVX2__)
   return Int8((vx::i32x8)_mm256_cvtps_epi32((__m256)c.v));  // round to nearest even, as lrint
@@ -97,12 +99,14 @@ inline Int8 to_unorm8(Float8 c) {
 }
 
 // Unblended write of all four channels of an RGBA8 attachment (d.fast_color).
-inline void write_rgba8(const ColorTarget& ct, int gx, int gy, unsigned mask, const Vec4<Float8>& c) {
+TESSEL_FAST_INLINE void write_rgba8(const ColorTarget& ct, int gx, int gy, unsigned mask, const Vec4<Float8>& c) {
   std::byte* row0 = ct.data + size_t(gy) * ct.row_bytes + size_t(gx) * 4;
   std::byte* row1 = row0 + ct.row_bytes;
   const Int8 px = to_unorm8(c.x) | (to_unorm8(c.y) << 8) | (to_unorm8(c.z) << 16) | (to_unorm8(c.w) << 24);
   if (mask == 0xFF) return store_group(row0, row1, px);
   store_group(row0, row1, select(Mask8::from_bits(mask), px, load_group(row0, row1)));
 }
+
+#undef TESSEL_FAST_INLINE
 
 }  // namespace tessel::gpu::detail

@@ -186,7 +186,7 @@ template <class S> class Program final : public ProgramBase {
   };
 
   // Depth/stencil test of the 8 lanes of group a, or the 16 of groups a and b.
-  static unsigned test8(const DrawRecord& d, const TargetView& t, Pos a, unsigned mask, const Float8& z, bool front) {
+  __attribute__((always_inline)) static unsigned test8(const DrawRecord& d, const TargetView& t, Pos a, unsigned mask, const Float8& z, bool front) {
     if (d.fast_depth && a.x + 4 <= t.width && a.y + 2 <= t.height) return depth_test8(d, t, a.x, a.y, mask, z);
     return depth_stencil_test(d, t, a.x, a.y, mask, z, front);
   }
@@ -201,7 +201,7 @@ template <class S> class Program final : public ProgramBase {
       return lo | (hi << 8);
     }
   }
-  static void write8(const DrawRecord& d, const TargetView& t, Pos a, unsigned mask, const Vec4<Float8>* colors,
+  __attribute__((always_inline)) static void write8(const DrawRecord& d, const TargetView& t, Pos a, unsigned mask, const Vec4<Float8>* colors,
                      int outputs) {
     if (d.fast_color && a.x + 4 <= t.width && a.y + 2 <= t.height) return write_rgba8(t.color[0], a.x, a.y, mask, colors[0]);
     write_colors(d, t, a.x, a.y, mask, colors, outputs);
