@@ -52,6 +52,12 @@ template <class S> class Program final : public ProgramBase {
     const int miny = std::max(p.miny, y0), maxy = std::min(p.maxy, y1 - 1);
     if (minx > maxx || miny > maxy) return;
     const Int8 lane_dx(vx::i32x8{0, 1, 0, 1, 2, 3, 2, 3}), lane_dy(vx::i32x8{0, 0, 1, 1, 0, 0, 1, 1});
+    // The lanes of the 4x2 group at (gx, gy) inside the bbox (all of them, away from its border).
+    auto bbox_mask = [&](int gx, int gy) -> unsigned {
+      if (gx >= minx && gx + 3 <= maxx && gy >= miny && gy + 1 <= maxy) return 0xFF;
+      const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
+      return ((px >= Int8(minx)) & (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy))).bits();
+    };
     // With |a|, |b| < 2^26 an edge that crosses an 8x8 block stays below 2^30 in magnitude
     // inside it, so its values are stepped in 32-bit lanes; larger steps (triangles
     // thousands of pixels across) take the 64-bit per-lane path.
@@ -94,11 +100,7 @@ template <class S> class Program final : public ProgramBase {
       }
       for (int gy = gy0; gy <= maxy; gy += 2) {
         for (int gx = gx0; gx <= maxx; gx += 4) {
-          unsigned mask = 0xFF;
-          if (gx < minx || gx + 3 > maxx || gy < miny || gy + 1 > maxy) {
-            const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
-            mask = ((px >= Int8(minx)) & (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy))).bits();
-          }
+          unsigned mask = bbox_mask(gx, gy);
           const int ox = gx - gx0, oy = gy - gy0;
           const Mask8 in = ((base[0] + Int8(sa[0] * ox + sb[0] * oy)) > Int8(0)) &
                            ((base[1] + Int8(sa[1] * ox + sb[1] * oy)) > Int8(0)) &
@@ -143,11 +145,7 @@ template <class S> class Program final : public ProgramBase {
         // The coverage of the 4x2 group at (gx, gy), cut to the bbox.
         auto group_mask = [&](int gx, int gy) -> unsigned {
           if (gx + 3 < minx || gx > maxx) return 0;
-          unsigned mask = 0xFF;
-          if (gx < minx || gx + 3 > maxx || gy < miny || gy + 1 > maxy) {
-            const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
-            mask = ((px >= Int8(minx)) & (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy))).bits();
-          }
+          unsigned mask = bbox_mask(gx, gy);
           if (crossing && mask) {
             if (narrow) {
               const int ox = gx - bx, oy = gy - by;
