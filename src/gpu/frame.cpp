@@ -65,6 +65,7 @@ struct Worker {
   uint32_t stamp = 0;
   std::vector<uint32_t> ids;
   std::vector<uint32_t> prim_slots;
+  std::vector<uint32_t> direct;  // id - lo -> slot, for chunks with a compact id range
   std::vector<glm::vec4> pos;
   std::vector<float> vars;
   // Per shaded vertex: clip code (kNotFinite when a coordinate is NaN/Inf) and, when the
@@ -283,31 +284,55 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
   const uint32_t nprims = ch.end - ch.begin;
 
   // 1. Vertex ids of the chunk's primitives, each shaded once (post-transform cache).
-  const size_t cache_size = size_t(1) << kCacheBits;
-  if (w.cache_tag.size() != cache_size) {
-    w.cache_tag.assign(cache_size, 0);
-    w.cache_slot.assign(cache_size, 0);
+  const size_t total = size_t(nprims) * ps;
+  w.prim_slots.resize(total);
+  uint32_t* ids = w.prim_slots.data();  // element ids first, replaced by slots below
+  if (d.topology == Topology::Triangles) {
+    const size_t e0 = size_t(ch.begin) * 3;
+    if (d.indexed) std::memcpy(ids, d.indices.data() + e0, total * sizeof(uint32_t));
+    else for (size_t i = 0; i < total; ++i) ids[i] = d.first + uint32_t(e0 + i);
+  } else {
+    uint32_t e[3];
+    for (uint32_t p = 0; p < nprims; ++p) {
+      prim_elements(d.topology, ch.begin + p, n_elements, e);
+      for (int k = 0; k < ps; ++k) ids[size_t(p) * ps + k] = d.indexed ? d.indices[e[k]] : d.first + e[k];
+    }
   }
-  ++w.stamp;
   w.ids.clear();
-  w.prim_slots.resize(size_t(nprims) * ps);
-  uint32_t e[3];
-  for (uint32_t p = 0; p < nprims; ++p) {
-    prim_elements(d.topology, ch.begin + p, n_elements, e);
-    for (int k = 0; k < ps; ++k) {
-      const uint32_t id = d.indexed ? d.indices[e[k]] : d.first + e[k];
+  uint32_t lo = UINT32_MAX, hi = 0;
+  for (size_t i = 0; i < total; ++i) {
+    lo = std::min(lo, ids[i]);
+    hi = std::max(hi, ids[i]);
+  }
+  if (size_t(hi - lo) < 4 * total) {
+    // A compact range of ids (a mesh's chunk): a table indexed by id - lo.
+    w.direct.assign(size_t(hi - lo) + 1, UINT32_MAX);
+    for (size_t i = 0; i < total; ++i) {
+      uint32_t& slot = w.direct[ids[i] - lo];
+      if (slot == UINT32_MAX) {
+        slot = uint32_t(w.ids.size());
+        w.ids.push_back(ids[i]);
+      }
+      ids[i] = slot;
+    }
+  } else {
+    // Scattered ids: a direct-mapped hash cache (a vertex may be shaded twice on a collision).
+    const size_t cache_size = size_t(1) << kCacheBits;
+    if (w.cache_tag.size() != cache_size) {
+      w.cache_tag.assign(cache_size, 0);
+      w.cache_slot.assign(cache_size, 0);
+    }
+    ++w.stamp;
+    for (size_t i = 0; i < total; ++i) {
+      const uint32_t id = ids[i];
       const size_t h = (id * 2654435761u) >> (32 - kCacheBits);
       const uint64_t tag = (uint64_t(w.stamp) << 32) | id;
-      uint32_t slot;
-      if (w.cache_tag[h] == tag) {
-        slot = w.cache_slot[h];
-      } else {
-        slot = uint32_t(w.ids.size());
-        w.ids.push_back(id);
+      if (w.cache_tag[h] != tag) {
         w.cache_tag[h] = tag;
-        w.cache_slot[h] = slot;
+        w.cache_slot[h] = uint32_t(w.ids.size());
+        w.ids.push_back(id);
       }
-      w.prim_slots[size_t(p) * ps + k] = slot;
+      ids[i] = w.cache_slot[h];
     }
   }
   const size_t nv = w.ids.size();
