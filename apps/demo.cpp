@@ -2,10 +2,12 @@
 
 #include <chrono>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scenes.hpp"
 #include "tessel/gpu/image.hpp"
 
 namespace tessel::apps {
@@ -21,26 +23,12 @@ struct MeshData {
   }
 };
 
-// The UV sphere of scenes/README.md: counter-clockwise seen from outside.
+// The UV sphere of the benchmark scenes (bench/scenes).
 MeshData make_sphere(int slices, int stacks) {
+  scenes::Mesh s = scenes::sphere_mesh(slices, stacks);
   MeshData m;
-  const float pi = 3.14159265358979f;
-  for (int k = 0; k <= stacks; ++k) {
-    const float theta = pi * float(k) / float(stacks);
-    for (int j = 0; j <= slices; ++j) {
-      const float phi = 2.0f * pi * float(j) / float(slices);
-      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
-      m.add(n, n, {float(j) / float(slices), float(k) / float(stacks)});
-    }
-  }
-  auto id = [&](int k, int j) { return uint32_t(k * (slices + 1) + j); };
-  for (int k = 0; k < stacks; ++k)
-    for (int j = 0; j < slices; ++j) {
-      const uint32_t a = id(k, j), b = id(k + 1, j), c = id(k + 1, j + 1), d = id(k, j + 1);
-      if (k == 0) m.indices.insert(m.indices.end(), {a, b, c});
-      else if (k == stacks - 1) m.indices.insert(m.indices.end(), {a, b, d});
-      else m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
-    }
+  m.vertices = std::move(s.vertices);
+  m.indices = std::move(s.indices);
   return m;
 }
 

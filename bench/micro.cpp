@@ -11,6 +11,7 @@
 #include <cmath>
 #include <random>
 
+#include "scene_phong.hpp"
 #include "shaders.hpp"
 #include "stages.hpp"
 
@@ -21,37 +22,8 @@ namespace {
 
 // --- shaders ----------------------------------------------------------------------------------
 
-// Blinn-Phong lit per pixel in world space (the shape of apps/bench.cpp's ScenePhong):
-// position, normal and uv in; eleven varyings out; per pixel three normalizes and a pow.
-struct PhongShader {
-  struct Uniforms {
-    glm::mat4 viewproj{1.0f};
-    glm::vec3 offset{0.0f}, albedo{0.8f, 0.6f, 0.4f}, eye{0.0f, 0.0f, 3.0f}, light{1.0f, 2.0f, 2.0f};
-  };
-  template <class F> struct Varyings {
-    Vec3<F> p, n;
-    Vec2<F> uv;
-    Vec3<F> albedo;
-  };
-  static constexpr uint32_t attributes = 0b111;
-  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
-    out.p = in.attr[0].xyz() + Vec3<F>(u.offset);
-    out.n = in.attr[1].xyz();
-    out.uv = in.attr[2].xy();
-    out.albedo = Vec3<F>(u.albedo);
-    return u.viewproj * Vec4<F>(out.p, F(1.0f));
-  }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
-    const Vec3<F> N = normalize(v.n);
-    const Vec3<F> L = normalize(Vec3<F>(u.light) - v.p);
-    const Vec3<F> V = normalize(Vec3<F>(u.eye) - v.p);
-    const Vec3<F> H = normalize(L + V);
-    const F ndl = max(dot(N, L), F(0.0f));
-    const F spec = select(ndl > F(0.0f), pow(max(dot(N, H), F(0.0f)), F(32.0f)), F(0.0f));
-    const Vec3<F> c = v.albedo * F(0.1f) + v.albedo * (ndl * F(0.8f)) + Vec3<F>(spec * F(0.5f));
-    f.color[0] = Vec4<F>(c, F(1.0f));
-  }
-};
+// Blinn-Phong lit per pixel in world space: the standard scenes' shader.
+using PhongShader = tessel::scenes::ScenePhong<false, false>;
 
 // Clip position straight through, a constant colour out: no shading work. (Varyings cannot
 // be empty: one flat float, which the shader ignores.)
@@ -202,7 +174,7 @@ void BM_VertexFetch(benchmark::State& state) {
 }
 BENCHMARK(BM_VertexFetch);
 
-// Vertex shading: fetch + the Phong vertex shader (mat4 transform, 11 varyings) + the
+// Vertex shading: fetch + the Phong vertex shader (mat4 transform, 6 varyings) + the
 // scatter of the lanes into clip positions and varyings, as the geometry phase calls it.
 void BM_VertexShading(benchmark::State& state) {
   const GridMesh m;

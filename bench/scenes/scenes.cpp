@@ -38,7 +38,7 @@ void add_sphere(Mesh& m, int slices, int stacks) {
 
 Scene spheres(int slices, int stacks) {
   Scene s;
-  add_sphere(s.mesh, slices, stacks);
+  s.mesh = sphere_mesh(slices, stacks);
   const auto count = uint32_t(s.mesh.indices.size());
   for (int i = 0; i < 10; ++i)
     for (int j = 0; j < 10; ++j) {
@@ -82,6 +82,12 @@ Scene fill(float aspect) {
 }
 
 }  // namespace
+
+Mesh sphere_mesh(int slices, int stacks) {
+  Mesh m;
+  add_sphere(m, slices, stacks);
+  return m;
+}
 
 uint64_t Scene::triangles() const {
   uint64_t n = 0;

@@ -42,6 +42,10 @@ struct Scene {
   uint64_t triangles() const;  // per frame
 };
 
+// The UV sphere of the scenes README (unit radius; ring k = 0..stacks, column j = 0..slices,
+// seam duplicated, counter-clockwise seen from outside); the demo scene uses it too.
+Mesh sphere_mesh(int slices, int stacks);
+
 // "spheres-100k", "spheres-1m", "fill", "textured" (fixed-100k needs the GL 1.x layer).
 const std::vector<std::string>& scene_names();
 bool is_scene(const std::string& name);
