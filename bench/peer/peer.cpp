@@ -7,11 +7,9 @@
 //               [--image PATH]
 //
 // Exit codes: 0 success, 1 runtime failure (EGL, GL, I/O), 2 bad arguments.
-// GL entry points come straight from libOpenGL (glvnd), dispatched to the EGL context.
+// The headless context comes from tessel_gl_headless (bench/gl); GL entry points come straight
+// from libOpenGL (glvnd), dispatched to the EGL context.
 #define GL_GLEXT_PROTOTYPES 1
-#define EGL_EGLEXT_PROTOTYPES 1
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
 
@@ -26,6 +24,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,6 +32,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "headless_gl.hpp"
 #include "scenes.hpp"
 
 namespace scenes = tessel::scenes;
@@ -119,20 +119,6 @@ void check_gl(const char* what) {
   throw std::runtime_error(msg);
 }
 
-std::runtime_error egl_error(const char* what) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, " (EGL error 0x%04X)", unsigned(eglGetError()));
-  return std::runtime_error(std::string(what) + " failed" + buf);
-}
-
-bool has_ext(const char* list, const char* name) {
-  if (!list) return false;
-  const size_t n = std::strlen(name);
-  for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n)
-    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
-  return false;
-}
-
 std::string json_string(const std::string& s) {
   std::string out = "\"";
   for (const unsigned char c : s) {
@@ -163,65 +149,6 @@ double peak_rss_mb() {
     if (line.rfind("VmHWM:", 0) == 0) return std::strtod(line.c_str() + 6, nullptr) / 1024.0;
   return 0.0;
 }
-
-// ---- EGL: a surfaceless desktop GL 3.3 core context ----------------------------------------
-
-// Owns the display and context; tears them down on destruction (also on error paths).
-struct EglContext {
-  EGLDisplay display = EGL_NO_DISPLAY;
-  EGLContext context = EGL_NO_CONTEXT;
-
-  EglContext() {
-    const char* client_exts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-        eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    // 1. EGL_MESA_platform_surfaceless: no window system, no GPU needed.
-    if (get_platform_display && has_ext(client_exts, "EGL_MESA_platform_surfaceless")) {
-      display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-      if (display != EGL_NO_DISPLAY && !eglInitialize(display, nullptr, nullptr))
-        display = EGL_NO_DISPLAY;
-    }
-    // 2. The default display, steered to the surfaceless platform.
-    if (display == EGL_NO_DISPLAY) {
-      setenv("EGL_PLATFORM", "surfaceless", 0);
-      display = eglGetDisplay(EGL_DEFAULT_DISPLAY);
-      if (display == EGL_NO_DISPLAY) throw egl_error("eglGetDisplay");
-      if (!eglInitialize(display, nullptr, nullptr)) {
-        display = EGL_NO_DISPLAY;
-        throw egl_error("eglInitialize");
-      }
-    }
-    const char* exts = eglQueryString(display, EGL_EXTENSIONS);
-    if (!has_ext(exts, "EGL_KHR_surfaceless_context"))
-      throw std::runtime_error("EGL_KHR_surfaceless_context not supported");
-    if (!eglBindAPI(EGL_OPENGL_API)) throw egl_error("eglBindAPI(EGL_OPENGL_API)");
-    // We only draw into an FBO, so no config is needed where the driver allows that.
-    EGLConfig config = nullptr;  // == EGL_NO_CONFIG_KHR
-    if (!has_ext(exts, "EGL_KHR_no_config_context") &&
-        !has_ext(exts, "EGL_MESA_configless_context")) {
-      const EGLint attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
-      EGLint n = 0;
-      if (!eglChooseConfig(display, attribs, &config, 1, &n) || n < 1)
-        throw std::runtime_error("no EGL config with EGL_OPENGL_BIT");
-    }
-    const EGLint ctx_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                                  EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                  EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    context = eglCreateContext(display, config, EGL_NO_CONTEXT, ctx_attribs);
-    if (context == EGL_NO_CONTEXT) throw egl_error("eglCreateContext(GL 3.3 core)");
-    if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
-      throw egl_error("eglMakeCurrent(surfaceless)");
-  }
-  ~EglContext() {
-    if (display == EGL_NO_DISPLAY) return;
-    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    if (context != EGL_NO_CONTEXT) eglDestroyContext(display, context);
-    eglTerminate(display);
-    eglReleaseThread();
-  }
-  EglContext(const EglContext&) = delete;
-  EglContext& operator=(const EglContext&) = delete;
-};
 
 // ---- Shaders -------------------------------------------------------------------------------
 
@@ -289,22 +216,6 @@ void main() {
 }
 )";
 
-GLuint compile_shader(GLenum type, const std::string& src) {
-  const GLuint s = glCreateShader(type);
-  const char* p = src.c_str();
-  glShaderSource(s, 1, &p, nullptr);
-  glCompileShader(s);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {0};
-    glGetShaderInfoLog(s, sizeof log, nullptr, log);
-    glDeleteShader(s);
-    throw std::runtime_error(std::string("shader compile failed: ") + log);
-  }
-  return s;
-}
-
 GLuint build_program(bool textured, bool instanced) {
   // Header: version, variant defines and the material constants of scenes.hpp.
   auto f = [](float v) { return "float(" + fmt(v, "%.9g") + ")"; };
@@ -314,22 +225,8 @@ GLuint build_program(bool textured, bool instanced) {
   head += "#define K_AMBIENT " + f(scenes::kAmbient) + "\n#define K_DIFFUSE " +
           f(scenes::kDiffuse) + "\n#define K_SPECULAR " + f(scenes::kSpecular) +
           "\n#define K_SHININESS " + f(scenes::kShininess) + "\n";
-  const GLuint vs = compile_shader(GL_VERTEX_SHADER, head + kVertexShader);
-  const GLuint fs = compile_shader(GL_FRAGMENT_SHADER, head + kFragmentShader);
-  const GLuint prog = glCreateProgram();
-  glAttachShader(prog, vs);
-  glAttachShader(prog, fs);
-  glLinkProgram(prog);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(prog, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {0};
-    glGetProgramInfoLog(prog, sizeof log, nullptr, log);
-    throw std::runtime_error(std::string("program link failed: ") + log);
-  }
-  return prog;
+  // Throws "shader compile failed: <log>" / "program link failed: <log>".
+  return tessel::gl::build_program(head + kVertexShader, head + kFragmentShader);
 }
 
 const void* byte_offset(size_t bytes) { return reinterpret_cast<const void*>(bytes); }
@@ -337,12 +234,12 @@ const void* byte_offset(size_t bytes) { return reinterpret_cast<const void*>(byt
 // ---- The benchmark -------------------------------------------------------------------------
 
 int run(const Options& opt, const scenes::Scene& scene) {
-  EglContext egl;
-  const char* renderer_c = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const std::string renderer = renderer_c ? renderer_c : "";
-  if (renderer.find("llvmpipe") == std::string::npos)
-    throw std::runtime_error("GL_RENDERER is '" + renderer + "', not llvmpipe");
-  glGetError();  // discard anything left over from context creation
+  // EGL surfaceless (or a fallback route), desktop GL 3.3 core, current, on llvmpipe; torn
+  // down when `gl` goes out of scope (also on error paths).
+  std::string why;
+  const auto gl = tessel::gl::HeadlessContext::create(&why);
+  if (!gl) throw std::runtime_error(why);
+  const std::string renderer = gl->renderer();
   const int W = opt.width, H = opt.height;
 
   // Framebuffer: RGBA8 colour + DEPTH24_STENCIL8 renderbuffers.
@@ -536,10 +433,9 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  // Pick llvmpipe and its thread count before anything touches EGL/Mesa.
+  // llvmpipe's thread count, before anything touches EGL/Mesa. (HeadlessContext::create
+  // defaults GALLIUM_DRIVER=llvmpipe and LIBGL_ALWAYS_SOFTWARE=1 before it opens EGL.)
   setenv("LP_NUM_THREADS", std::to_string(opt.threads).c_str(), 1);
-  setenv("GALLIUM_DRIVER", "llvmpipe", 0);
-  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
 
   scenes::Scene scene;
   try {

@@ -1,23 +1,20 @@
 // Mesa llvmpipe reference oracle: see mesa_oracle.hpp.
 //
-// GL entry points come straight from libOpenGL (glvnd), which exports every core GL
-// function and dispatches to the context made current through libEGL.
+// The headless EGL display and GL 3.3 context come from tessel_gl_headless (bench/gl). GL
+// entry points come straight from libOpenGL (glvnd), which exports every core GL function and
+// dispatches to the context made current through libEGL.
 #include "mesa_oracle.hpp"
 
 #define GL_GLEXT_PROTOTYPES 1
-#define EGL_EGLEXT_PROTOTYPES 1
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
 
 #include <cstddef>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <mutex>
 #include <stdexcept>
 #include <utility>
+
+#include "headless_gl.hpp"
 
 namespace tessel::reference {
 namespace {
@@ -41,41 +38,6 @@ const char* gl_error_name(GLenum e) {
   }
 }
 
-const char* egl_error_name(EGLint e) {
-  switch (e) {
-    case EGL_SUCCESS: return "EGL_SUCCESS";
-    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-    case EGL_BAD_CURRENT_SURFACE: return "EGL_BAD_CURRENT_SURFACE";
-    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-    case EGL_BAD_NATIVE_PIXMAP: return "EGL_BAD_NATIVE_PIXMAP";
-    case EGL_BAD_NATIVE_WINDOW: return "EGL_BAD_NATIVE_WINDOW";
-    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-    case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
-    case EGL_CONTEXT_LOST: return "EGL_CONTEXT_LOST";
-    default: return "unknown EGL error";
-  }
-}
-
-std::string egl_err(const char* what) {
-  EGLint e = eglGetError();
-  return std::string(what) + " failed (" + egl_error_name(e) + ", " + hex(uint32_t(e)) + ")";
-}
-
-bool has_ext(const char* list, const char* name) {
-  if (!list) return false;
-  const size_t n = std::strlen(name);
-  for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n) {
-    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
-  }
-  return false;
-}
-
 void check_gl(const char* what) {
   GLenum first = glGetError();
   if (first == GL_NO_ERROR) return;
@@ -88,109 +50,6 @@ void check_gl(const char* what) {
     msg += std::string(", ") + gl_error_name(e);
   }
   throw std::runtime_error(msg);
-}
-
-// One EGLDisplay shared by all oracles; eglTerminate when the last one goes away (Mesa's
-// eglInitialize is not reference counted, so terminating per instance would break others).
-std::mutex g_display_mutex;
-EGLDisplay g_display = EGL_NO_DISPLAY;
-int g_display_refs = 0;
-std::string g_platform_name;
-
-EGLDisplay acquire_display(std::string* why, std::string* platform) {
-  std::lock_guard<std::mutex> lock(g_display_mutex);
-  if (g_display_refs > 0) {
-    ++g_display_refs;
-    *platform = g_platform_name;
-    return g_display;
-  }
-  // Force Mesa's software rasterizer unless the user chose otherwise.
-  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
-  setenv("GALLIUM_DRIVER", "llvmpipe", 0);
-
-  const char* client_exts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-  auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-      eglGetProcAddress("eglGetPlatformDisplayEXT"));
-  std::string errors;
-
-  auto try_init = [&](EGLDisplay d, const char* name) -> bool {
-    if (d == EGL_NO_DISPLAY) {
-      errors += std::string(name) + ": " + egl_err("eglGetPlatformDisplay") + "; ";
-      return false;
-    }
-    EGLint major = 0, minor = 0;
-    if (!eglInitialize(d, &major, &minor)) {
-      errors += std::string(name) + ": " + egl_err("eglInitialize") + "; ";
-      return false;
-    }
-    g_display = d;
-    g_platform_name = name;
-    return true;
-  };
-
-  bool ok = false;
-  // 1. EGL_MESA_platform_surfaceless: no window system, no GPU needed.
-  if (get_platform_display && has_ext(client_exts, "EGL_MESA_platform_surfaceless")) {
-    ok = try_init(get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
-                                       nullptr),
-                  "surfaceless");
-  } else {
-    errors += "EGL_MESA_platform_surfaceless not advertised; ";
-  }
-  // 2. EGL_EXT_platform_device with Mesa's software device (EGL_MESA_device_software).
-  if (!ok && get_platform_display && has_ext(client_exts, "EGL_EXT_platform_device")) {
-    auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(
-        eglGetProcAddress("eglQueryDevicesEXT"));
-    auto query_device_string = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
-        eglGetProcAddress("eglQueryDeviceStringEXT"));
-    EGLDeviceEXT devices[16];
-    EGLint count = 0;
-    if (query_devices && query_device_string && query_devices(16, devices, &count)) {
-      for (EGLint i = 0; i < count && !ok; ++i) {
-        const char* dexts = query_device_string(devices[i], EGL_EXTENSIONS);
-        if (!has_ext(dexts, "EGL_MESA_device_software")) continue;
-        ok = try_init(get_platform_display(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr),
-                      "device (EGL_MESA_device_software)");
-      }
-    }
-  }
-  // 3. Default display with EGL_PLATFORM=surfaceless.
-  if (!ok) {
-    setenv("EGL_PLATFORM", "surfaceless", 0);
-    ok = try_init(eglGetDisplay(EGL_DEFAULT_DISPLAY), "EGL_DEFAULT_DISPLAY");
-  }
-  if (!ok) {
-    *why = "MesaOracle: no usable EGL display: " + errors;
-    return EGL_NO_DISPLAY;
-  }
-  g_display_refs = 1;
-  *platform = g_platform_name;
-  return g_display;
-}
-
-void release_display() {
-  std::lock_guard<std::mutex> lock(g_display_mutex);
-  if (g_display_refs > 0 && --g_display_refs == 0) {
-    eglTerminate(g_display);
-    eglReleaseThread();
-    g_display = EGL_NO_DISPLAY;
-  }
-}
-
-GLuint compile_shader(GLenum type, const std::string& src) {
-  GLuint s = glCreateShader(type);
-  const char* p = src.c_str();
-  glShaderSource(s, 1, &p, nullptr);
-  glCompileShader(s);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {0};
-    glGetShaderInfoLog(s, sizeof log, nullptr, log);
-    glDeleteShader(s);
-    throw std::runtime_error(std::string("MesaOracle: shader compile failed: ") + log);
-  }
-  return s;
 }
 
 GLuint build_program(bool flat, bool textured) {
@@ -217,27 +76,12 @@ GLuint build_program(bool flat, bool textured) {
       "void main() {\n" +
       (textured ? "  o_color = v_color * texture(u_tex, v_uv);\n" : "  o_color = v_color;\n") +
       "}\n";
-  GLuint v = compile_shader(GL_VERTEX_SHADER, vs);
-  GLuint f = 0;
+  GLuint prog = 0;
   try {
-    f = compile_shader(GL_FRAGMENT_SHADER, fs);
-  } catch (...) {
-    glDeleteShader(v);
-    throw;
-  }
-  GLuint prog = glCreateProgram();
-  glAttachShader(prog, v);
-  glAttachShader(prog, f);
-  glLinkProgram(prog);
-  glDeleteShader(v);
-  glDeleteShader(f);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(prog, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {0};
-    glGetProgramInfoLog(prog, sizeof log, nullptr, log);
-    glDeleteProgram(prog);
-    throw std::runtime_error(std::string("MesaOracle: program link failed: ") + log);
+    prog = tessel::gl::build_program(vs, fs);
+  } catch (const std::runtime_error& e) {
+    // "MesaOracle: shader compile failed: <log>" / "MesaOracle: program link failed: <log>"
+    throw std::runtime_error(std::string("MesaOracle: ") + e.what());
   }
   glUseProgram(prog);
   glUniform1i(glGetUniformLocation(prog, "u_tex"), 0);
@@ -248,19 +92,16 @@ GLuint build_program(bool flat, bool textured) {
 }  // namespace
 
 struct MesaOracle::Impl {
-  EGLDisplay display = EGL_NO_DISPLAY;
-  EGLContext context = EGL_NO_CONTEXT;
-  std::string platform;
+  // Declared first, so destroyed last: ~Impl deletes the GL objects while it still exists.
+  std::unique_ptr<tessel::gl::HeadlessContext> gl;
   GLuint fbo = 0, color_rb = 0, depth_rb = 0;
   GLuint vao = 0, vbo = 0, texture = 0;
   GLuint programs[4] = {0, 0, 0, 0};  // index: flat + 2 * textured
   GLint point_size_loc[4] = {-1, -1, -1, -1};
 
   void make_current() {
-    if (eglGetCurrentContext() != context) {
-      if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
-        throw std::runtime_error("MesaOracle: " + egl_err("eglMakeCurrent"));
-    }
+    std::string err;
+    if (!gl->make_current(&err)) throw std::runtime_error("MesaOracle: " + err);
   }
 
   GLuint program(bool flat, bool textured, GLint* psize_loc) {
@@ -274,21 +115,17 @@ struct MesaOracle::Impl {
   }
 
   ~Impl() {
-    if (context != EGL_NO_CONTEXT) {
-      if (eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
-        for (GLuint p : programs)
-          if (p) glDeleteProgram(p);
-        if (texture) glDeleteTextures(1, &texture);
-        if (vbo) glDeleteBuffers(1, &vbo);
-        if (vao) glDeleteVertexArrays(1, &vao);
-        if (fbo) glDeleteFramebuffers(1, &fbo);
-        if (color_rb) glDeleteRenderbuffers(1, &color_rb);
-        if (depth_rb) glDeleteRenderbuffers(1, &depth_rb);
-      }
-      eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-      eglDestroyContext(display, context);
+    // The context and the shared display are released by ~HeadlessContext afterwards.
+    if (gl && gl->make_current()) {
+      for (GLuint p : programs)
+        if (p) glDeleteProgram(p);
+      if (texture) glDeleteTextures(1, &texture);
+      if (vbo) glDeleteBuffers(1, &vbo);
+      if (vao) glDeleteVertexArrays(1, &vao);
+      if (fbo) glDeleteFramebuffers(1, &fbo);
+      if (color_rb) glDeleteRenderbuffers(1, &color_rb);
+      if (depth_rb) glDeleteRenderbuffers(1, &depth_rb);
     }
-    if (display != EGL_NO_DISPLAY) release_display();
   }
 };
 
@@ -307,65 +144,16 @@ std::unique_ptr<MesaOracle> MesaOracle::create(int width, int height, std::strin
   }
   try {
     auto impl = std::make_unique<Impl>();
-    impl->display = acquire_display(why, &impl->platform);
-    if (impl->display == EGL_NO_DISPLAY) return nullptr;  // *why already set
-    EGLDisplay dpy = impl->display;
-
-    const char* dpy_exts = eglQueryString(dpy, EGL_EXTENSIONS);
-    if (!has_ext(dpy_exts, "EGL_KHR_surfaceless_context")) {
-      *why = "MesaOracle: EGL_KHR_surfaceless_context not supported";
+    // Headless EGL + desktop GL 3.3 core (not forward-compatible, so wide lines stay legal),
+    // or 3.3 compatibility if core is refused; current, on llvmpipe (else nullptr + reason).
+    tessel::gl::HeadlessOptions gl_options;
+    gl_options.compat_fallback = true;
+    std::string gl_why;
+    impl->gl = tessel::gl::HeadlessContext::create(&gl_why, gl_options);
+    if (!impl->gl) {
+      *why = "MesaOracle: " + gl_why;
       return nullptr;
     }
-    if (!eglBindAPI(EGL_OPENGL_API)) {
-      *why = "MesaOracle: " + egl_err("eglBindAPI(EGL_OPENGL_API)");
-      return nullptr;
-    }
-
-    // A config is irrelevant (we only draw into an FBO); use EGL_NO_CONFIG_KHR if possible.
-    EGLConfig config = nullptr;  // == EGL_NO_CONFIG_KHR
-    if (!has_ext(dpy_exts, "EGL_KHR_no_config_context") &&
-        !has_ext(dpy_exts, "EGL_MESA_configless_context")) {
-      const EGLint cfg_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
-      EGLint n = 0;
-      if (!eglChooseConfig(dpy, cfg_attribs, &config, 1, &n) || n < 1) {
-        *why = "MesaOracle: no EGL config with EGL_OPENGL_BIT";
-        return nullptr;
-      }
-    }
-
-    // Desktop GL 3.3 core (not forward-compatible, so wide lines stay legal); fall back to
-    // a compatibility-profile context if core is refused.
-    const EGLint core_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3,
-                                   EGL_CONTEXT_MINOR_VERSION, 3,
-                                   EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                   EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                   EGL_NONE};
-    impl->context = eglCreateContext(dpy, config, EGL_NO_CONTEXT, core_attribs);
-    if (impl->context == EGL_NO_CONTEXT) {
-      const std::string core_err = egl_err("eglCreateContext(3.3 core)");
-      const EGLint compat_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3,
-                                       EGL_CONTEXT_MINOR_VERSION, 3,
-                                       EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                       EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
-                                       EGL_NONE};
-      impl->context = eglCreateContext(dpy, config, EGL_NO_CONTEXT, compat_attribs);
-      if (impl->context == EGL_NO_CONTEXT) {
-        *why = "MesaOracle: " + core_err + "; " + egl_err("eglCreateContext(3.3 compat)");
-        return nullptr;
-      }
-    }
-    if (!eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, impl->context)) {
-      *why = "MesaOracle: " + egl_err("eglMakeCurrent(surfaceless)");
-      return nullptr;
-    }
-
-    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (!renderer || !std::strstr(renderer, "llvmpipe")) {
-      *why = std::string("MesaOracle: GL_RENDERER is '") + (renderer ? renderer : "(null)") +
-             "', not llvmpipe (check LIBGL_ALWAYS_SOFTWARE / GALLIUM_DRIVER)";
-      return nullptr;
-    }
-    glGetError();  // discard anything left over from context creation
 
     // Framebuffer: RGBA8 colour + DEPTH24_STENCIL8, single-sampled.
     glGenFramebuffers(1, &impl->fbo);
@@ -426,17 +214,15 @@ std::unique_ptr<MesaOracle> MesaOracle::create(int width, int height, std::strin
 
 std::string MesaOracle::renderer() const {
   impl_->make_current();
-  const char* s = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  return s ? s : "";
+  return impl_->gl->renderer();
 }
 
 std::string MesaOracle::version() const {
   impl_->make_current();
-  const char* s = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-  return s ? s : "";
+  return impl_->gl->version();
 }
 
-std::string MesaOracle::egl_platform() const { return impl_->platform; }
+std::string MesaOracle::egl_platform() const { return impl_->gl->platform(); }
 
 void MesaOracle::clear(const float rgba[4], float depth, int stencil) {
   impl_->make_current();
