@@ -796,6 +796,11 @@ Vec4<Float8> run_plan_rgba8(const Texture2D& tex, const Plan& p, const SamplerSt
   return lerp8(c0, c1, Float8(p.blend));
 }
 
+struct LevelGuess {
+  const Texture2D* texture = nullptr;
+  int level0 = 0, level1 = -1;
+};
+
 bool vector_path(const Texture2D& tex, const SamplerState& st) {
   if (tex.format() != Format::RGBA8) return false;
   const bool pow2_w = (tex.width() & (tex.width() - 1)) == 0, pow2_h = (tex.height() & (tex.height() - 1)) == 0;
@@ -817,6 +822,21 @@ Vec4<Float8> texture(const Sampler2D& s, const Vec2<Float8>& uv) {
     // Two quads on the same levels (the LOD differs only in the mip blend): one pass.
     if (p0.linear && p1.linear && p0.level0 == p1.level0 && p0.level1 == p1.level1) {
       const float blend[2] = {p0.blend, p1.blend};
+      // The levels are taken from the previous call on this thread when they are the same
+      // (they nearly always are): then the texel addresses and gathers need not wait for
+      // this call's LOD, only the final mip blend does. The asm hides the equality from the
+      // compiler, which would otherwise read the levels from the plan again. The result is
+      // the same either way.
+      thread_local LevelGuess guess;
+      if (guess.texture == &tex && guess.level0 == p0.level0 && guess.level1 == p0.level1) {
+        Plan p;
+        p.level0 = guess.level0;
+        p.level1 = guess.level1;
+        p.linear = true;
+        asm("" : "+r"(p.level0), "+r"(p.level1));
+        return run_plan_rgba8_linear(tex, p, blend, s.state, uv);
+      }
+      guess = {&tex, p0.level0, p0.level1};
       return run_plan_rgba8_linear(tex, p0, blend, s.state, uv);
     }
 #endif
