@@ -588,6 +588,32 @@ inline float quad_lod(const Float8& u, const Float8& v, int q, int w, int h) {
   return detail::lod_from_derivatives(u[o + 1] - u[o], v[o + 1] - v[o], u[o + 2] - u[o], v[o + 2] - v[o], w, h);
 }
 
+// log2 of a finite x > 0 to about 1e-4 (exponent + a quartic in the mantissa, least-squares
+// fit): enough for a level of detail, whose mip blend is used to 8 bits.
+inline float lod_log2(float x) {
+  int32_t b;
+  std::memcpy(&b, &x, 4);
+  const float e = float(((b >> 23) & 0xFF) - 127);
+  const int32_t mb = (b & 0x007FFFFF) | 0x3F800000;
+  float t;
+  std::memcpy(&t, &mb, 4);
+  t -= 1.0f;
+  return e + t * (1.4386380f + t * (-0.67774327f + t * (0.32187971f + t * -0.082860698f)));
+}
+
+// The LOD of both quads of eight lanes: 0.5 log2(max(|d(uv)/dx|^2, |d(uv)/dy|^2)) in texels
+// (GL 4.6 eq. 8.7 with rho^2, so no square roots), from vector derivatives.
+inline void quad_lods(const Float8& u, const Float8& v, int w, int h, float lod[2]) {
+  const Float8 fw{float(w)}, fh{float(h)};
+  const Float8 ux = dFdx(u) * fw, vx = dFdx(v) * fh, uy = dFdy(u) * fw, vy = dFdy(v) * fh;
+  const Float8 rho2 = max(ux * ux + vx * vx, uy * uy + vy * vy);
+  for (int q = 0; q < 2; ++q) {
+    const float r = rho2[4 * q];
+    if (r > 0.0f && r <= 3.4e38f) lod[q] = 0.5f * lod_log2(r);
+    else lod[q] = r == 0.0f ? -1000.0f : (r > 0.0f ? 1000.0f : r);  // 0: magnified; inf; NaN stays NaN
+  }
+}
+
 }  // namespace
 
 namespace detail {
@@ -816,8 +842,10 @@ Vec4<Float8> texture(const Sampler2D& s, const Vec2<Float8>& uv) {
   if (s.texture == nullptr) return missing8();
   const Texture2D& tex = *s.texture;
   if (vector_path(tex, s.state)) {
-    const Plan p0 = make_plan(s.state, tex.levels(), quad_lod(uv.x, uv.y, 0, tex.width(), tex.height()));
-    const Plan p1 = make_plan(s.state, tex.levels(), quad_lod(uv.x, uv.y, 1, tex.width(), tex.height()));
+    float lod[2];
+    quad_lods(uv.x, uv.y, tex.width(), tex.height(), lod);
+    const Plan p0 = make_plan(s.state, tex.levels(), lod[0]);
+    const Plan p1 = make_plan(s.state, tex.levels(), lod[1]);
 #if defined(__AVX2__)
     // Two quads on the same levels (the LOD differs only in the mip blend): one pass.
     if (p0.linear && p1.linear && p0.level0 == p1.level0 && p0.level1 == p1.level1) {
