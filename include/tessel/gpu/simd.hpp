@@ -68,7 +68,7 @@ template <int N> struct MaskN {
   MaskN& operator&=(MaskN b) { v &= b.v; return *this; }
   MaskN& operator|=(MaskN b) { v |= b.v; return *this; }
   friend bool any(MaskN m) { return m.bits() != 0; }
-  friend bool all(MaskN m) { return m.bits() == (N == 32 ? ~0u : (1u << N) - 1u); }
+  friend bool all(MaskN m) { return m.bits() == (1u << N) - 1u; }
   friend bool none(MaskN m) { return m.bits() == 0; }
   friend MaskN select(MaskN m, MaskN a, MaskN b) { return MaskN((a.v & m.v) | (b.v & ~m.v)); }
 };

@@ -205,11 +205,11 @@ template <class S> class Program final : public ProgramBase {
     write_colors(d, t, a.x, a.y, mask, colors, outputs);
   }
 
-  // flatten: the shader and every GLSL function it calls are inlined here, so lane values
-  // stay in registers (16-lane values passed to an out-of-line call go through memory).
-  template <class F>
   // Shades the 4x2 group at a (eight lanes), or the groups at a and b (sixteen lanes: a in
-  // lanes 0-7, b in lanes 8-15).
+  // lanes 0-7, b in lanes 8-15). flatten: the shader and every GLSL function it calls are
+  // inlined here, so lane values stay in registers (lane values passed to an out-of-line
+  // call go through memory); always_inline: with two call sites GCC would outline it.
+  template <class F>
   __attribute__((flatten, always_inline)) inline void shade(const DrawRecord& d, const TargetView& t, const Prim& p, Pos a, Pos b,
                                       unsigned mask, FragmentCounts& c) const {
     constexpr int K = varying_count<S>();
