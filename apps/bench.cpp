@@ -56,16 +56,22 @@ void reset_peak_rss() {
   out << "5";  // Linux >= 4.0: resets VmHWM to the current RSS
 }
 
-// One scene on Tessel: `warmup` frames, then `frames` timed frames of clear + draws + finish.
-Run run_tessel(const scenes::Scene& s, int threads, int frames, int warmup, bool instanced) {
-  reset_peak_rss();
+// A run of scene s, its identity filled in.
+Run start_run(const char* renderer, const scenes::Scene& s, int threads) {
   Run r;
-  r.renderer = "tessel";
+  r.renderer = renderer;
   r.scene = s.name;
   r.width = s.width;
   r.height = s.height;
   r.threads = threads;
   r.triangles = s.triangles();
+  return r;
+}
+
+// One scene on Tessel: `warmup` frames, then `frames` timed frames of clear + draws + finish.
+Run run_tessel(const scenes::Scene& s, int threads, int frames, int warmup, bool instanced) {
+  reset_peak_rss();
+  Run r = start_run("tessel", s, threads);
 
   Texture2D color(Format::RGBA8, s.width, s.height);
   Texture2D depth(Format::Depth24Stencil8, s.width, s.height);
@@ -202,13 +208,7 @@ Run run_peer(const std::string& peer, const scenes::Scene& s, int threads, int f
     throw std::runtime_error("the llvmpipe peer failed (" + peer + "): " + (out.empty() ? "no output" : out));
   }
   const std::string json = out.substr(brace);
-  Run r;
-  r.renderer = "llvmpipe";
-  r.scene = s.name;
-  r.width = s.width;
-  r.height = s.height;
-  r.threads = threads;
-  r.triangles = s.triangles();
+  Run r = start_run("llvmpipe", s, threads);
   r.ms_median = std::strtod(json_field(json, "ms_median").c_str(), nullptr);
   r.peak_rss_mb = std::strtod(json_field(json, "peak_rss_mb").c_str(), nullptr);
   r.image = image;

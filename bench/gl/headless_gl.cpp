@@ -24,13 +24,13 @@ static_assert(std::is_same_v<GLuint, unsigned int> && std::is_same_v<GLenum, uns
 static_assert(std::is_same_v<EGLDisplay, void*> && std::is_same_v<EGLContext, void*>,
               "HeadlessContext stores EGLDisplay and EGLContext as void*");
 
-namespace {
-
 std::string hex(uint32_t v) {
   char buf[16];
   std::snprintf(buf, sizeof buf, "0x%04X", v);
   return buf;
 }
+
+namespace {
 
 const char* egl_error_name(EGLint e) {
   switch (e) {

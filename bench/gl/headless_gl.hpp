@@ -9,6 +9,7 @@
 // Messages carry no prefix; callers prepend their own ("tessel_peer: ", "MesaOracle: ").
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -59,6 +60,9 @@ class HeadlessContext {
 
 // glCreateShader + glShaderSource + glCompileShader. Throws "shader compile failed: <log>"
 // (the shader is deleted first).
+// A GL or EGL enum or error code as "0x0500".
+std::string hex(uint32_t v);
+
 unsigned int compile_shader(unsigned int type, const std::string& src);
 // glCreateProgram, attaches vs and fs, links. The shaders stay the caller's. Throws
 // "program link failed: <log>" (the program is deleted first).

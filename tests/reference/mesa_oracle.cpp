@@ -19,11 +19,7 @@
 namespace tessel::reference {
 namespace {
 
-std::string hex(uint32_t v) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "0x%04X", v);
-  return buf;
-}
+using tessel::gl::hex;
 
 const char* gl_error_name(GLenum e) {
   switch (e) {

@@ -36,19 +36,20 @@ enum class Filter : uint8_t {
 enum class Wrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat, ClampToBorder };
 enum class CompareFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
 
-// Whether `a <func> b` passes: the depth test, the stencil test and shadow comparisons.
-template <class T> constexpr bool compare(CompareFunc f, T a, T b) {
+// Whether `a <func> b` passes: the depth test, the stencil test and shadow comparisons. For
+// scalars the result is a bool; for lane types (Float8, Int8) a mask per lane.
+template <class T, class R = decltype(T() < T())> constexpr R compare(CompareFunc f, T a, T b) {
   switch (f) {
-    case CompareFunc::Never: return false;
+    case CompareFunc::Never: return R(false);
     case CompareFunc::Less: return a < b;
     case CompareFunc::Equal: return a == b;
     case CompareFunc::LessEqual: return a <= b;
     case CompareFunc::Greater: return a > b;
     case CompareFunc::NotEqual: return a != b;
     case CompareFunc::GreaterEqual: return a >= b;
-    case CompareFunc::Always: return true;
+    case CompareFunc::Always: return R(true);
   }
-  return false;
+  return R(false);
 }
 
 struct SamplerState {

@@ -51,20 +51,6 @@ TESSEL_FAST_INLINE Int8 quantize24x8(const Float8& z) {
 #endif
 }
 
-template <class T> TESSEL_FAST_INLINE Mask8 compare8(CompareFunc f, T a, T b) {
-  switch (f) {
-    case CompareFunc::Never: return Mask8(false);
-    case CompareFunc::Less: return a < b;
-    case CompareFunc::Equal: return a == b;
-    case CompareFunc::LessEqual: return a <= b;
-    case CompareFunc::Greater: return a > b;
-    case CompareFunc::NotEqual: return a != b;
-    case CompareFunc::GreaterEqual: return a >= b;
-    case CompareFunc::Always: return Mask8(true);
-  }
-  return Mask8(false);
-}
-
 // Depth test (and write) of the group at (gx, gy); needs d.fast_depth and the group inside
 // the target. Returns the passing lanes.
 TESSEL_FAST_INLINE unsigned depth_test8(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask, const Float8& z) {
@@ -75,11 +61,11 @@ TESSEL_FAST_INLINE unsigned depth_test8(const DrawRecord& d, const TargetView& t
   Mask8 pass;
   Int8 value;
   if (t.depth_format == Format::Depth32F) {
-    pass = compare8(d.state.depth_func, z, float_from_bits(stored)) & live;
+    pass = compare(d.state.depth_func, z, float_from_bits(stored)) & live;
     value = bits_of(z);
   } else {
     const Int8 q = quantize24x8(z);
-    pass = compare8(d.state.depth_func, q, stored & Int8(0xFFFFFF)) & live;
+    pass = compare(d.state.depth_func, q, stored & Int8(0xFFFFFF)) & live;
     value = (stored & Int8(int32_t(0xFF000000u))) | q;
   }
   const unsigned bits = pass.bits();
