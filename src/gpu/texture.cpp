@@ -588,17 +588,19 @@ inline float quad_lod(const Float8& u, const Float8& v, int q, int w, int h) {
   return detail::lod_from_derivatives(u[o + 1] - u[o], v[o + 1] - v[o], u[o + 2] - u[o], v[o + 2] - v[o], w, h);
 }
 
-// log2 of a finite x > 0 to about 1e-4 (exponent + a quartic in the mantissa, least-squares
-// fit): enough for a level of detail, whose mip blend is used to 8 bits.
+// log2 as llvmpipe takes it for the level of detail (its lp_build_fast_log2): the exponent
+// plus the mantissa minus one, exact at powers of two and at most 0.086 low in between.
+// Measured against Mesa 22.3 llvmpipe: at lambda = log2(3) its mip blend is 0.5625, which is
+// 0.5 * fast_log2(rho^2) = 0.5 * (3 + 0.125); the exact value 0.585 differs by 3-4 steps of
+// 8-bit colour between two levels.
 inline float lod_log2(float x) {
   int32_t b;
   std::memcpy(&b, &x, 4);
   const float e = float(((b >> 23) & 0xFF) - 127);
   const int32_t mb = (b & 0x007FFFFF) | 0x3F800000;
-  float t;
-  std::memcpy(&t, &mb, 4);
-  t -= 1.0f;
-  return e + t * (1.4386380f + t * (-0.67774327f + t * (0.32187971f + t * -0.082860698f)));
+  float m;
+  std::memcpy(&m, &mb, 4);
+  return e + (m - 1.0f);
 }
 
 // The LOD of both quads of eight lanes: 0.5 log2(max(|d(uv)/dx|^2, |d(uv)/dy|^2)) in texels
@@ -657,11 +659,11 @@ float sample_2d_compare(const Sampler2DShadow& s, float u, float v, float ref, f
 float lod_from_derivatives(float dudx, float dvdx, float dudy, float dvdy, int width, int height) {
   const float w = float(width), h = float(height);
   const float ux = dudx * w, vx = dvdx * h, uy = dudy * w, vy = dvdy * h;
-  const float px = std::sqrt(ux * ux + vx * vx);
-  const float py = std::sqrt(uy * uy + vy * vy);
-  const float rho = std::max(px, py);
-  if (rho == 0.0f) return -1000.0f;
-  return std::log2(rho);
+  // GL 4.6 eq. 8.7 with rho^2 (no square root): lambda = 0.5 log2(rho^2), log2 as llvmpipe.
+  const float rho2 = std::max(ux * ux + vx * vx, uy * uy + vy * vy);
+  // As quad_lods, so one lane and eight agree: 0 magnifies, inf minifies, NaN stays NaN.
+  if (rho2 > 0.0f && rho2 <= 3.4e38f) return 0.5f * lod_log2(rho2);
+  return rho2 == 0.0f ? -1000.0f : (rho2 > 0.0f ? 1000.0f : rho2);
 }
 
 glm::vec4 texel_fetch(const Texture2D* t, int x, int y, int level) {
