@@ -353,7 +353,9 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
   }
 
   // 3. Assembly, clipping, setup, binning.
-  const bool fill = d.state.polygon_mode == PolygonMode::Fill;
+  const PolygonMode mode_front = d.state.polygon_mode;
+  const PolygonMode mode_back = d.state.polygon_mode_per_face ? d.state.polygon_mode_back : mode_front;
+  const bool fill = mode_front == PolygonMode::Fill && mode_back == PolygonMode::Fill;
   Prim* out[2];
   for (uint32_t p = 0; p < nprims; ++p) {
     const uint32_t prim_id = ch.begin + p;
@@ -455,10 +457,23 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
       ++w.counters.primitives_culled;
       continue;
     }
-    const bool line = d.state.polygon_mode == PolygonMode::Line;
+    const PolygonMode mode = front ? mode_front : mode_back;
+    if (mode == PolygonMode::Fill) {
+      const Facing facing = front ? Facing::Front : Facing::Back;
+      for (int i = 1; i + 1 < nw; ++i) {
+        Prim* pr = setup_triangle(d, wv[0], wv[i], wv[i + 1], flat_src, prim_id, facing, d.state.offset_fill, w.arena,
+                                  w.counters, nullptr);
+        if (pr) bin(w, chunk_index, &d, pr);
+      }
+      continue;
+    }
+    const bool line = mode == PolygonMode::Line;
     const bool offset = line ? d.state.offset_line : d.state.offset_point;
     const float zoff = offset ? polygon_offset(d, wv[0], wv[1], wv[2]) : 0.0f;
+    const int ef = d.state.edge_flag_varying;
     for (int i = 0; i < nw; ++i) {
+      // A vertex made by clipping carries the flag interpolated from its edge's ends.
+      if (ef >= 0 && ef < K && wv[i].var[ef] == 0.0f) continue;
       const int n = line ? setup_line(d, wv[i], wv[(i + 1) % nw], flat_src, prim_id, front, zoff, w.arena, w.counters, out)
                          : setup_point(d, wv[i], prim_id, front, zoff, w.arena, w.counters, out);
       for (int j = 0; j < n; ++j) bin(w, chunk_index, &d, out[j]);
@@ -685,7 +700,7 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   if (!fb_) throw Error("draw: no framebuffer bound");
   if (unsigned(call.topology) > unsigned(Topology::TriangleFan)) throw Error("draw: invalid topology " + std::to_string(int(call.topology)));
   if (unsigned(state.cull) > unsigned(CullMode::FrontAndBack) || unsigned(state.front_face) > 1 ||
-      unsigned(state.polygon_mode) > 2 || unsigned(state.depth_func) > 7)
+      unsigned(state.polygon_mode) > 2 || unsigned(state.polygon_mode_back) > 2 || unsigned(state.depth_func) > 7)
     throw Error("draw: invalid enum in render state");
   if (!(state.line_width > 0.0f) || !(state.point_size > 0.0f) || state.line_width > 1024.0f || state.point_size > 8192.0f)
     throw Error("draw: line width " + std::to_string(state.line_width) + " / point size " +
@@ -804,7 +819,16 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   // |x_w| stays under the guard band: |x_ndc * s + o| <= G for |x_ndc| <= (G - |o|) / s.
   d->guard_x = (kGuardBand - std::fabs(d->vp_offset[0])) / d->vp_scale[0];
   d->guard_y = (kGuardBand - std::fabs(d->vp_offset[1])) / d->vp_scale[1];
-  const Rect area = render_area(state, W, H);
+  // Primitives are clipped against the guard band, not the view volume's sides, so the
+  // viewport rectangle bounds the fragments as the sides would (GL 4.6 §13.7); llvmpipe,
+  // which also uses a guard band, does the same.
+  Rect area = render_area(state, W, H);
+  {
+    const int x0 = std::max(area.x, vp.x), y0 = std::max(area.y, vp.y);
+    const int x1 = std::min<int64_t>(int64_t(area.x) + area.width, int64_t(vp.x) + vp.width);
+    const int y1 = std::min<int64_t>(int64_t(area.y) + area.height, int64_t(vp.y) + vp.height);
+    area = {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+  }
   d->area_x0 = area.x;
   d->area_y0 = area.y;
   d->area_x1 = area.x + area.width;

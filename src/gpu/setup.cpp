@@ -167,10 +167,15 @@ int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const 
   // diamond-exit rule gives: the parallelogram is moved by one sub-pixel step along the
   // direction of travel when that direction is negative, so that the fill rule's owned edge
   // is always at the start.
-  const float step = 1.0f / float(kSubpixelOne);
+  // Built from its ends in major-axis order whichever way it was drawn, so that a line
+  // drawn A->B and B->A gets the same depth and attributes at each sample (a shared edge
+  // of two faces drawn twice then keeps the first one under GL_LESS, as on llvmpipe, which
+  // also orders a line's ends along its major axis). Only the coverage depends on the
+  // direction: the parallelogram's lattice position moves by one sub-pixel step along the
+  // major axis for a line drawn backwards (the planes keep the unmoved float positions).
+  const bool backwards = x_major ? dx < 0 : dy < 0;
   WinVert a = v0, b = v1;
-  if (x_major && dx < 0) { a.x += step; b.x += step; }
-  if (!x_major && dy < 0) { a.y += step; b.y += step; }
+  if (backwards) std::swap(a, b);
   WinVert q[4] = {a, b, b, a};
   if (x_major) {
     q[0].y -= half; q[1].y -= half; q[2].y += half; q[3].y += half;
@@ -179,7 +184,18 @@ int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const 
   }
   for (auto& v : q) {
     v.z += z_offset;
-    snap_vertex(v);
+    if (backwards) {
+      // The lattice position of the point one sub-pixel step further; the float position
+      // (for the planes) stays.
+      const float ox = v.x, oy = v.y;
+      if (x_major) v.x += 1.0f / float(kSubpixelOne);
+      else v.y += 1.0f / float(kSubpixelOne);
+      snap_vertex(v);
+      v.x = ox;
+      v.y = oy;
+    } else {
+      snap_vertex(v);
+    }
   }
   const Facing f = front ? Facing::Front : Facing::Back;
   int n = 0;

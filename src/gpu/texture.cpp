@@ -398,6 +398,7 @@ TESSEL_INLINE int wrap_texel(int i, int size, Wrap mode) {
     }
     case Wrap::ClampToEdge: return i < 0 ? 0 : (i >= size ? size - 1 : i);
     case Wrap::ClampToBorder: return (i < 0 || i >= size) ? -1 : i;
+    case Wrap::Clamp: return i < 0 ? 0 : (i >= size ? size - 1 : i);  // sample_level resolves it first
     case Wrap::MirroredRepeat: {
       const int m2 = 2 * size;
       int r = i % m2;
@@ -463,6 +464,16 @@ template <Format F, class Xf>
 TESSEL_INLINE glm::vec4 sample_level(const LevelRef& L, Wrap ws, Wrap wt, float s, float t, bool linear, const glm::vec4& border,
                        const Xf& xf) {
   constexpr size_t bpp = format_info(F).bytes;
+  // GL 1.x CLAMP (GL 2.1 §3.8.7): the coordinate is clamped to [0, 1]; a nearest lookup then
+  // stays on the edge texels, a linear one blends with the border beyond them.
+  if (ws == Wrap::Clamp) {
+    s = std::clamp(sane(s), 0.0f, 1.0f);
+    ws = linear ? Wrap::ClampToBorder : Wrap::ClampToEdge;
+  }
+  if (wt == Wrap::Clamp) {
+    t = std::clamp(sane(t), 0.0f, 1.0f);
+    wt = linear ? Wrap::ClampToBorder : Wrap::ClampToEdge;
+  }
   const float u = sane(s) * float(L.w);
   const float v = sane(t) * float(L.h);
   auto texel = [&](int i, int j) TESSEL_INLINE_LAMBDA -> glm::vec4 {

@@ -315,3 +315,105 @@ TEST(Draw, MipmapLevelFromQuadDerivatives) {
       for (int x = 0; x < W; ++x) ASSERT_EQ(t.color.fetch(0, x, y), want) << x << "," << y << " repeat " << repeat;
   }
 }
+
+// --- behaviours the GL 1.x layer relies on ---------------------------------------------------
+
+// Fragments stay inside the viewport rectangle even where the guard band keeps a primitive
+// unclipped (GL 4.6 §13.7): a triangle far larger than a small viewport fills exactly it.
+TEST(Draw, ViewportBoundsFragments) {
+  RenderState st;
+  st.viewport = {8, 4, 10, 6};
+  const glm::vec4 red(1, 0, 0, 1);
+  // In clip space, reaching far outside [-1, 1] (inside the guard band).
+  std::vector<TestVertex> v(3);
+  const float P[3][2] = {{-5, -5}, {9, -5}, {-5, 9}};
+  for (int i = 0; i < 3; ++i) {
+    v[size_t(i)] = TestVertex{{P[i][0], P[i][1], 0, 1}, {red.r, red.g, red.b, red.a}, {0, 0}};
+  }
+  const auto p = render(32, 16, v, {.count = 3}, st);
+  EXPECT_EQ(lit(p), size_t(10 * 6));
+  EXPECT_NE(px(p, 32, 8, 4), 0u);
+  EXPECT_NE(px(p, 32, 17, 9), 0u);
+  EXPECT_EQ(px(p, 32, 7, 4), 0u);
+  EXPECT_EQ(px(p, 32, 18, 9), 0u);
+}
+
+// A line drawn A->B and then B->A with GL_LESS: the second finds the same depths and loses
+// everywhere (llvmpipe behaves the same), so a shared edge keeps its first colour.
+TEST(Draw, ReversedLineHasTheSameDepth) {
+  Target t(48, 48);
+  Context ctx(2);
+  ctx.bind_framebuffer(&t.fb);
+  ctx.clear({.color = {0, 0, 0, 0}, .depth = 1.0f});
+  RenderState st;
+  st.depth_test = true;
+  const TestVertex a = wv(3.3f, 5.1f, 0.2f, 48, 48, {1, 0, 0, 1}), b = wv(44.7f, 31.9f, 0.7f, 48, 48, {1, 0, 0, 1});
+  TestVertex a2 = a, b2 = b;
+  a2.color[0] = b2.color[0] = 0.0f;
+  a2.color[1] = b2.color[1] = 1.0f;
+  Mesh m({a, b, b2, a2});
+  ctx.draw(ColorShader{}, {}, m.layout, st, {.topology = Topology::Lines, .count = 4});
+  ctx.finish();
+  const auto p = read_rgba8(t.color);
+  size_t red = 0, green = 0;
+  for (size_t i = 0; i < p.size(); i += 4) red += p[i] == 255, green += p[i + 1] == 255;
+  EXPECT_GT(red, 35u);
+  EXPECT_LE(green, 1u);  // only the pixel of B, which the diamond-exit rule gives the second line
+}
+
+// Polygon mode per face (glPolygonMode(GL_FRONT, ...) and (GL_BACK, ...)): a front-facing
+// triangle filled, a back-facing one outlined.
+TEST(Draw, PolygonModePerFace) {
+  RenderState st;
+  st.polygon_mode = PolygonMode::Fill;
+  st.polygon_mode_per_face = true;
+  st.polygon_mode_back = PolygonMode::Line;
+  const glm::vec4 c(1, 1, 1, 1);
+  // Left triangle counter-clockwise (front), right one clockwise (back).
+  const auto p = render(64, 32, {wv(2, 2, 0, 64, 32, c), wv(30, 2, 0, 64, 32, c), wv(2, 30, 0, 64, 32, c),
+                                 wv(34.5f, 2.5f, 0, 64, 32, c), wv(34.5f, 29.5f, 0, 64, 32, c),
+                                 wv(61.5f, 2.5f, 0, 64, 32, c)},
+                        {.count = 6}, st);
+  EXPECT_NE(px(p, 64, 8, 8), 0u);   // inside the front one: filled
+  EXPECT_EQ(px(p, 64, 40, 8), 0u);  // inside the back one: empty
+  EXPECT_NE(px(p, 64, 34, 16), 0u); // on the back one's left edge: drawn
+}
+
+namespace {
+// The colour and, in varying component 4, a GL edge flag taken from the colour's alpha.
+struct EdgeFlagShader {
+  struct Uniforms {};
+  template <class F> struct Varyings { Vec4<F> color; F edge; };
+  static constexpr uint32_t attributes = 0b11;
+  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
+    out.color = Vec4<F>(in.attr[1].x, in.attr[1].y, in.attr[1].z, F(1.0f));
+    out.edge = in.attr[1].w;
+    return in.attr[0];
+  }
+  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+    f.color[0] = v.color;
+  }
+};
+}  // namespace
+
+// Edge flags: in line mode only the edges whose starting vertex is flagged are drawn (the
+// inner diagonal of a decomposed quad is not).
+TEST(Draw, EdgeFlagsHideInnerEdges) {
+  Target t(32, 32);
+  Context ctx(1);
+  ctx.bind_framebuffer(&t.fb);
+  ctx.clear({.color = {0, 0, 0, 0}});
+  RenderState st;
+  st.polygon_mode = PolygonMode::Line;
+  st.edge_flag_varying = 4;
+  // Triangle (a, b, c): edges a->b and b->c flagged, c->a (the diagonal) not.
+  TestVertex a = wv(4.5f, 4.5f, 0, 32, 32, {1, 1, 1, 1}), b = wv(28.5f, 4.5f, 0, 32, 32, {1, 1, 1, 1}),
+             c = wv(28.5f, 28.5f, 0, 32, 32, {1, 1, 1, 0});
+  Mesh m({a, b, c});
+  ctx.draw(EdgeFlagShader{}, {}, m.layout, st, {.count = 3});
+  ctx.finish();
+  const auto p = read_rgba8(t.color);
+  EXPECT_NE(px(p, 32, 16, 4), 0u);   // a->b
+  EXPECT_NE(px(p, 32, 28, 16), 0u);  // b->c
+  EXPECT_EQ(px(p, 32, 16, 16), 0u);  // the diagonal c->a is not drawn
+}

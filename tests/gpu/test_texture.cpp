@@ -778,3 +778,22 @@ TEST(Shadow, ReferenceClampedForFixedPointDepthOnly) {
   EXPECT_EQ(texture(b, Vec3<float>(2.0f, 0.5f, 0.2f)), 1.0f);
   EXPECT_EQ(texture(b, Vec3<float>(2.0f, 0.5f, 0.4f)), 0.0f);
 }
+
+// GL 1.x GL_CLAMP: coordinates clamped to [0, 1]; nearest stays on the edge texels, linear
+// blends half of the border colour in at the edge.
+TEST(Wrap, LegacyClamp) {
+  Texture2D t(Format::RGBA8, 2, 1);
+  const uint8_t px[8] = {255, 0, 0, 255, 0, 0, 255, 255};  // red, blue
+  t.upload(0, px, sizeof px);
+  Sampler2D s;
+  s.texture = &t;
+  s.state.wrap_s = s.state.wrap_t = Wrap::Clamp;
+  s.state.border_color = glm::vec4(0, 1, 0, 1);
+  s.state.min_filter = s.state.mag_filter = Filter::Nearest;
+  EXPECT_EQ(detail::sample_2d(s, 1.5f, 0.5f, 0.0f), glm::vec4(0, 0, 1, 1));   // s = 1: last texel
+  EXPECT_EQ(detail::sample_2d(s, -0.5f, 0.5f, 0.0f), glm::vec4(1, 0, 0, 1));  // s = 0: first texel
+  s.state.min_filter = s.state.mag_filter = Filter::Linear;
+  const glm::vec4 edge = detail::sample_2d(s, 2.0f, 0.5f, 0.0f);  // s = 1, on the texel row
+  EXPECT_NEAR(edge.b, 0.5f, 1e-6f);  // half the last texel ...
+  EXPECT_NEAR(edge.g, 0.5f, 1e-6f);  // ... half the border
+}

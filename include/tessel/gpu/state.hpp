@@ -64,12 +64,20 @@ struct RenderState {
   CullMode cull = CullMode::None;
   FrontFace front_face = FrontFace::CCW;
   PolygonMode polygon_mode = PolygonMode::Fill;
+  // GL 1.x glPolygonMode(GL_BACK, ...): when set, back faces use polygon_mode_back and
+  // polygon_mode is for front faces only.
+  bool polygon_mode_per_face = false;
+  PolygonMode polygon_mode_back = PolygonMode::Fill;
   // Polygon offset for each polygon mode (GL_POLYGON_OFFSET_FILL / _LINE / _POINT).
   bool offset_fill = false, offset_line = false, offset_point = false;
   float offset_factor = 0.0f, offset_units = 0.0f;
   float line_width = 1.0f;
   float point_size = 1.0f;
   bool depth_clamp = false;  // GL_DEPTH_CLAMP: no near/far clipping, depth clamped instead
+  // GL edge flags (GL 2.1 §2.6.2): with polygon mode Line or Point, when >= 0 this varying
+  // component of a triangle's vertex says whether the edge that starts at it is a boundary
+  // edge (nonzero) to be drawn, or an inner edge of a decomposed polygon (zero).
+  int8_t edge_flag_varying = -1;
 
   // User clip planes in clip space: a vertex is kept where dot(plane, clip_position) >= 0.
   uint8_t clip_plane_enable = 0;  // bit i enables plane i

@@ -33,7 +33,9 @@ enum class Filter : uint8_t {
   NearestMipmapLinear,
   LinearMipmapLinear,
 };
-enum class Wrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat, ClampToBorder };
+// Clamp is GL 1.x's GL_CLAMP: coordinates clamped to [0, 1], then edge texels for nearest
+// and the border colour beyond the edge for linear filtering.
+enum class Wrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat, ClampToBorder, Clamp };
 enum class CompareFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
 
 // Whether `a <func> b` passes: the depth test, the stencil test and shadow comparisons. For
