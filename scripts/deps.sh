@@ -9,6 +9,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # the reference oracle: Mesa llvmpipe through EGL (surfaceless) and desktop GL
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev libopengl-dev libosmesa6-dev
+  # GLUT windows (SDL2), and the GL 1.x comparison tests: each program built against Mesa's
+  # libGL, libGLU and freeglut runs under Xvfb
+  libsdl2-dev libx11-dev freeglut3-dev libglu1-mesa-dev xvfb xauth
 )
 
 missing=()

@@ -1,0 +1,72 @@
+// Shared by the GL entry points (api_*.cpp): finding the context, the begin/end rule, and
+// display-list recording.
+//
+// Every entry point follows one pattern:
+//   void GLAPIENTRY glFoo(args) {
+//     GL_CONTEXT();                 // no current context: the call is ignored
+//     GL_LISTED(foo(c, args));      // inside glNewList: recorded (and run for COMPILE_AND_EXECUTE)
+//     foo(c, args);                 // validates (errors change nothing) and applies
+//   }
+// Pointer arguments are copied into values before GL_LISTED, so a list keeps the data the
+// call was given (GL 2.1 §5.4).
+#pragma once
+
+#include <GL/gl.h>
+
+#include <array>
+#include <cmath>
+
+#include "context.hpp"
+
+#define GL_CONTEXT(...)                   \
+  ::tessel::gl::Context* ctx_ = ::tessel::gl::current(); \
+  if (ctx_ == nullptr) return __VA_ARGS__; \
+  ::tessel::gl::Context& c = *ctx_
+
+#define GL_LISTED(...)                                                        \
+  do {                                                                        \
+    if (c.compiling_list != 0 &&                                              \
+        !c.record([=]() {                                                     \
+          if (::tessel::gl::Context* rec_ = ::tessel::gl::current()) {        \
+            [[maybe_unused]] ::tessel::gl::Context& c = *rec_;                \
+            __VA_ARGS__;                                                      \
+          }                                                                   \
+        }))                                                                   \
+      return;                                                                 \
+  } while (0)
+
+// Commands other than vertex attributes, glMaterial, glArrayElement and glCallList(s) are
+// errors between glBegin and glEnd (GL 2.1 §2.6.3).
+#define GL_OUTSIDE_BEGIN(...)            \
+  do {                                   \
+    if (c.in_begin) {                    \
+      c.error(GL_INVALID_OPERATION);     \
+      return __VA_ARGS__;                \
+    }                                    \
+  } while (0)
+
+namespace tessel::gl {
+
+using Vec4Arg = std::array<float, 4>;
+
+// Number of values a glLight / glMaterial / glFog / glLightModel / glTexEnv / glTexGen
+// parameter takes (0 when the name is not one of them).
+int light_param_count(GLenum pname);
+int material_param_count(GLenum pname);
+
+// Internal commands shared by several entry points.
+void begin(Context& c, GLenum mode);
+void vertex(Context& c, float x, float y, float z, float w);
+void call_list(Context& c, GLuint list);
+void enable(Context& c, GLenum cap, bool on);
+void draw_arrays(Context& c, GLenum mode, GLint first, GLsizei count);
+void array_element(Context& c, GLint i);
+void raster_pos(Context& c, float x, float y, float z, float w);
+void mult_matrix(Context& c, const glm::mat4& m);
+void clear_accum_buffer(Context& c);
+
+inline bool is_finite4(float a, float b, float c, float d) {
+  return std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && std::isfinite(d);
+}
+
+}  // namespace tessel::gl

@@ -1,0 +1,357 @@
+// Pixel rectangles (GL 2.1 §3.6-3.7, §4.3): glPixelStore, glPixelZoom, glPixelTransfer,
+// glReadPixels, glDrawPixels, glCopyPixels and glBitmap.
+//
+// glDrawPixels and glBitmap make fragments like any primitive: they are drawn through the
+// gpu pipeline as a window-aligned rectangle whose fragment shader reads the image, so the
+// scissor, alpha, stencil and depth tests, blending and the masks all apply.
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "api.hpp"
+#include "pixels.hpp"
+
+namespace tessel::gl {
+
+namespace {
+
+// A window-aligned rectangle of an image: position in window coordinates, texture NEAREST.
+struct PixelRect {
+  struct Uniforms {
+    glm::vec2 scale{1.0f}, offset{0.0f};  // window -> clip
+    float z = 0.0f;                       // clip z (window depth in [0, 1] mapped to [-1, 1])
+    gpu::Sampler2D image;
+    bool bitmap = false;  // fragments only where the image's alpha is set, in `color`
+    glm::vec4 color{1.0f};
+    bool alpha_test = false;
+    gpu::CompareFunc alpha_func = gpu::CompareFunc::Always;
+    float alpha_ref = 0.0f;
+  };
+  template <class F> struct Varyings {
+    gpu::Vec2<F> uv;
+  };
+  static constexpr bool discards = true;
+  static constexpr uint32_t attributes = 0b11;
+  template <class F> gpu::Vec4<F> vertex(const Uniforms& u, const gpu::VertexIn<F>& in, Varyings<F>& out) const {
+    out.uv = in.attr[1].xy();
+    return gpu::Vec4<F>(in.attr[0].x * F(u.scale.x) + F(u.offset.x), in.attr[0].y * F(u.scale.y) + F(u.offset.y),
+                        F(u.z), F(1.0f));
+  }
+  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, gpu::Fragment<F>& f) const {
+    gpu::Vec4<F> c = texture(u.image, v.uv);
+    if (u.bitmap) {
+      f.discard(c.w == F(0.0f));
+      c = gpu::Vec4<F>(u.color);
+    }
+    if (u.alpha_test) f.discard(!gpu::compare(u.alpha_func, c.w, F(u.alpha_ref)));
+    f.color[0] = c;
+  }
+};
+
+gpu::CompareFunc compare_of(GLenum f) {
+  return f == GL_NEVER ? gpu::CompareFunc::Never
+         : f == GL_LESS ? gpu::CompareFunc::Less
+         : f == GL_EQUAL ? gpu::CompareFunc::Equal
+         : f == GL_LEQUAL ? gpu::CompareFunc::LessEqual
+         : f == GL_GREATER ? gpu::CompareFunc::Greater
+         : f == GL_NOTEQUAL ? gpu::CompareFunc::NotEqual
+         : f == GL_GEQUAL ? gpu::CompareFunc::GreaterEqual
+                          : gpu::CompareFunc::Always;
+}
+
+}  // namespace
+
+void Context::draw_pixels_rgba(float x, float y, int w, int h, const std::vector<uint8_t>& rgba, float zoom_x,
+                               float zoom_y, const glm::vec4* color) {
+  if (w <= 0 || h <= 0 || zoom_x == 0.0f || zoom_y == 0.0f) return;
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(zoom_x) || !std::isfinite(zoom_y)) return;
+  touch();
+  bind_draw_target();
+  auto tex = std::make_unique<gpu::Texture2D>(gpu::Format::RGBA8, w, h);
+  tex->upload(0, rgba.data(), rgba.size());
+  const float x1 = x + float(w) * zoom_x, y1 = y + float(h) * zoom_y;
+  const float quad[4][4] = {{x, y, 0, 0}, {x1, y, 1, 0}, {x1, y1, 1, 1}, {x, y1, 0, 1}};
+  const uint32_t idx[6] = {0, 1, 2, 0, 2, 3};
+  auto vb = std::make_unique<gpu::Buffer>(quad, sizeof quad);
+  auto ib = std::make_unique<gpu::Buffer>(idx, sizeof idx);
+  gpu::VertexLayout layout;
+  layout.attrib(0, *vb, 2, gpu::AttribType::F32, 16, 0);
+  layout.attrib(1, *vb, 2, gpu::AttribType::F32, 16, 8);
+  PixelRect::Uniforms u;
+  const int fw = fb_.width(), fh = fb_.height();
+  u.scale = glm::vec2(2.0f / float(fw), 2.0f / float(fh));
+  u.offset = glm::vec2(-1.0f, -1.0f);
+  u.z = s.current.raster_pos.z * 2.0f - 1.0f;
+  u.image.texture = tex.get();
+  u.image.state.min_filter = gpu::Filter::Nearest;
+  u.image.state.mag_filter = gpu::Filter::Nearest;
+  u.image.state.wrap_s = u.image.state.wrap_t = gpu::Wrap::ClampToEdge;
+  if (color) {
+    u.bitmap = true;
+    u.color = *color;
+  }
+  u.alpha_test = s.color.alpha_test && s.color.alpha_func != GL_ALWAYS;
+  u.alpha_func = compare_of(s.color.alpha_func);
+  u.alpha_ref = s.color.alpha_ref;
+  gpu::RenderState rs = render_state(false);
+  rs.viewport = {0, 0, fw, fh};
+  rs.depth_near = 0.0f;
+  rs.depth_far = 1.0f;
+  rs.cull = gpu::CullMode::None;
+  rs.polygon_mode = gpu::PolygonMode::Fill;
+  rs.offset_fill = false;
+  rs.clip_plane_enable = 0;
+  rs.depth_clamp = true;
+  gpu::DrawCall call;
+  call.count = 6;
+  call.index_buffer = ib.get();
+  guarded([&] { gpu_->draw(PixelRect{}, u, layout, rs, call); });
+  transient_buffers_.push_back(std::move(vb));
+  transient_buffers_.push_back(std::move(ib));
+  transient_textures_.push_back(std::move(tex));
+}
+
+namespace {
+
+void pixel_store(Context& c, GLenum pname, float v) {
+  GL_OUTSIDE_BEGIN();
+  PixelStore* ps = nullptr;
+  switch (pname) {
+    case GL_PACK_SWAP_BYTES:
+    case GL_PACK_LSB_FIRST:
+    case GL_PACK_ROW_LENGTH:
+    case GL_PACK_SKIP_ROWS:
+    case GL_PACK_SKIP_PIXELS:
+    case GL_PACK_ALIGNMENT: ps = &c.c.pack; break;
+    case GL_UNPACK_SWAP_BYTES:
+    case GL_UNPACK_LSB_FIRST:
+    case GL_UNPACK_ROW_LENGTH:
+    case GL_UNPACK_SKIP_ROWS:
+    case GL_UNPACK_SKIP_PIXELS:
+    case GL_UNPACK_ALIGNMENT: ps = &c.c.unpack; break;
+    default: return c.error(GL_INVALID_ENUM);
+  }
+  const GLint i = GLint(std::lround(v));
+  switch (pname) {
+    case GL_PACK_SWAP_BYTES:
+    case GL_UNPACK_SWAP_BYTES: ps->swap_bytes = v != 0.0f; break;
+    case GL_PACK_LSB_FIRST:
+    case GL_UNPACK_LSB_FIRST: ps->lsb_first = v != 0.0f; break;
+    case GL_PACK_ALIGNMENT:
+    case GL_UNPACK_ALIGNMENT:
+      if (i != 1 && i != 2 && i != 4 && i != 8) return c.error(GL_INVALID_VALUE);
+      ps->alignment = i;
+      break;
+    default:
+      if (i < 0) return c.error(GL_INVALID_VALUE);
+      if (pname == GL_PACK_ROW_LENGTH || pname == GL_UNPACK_ROW_LENGTH) ps->row_length = i;
+      else if (pname == GL_PACK_SKIP_ROWS || pname == GL_UNPACK_SKIP_ROWS) ps->skip_rows = i;
+      else ps->skip_pixels = i;
+      break;
+  }
+}
+
+void pixel_zoom(Context& c, float x, float y) {
+  GL_OUTSIDE_BEGIN();
+  c.s.pixel.zoom_x = x;
+  c.s.pixel.zoom_y = y;
+}
+
+void pixel_transfer(Context& c, GLenum pname, float v) {
+  GL_OUTSIDE_BEGIN();
+  PixelModeState& p = c.s.pixel;
+  switch (pname) {
+    case GL_MAP_COLOR: p.map_color = v != 0.0f; break;
+    case GL_MAP_STENCIL: p.map_stencil = v != 0.0f; break;
+    case GL_INDEX_SHIFT: p.index_shift = GLint(v); break;
+    case GL_INDEX_OFFSET: p.index_offset = GLint(v); break;
+    case GL_RED_SCALE: p.red_scale = v; break;
+    case GL_RED_BIAS: p.red_bias = v; break;
+    case GL_GREEN_SCALE: p.green_scale = v; break;
+    case GL_GREEN_BIAS: p.green_bias = v; break;
+    case GL_BLUE_SCALE: p.blue_scale = v; break;
+    case GL_BLUE_BIAS: p.blue_bias = v; break;
+    case GL_ALPHA_SCALE: p.alpha_scale = v; break;
+    case GL_ALPHA_BIAS: p.alpha_bias = v; break;
+    case GL_DEPTH_SCALE: p.depth_scale = v; break;
+    case GL_DEPTH_BIAS: p.depth_bias = v; break;
+    default: c.error(GL_INVALID_ENUM); break;
+  }
+}
+
+// GL 2.1 §3.7.5: scale and bias of each colour component, then clamping.
+void transfer(const PixelModeState& p, std::vector<glm::vec4>& px) {
+  const glm::vec4 scale(p.red_scale, p.green_scale, p.blue_scale, p.alpha_scale);
+  const glm::vec4 bias(p.red_bias, p.green_bias, p.blue_bias, p.alpha_bias);
+  if (scale == glm::vec4(1.0f) && bias == glm::vec4(0.0f)) return;
+  for (glm::vec4& v : px) v = glm::clamp(v * scale + bias, 0.0f, 1.0f);
+}
+
+struct Pixels {
+  std::vector<glm::vec4> px;
+};
+
+void draw_pixels(Context& c, GLsizei w, GLsizei h, GLenum format, const std::shared_ptr<Pixels>& data) {
+  GL_OUTSIDE_BEGIN();
+  if (!c.s.current.raster_valid || !data) return;
+  if (format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT) {
+    // Depth and stencil rectangles write those buffers directly (no colour).
+    c.finish();
+    gpu::Texture2D* d = c.depth_buffer();
+    if (!d) return;
+    const int x0 = int(std::floor(c.s.current.raster_pos.x)), y0 = int(std::floor(c.s.current.raster_pos.y));
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) {
+        const int x = x0 + i, y = y0 + j;
+        if (x < 0 || y < 0 || x >= d->width() || y >= d->height()) continue;
+        glm::vec4 t = d->fetch(0, x, y);
+        const float v = data->px[size_t(j) * size_t(w) + size_t(i)].x;
+        if (format == GL_DEPTH_COMPONENT) t.x = std::clamp(v * c.s.pixel.depth_scale + c.s.pixel.depth_bias, 0.0f, 1.0f);
+        else t.y = float(uint8_t(std::lround(v)));
+        d->store(0, x, y, t);
+      }
+    return;
+  }
+  std::vector<glm::vec4> px = data->px;
+  transfer(c.s.pixel, px);
+  std::vector<uint8_t> rgba(px.size() * 4);
+  for (size_t i = 0; i < px.size(); ++i)
+    for (int k = 0; k < 4; ++k) rgba[i * 4 + size_t(k)] = unorm8(px[i][k]);
+  // The image starts at the raster position rounded to a whole pixel, as Mesa does (the
+  // zoomed rectangle of GL 2.1 §3.6.4 then covers the same pixel centres).
+  c.draw_pixels_rgba(std::round(c.s.current.raster_pos.x), std::round(c.s.current.raster_pos.y), w, h, rgba,
+                     c.s.pixel.zoom_x, c.s.pixel.zoom_y, nullptr);
+}
+
+void bitmap(Context& c, GLsizei w, GLsizei h, float xo, float yo, float xm, float ym,
+            const std::shared_ptr<std::vector<uint8_t>>& bits) {
+  GL_OUTSIDE_BEGIN();
+  if (w < 0 || h < 0) return c.error(GL_INVALID_VALUE);
+  CurrentState& cur = c.s.current;
+  if (!cur.raster_valid) return;
+  if (bits && w > 0 && h > 0) {
+    std::vector<uint8_t> rgba(size_t(w) * size_t(h) * 4, 0);
+    for (size_t i = 0; i < bits->size(); ++i) rgba[i * 4 + 3] = (*bits)[i] ? 255 : 0;
+    // GL 2.1 §3.7: the lower-left corner is (floor(xr - xo), floor(yr - yo)); with Mesa's
+    // 1e-4 before the floor, so a raster position that should be 6 and is 5.9999943 after
+    // the transforms still lands on 6.
+    c.draw_pixels_rgba(std::floor(cur.raster_pos.x - xo + 1e-4f), std::floor(cur.raster_pos.y - yo + 1e-4f), w, h,
+                       rgba, 1.0f, 1.0f, &cur.raster_color);
+  }
+  cur.raster_pos.x += xm;
+  cur.raster_pos.y += ym;
+}
+
+void copy_pixels(Context& c, GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) {
+  GL_OUTSIDE_BEGIN();
+  if (w < 0 || h < 0) return c.error(GL_INVALID_VALUE);
+  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) return c.error(GL_INVALID_ENUM);
+  if (!c.s.current.raster_valid || w == 0 || h == 0) return;
+  c.finish();
+  auto data = std::make_shared<Pixels>();
+  data->px.assign(size_t(w) * size_t(h), glm::vec4(0.0f));
+  gpu::Texture2D* src = type == GL_COLOR ? c.color_buffer(c.s.pixel.read_buffer) : c.depth_buffer();
+  if (!src) return;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i)
+      if (x + i >= 0 && y + j >= 0 && x + i < src->width() && y + j < src->height()) {
+        glm::vec4 v = src->fetch(0, x + i, y + j);
+        if (type == GL_STENCIL) v.x = v.y;
+        data->px[size_t(j) * size_t(w) + size_t(i)] = v;
+      }
+  draw_pixels(c, w, h, type == GL_COLOR ? GL_RGBA : type == GL_DEPTH ? GL_DEPTH_COMPONENT : GL_STENCIL_INDEX, data);
+}
+
+}  // namespace
+}  // namespace tessel::gl
+
+using namespace tessel::gl;
+
+extern "C" {
+
+void GLAPIENTRY glPixelStoref(GLenum pname, GLfloat v) {
+  GL_CONTEXT();
+  pixel_store(c, pname, v);
+}
+void GLAPIENTRY glPixelStorei(GLenum pname, GLint v) { glPixelStoref(pname, float(v)); }
+void GLAPIENTRY glPixelZoom(GLfloat x, GLfloat y) {
+  GL_CONTEXT();
+  GL_LISTED(pixel_zoom(c, x, y));
+  pixel_zoom(c, x, y);
+}
+void GLAPIENTRY glPixelTransferf(GLenum pname, GLfloat v) {
+  GL_CONTEXT();
+  GL_LISTED(pixel_transfer(c, pname, v));
+  pixel_transfer(c, pname, v);
+}
+void GLAPIENTRY glPixelTransferi(GLenum pname, GLint v) { glPixelTransferf(pname, float(v)); }
+
+void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, GLvoid* pixels) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  if (w < 0 || h < 0) return c.error(GL_INVALID_VALUE);
+  if (!valid_pixel_format(format) || !valid_pixel_type(type) || format == GL_COLOR_INDEX)
+    return c.error(GL_INVALID_ENUM);
+  if (type == GL_BITMAP) return c.error(GL_INVALID_ENUM);
+  if ((format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX) && !c.has_depth())
+    return c.error(GL_INVALID_OPERATION);
+  if (format == GL_STENCIL_INDEX && !c.has_stencil()) return c.error(GL_INVALID_OPERATION);
+  if (w == 0 || h == 0 || !pixels) return;
+  c.finish();
+  const bool depth = format == GL_DEPTH_COMPONENT, stencil = format == GL_STENCIL_INDEX;
+  tessel::gpu::Texture2D* src = depth || stencil ? c.depth_buffer() : c.color_buffer(c.s.pixel.read_buffer);
+  if (!src) return c.error(GL_INVALID_OPERATION);
+  std::vector<glm::vec4> px(size_t(w) * size_t(h), glm::vec4(0.0f));
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const int sx = x + i, sy = y + j;
+      if (sx < 0 || sy < 0 || sx >= src->width() || sy >= src->height()) continue;
+      glm::vec4 v = src->fetch(0, sx, sy);
+      if (stencil) v.x = v.y;
+      px[size_t(j) * size_t(w) + size_t(i)] = v;
+    }
+  if (!depth && !stencil) transfer(c.s.pixel, px);
+  if (stencil) {
+    // Stencil values are integers: GL_UNSIGNED_BYTE 5 reads as 5, not 5/255.
+    for (glm::vec4& v : px) v.x = type == GL_FLOAT ? v.x : v.x / 255.0f;
+  }
+  pack_pixels(c.c.pack, w, h, format, type, px, pixels);
+}
+
+void GLAPIENTRY glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid* pixels) {
+  GL_CONTEXT();
+  if (w < 0 || h < 0) return c.error(GL_INVALID_VALUE);
+  if (!valid_pixel_format(format) || !valid_pixel_type(type)) return c.error(GL_INVALID_ENUM);
+  if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX) return c.error(GL_INVALID_ENUM);
+  if (format == GL_COLOR_INDEX) return c.error(GL_INVALID_OPERATION);  // RGBA mode only
+  std::shared_ptr<Pixels> data;
+  if (pixels && w > 0 && h > 0) {
+    data = std::make_shared<Pixels>();
+    unpack_pixels(c.c.unpack, w, h, format, type, pixels, data->px);
+    if (format == GL_STENCIL_INDEX && type != GL_FLOAT)
+      for (glm::vec4& v : data->px) v.x = std::round(v.x * 255.0f);
+  }
+  GL_LISTED(draw_pixels(c, w, h, format, data));
+  draw_pixels(c, w, h, format, data);
+}
+
+void GLAPIENTRY glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) {
+  GL_CONTEXT();
+  GL_LISTED(copy_pixels(c, x, y, w, h, type));
+  copy_pixels(c, x, y, w, h, type);
+}
+
+void GLAPIENTRY glBitmap(GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym, const GLubyte* b) {
+  GL_CONTEXT();
+  std::shared_ptr<std::vector<uint8_t>> bits;
+  if (b && w > 0 && h > 0) {
+    bits = std::make_shared<std::vector<uint8_t>>();
+    unpack_bitmap(c.c.unpack, w, h, b, *bits);
+  }
+  GL_LISTED(bitmap(c, w, h, xo, yo, xm, ym, bits));
+  bitmap(c, w, h, xo, yo, xm, ym, bits);
+}
+
+}  // extern "C"

@@ -1,0 +1,204 @@
+// The rest of GL 1.1: the accumulation buffer (implemented), colour-index calls (kept as
+// state; they do not affect an RGBA window, GL 2.1 §2.7), pixel maps (kept and queryable),
+// and evaluators, selection and feedback, which Tessel does not implement yet: their calls
+// are accepted and validated, draw nothing, and glRenderMode reports zero hits
+// (docs/gl-coverage.md lists them as not supported).
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <map>
+
+#include "api.hpp"
+
+namespace tessel::gl {
+namespace {
+
+// The accumulation buffer (GL 2.1 §4.2.4): one float RGBA per pixel of the window, made
+// when first used.
+struct Accum {
+  const Context* owner = nullptr;
+  int width = 0, height = 0;
+  std::vector<glm::vec4> px;
+};
+Accum& accum_for(Context& c) {
+  static thread_local std::map<const Context*, Accum> all;
+  Accum& a = all[&c];
+  if (a.width != c.width() || a.height != c.height()) {
+    a.width = c.width();
+    a.height = c.height();
+    a.px.assign(size_t(a.width) * size_t(a.height), glm::vec4(0.0f));
+  }
+  return a;
+}
+
+void accum(Context& c, GLenum op, float value) {
+  GL_OUTSIDE_BEGIN();
+  if (op != GL_ACCUM && op != GL_LOAD && op != GL_RETURN && op != GL_MULT && op != GL_ADD)
+    return c.error(GL_INVALID_ENUM);
+  c.finish();
+  Accum& a = accum_for(c);
+  const ScissorState& sc = c.s.scissor;
+  const int x0 = sc.test ? std::max(0, sc.x) : 0, y0 = sc.test ? std::max(0, sc.y) : 0;
+  const int x1 = sc.test ? std::min(a.width, sc.x + sc.width) : a.width;
+  const int y1 = sc.test ? std::min(a.height, sc.y + sc.height) : a.height;
+  gpu::Texture2D* read = c.color_buffer(c.s.pixel.read_buffer);
+  gpu::Texture2D* draw = c.color_buffer(c.s.color.draw_buffer);
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      glm::vec4& v = a.px[size_t(y) * size_t(a.width) + size_t(x)];
+      switch (op) {
+        case GL_ACCUM: if (read) v += read->fetch(0, x, y) * value; break;
+        case GL_LOAD: if (read) v = read->fetch(0, x, y) * value; break;
+        case GL_MULT: v *= value; break;
+        case GL_ADD: v += glm::vec4(value); break;
+        case GL_RETURN:
+          if (draw) {
+            glm::vec4 out = glm::clamp(v * value, 0.0f, 1.0f);
+            const glm::vec4 old = draw->fetch(0, x, y);
+            for (int k = 0; k < 4; ++k)
+              if (!c.s.color.color_mask[size_t(k)]) out[k] = old[k];
+            draw->store(0, x, y, out);
+          }
+          break;
+        default: break;
+      }
+    }
+}
+
+void clear_accum(Context& c) {
+  Accum& a = accum_for(c);
+  std::fill(a.px.begin(), a.px.end(), c.s.accum_clear);
+}
+
+// Pixel maps (GL 2.1 §3.6.3): kept so they can be queried.
+std::map<GLenum, std::vector<float>>& pixel_maps() {
+  static thread_local std::map<GLenum, std::vector<float>> maps;
+  return maps;
+}
+bool valid_map(GLenum m) { return m >= GL_PIXEL_MAP_I_TO_I && m <= GL_PIXEL_MAP_A_TO_A; }
+
+GLenum g_render_mode = GL_RENDER;  // kept for a future selection mode
+
+}  // namespace
+
+// glClear with GL_ACCUM_BUFFER_BIT lands here (called from Context::clear's caller).
+void clear_accum_buffer(Context& c) { clear_accum(c); }
+
+}  // namespace tessel::gl
+
+using namespace tessel::gl;
+
+extern "C" {
+
+void GLAPIENTRY glAccum(GLenum op, GLfloat value) {
+  GL_CONTEXT();
+  GL_LISTED(accum(c, op, value));
+  accum(c, op, value);
+}
+
+// Colour index mode does not exist in an RGBA window: the current index is kept only.
+void GLAPIENTRY glIndexMask(GLuint) {}
+void GLAPIENTRY glIndexd(GLdouble) {}
+void GLAPIENTRY glIndexdv(const GLdouble*) {}
+void GLAPIENTRY glIndexf(GLfloat) {}
+void GLAPIENTRY glIndexfv(const GLfloat*) {}
+void GLAPIENTRY glIndexi(GLint) {}
+void GLAPIENTRY glIndexiv(const GLint*) {}
+void GLAPIENTRY glIndexs(GLshort) {}
+void GLAPIENTRY glIndexsv(const GLshort*) {}
+void GLAPIENTRY glIndexub(GLubyte) {}
+void GLAPIENTRY glIndexubv(const GLubyte*) {}
+
+void GLAPIENTRY glPixelMapfv(GLenum map, GLsizei n, const GLfloat* values) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  if (!valid_map(map)) return c.error(GL_INVALID_ENUM);
+  if (n < 1 || n > 256) return c.error(GL_INVALID_VALUE);
+  if (map <= GL_PIXEL_MAP_I_TO_A && (n & (n - 1))) return c.error(GL_INVALID_VALUE);
+  pixel_maps()[map].assign(values, values + n);
+}
+void GLAPIENTRY glPixelMapuiv(GLenum map, GLsizei n, const GLuint* values) {
+  std::vector<float> v(size_t(std::max(n, 0)));
+  for (size_t i = 0; i < v.size() && values; ++i) v[i] = float(double(values[i]) / 4294967295.0);
+  glPixelMapfv(map, n, v.data());
+}
+void GLAPIENTRY glPixelMapusv(GLenum map, GLsizei n, const GLushort* values) {
+  std::vector<float> v(size_t(std::max(n, 0)));
+  for (size_t i = 0; i < v.size() && values; ++i) v[i] = float(values[i]) / 65535.0f;
+  glPixelMapfv(map, n, v.data());
+}
+void GLAPIENTRY glGetPixelMapfv(GLenum map, GLfloat* values) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  if (!valid_map(map)) return c.error(GL_INVALID_ENUM);
+  const auto it = pixel_maps().find(map);
+  if (!values) return;
+  if (it == pixel_maps().end()) values[0] = 0.0f;
+  else std::copy(it->second.begin(), it->second.end(), values);
+}
+void GLAPIENTRY glGetPixelMapuiv(GLenum map, GLuint* values) {
+  GLfloat tmp[256] = {};
+  glGetPixelMapfv(map, tmp);
+  const auto it = pixel_maps().find(map);
+  const size_t n = it == pixel_maps().end() ? 1 : it->second.size();
+  for (size_t i = 0; i < n && values; ++i) values[i] = GLuint(double(tmp[i]) * 4294967295.0);
+}
+void GLAPIENTRY glGetPixelMapusv(GLenum map, GLushort* values) {
+  GLfloat tmp[256] = {};
+  glGetPixelMapfv(map, tmp);
+  const auto it = pixel_maps().find(map);
+  const size_t n = it == pixel_maps().end() ? 1 : it->second.size();
+  for (size_t i = 0; i < n && values; ++i) values[i] = GLushort(tmp[i] * 65535.0f);
+}
+
+// Evaluators: not implemented (docs/gl-coverage.md).
+void GLAPIENTRY glMap1d(GLenum, GLdouble, GLdouble, GLint, GLint, const GLdouble*) {}
+void GLAPIENTRY glMap1f(GLenum, GLfloat, GLfloat, GLint, GLint, const GLfloat*) {}
+void GLAPIENTRY glMap2d(GLenum, GLdouble, GLdouble, GLint, GLint, GLdouble, GLdouble, GLint, GLint, const GLdouble*) {}
+void GLAPIENTRY glMap2f(GLenum, GLfloat, GLfloat, GLint, GLint, GLfloat, GLfloat, GLint, GLint, const GLfloat*) {}
+void GLAPIENTRY glGetMapdv(GLenum, GLenum, GLdouble*) {}
+void GLAPIENTRY glGetMapfv(GLenum, GLenum, GLfloat*) {}
+void GLAPIENTRY glGetMapiv(GLenum, GLenum, GLint*) {}
+void GLAPIENTRY glEvalCoord1d(GLdouble) {}
+void GLAPIENTRY glEvalCoord1dv(const GLdouble*) {}
+void GLAPIENTRY glEvalCoord1f(GLfloat) {}
+void GLAPIENTRY glEvalCoord1fv(const GLfloat*) {}
+void GLAPIENTRY glEvalCoord2d(GLdouble, GLdouble) {}
+void GLAPIENTRY glEvalCoord2dv(const GLdouble*) {}
+void GLAPIENTRY glEvalCoord2f(GLfloat, GLfloat) {}
+void GLAPIENTRY glEvalCoord2fv(const GLfloat*) {}
+void GLAPIENTRY glMapGrid1d(GLint, GLdouble, GLdouble) {}
+void GLAPIENTRY glMapGrid1f(GLint, GLfloat, GLfloat) {}
+void GLAPIENTRY glMapGrid2d(GLint, GLdouble, GLdouble, GLint, GLdouble, GLdouble) {}
+void GLAPIENTRY glMapGrid2f(GLint, GLfloat, GLfloat, GLint, GLfloat, GLfloat) {}
+void GLAPIENTRY glEvalMesh1(GLenum, GLint, GLint) {}
+void GLAPIENTRY glEvalMesh2(GLenum, GLint, GLint, GLint, GLint) {}
+void GLAPIENTRY glEvalPoint1(GLint) {}
+void GLAPIENTRY glEvalPoint2(GLint, GLint) {}
+
+// Selection and feedback: not implemented; rendering continues as in GL_RENDER.
+GLint GLAPIENTRY glRenderMode(GLenum mode) {
+  GL_CONTEXT(0);
+  GL_OUTSIDE_BEGIN(0);
+  if (mode != GL_RENDER && mode != GL_SELECT && mode != GL_FEEDBACK) {
+    c.error(GL_INVALID_ENUM);
+    return 0;
+  }
+  g_render_mode = mode;
+  return 0;
+}
+void GLAPIENTRY glSelectBuffer(GLsizei size, GLuint*) {
+  GL_CONTEXT();
+  if (size < 0) c.error(GL_INVALID_VALUE);
+}
+void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum, GLfloat*) {
+  GL_CONTEXT();
+  if (size < 0) c.error(GL_INVALID_VALUE);
+}
+void GLAPIENTRY glPassThrough(GLfloat) {}
+void GLAPIENTRY glInitNames(void) {}
+void GLAPIENTRY glLoadName(GLuint) {}
+void GLAPIENTRY glPushName(GLuint) {}
+void GLAPIENTRY glPopName(void) {}
+
+}  // extern "C"

@@ -1,0 +1,390 @@
+// The GL 1.x context: every piece of state the specification keeps, grouped as glPushAttrib
+// groups them, and the machinery that turns immediate-mode vertices, vertex arrays and
+// display lists into draws of the gpu layer.
+//
+// Entry points (api_*.cpp) validate their arguments and record errors as glGetError
+// reports them (GL 2.1 §2.5: a command that generates an error has no other effect), then
+// change state here. Drawing goes through `emit()`: vertices in the interleaved FFVertex
+// layout plus indices of independent points, lines or triangles. Consecutive emissions
+// under unchanged state are merged into one gpu draw (every state change first calls
+// `touch()`, which sends what is pending).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <exception>
+#include <memory>
+#include <new>
+#include <unordered_map>
+#include <vector>
+
+#include <GL/gl.h>
+
+#include "ff_shader.hpp"
+#include "tessel/gpu/context.hpp"
+#include "tessel/gpu/framebuffer.hpp"
+#include "tessel/gpu/texture.hpp"
+
+namespace tessel::gl {
+
+inline constexpr int kMaxLights = 8;
+inline constexpr int kMaxClipPlanes = 6;
+inline constexpr int kModelviewDepth = 32, kProjectionDepth = 32, kTextureDepth = 10;
+inline constexpr int kAttribDepth = 16, kClientAttribDepth = 16;
+inline constexpr int kMaxListNesting = 64;
+inline constexpr int kMaxTextureSize = 8192;
+inline constexpr int kMaxTextureLevels = 14;  // 8192 = 2^13
+
+struct TextureImage {
+  int width = 0, height = 0;
+  BaseFormat base = BaseFormat::RGBA;
+  GLenum internal_format = GL_RGBA;
+  std::vector<uint8_t> rgba;  // RGBA8, rows bottom-up (GL's first row is t = 0)
+  bool defined() const { return width > 0 && height > 0; }
+};
+
+struct TextureObject {
+  GLuint name = 0;
+  std::array<TextureImage, kMaxTextureLevels> levels{};
+  GLenum min_filter = GL_NEAREST_MIPMAP_LINEAR, mag_filter = GL_LINEAR;
+  GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT;
+  glm::vec4 border{0.0f};
+  float priority = 1.0f;
+  int base_level = 0, max_level = 1000;
+  bool generate_mipmap = false;
+  // The gpu texture made from the levels when a draw needs it (rebuilt after a change).
+  std::unique_ptr<gpu::Texture2D> gpu;
+  bool dirty = true;
+  bool complete = false;
+};
+
+// GL_CURRENT_BIT and what glBegin/glEnd reads.
+struct CurrentState {
+  glm::vec4 color{1.0f}, tex{0.0f, 0.0f, 0.0f, 1.0f};
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};
+  bool edge = true;
+  glm::vec4 raster_pos{0.0f, 0.0f, 0.0f, 1.0f};  // window coordinates
+  glm::vec4 raster_color{1.0f}, raster_tex{0.0f, 0.0f, 0.0f, 1.0f};
+  float raster_distance = 0.0f;
+  bool raster_valid = true;
+};
+
+struct LightState {
+  std::array<bool, kMaxLights> enabled{};
+  std::array<FFLight, kMaxLights> light{};
+  std::array<float, kMaxLights> spot_cutoff{};  // degrees, as set (180 = off)
+  std::array<FFMaterial, 2> material{};
+  glm::vec4 model_ambient{0.2f, 0.2f, 0.2f, 1.0f};
+  bool local_viewer = false, two_side = false;
+  bool lighting = false;
+  bool color_material = false;
+  GLenum color_material_face = GL_FRONT_AND_BACK, color_material_mode = GL_AMBIENT_AND_DIFFUSE;
+  GLenum shade_model = GL_SMOOTH;
+};
+
+struct FogState {
+  bool enabled = false;
+  GLenum mode = GL_EXP;
+  float density = 1.0f, start = 0.0f, end = 1.0f;
+  glm::vec4 color{0.0f};
+};
+
+struct ColorBufferState {
+  bool alpha_test = false;
+  GLenum alpha_func = GL_ALWAYS;
+  float alpha_ref = 0.0f;
+  bool blend = false;
+  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;
+  bool dither = true, logic_op = false;
+  GLenum logic_op_mode = GL_COPY;
+  glm::vec4 clear_color{0.0f};
+  std::array<bool, 4> color_mask{true, true, true, true};
+  GLenum draw_buffer = GL_BACK;
+};
+
+struct DepthState {
+  bool test = false;
+  GLenum func = GL_LESS;
+  double clear = 1.0;
+  bool mask = true;
+};
+
+struct StencilState {
+  bool test = false;
+  GLenum func = GL_ALWAYS;
+  GLint ref = 0;
+  GLuint value_mask = 0xFFFFFFFFu, write_mask = 0xFFFFFFFFu;
+  GLenum fail = GL_KEEP, zfail = GL_KEEP, zpass = GL_KEEP;
+  GLint clear = 0;
+};
+
+struct PolygonState {
+  bool cull = false;
+  GLenum cull_face = GL_BACK, front_face = GL_CCW;
+  GLenum mode_front = GL_FILL, mode_back = GL_FILL;
+  float offset_factor = 0.0f, offset_units = 0.0f;
+  bool offset_fill = false, offset_line = false, offset_point = false;
+  bool smooth = false, stipple = false;
+};
+
+struct LineState {
+  float width = 1.0f;
+  bool smooth = false, stipple = false;
+  GLint stipple_factor = 1;
+  GLushort stipple_pattern = 0xFFFF;
+};
+
+struct PointState {
+  float size = 1.0f;
+  bool smooth = false;
+};
+
+struct ScissorState {
+  bool test = false;
+  GLint x = 0, y = 0;
+  GLsizei width = 0, height = 0;
+};
+
+struct ViewportState {
+  GLint x = 0, y = 0;
+  GLsizei width = 0, height = 0;
+  double near_ = 0.0, far_ = 1.0;
+};
+
+struct TransformState {
+  GLenum matrix_mode = GL_MODELVIEW;
+  bool normalize = false, rescale_normal = false;
+  std::array<bool, kMaxClipPlanes> clip_enabled{};
+  std::array<glm::dvec4, kMaxClipPlanes> clip_plane{};  // eye space
+};
+
+struct TextureUnitState {
+  bool enabled_2d = false;
+  GLuint bound_2d = 0;
+  GLenum env_mode = GL_MODULATE;
+  glm::vec4 env_color{0.0f};
+  std::array<bool, 4> gen_enabled{};  // S, T, R, Q
+  std::array<GLenum, 4> gen_mode{GL_EYE_LINEAR, GL_EYE_LINEAR, GL_EYE_LINEAR, GL_EYE_LINEAR};
+  std::array<glm::vec4, 4> object_plane{glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0.0f), glm::vec4(0.0f)};
+  std::array<glm::vec4, 4> eye_plane{glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0.0f), glm::vec4(0.0f)};
+};
+
+struct HintState {
+  GLenum perspective = GL_DONT_CARE, point = GL_DONT_CARE, line = GL_DONT_CARE, polygon = GL_DONT_CARE,
+         fog = GL_DONT_CARE;
+};
+
+struct PixelModeState {
+  GLenum read_buffer = GL_BACK;
+  float zoom_x = 1.0f, zoom_y = 1.0f;
+  bool map_color = false, map_stencil = false;
+  GLint index_shift = 0, index_offset = 0;
+  float red_scale = 1, red_bias = 0, green_scale = 1, green_bias = 0, blue_scale = 1, blue_bias = 0;
+  float alpha_scale = 1, alpha_bias = 0, depth_scale = 1, depth_bias = 0;
+};
+
+// The server state (what glPushAttrib saves), group by group.
+struct ServerState {
+  CurrentState current;
+  LightState light;
+  FogState fog;
+  ColorBufferState color;
+  DepthState depth;
+  StencilState stencil;
+  PolygonState polygon;
+  std::array<uint32_t, 32> polygon_stipple;  // rows of the 32x32 pattern, bit x = column x
+  LineState line;
+  PointState point;
+  ScissorState scissor;
+  ViewportState viewport;
+  TransformState transform;
+  TextureUnitState texture;
+  HintState hint;
+  PixelModeState pixel;
+  GLuint list_base = 0;
+  glm::vec4 accum_clear{0.0f};
+  ServerState() { polygon_stipple.fill(0xFFFFFFFFu); }
+};
+
+struct PixelStore {
+  bool swap_bytes = false, lsb_first = false;
+  GLint row_length = 0, skip_rows = 0, skip_pixels = 0, alignment = 4;
+};
+
+struct ArrayPointer {
+  bool enabled = false;
+  GLint size = 4;
+  GLenum type = GL_FLOAT;
+  GLsizei stride = 0;
+  const void* pointer = nullptr;
+};
+
+struct ClientState {
+  PixelStore pack, unpack;
+  ArrayPointer vertex, normal, color, tex, edge, index;
+};
+
+struct PushedAttrib {
+  GLbitfield mask;
+  ServerState state;
+};
+
+struct PushedClient {
+  GLbitfield mask;
+  ClientState state;
+};
+
+using ListCommand = std::function<void()>;
+
+// Independent primitives of one emission: 1, 2 or 3 indices each.
+enum class PrimClass : uint8_t { Points, Lines, Triangles };
+
+class Context {
+ public:
+  Context(int width, int height, bool double_buffer, bool depth, bool stencil);
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  // --- errors (GL 2.1 §2.5): the first error is kept until glGetError reads it.
+  void error(GLenum e) {
+    if (error_ == GL_NO_ERROR) error_ = e;
+  }
+  GLenum take_error() {
+    const GLenum e = error_;
+    error_ = GL_NO_ERROR;
+    return e;
+  }
+
+  // --- the window's buffers
+  void resize(int width, int height);
+  int width() const { return width_; }
+  int height() const { return height_; }
+  bool double_buffered() const { return double_buffer_; }
+  void swap_buffers();
+  // The image a viewer sees (the front buffer), RGBA8 rows bottom-up; runs queued work first.
+  const gpu::Texture2D& front() { finish(); return *color_[0]; }
+  void finish();
+  gpu::Texture2D* color_buffer(GLenum which);  // GL_FRONT / GL_BACK (nullptr if none)
+  gpu::Texture2D* depth_buffer() { return depth_.get(); }
+  bool has_depth() const { return has_depth_; }
+  bool has_stencil() const { return has_stencil_; }
+
+  // --- state
+  ServerState s;
+  ClientState c;
+  std::vector<PushedAttrib> attrib_stack;
+  std::vector<PushedClient> client_stack;
+  std::array<std::vector<glm::mat4>, 3> matrices;  // modelview, projection, texture; back() is current
+  int matrix_index() const {
+    return s.transform.matrix_mode == GL_MODELVIEW ? 0 : s.transform.matrix_mode == GL_PROJECTION ? 1 : 2;
+  }
+  glm::mat4& top() { return matrices[size_t(matrix_index())].back(); }
+  const glm::mat4& modelview() const { return matrices[0].back(); }
+  const glm::mat4& projection() const { return matrices[1].back(); }
+
+  std::unordered_map<GLuint, TextureObject> textures;  // 0 is the default texture
+  TextureObject& bound_texture() { return textures[s.texture.bound_2d]; }
+  GLuint next_texture_name = 1;
+
+  // Display lists.
+  std::unordered_map<GLuint, std::vector<ListCommand>> lists;
+  GLuint compiling_list = 0;  // nonzero inside glNewList
+  GLenum compile_mode = GL_COMPILE;
+  std::vector<ListCommand> compiling;
+  int list_depth = 0;
+  // When compiling, stores `cmd` in the list and returns whether it must also run now.
+  bool record(ListCommand cmd) {
+    if (compiling_list == 0) return true;
+    compiling.push_back(std::move(cmd));
+    return compile_mode == GL_COMPILE_AND_EXECUTE;
+  }
+  bool compiling_only() const { return compiling_list != 0 && compile_mode == GL_COMPILE; }
+
+  // Immediate mode.
+  bool in_begin = false;
+  GLenum begin_mode = GL_POINTS;
+  std::vector<FFVertex> prim;  // vertices since glBegin
+  void vertex(float x, float y, float z, float w);
+  void end();
+
+  // Sends pending vertices under the state they were given with; call before any state change.
+  void touch() {
+    close_quad_run();
+    if (!batch_.indices.empty()) send_batch();
+  }
+  // Draws vertices as independent primitives of one class (indices into `verts`).
+  void emit(PrimClass cls, std::vector<FFVertex>&& verts, std::vector<uint32_t>&& indices);
+  // Converts vertices given in glBegin order for `mode` into independent primitives.
+  void emit_mode(GLenum mode, std::vector<FFVertex>&& verts);
+
+  // Clears the draw buffer(s) as glClear with the current masks, scissor and values.
+  void clear(GLbitfield mask);
+
+  // Raster-position/pixel rectangles (glBitmap, glDrawPixels): RGBA8 pixels (rows bottom-up)
+  // drawn as fragments at window position (x, y), colour replaced by `color` when
+  // `use_color` (bitmaps), with `mask` alpha-like coverage (0 = no fragment).
+  void draw_pixels_rgba(float x, float y, int w, int h, const std::vector<uint8_t>& rgba, float zoom_x,
+                        float zoom_y, const glm::vec4* color);
+
+  // The texture a draw reads, or nullptr when texturing is off or the texture is incomplete.
+  TextureObject* texture_for_draw();
+
+  gpu::Context& gpu() { return *gpu_; }
+  const gpu::Framebuffer& framebuffer() const { return fb_; }
+
+ private:
+  struct Batch {
+    PrimClass cls = PrimClass::Triangles;
+    std::vector<FFVertex> verts;
+    std::vector<uint32_t> indices;
+  };
+  void send_batch();
+  void send_batch_unchecked();
+  // The gpu layer reports what it cannot do by exceptions; a GL program sees them as
+  // GL_OUT_OF_MEMORY (no memory) or GL_INVALID_OPERATION (anything else), never as a crash.
+  template <class Fn> void guarded(Fn&& fn) {
+    try {
+      fn();
+    } catch (const std::bad_alloc&) {
+      error(GL_OUT_OF_MEMORY);
+    } catch (const std::exception&) {
+      error(GL_INVALID_OPERATION);
+    }
+  }
+  void send_stippled_lines(const std::vector<FFVertex>& verts, const std::vector<uint32_t>& indices);
+  void close_quad_run();
+  void split_quads(const FFVertex* v, uint32_t n, bool along_v1v3, std::vector<FFVertex>& out,
+                   std::vector<uint32_t>& idx) const;
+  bool outside_view_volume(const FFVertex& v) const;
+  void build_uniforms(FFUniforms& u, TextureObject* tex) const;
+  gpu::RenderState render_state(bool for_clear) const;
+  void bind_draw_target();
+  void release_transient();
+
+  int width_ = 0, height_ = 0;
+  bool double_buffer_ = true, has_depth_ = true, has_stencil_ = true;
+  std::unique_ptr<gpu::Texture2D> color_[2];  // front, back
+  std::unique_ptr<gpu::Texture2D> depth_;
+  gpu::Framebuffer fb_;
+  GLenum fb_target_ = 0;  // which colour buffer fb_ draws to
+  std::unique_ptr<gpu::Context> gpu_;
+  Batch batch_;
+  std::vector<FFVertex> quad_run_;  // immediate-mode quads not yet cut (see split_quads)
+  bool quad_run_clipped_ = false;
+  // Buffers and textures referenced by queued draws: kept until the work has run.
+  std::vector<std::unique_ptr<gpu::Buffer>> transient_buffers_;
+  std::vector<std::unique_ptr<gpu::Texture2D>> transient_textures_;
+  size_t transient_bytes_ = 0;
+  GLenum error_ = GL_NO_ERROR;
+};
+
+// The context GL calls go to (set by GLUT, or by tessel::gl::make_current).
+Context* current();
+void make_current(Context* c);
+
+// Texture helpers (texture.cpp).
+bool rebuild_texture(TextureObject& t);
+
+}  // namespace tessel::gl
