@@ -1,0 +1,167 @@
+// GLUT without a display: pop-up menus (opened, walked with the pointer, chosen, drawn),
+// timers and idle in the headless clock, and the window queries.
+#include <GL/glut.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <vector>
+
+#include "../../src/glut/glut_internal.hpp"
+
+namespace {
+
+using tessel::glut::state;
+
+int g_chosen = 0, g_chosen_menu = 0;
+void on_menu(int value) {
+  g_chosen = value;
+  g_chosen_menu = glutGetMenu();
+}
+std::vector<int> g_fired;
+void on_timer(int value) { g_fired.push_back(value); }
+int g_idle = 0;
+void on_idle() { ++g_idle; }
+void on_display() {
+  glClearColor(0.2f, 0.3f, 0.4f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+}
+
+// One GLUT for the whole test binary (glutInit runs once per process).
+tessel::glut::Window& window() {
+  static int id = [] {
+    setenv("TESSEL_HEADLESS", "frames:1,out:.", 1);
+    int argc = 1;
+    char name[] = "test_glut";
+    char* argv[] = {name, nullptr};
+    glutInit(&argc, argv);
+    glutInitDisplayMode(GLUT_RGB | GLUT_DOUBLE);
+    glutInitWindowSize(200, 150);
+    const int w = glutCreateWindow("test");
+    glutDisplayFunc(on_display);
+    return w;
+  }();
+  return *tessel::glut::window(id);
+}
+
+// Item i of a menu opened at (x, y) is at y + 1 + 19 i .. (see menu.cpp).
+int item_y(int y, int i) { return y + 1 + 19 * i + 9; }
+
+TEST(GlutMenu, ChooseAnEntry) {
+  tessel::glut::Window& w = window();
+  const int m = glutCreateMenu(on_menu);
+  glutAddMenuEntry("Clear", 1);
+  glutAddMenuEntry("Quit", 2);
+  glutAttachMenu(GLUT_RIGHT_BUTTON);
+  EXPECT_EQ(w.menu_for_button[GLUT_RIGHT_BUTTON], m);
+  EXPECT_EQ(glutGet(GLUT_MENU_NUM_ITEMS), 2);
+  g_chosen = 0;
+  tessel::glut::menu_open(w, m, GLUT_RIGHT_BUTTON, 20, 10);
+  ASSERT_EQ(w.open_menus.size(), 1u);
+  tessel::glut::menu_motion(w, 30, item_y(10, 1));
+  EXPECT_EQ(w.open_menus[0].highlighted, 1);
+  tessel::glut::menu_release(w, 30, item_y(10, 1));
+  EXPECT_EQ(g_chosen, 2);
+  EXPECT_EQ(g_chosen_menu, m);  // glutGetMenu inside the callback names the menu
+  EXPECT_TRUE(w.open_menus.empty());
+  // Released outside every entry: nothing is chosen.
+  g_chosen = 0;
+  tessel::glut::menu_open(w, m, GLUT_RIGHT_BUTTON, 20, 10);
+  tessel::glut::menu_release(w, 190, 140);
+  EXPECT_EQ(g_chosen, 0);
+}
+
+TEST(GlutMenu, Submenus) {
+  tessel::glut::Window& w = window();
+  const int sub = glutCreateMenu(on_menu);
+  glutAddMenuEntry("Red", 10);
+  glutAddMenuEntry("Green", 11);
+  const int top = glutCreateMenu(on_menu);
+  glutAddMenuEntry("Reset", 1);
+  glutAddSubMenu("Colour", sub);
+  tessel::glut::menu_open(w, top, GLUT_RIGHT_BUTTON, 5, 5);
+  tessel::glut::menu_motion(w, 10, item_y(5, 1));  // over "Colour": the submenu opens
+  ASSERT_EQ(w.open_menus.size(), 2u);
+  const tessel::glut::OpenMenu& s = w.open_menus[1];
+  EXPECT_EQ(s.menu, sub);
+  tessel::glut::menu_motion(w, s.x + 5, item_y(s.y, 1));
+  g_chosen = 0;
+  tessel::glut::menu_release(w, s.x + 5, item_y(s.y, 1));
+  EXPECT_EQ(g_chosen, 11);
+  EXPECT_EQ(g_chosen_menu, sub);
+}
+
+TEST(GlutMenu, ChangeAndRemoveEntries) {
+  window();
+  glutCreateMenu(on_menu);
+  glutAddMenuEntry("a", 1);
+  glutAddMenuEntry("b", 2);
+  glutAddMenuEntry("c", 3);
+  glutChangeToMenuEntry(2, "B", 20);
+  glutRemoveMenuItem(1);
+  EXPECT_EQ(glutGet(GLUT_MENU_NUM_ITEMS), 2);
+  const tessel::glut::Menu* m = tessel::glut::menu(glutGetMenu());
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(m->items[0].label, "B");
+  EXPECT_EQ(m->items[0].value, 20);
+}
+
+TEST(GlutMenu, IsDrawnOverTheImage) {
+  tessel::glut::Window& w = window();
+  const int m = glutCreateMenu(on_menu);
+  glutAddMenuEntry("Wireframe", 1);
+  glutAddMenuEntry("Solid", 2);
+  tessel::glut::menu_open(w, m, GLUT_RIGHT_BUTTON, 30, 20);
+  tessel::glut::menu_motion(w, 40, item_y(20, 0));
+  std::vector<uint8_t> img(200 * 150 * 4, 0);
+  tessel::glut::menu_draw(w, img, 200, 150);
+  auto px = [&](int x, int y) { return &img[(size_t(y) * 200 + size_t(x)) * 4]; };
+  EXPECT_EQ(px(0, 0)[0], 0);  // outside the menu: untouched
+  EXPECT_EQ(px(35, item_y(20, 0))[2], 204);  // the highlighted entry's blue
+  EXPECT_EQ(px(35, item_y(20, 1))[0], 226);  // the menu's grey
+  // Text: dark pixels inside the second entry's row.
+  int dark = 0;
+  for (int y = 20 + 1 + 19; y < 20 + 1 + 38; ++y)
+    for (int x = 34; x < 100; ++x) dark += px(x, y)[0] < 60;
+  EXPECT_GT(dark, 20);
+  tessel::glut::menu_release(w, 199, 149);
+}
+
+TEST(GlutHeadless, TimersAndIdleInVirtualTime) {
+  window();
+  state().virtual_ms = 0.0;
+  g_fired.clear();
+  g_idle = 0;
+  glutTimerFunc(20, on_timer, 2);
+  glutTimerFunc(0, on_timer, 1);
+  glutTimerFunc(20, on_timer, 3);  // same time as 2: registration order
+  glutIdleFunc(on_idle);
+  tessel::glut::run_timers_and_idle();
+  EXPECT_EQ(g_fired, std::vector<int>({1}));
+  EXPECT_EQ(g_idle, 1);
+  state().virtual_ms += 1000.0 / 60.0;  // 16.7 ms: not yet
+  tessel::glut::run_timers_and_idle();
+  EXPECT_EQ(g_fired.size(), 1u);
+  state().virtual_ms += 1000.0 / 60.0;  // 33.3 ms
+  tessel::glut::run_timers_and_idle();
+  EXPECT_EQ(g_fired, std::vector<int>({1, 2, 3}));
+  EXPECT_EQ(g_idle, 3);
+  EXPECT_EQ(glutGet(GLUT_ELAPSED_TIME), 33);
+  glutIdleFunc(nullptr);
+}
+
+TEST(GlutHeadless, WindowQueriesAndDisplay) {
+  tessel::glut::Window& w = window();
+  EXPECT_EQ(glutGet(GLUT_WINDOW_WIDTH), 200);
+  EXPECT_EQ(glutGet(GLUT_WINDOW_HEIGHT), 150);
+  EXPECT_EQ(glutGet(GLUT_WINDOW_DOUBLEBUFFER), 1);
+  w.redisplay = true;
+  tessel::glut::service_window(w);
+  glutSwapBuffers();
+  const auto& front = w.context->front();
+  const auto* p = reinterpret_cast<const uint8_t*>(front.level(0).data.data());
+  EXPECT_EQ(p[0], 51);   // 0.2 * 255
+  EXPECT_EQ(p[2], 102);  // 0.4 * 255
+}
+
+}  // namespace
