@@ -13,8 +13,10 @@
 #include <stdexcept>
 #include <unistd.h>
 
+#include "fixed_gl.hpp"
 #include "scene_phong.hpp"
 #include "scenes.hpp"
+#include "tessel/gl/offscreen.hpp"
 #include "tessel/gpu/context.hpp"
 #include "tessel/gpu/image.hpp"
 
@@ -68,8 +70,35 @@ Run start_run(const char* renderer, const scenes::Scene& s, int threads) {
   return r;
 }
 
+// The fixed-function scene on Tessel: the same OpenGL 1.x calls as the peer's
+// (bench/scenes/fixed_gl.hpp), through Tessel's GL layer.
+Run run_tessel_fixed(const scenes::Scene& s, int threads, int frames, int warmup) {
+  reset_peak_rss();
+  Run r = start_run("tessel", s, threads);
+  tessel::gl::Offscreen gl(s.width, s.height, threads, true, false);
+  gl.make_current();
+  scenes::fixed_setup(s);
+  auto one = [&] {
+    scenes::fixed_frame(s);
+    glFinish();
+  };
+  for (int i = 0; i < warmup; ++i) one();
+  gl.reset_stats();
+  for (int i = 0; i < frames; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    one();
+    r.ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  r.ms_median = median(r.ms);
+  r.fragments = gl.fragments_shaded() / uint64_t(std::max(1, frames));
+  r.rgba = gl.read_rgba8();
+  r.peak_rss_mb = peak_rss_mb();
+  return r;
+}
+
 // One scene on Tessel: `warmup` frames, then `frames` timed frames of clear + draws + finish.
 Run run_tessel(const scenes::Scene& s, int threads, int frames, int warmup, bool instanced) {
+  if (s.fixed_function) return run_tessel_fixed(s, threads, frames, warmup);
   reset_peak_rss();
   Run r = start_run("tessel", s, threads);
 

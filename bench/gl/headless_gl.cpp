@@ -206,7 +206,19 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string* why,
                                    EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                    EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                    EGL_NONE};
-    EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, core_attribs);
+    const EGLint legacy_attribs[] = {EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                     EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT, EGL_NONE};
+    EGLContext ctx = EGL_NO_CONTEXT;
+    if (options.compat_profile) {
+      ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, legacy_attribs);
+      if (ctx == EGL_NO_CONTEXT) {
+        *why = egl_err("eglCreateContext(compatibility profile)");
+        return nullptr;
+      }
+      hc->core_ = false;
+    } else {
+      ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, core_attribs);
+    }
     if (ctx == EGL_NO_CONTEXT) {
       const std::string core_err = egl_err("eglCreateContext(3.3 core)");
       if (!options.compat_fallback) {

@@ -18,6 +18,8 @@ namespace tessel::gl {
 struct HeadlessOptions {
   // If a desktop GL 3.3 core context is refused, try a 3.3 compatibility-profile context.
   bool compat_fallback = false;
+  // Ask for a compatibility-profile context first (for OpenGL 1.x fixed function).
+  bool compat_profile = false;
 };
 
 // A desktop GL 3.3 context on Mesa llvmpipe, current on the creating thread, with no surface

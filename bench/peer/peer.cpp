@@ -16,6 +16,8 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_image_write.h>
 
+#include "fixed_gl.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <chrono>
@@ -24,6 +26,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -233,11 +236,92 @@ const void* byte_offset(size_t bytes) { return reinterpret_cast<const void*>(byt
 
 // ---- The benchmark -------------------------------------------------------------------------
 
+// Warm-up and timed frames, the last frame read back (and written to --image), and the one
+// line of JSON on stdout.
+int measure(const Options& opt, const scenes::Scene& scene, const std::string& renderer, bool instanced,
+            const std::function<void()>& frame) {
+  const int W = opt.width, H = opt.height;
+  for (int i = 0; i < opt.warmup; ++i) frame();
+  check_gl("warm-up frames");
+  std::vector<double> ms;
+  for (int i = 0; i < opt.frames; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    frame();
+    const auto t1 = std::chrono::steady_clock::now();
+    ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+  }
+  check_gl("timed frames");
+
+  // Median (mean of the two middle values for an even count) and minimum.
+  std::vector<double> sorted = ms;
+  std::sort(sorted.begin(), sorted.end());
+  const size_t n = sorted.size();
+  const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+
+  // Read back the last frame (rows bottom-up) and write it as a PNG, top row first.
+  std::vector<uint8_t> pixels(size_t(W) * size_t(H) * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  check_gl("glReadPixels");
+  if (!opt.image.empty()) {
+    const std::string tmp = opt.image + ".tmp";
+    stbi_flip_vertically_on_write(1);
+    if (!stbi_write_png(tmp.c_str(), W, H, 4, pixels.data(), W * 4)) {
+      std::remove(tmp.c_str());
+      throw std::runtime_error("cannot write " + tmp);
+    }
+    if (std::rename(tmp.c_str(), opt.image.c_str()) != 0) {
+      std::remove(tmp.c_str());
+      throw std::runtime_error("cannot rename " + tmp + " to " + opt.image + ": " +
+                               std::strerror(errno));
+    }
+  }
+
+  // The result: exactly one line of JSON on stdout.
+  std::string ms_list;
+  for (const double v : ms) {
+    if (!ms_list.empty()) ms_list += ',';
+    ms_list += fmt(v);
+  }
+  std::string json = "{\"scene\":" + json_string(scene.name) +
+                     ",\"width\":" + std::to_string(W) + ",\"height\":" + std::to_string(H) +
+                     ",\"threads\":" + std::to_string(opt.threads) +
+                     ",\"instanced\":" + (instanced ? "true" : "false") +
+                     ",\"frames\":" + std::to_string(opt.frames) +
+                     ",\"ms_median\":" + fmt(median) + ",\"ms_min\":" + fmt(sorted.front()) +
+                     ",\"ms\":[" + ms_list + "],\"peak_rss_mb\":" + fmt(peak_rss_mb(), "%.1f") +
+                     ",\"triangles\":" + std::to_string(scene.triangles()) +
+                     ",\"renderer\":" + json_string(renderer) +
+                     ",\"image\":" + json_string(opt.image) + "}\n";
+  std::fputs(json.c_str(), stdout);
+  std::fflush(stdout);
+  return 0;
+}
+
+// The fixed-100k scene through OpenGL 1.x fixed function (a compatibility context), with the
+// calls of bench/scenes/fixed_gl.hpp and client-side vertex arrays.
+int run_fixed(const Options& opt, const scenes::Scene& scene, const std::string& renderer, GLuint fbo,
+              const GLuint rb[2]) {
+  glDisable(GL_DITHER);
+  scenes::fixed_setup(scene);
+  check_gl("fixed-function setup");
+  const int rc = measure(opt, scene, renderer, false, [&] {
+    scenes::fixed_frame(scene);
+    glFinish();
+  });
+  glDeleteRenderbuffers(2, rb);
+  glDeleteFramebuffers(1, &fbo);
+  return rc;
+}
+
 int run(const Options& opt, const scenes::Scene& scene) {
   // EGL surfaceless (or a fallback route), desktop GL 3.3 core, current, on llvmpipe; torn
   // down when `gl` goes out of scope (also on error paths).
   std::string why;
-  const auto gl = tessel::gl::HeadlessContext::create(&why);
+  tessel::gl::HeadlessOptions hopt;
+  hopt.compat_profile = scene.fixed_function;  // fixed function needs a compatibility context
+  const auto gl = tessel::gl::HeadlessContext::create(&why, hopt);
   if (!gl) throw std::runtime_error(why);
   const std::string renderer = gl->renderer();
   const int W = opt.width, H = opt.height;
@@ -257,6 +341,10 @@ int run(const Options& opt, const scenes::Scene& scene) {
     throw std::runtime_error("framebuffer incomplete");
   glViewport(0, 0, W, H);
   check_gl("framebuffer setup");
+
+  // The fixed-function scene: the OpenGL 1.x calls of bench/scenes/fixed_gl.hpp with client
+  // vertex arrays, exactly as Tessel gets them.
+  if (scene.fixed_function) return run_fixed(opt, scene, renderer, fbo, rb);
 
   // Geometry: one VAO with the interleaved vertex buffer and the index buffer.
   GLuint vao = 0, buf[3] = {0, 0, 0};  // vertices, indices, instances
@@ -357,43 +445,7 @@ int run(const Options& opt, const scenes::Scene& scene) {
     glFinish();
   };
 
-  for (int i = 0; i < opt.warmup; ++i) frame();
-  check_gl("warm-up frames");
-  std::vector<double> ms;
-  for (int i = 0; i < opt.frames; ++i) {
-    const auto t0 = std::chrono::steady_clock::now();
-    frame();
-    const auto t1 = std::chrono::steady_clock::now();
-    ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
-  }
-  check_gl("timed frames");
-
-  // Median (mean of the two middle values for an even count) and minimum.
-  std::vector<double> sorted = ms;
-  std::sort(sorted.begin(), sorted.end());
-  const size_t n = sorted.size();
-  const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-
-  // Read back the last frame (rows bottom-up) and write it as a PNG, top row first.
-  std::vector<uint8_t> pixels(size_t(W) * size_t(H) * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-  check_gl("glReadPixels");
-  if (!opt.image.empty()) {
-    const std::string tmp = opt.image + ".tmp";
-    stbi_flip_vertically_on_write(1);
-    if (!stbi_write_png(tmp.c_str(), W, H, 4, pixels.data(), W * 4)) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error("cannot write " + tmp);
-    }
-    if (std::rename(tmp.c_str(), opt.image.c_str()) != 0) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error("cannot rename " + tmp + " to " + opt.image + ": " +
-                               std::strerror(errno));
-    }
-  }
-
+  const int rc = measure(opt, scene, renderer, instanced, frame);
   glDeleteProgram(prog);
   if (tex) glDeleteTextures(1, &tex);
   glDeleteBuffers(3, buf);
@@ -401,25 +453,7 @@ int run(const Options& opt, const scenes::Scene& scene) {
   glDeleteRenderbuffers(2, rb);
   glDeleteFramebuffers(1, &fbo);
 
-  // The result: exactly one line of JSON on stdout.
-  std::string ms_list;
-  for (const double v : ms) {
-    if (!ms_list.empty()) ms_list += ',';
-    ms_list += fmt(v);
-  }
-  std::string json = "{\"scene\":" + json_string(scene.name) +
-                     ",\"width\":" + std::to_string(W) + ",\"height\":" + std::to_string(H) +
-                     ",\"threads\":" + std::to_string(opt.threads) +
-                     ",\"instanced\":" + (instanced ? "true" : "false") +
-                     ",\"frames\":" + std::to_string(opt.frames) +
-                     ",\"ms_median\":" + fmt(median) + ",\"ms_min\":" + fmt(sorted.front()) +
-                     ",\"ms\":[" + ms_list + "],\"peak_rss_mb\":" + fmt(peak_rss_mb(), "%.1f") +
-                     ",\"triangles\":" + std::to_string(scene.triangles()) +
-                     ",\"renderer\":" + json_string(renderer) +
-                     ",\"image\":" + json_string(opt.image) + "}\n";
-  std::fputs(json.c_str(), stdout);
-  std::fflush(stdout);
-  return 0;
+  return rc;
 }
 
 }  // namespace

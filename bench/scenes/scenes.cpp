@@ -96,7 +96,7 @@ uint64_t Scene::triangles() const {
 }
 
 const std::vector<std::string>& scene_names() {
-  static const std::vector<std::string> names = {"spheres-100k", "spheres-1m", "fill", "textured"};
+  static const std::vector<std::string> names = {"spheres-100k", "spheres-1m", "fill", "textured", "fixed-100k"};
   return names;
 }
 
@@ -116,6 +116,10 @@ Scene make_scene(const std::string& name, int width, int height) {
   else if (name == "textured") {
     s = fill(aspect);
     s.textured = true;
+  } else if (name == "fixed-100k") {
+    s = spheres(25, 21);
+    s.fixed_function = true;
+    s.instanceable = false;
   } else {
     std::string known;
     for (const auto& n : scene_names()) known += (known.empty() ? "" : ", ") + n;

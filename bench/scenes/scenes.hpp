@@ -37,6 +37,9 @@ struct Scene {
   glm::mat4 projection{1.0f};  // gluPerspective(45, w/h, 0.5, 100)
   glm::vec3 light{0.0f};       // point light position, world space
   bool textured = false;       // albedo = the scene texture at uv (texture_rgba8())
+  // Drawn through OpenGL 1.x fixed-function lighting with vertex arrays (fixed_gl.hpp)
+  // instead of the Blinn-Phong shader.
+  bool fixed_function = false;
   // Every draw uses the same index range (the sphere grid): can be one instanced draw.
   bool instanceable = false;
   uint64_t triangles() const;  // per frame
@@ -46,7 +49,7 @@ struct Scene {
 // seam duplicated, counter-clockwise seen from outside); the demo scene uses it too.
 Mesh sphere_mesh(int slices, int stacks);
 
-// "spheres-100k", "spheres-1m", "fill", "textured" (fixed-100k needs the GL 1.x layer).
+// "spheres-100k", "spheres-1m", "fill", "textured", "fixed-100k".
 const std::vector<std::string>& scene_names();
 bool is_scene(const std::string& name);
 // Builds a scene for a width x height image (the fill quads depend on the aspect ratio).

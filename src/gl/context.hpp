@@ -332,6 +332,7 @@ class Context {
   TextureObject* texture_for_draw();
 
   gpu::Context& gpu() { return *gpu_; }
+  const gpu::Context& gpu() const { return *gpu_; }
   const gpu::Framebuffer& framebuffer() const { return fb_; }
 
  private:
@@ -383,6 +384,7 @@ class Context {
 // The context GL calls go to (set by GLUT, or by tessel::gl::make_current).
 Context* current();
 void make_current(Context* c);
+inline void make_current_context(Context* c) { make_current(c); }
 
 // Texture helpers (texture.cpp).
 bool rebuild_texture(TextureObject& t);
