@@ -184,7 +184,8 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_LIST_MODE: e(c.compiling_list ? c.compile_mode : 0); return true;
     case GL_ATTRIB_STACK_DEPTH: put(out, {double(c.attrib_stack.size())}); return true;
     case GL_CLIENT_ATTRIB_STACK_DEPTH: put(out, {double(c.client_stack.size())}); return true;
-    case GL_RENDER_MODE: e(GL_RENDER); return true;
+    case GL_RENDER_MODE: e(c.render_mode()); return true;
+    case GL_NAME_STACK_DEPTH: put(out, {double(c.name_stack().size())}); return true;
     // Vertex arrays.
     case GL_VERTEX_ARRAY: b(c.c.vertex.enabled); return true;
     case GL_VERTEX_ARRAY_SIZE: put(out, {double(c.c.vertex.size)}); return true;

@@ -1,8 +1,8 @@
 // The rest of GL 1.1: the accumulation buffer (implemented), colour-index calls (kept as
 // state; they do not affect an RGBA window, GL 2.1 §2.7), pixel maps (kept and queryable),
-// and evaluators, selection and feedback, which Tessel does not implement yet: their calls
-// are accepted and validated, draw nothing, and glRenderMode reports zero hits
-// (docs/gl-coverage.md lists them as not supported).
+// and evaluators and feedback, which Tessel does not implement yet: their calls are
+// accepted, draw nothing (docs/gl-coverage.md lists them as not supported). Selection mode
+// is in select.cpp.
 #include <GL/gl.h>
 
 #include <algorithm>
@@ -77,7 +77,6 @@ std::map<GLenum, std::vector<float>>& pixel_maps() {
 }
 bool valid_map(GLenum m) { return m >= GL_PIXEL_MAP_I_TO_I && m <= GL_PIXEL_MAP_A_TO_A; }
 
-GLenum g_render_mode = GL_RENDER;  // kept for a future selection mode
 
 }  // namespace
 
@@ -176,29 +175,11 @@ void GLAPIENTRY glEvalMesh2(GLenum, GLint, GLint, GLint, GLint) {}
 void GLAPIENTRY glEvalPoint1(GLint) {}
 void GLAPIENTRY glEvalPoint2(GLint, GLint) {}
 
-// Selection and feedback: not implemented; rendering continues as in GL_RENDER.
-GLint GLAPIENTRY glRenderMode(GLenum mode) {
-  GL_CONTEXT(0);
-  GL_OUTSIDE_BEGIN(0);
-  if (mode != GL_RENDER && mode != GL_SELECT && mode != GL_FEEDBACK) {
-    c.error(GL_INVALID_ENUM);
-    return 0;
-  }
-  g_render_mode = mode;
-  return 0;
-}
-void GLAPIENTRY glSelectBuffer(GLsizei size, GLuint*) {
-  GL_CONTEXT();
-  if (size < 0) c.error(GL_INVALID_VALUE);
-}
+// Feedback: not implemented (glRenderMode(GL_FEEDBACK) draws nothing and returns 0).
 void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum, GLfloat*) {
   GL_CONTEXT();
   if (size < 0) c.error(GL_INVALID_VALUE);
 }
 void GLAPIENTRY glPassThrough(GLfloat) {}
-void GLAPIENTRY glInitNames(void) {}
-void GLAPIENTRY glLoadName(GLuint) {}
-void GLAPIENTRY glPushName(GLuint) {}
-void GLAPIENTRY glPopName(void) {}
 
 }  // extern "C"

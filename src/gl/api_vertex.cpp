@@ -56,6 +56,11 @@ void raster_pos(Context& c, float x, float y, float z, float w) {
       valid = false;
   cur.raster_valid = valid;
   if (!valid) return;
+  if (c.render_mode() == GL_SELECT) {
+    // A valid raster position is a selection hit (GL 2.1 §5.2).
+    const ViewportState& v = c.s.viewport;
+    c.select_hit(float(v.near_ + (v.far_ - v.near_) * (double(clip.z / clip.w) + 1.0) * 0.5));
+  }
   const ViewportState& v = c.s.viewport;
   const glm::vec3 ndc = glm::vec3(clip) / clip.w;
   cur.raster_pos = glm::vec4(float(v.x) + (ndc.x + 1.0f) * 0.5f * float(v.width),

@@ -375,6 +375,11 @@ void Context::close_quad_run() {
 void Context::emit(PrimClass cls, std::vector<FFVertex>&& verts, std::vector<uint32_t>&& indices) {
   if (indices.empty() || compiling_only()) return;
   close_quad_run();  // earlier quads go first
+  if (render_mode_ != GL_RENDER) {
+    // Selection mode tests instead of drawing; feedback mode (not implemented) draws nothing.
+    if (render_mode_ == GL_SELECT) select_primitives(cls, verts, indices);
+    return;
+  }
   if (!batch_.indices.empty() && batch_.cls != cls) send_batch();
   if (batch_.indices.empty()) {
     batch_.cls = cls;

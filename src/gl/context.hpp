@@ -331,6 +331,17 @@ class Context {
   // The texture a draw reads, or nullptr when texturing is off or the texture is incomplete.
   TextureObject* texture_for_draw();
 
+  // Selection mode (select.cpp).
+  GLenum render_mode() const { return render_mode_; }
+  GLint set_render_mode(GLenum mode);  // returns the hit count of the mode being left
+  void set_select_buffer(GLuint* buffer, GLsizei size) {
+    sel_buffer_ = buffer;
+    sel_size_ = size;
+  }
+  std::vector<GLuint>& name_stack() { return sel_names_; }
+  void write_hit_record();
+  void select_hit(float window_z);
+
   gpu::Context& gpu() { return *gpu_; }
   const gpu::Context& gpu() const { return *gpu_; }
   const gpu::Framebuffer& framebuffer() const { return fb_; }
@@ -359,6 +370,7 @@ class Context {
   void split_quads(const FFVertex* v, uint32_t n, bool along_v1v3, std::vector<FFVertex>& out,
                    std::vector<uint32_t>& idx) const;
   bool outside_view_volume(const FFVertex& v) const;
+  void select_primitives(PrimClass cls, const std::vector<FFVertex>& verts, const std::vector<uint32_t>& idx);
   void build_uniforms(FFUniforms& u, TextureObject* tex) const;
   gpu::RenderState render_state(bool for_clear) const;
   void bind_draw_target();
@@ -379,6 +391,14 @@ class Context {
   std::vector<std::unique_ptr<gpu::Texture2D>> transient_textures_;
   size_t transient_bytes_ = 0;
   GLenum error_ = GL_NO_ERROR;
+  GLenum render_mode_ = GL_RENDER;
+  GLuint* sel_buffer_ = nullptr;
+  GLsizei sel_size_ = 0;
+  size_t sel_written_ = 0;
+  GLint sel_hits_ = 0;
+  bool sel_overflow_ = false, sel_hit_ = false;
+  float sel_zmin_ = 0.0f, sel_zmax_ = 0.0f;
+  std::vector<GLuint> sel_names_;
 };
 
 // The context GL calls go to (set by GLUT, or by tessel::gl::make_current).

@@ -186,6 +186,63 @@ TEST_F(GLTest, DrawingReachesTheBuffers) {
   EXPECT_STREQ(reinterpret_cast<const char*>(glGetString(GL_VENDOR)), "Tessel");
 }
 
+// Selection mode: hit records (names, depths scaled to 2^32 - 1), overflow, name stack errors.
+TEST_F(GLTest, SelectionHitRecords) {
+  GLuint buf[64] = {};
+  glRenderMode(GL_SELECT);  // no buffer yet
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glSelectBuffer(64, buf);
+  EXPECT_EQ(glRenderMode(GL_SELECT), 0);
+  EXPECT_EQ(get_int(GL_RENDER_MODE), GL_SELECT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(-1, 1, -1, 1, -1, 1);  // z_window = (1 - z) / 2 for these (z_ndc = -z)
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glInitNames();
+  glPushName(10);
+  glRectf(-0.5f, -0.5f, 0.5f, 0.5f);  // z = 0: depth 0.5
+  glPushName(11);
+  glBegin(GL_POINTS);
+  glVertex3f(0, 0, 0.5f);  // depth 0.25
+  glVertex3f(3, 0, 0);     // outside: no hit
+  glEnd();
+  glPopName();
+  glLoadName(12);
+  glBegin(GL_LINES);
+  glVertex2f(5, 5);  // wholly outside
+  glVertex2f(6, 6);
+  glEnd();
+  EXPECT_EQ(glRenderMode(GL_RENDER), 2);
+  EXPECT_EQ(buf[0], 1u);  // names
+  EXPECT_EQ(buf[1], 2147483648u);  // 0.5 * (2^32 - 1), rounded
+  EXPECT_EQ(buf[2], 2147483648u);
+  EXPECT_EQ(buf[3], 10u);
+  EXPECT_EQ(buf[4], 2u);
+  EXPECT_EQ(buf[5], 1073741824u);  // 0.25
+  EXPECT_EQ(buf[7], 10u);
+  EXPECT_EQ(buf[8], 11u);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  // Too small a buffer: glRenderMode returns -1.
+  glSelectBuffer(2, buf);
+  glRenderMode(GL_SELECT);
+  glInitNames();
+  glPushName(1);
+  glRectf(-0.5f, -0.5f, 0.5f, 0.5f);
+  EXPECT_EQ(glRenderMode(GL_RENDER), -1);
+  // Name stack errors in selection mode.
+  glSelectBuffer(64, buf);
+  glRenderMode(GL_SELECT);
+  glInitNames();
+  glLoadName(3);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glPopName();
+  EXPECT_EQ(glGetError(), GLenum(GL_STACK_UNDERFLOW));
+  glSelectBuffer(64, buf);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glRenderMode(GL_RENDER);
+}
+
 // Thousands of calls with random arguments: enums drawn from a pool of valid and invalid
 // values, numbers including negatives, NaN and huge ones, and calls inside glBegin/glEnd.
 TEST_F(GLTest, RandomCallSequenceNeverCrashes) {

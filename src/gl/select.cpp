@@ -1,0 +1,225 @@
+// Selection mode (GL 2.1 §5.2): glRenderMode(GL_SELECT), glSelectBuffer and the name stack.
+// In selection mode nothing is drawn; every point, line or polygon that survives culling and
+// clipping (and every valid glRasterPos) is a hit for the names on the stack, which records
+// the smallest and largest window z of what was hit. A hit record — the number of names, the
+// minimum and maximum depth scaled to [0, 2^32 - 1], then the names from the bottom of the
+// stack — is written when the name stack changes or selection mode ends.
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "api.hpp"
+
+namespace tessel::gl {
+
+namespace {
+constexpr int kMaxNameStack = 64;
+
+GLuint scaled_depth(float z) {
+  const double d = std::clamp(double(z), 0.0, 1.0);
+  return GLuint(std::llround(d * 4294967295.0));
+}
+
+// Sutherland–Hodgman against one plane (dot(plane, v) >= 0 inside) in clip space.
+void clip_against(std::vector<glm::vec4>& poly, const glm::vec4& plane) {
+  std::vector<glm::vec4> out;
+  const size_t n = poly.size();
+  for (size_t i = 0; i < n; ++i) {
+    const glm::vec4 &a = poly[i], &b = poly[(i + 1) % n];
+    const float da = glm::dot(plane, a), db = glm::dot(plane, b);
+    if (da >= 0.0f) out.push_back(a);
+    if ((da >= 0.0f) != (db >= 0.0f)) out.push_back(a + (b - a) * (da / (da - db)));
+  }
+  poly.swap(out);
+}
+}  // namespace
+
+void Context::write_hit_record() {
+  if (!sel_hit_) return;
+  sel_hit_ = false;
+  const size_t need = 3 + sel_names_.size();
+  if (sel_overflow_ || sel_written_ + need > size_t(std::max(0, sel_size_))) {
+    sel_overflow_ = true;
+    return;
+  }
+  GLuint* p = sel_buffer_ + sel_written_;
+  p[0] = GLuint(sel_names_.size());
+  p[1] = scaled_depth(sel_zmin_);
+  p[2] = scaled_depth(sel_zmax_);
+  std::copy(sel_names_.begin(), sel_names_.end(), p + 3);
+  sel_written_ += need;
+  ++sel_hits_;
+}
+
+void Context::select_hit(float z) {
+  if (!sel_hit_) {
+    sel_hit_ = true;
+    sel_zmin_ = sel_zmax_ = z;
+  } else {
+    sel_zmin_ = std::min(sel_zmin_, z);
+    sel_zmax_ = std::max(sel_zmax_, z);
+  }
+}
+
+// The primitives of one emission, tested instead of drawn: culled as they would be, clipped
+// against the view volume and the user planes; what is left is a hit at its window depths.
+void Context::select_primitives(PrimClass cls, const std::vector<FFVertex>& verts, const std::vector<uint32_t>& idx) {
+  const glm::mat4& mv = modelview();
+  const glm::mat4 mvp = projection() * mv;
+  const size_t per = cls == PrimClass::Points ? 1 : cls == PrimClass::Lines ? 2 : 3;
+  std::vector<glm::vec4> planes = {glm::vec4(1, 0, 0, 1), glm::vec4(-1, 0, 0, 1), glm::vec4(0, 1, 0, 1),
+                                   glm::vec4(0, -1, 0, 1), glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, -1, 1)};
+  const glm::mat4 inv_p = glm::inverse(projection());
+  for (int i = 0; i < kMaxClipPlanes; ++i)
+    if (s.transform.clip_enabled[size_t(i)]) planes.push_back(glm::vec4(s.transform.clip_plane[size_t(i)]) * inv_p);
+  const ViewportState& vp = s.viewport;
+  std::vector<glm::vec4> poly;
+  for (size_t k = 0; k + per <= idx.size(); k += per) {
+    poly.clear();
+    for (size_t j = 0; j < per; ++j) {
+      const FFVertex& v = verts[idx[k + j]];
+      poly.push_back(mvp * glm::vec4(v.pos[0], v.pos[1], v.pos[2], v.pos[3]));
+    }
+    if (per == 3 && s.polygon.cull) {
+      // Facing from the window-space area (GL 2.1 §2.14.1, eq. 2.6), before clipping.
+      float area = 0.0f;
+      bool ok = true;
+      glm::vec2 w[3];
+      for (int j = 0; j < 3; ++j) {
+        if (!(poly[size_t(j)].w > 0.0f)) ok = false;
+        w[j] = glm::vec2(poly[size_t(j)]) / poly[size_t(j)].w;
+      }
+      if (ok) {
+        area = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[2].x - w[0].x) * (w[1].y - w[0].y);
+        const bool front = (s.polygon.front_face == GL_CCW) == (area > 0.0f);
+        const GLenum cf = s.polygon.cull_face;
+        if (cf == GL_FRONT_AND_BACK || (cf == GL_FRONT && front) || (cf == GL_BACK && !front)) continue;
+      }
+    }
+    if (per == 1) {
+      bool inside = true;
+      for (const glm::vec4& p : planes) inside = inside && glm::dot(p, poly[0]) >= 0.0f;
+      if (!inside) continue;
+    } else {
+      for (const glm::vec4& p : planes) {
+        if (per == 2 && poly.size() == 2) {
+          // A segment: clip its ends along the line.
+          const float da = glm::dot(p, poly[0]), db = glm::dot(p, poly[1]);
+          if (da < 0.0f && db < 0.0f) {
+            poly.clear();
+            break;
+          }
+          if (da < 0.0f) poly[0] = poly[0] + (poly[1] - poly[0]) * (da / (da - db));
+          else if (db < 0.0f) poly[1] = poly[0] + (poly[1] - poly[0]) * (da / (da - db));
+        } else {
+          clip_against(poly, p);
+          if (poly.empty()) break;
+        }
+      }
+      if (poly.empty()) continue;
+    }
+    for (const glm::vec4& p : poly) {
+      if (!(p.w != 0.0f)) continue;
+      const float z = float(vp.near_ + (vp.far_ - vp.near_) * (double(p.z / p.w) + 1.0) * 0.5);
+      select_hit(z);
+    }
+  }
+}
+
+namespace {
+
+void name_op(Context& c, int op, GLuint name) {
+  GL_OUTSIDE_BEGIN();
+  if (c.render_mode() != GL_SELECT) return;  // the name stack is ignored outside selection mode
+  c.touch();                                  // quads still waiting to be cut are tested first
+  auto& names = c.name_stack();
+  switch (op) {
+    case 0:  // glInitNames
+      c.write_hit_record();
+      names.clear();
+      break;
+    case 1:  // glLoadName
+      if (names.empty()) return c.error(GL_INVALID_OPERATION);
+      c.write_hit_record();
+      names.back() = name;
+      break;
+    case 2:  // glPushName
+      if (int(names.size()) >= kMaxNameStack) return c.error(GL_STACK_OVERFLOW);
+      c.write_hit_record();
+      names.push_back(name);
+      break;
+    default:  // glPopName
+      if (names.empty()) return c.error(GL_STACK_UNDERFLOW);
+      c.write_hit_record();
+      names.pop_back();
+      break;
+  }
+}
+
+}  // namespace
+
+GLint Context::set_render_mode(GLenum mode) {
+  if (mode != GL_RENDER && mode != GL_SELECT && mode != GL_FEEDBACK) {
+    error(GL_INVALID_ENUM);
+    return 0;
+  }
+  if (mode == GL_SELECT && !sel_buffer_) {
+    error(GL_INVALID_OPERATION);
+    return 0;
+  }
+  touch();
+  GLint result = 0;
+  if (render_mode_ == GL_SELECT) {
+    write_hit_record();
+    result = sel_overflow_ ? -1 : sel_hits_;
+  }
+  render_mode_ = mode;
+  sel_written_ = 0;
+  sel_hits_ = 0;
+  sel_overflow_ = false;
+  sel_hit_ = false;
+  if (mode == GL_SELECT) sel_names_.clear();
+  return result;
+}
+
+}  // namespace tessel::gl
+
+using namespace tessel::gl;
+
+extern "C" {
+
+GLint GLAPIENTRY glRenderMode(GLenum mode) {
+  GL_CONTEXT(0);
+  GL_OUTSIDE_BEGIN(0);
+  return c.set_render_mode(mode);
+}
+void GLAPIENTRY glSelectBuffer(GLsizei size, GLuint* buffer) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  if (size < 0) return c.error(GL_INVALID_VALUE);
+  if (c.render_mode() == GL_SELECT) return c.error(GL_INVALID_OPERATION);
+  c.set_select_buffer(buffer, size);
+}
+void GLAPIENTRY glInitNames(void) {
+  GL_CONTEXT();
+  GL_LISTED(name_op(c, 0, 0));
+  name_op(c, 0, 0);
+}
+void GLAPIENTRY glLoadName(GLuint name) {
+  GL_CONTEXT();
+  GL_LISTED(name_op(c, 1, name));
+  name_op(c, 1, name);
+}
+void GLAPIENTRY glPushName(GLuint name) {
+  GL_CONTEXT();
+  GL_LISTED(name_op(c, 2, name));
+  name_op(c, 2, name);
+}
+void GLAPIENTRY glPopName(void) {
+  GL_CONTEXT();
+  GL_LISTED(name_op(c, 3, 0));
+  name_op(c, 3, 0);
+}
+
+}  // extern "C"
