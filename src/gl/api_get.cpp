@@ -37,6 +37,8 @@ bool query(Context& c, GLenum pname, Values& out) {
   if (pname >= GL_LIGHT0 && pname < GL_LIGHT0 + kMaxLights) return b(s.light.enabled[pname - GL_LIGHT0]), true;
   if (pname >= GL_CLIP_PLANE0 && pname < GL_CLIP_PLANE0 + kMaxClipPlanes)
     return b(s.transform.clip_enabled[pname - GL_CLIP_PLANE0]), true;
+  if (pname >= GL_MAP1_COLOR_4 && pname <= GL_MAP1_VERTEX_4) return b(s.eval.map1_enabled[pname - GL_MAP1_COLOR_4]), true;
+  if (pname >= GL_MAP2_COLOR_4 && pname <= GL_MAP2_VERTEX_4) return b(s.eval.map2_enabled[pname - GL_MAP2_COLOR_4]), true;
   switch (pname) {
     // Current values.
     case GL_CURRENT_COLOR: out.kind = Kind::Color; put4(out, s.current.color); return true;
@@ -185,6 +187,11 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_ATTRIB_STACK_DEPTH: put(out, {double(c.attrib_stack.size())}); return true;
     case GL_CLIENT_ATTRIB_STACK_DEPTH: put(out, {double(c.client_stack.size())}); return true;
     case GL_RENDER_MODE: e(c.render_mode()); return true;
+    case GL_AUTO_NORMAL: b(s.eval.auto_normal); return true;
+    case GL_MAP1_GRID_DOMAIN: put(out, {s.eval.grid1.u1, s.eval.grid1.u2}); return true;
+    case GL_MAP1_GRID_SEGMENTS: put(out, {double(s.eval.grid1.n)}); return true;
+    case GL_MAP2_GRID_DOMAIN: put(out, {s.eval.grid2u.u1, s.eval.grid2u.u2, s.eval.grid2v.u1, s.eval.grid2v.u2}); return true;
+    case GL_MAP2_GRID_SEGMENTS: put(out, {double(s.eval.grid2u.n), double(s.eval.grid2v.n)}); return true;
     case GL_NAME_STACK_DEPTH: put(out, {double(c.name_stack().size())}); return true;
     // Vertex arrays.
     case GL_VERTEX_ARRAY: b(c.c.vertex.enabled); return true;

@@ -18,7 +18,10 @@ bool* capability(Context& c, GLenum cap) {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return &s.light.enabled[cap - GL_LIGHT0];
   if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + kMaxClipPlanes)
     return &s.transform.clip_enabled[cap - GL_CLIP_PLANE0];
+  if (cap >= GL_MAP1_COLOR_4 && cap <= GL_MAP1_VERTEX_4) return &s.eval.map1_enabled[cap - GL_MAP1_COLOR_4];
+  if (cap >= GL_MAP2_COLOR_4 && cap <= GL_MAP2_VERTEX_4) return &s.eval.map2_enabled[cap - GL_MAP2_COLOR_4];
   switch (cap) {
+    case GL_AUTO_NORMAL: return &s.eval.auto_normal;
     case GL_LIGHTING: return &s.light.lighting;
     case GL_COLOR_MATERIAL: return &s.light.color_material;
     case GL_FOG: return &s.fog.enabled;
@@ -50,32 +53,13 @@ bool* capability(Context& c, GLenum cap) {
 }
 
 // Capabilities that are accepted and kept but change nothing Tessel draws (1D textures,
-// evaluators, colour-index logic op, auto normals).
+// colour-index logic op, multisampling).
 bool* inert_capability(GLenum cap) {
-  static bool inert[32] = {};
+  static bool inert[4] = {};
   switch (cap) {
     case GL_TEXTURE_1D: return &inert[0];
-    case GL_AUTO_NORMAL: return &inert[1];
-    case GL_INDEX_LOGIC_OP: return &inert[2];
-    case GL_MAP1_VERTEX_3: return &inert[3];
-    case GL_MAP1_VERTEX_4: return &inert[4];
-    case GL_MAP2_VERTEX_3: return &inert[5];
-    case GL_MAP2_VERTEX_4: return &inert[6];
-    case GL_MAP1_COLOR_4: return &inert[7];
-    case GL_MAP2_COLOR_4: return &inert[8];
-    case GL_MAP1_NORMAL: return &inert[9];
-    case GL_MAP2_NORMAL: return &inert[10];
-    case GL_MAP1_TEXTURE_COORD_1: return &inert[11];
-    case GL_MAP1_TEXTURE_COORD_2: return &inert[12];
-    case GL_MAP1_TEXTURE_COORD_3: return &inert[13];
-    case GL_MAP1_TEXTURE_COORD_4: return &inert[14];
-    case GL_MAP2_TEXTURE_COORD_1: return &inert[15];
-    case GL_MAP2_TEXTURE_COORD_2: return &inert[16];
-    case GL_MAP2_TEXTURE_COORD_3: return &inert[17];
-    case GL_MAP2_TEXTURE_COORD_4: return &inert[18];
-    case GL_MAP1_INDEX: return &inert[19];
-    case GL_MAP2_INDEX: return &inert[20];
-    case GL_MULTISAMPLE: return &inert[21];
+    case GL_INDEX_LOGIC_OP: return &inert[1];
+    case GL_MULTISAMPLE: return &inert[2];
     default: return nullptr;
   }
 }
@@ -359,6 +343,9 @@ void copy_enables(ServerState& to, const ServerState& from) {
   to.texture.gen_enabled = from.texture.gen_enabled;
   to.transform.clip_enabled = from.transform.clip_enabled;
   to.color.blend = from.color.blend;
+  to.eval.map1_enabled = from.eval.map1_enabled;
+  to.eval.map2_enabled = from.eval.map2_enabled;
+  to.eval.auto_normal = from.eval.auto_normal;
 }
 
 void restore(ServerState& s, const ServerState& o, GLbitfield m) {
@@ -384,6 +371,7 @@ void restore(ServerState& s, const ServerState& o, GLbitfield m) {
   if (m & GL_PIXEL_MODE_BIT) s.pixel = o.pixel;
   if (m & GL_LIST_BIT) s.list_base = o.list_base;
   if (m & GL_ACCUM_BUFFER_BIT) s.accum_clear = o.accum_clear;
+  if (m & GL_EVAL_BIT) s.eval = o.eval;
   if (m & GL_ENABLE_BIT) copy_enables(s, o);
 }
 

@@ -1,8 +1,7 @@
 // The rest of GL 1.1: the accumulation buffer (implemented), colour-index calls (kept as
 // state; they do not affect an RGBA window, GL 2.1 §2.7), pixel maps (kept and queryable),
-// and evaluators and feedback, which Tessel does not implement yet: their calls are
-// accepted, draw nothing (docs/gl-coverage.md lists them as not supported). Selection mode
-// is in select.cpp.
+// and feedback, which Tessel does not implement yet: its calls are accepted and record
+// nothing (docs/gl-coverage.md). Selection mode is in select.cpp, evaluators in eval.cpp.
 #include <GL/gl.h>
 
 #include <algorithm>
@@ -149,31 +148,6 @@ void GLAPIENTRY glGetPixelMapusv(GLenum map, GLushort* values) {
   const size_t n = it == pixel_maps().end() ? 1 : it->second.size();
   for (size_t i = 0; i < n && values; ++i) values[i] = GLushort(tmp[i] * 65535.0f);
 }
-
-// Evaluators: not implemented (docs/gl-coverage.md).
-void GLAPIENTRY glMap1d(GLenum, GLdouble, GLdouble, GLint, GLint, const GLdouble*) {}
-void GLAPIENTRY glMap1f(GLenum, GLfloat, GLfloat, GLint, GLint, const GLfloat*) {}
-void GLAPIENTRY glMap2d(GLenum, GLdouble, GLdouble, GLint, GLint, GLdouble, GLdouble, GLint, GLint, const GLdouble*) {}
-void GLAPIENTRY glMap2f(GLenum, GLfloat, GLfloat, GLint, GLint, GLfloat, GLfloat, GLint, GLint, const GLfloat*) {}
-void GLAPIENTRY glGetMapdv(GLenum, GLenum, GLdouble*) {}
-void GLAPIENTRY glGetMapfv(GLenum, GLenum, GLfloat*) {}
-void GLAPIENTRY glGetMapiv(GLenum, GLenum, GLint*) {}
-void GLAPIENTRY glEvalCoord1d(GLdouble) {}
-void GLAPIENTRY glEvalCoord1dv(const GLdouble*) {}
-void GLAPIENTRY glEvalCoord1f(GLfloat) {}
-void GLAPIENTRY glEvalCoord1fv(const GLfloat*) {}
-void GLAPIENTRY glEvalCoord2d(GLdouble, GLdouble) {}
-void GLAPIENTRY glEvalCoord2dv(const GLdouble*) {}
-void GLAPIENTRY glEvalCoord2f(GLfloat, GLfloat) {}
-void GLAPIENTRY glEvalCoord2fv(const GLfloat*) {}
-void GLAPIENTRY glMapGrid1d(GLint, GLdouble, GLdouble) {}
-void GLAPIENTRY glMapGrid1f(GLint, GLfloat, GLfloat) {}
-void GLAPIENTRY glMapGrid2d(GLint, GLdouble, GLdouble, GLint, GLdouble, GLdouble) {}
-void GLAPIENTRY glMapGrid2f(GLint, GLfloat, GLfloat, GLint, GLfloat, GLfloat) {}
-void GLAPIENTRY glEvalMesh1(GLenum, GLint, GLint) {}
-void GLAPIENTRY glEvalMesh2(GLenum, GLint, GLint, GLint, GLint) {}
-void GLAPIENTRY glEvalPoint1(GLint) {}
-void GLAPIENTRY glEvalPoint2(GLint, GLint) {}
 
 // Feedback: not implemented (glRenderMode(GL_FEEDBACK) draws nothing and returns 0).
 void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum, GLfloat*) {

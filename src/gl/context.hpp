@@ -184,6 +184,18 @@ struct PixelModeState {
   float alpha_scale = 1, alpha_bias = 0, depth_scale = 1, depth_bias = 0;
 };
 
+struct EvalGrid {
+  int n = 1;
+  double u1 = 0.0, u2 = 1.0;
+};
+
+// GL_EVAL_BIT: which maps are on, GL_AUTO_NORMAL, the grids (the maps themselves: eval.cpp).
+struct EvalState {
+  std::array<bool, 9> map1_enabled{}, map2_enabled{};  // in the order of the GL_MAP1_* enums
+  bool auto_normal = false;
+  EvalGrid grid1, grid2u, grid2v;
+};
+
 // The server state (what glPushAttrib saves), group by group.
 struct ServerState {
   CurrentState current;
@@ -202,6 +214,7 @@ struct ServerState {
   TextureUnitState texture;
   HintState hint;
   PixelModeState pixel;
+  EvalState eval;
   GLuint list_base = 0;
   glm::vec4 accum_clear{0.0f};
   ServerState() { polygon_stipple.fill(0xFFFFFFFFu); }
