@@ -48,6 +48,10 @@ const uint8_t* element(const ArrayPointer& a, int n_components, GLint i) {
 
 void read_vec(const ArrayPointer& a, GLint i, bool normalized, float* out) {
   const uint8_t* p = element(a, a.size, i);
+  if (a.type == GL_FLOAT) {  // the common case, without a conversion per component
+    std::memcpy(out, p, size_t(a.size) * sizeof(float));
+    return;
+  }
   const int cb = component_bytes(a.type);
   for (int k = 0; k < a.size; ++k) out[k] = read(p + k * cb, a.type, normalized);
 }
