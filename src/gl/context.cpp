@@ -544,12 +544,20 @@ void draw_ff(gpu::Context& g, const FFUniforms& u, const gpu::VertexLayout& layo
              const gpu::DrawCall& call) {
   g.draw(FixedFunction<Flat, Textured, Discards>{}, u, layout, rs, call);
 }
+template <bool Flat, bool Discards>
+void draw_lean(gpu::Context& g, const FFUniforms& u, const gpu::VertexLayout& layout, const gpu::RenderState& rs,
+               const gpu::DrawCall& call) {
+  g.draw(FixedFunction<Flat, false, Discards, true>{}, u, layout, rs, call);
+}
 using DrawFn = void (*)(gpu::Context&, const FFUniforms&, const gpu::VertexLayout&, const gpu::RenderState&,
                         const gpu::DrawCall&);
 constexpr DrawFn kDraw[8] = {
     draw_ff<false, false, false>, draw_ff<false, false, true>, draw_ff<false, true, false>, draw_ff<false, true, true>,
     draw_ff<true, false, false>,  draw_ff<true, false, true>,  draw_ff<true, true, false>,  draw_ff<true, true, true>,
 };
+// Draws that need only the front colour (no texture, fog, two-sided lighting or edges).
+constexpr DrawFn kDrawLean[4] = {draw_lean<false, false>, draw_lean<false, true>, draw_lean<true, false>,
+                                 draw_lean<true, true>};
 }  // namespace
 
 void Context::send_batch() {
@@ -586,7 +594,12 @@ void Context::send_batch_unchecked() {
   const bool flat = s.light.shade_model == GL_FLAT;
   const bool discards = u->alpha_test || (u->stipple && b.cls == PrimClass::Triangles);
   if (b.cls != PrimClass::Triangles) u->stipple = false;
-  const DrawFn draw = kDraw[(flat ? 4 : 0) + (tex ? 2 : 0) + (discards ? 1 : 0)];
+  const bool lean = !tex && !u->fog && !(u->lighting && u->two_side) &&
+                    (b.cls != PrimClass::Triangles ||
+                     (s.polygon.mode_front == GL_FILL && s.polygon.mode_back == GL_FILL));
+  if (lean) rs.edge_flag_varying = -1;
+  const DrawFn draw = lean ? kDrawLean[(flat ? 2 : 0) + (discards ? 1 : 0)]
+                           : kDraw[(flat ? 4 : 0) + (tex ? 2 : 0) + (discards ? 1 : 0)];
   draw(*gpu_, *u, layout, rs, call);
   transient_bytes_ += vb->size() + ib->size();
   transient_buffers_.push_back(std::move(vb));

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <type_traits>
 
 #include "tessel/gpu/shader.hpp"
 #include "tessel/gpu/texture.hpp"
@@ -115,6 +116,12 @@ template <class F> struct FFVaryings {
 };
 inline constexpr int kEdgeFlagVarying = 13;  // offset of FFVaryings::edge in floats
 
+// The varyings of draws that need only the front colour (no texture, fog, two-sided
+// lighting or polygon-mode edges): a quarter of the interpolation and setup work.
+template <class F> struct FFLeanVaryings {
+  gpu::Vec4<F> front;
+};
+
 namespace ffdetail {
 using namespace ::tessel::gpu;
 
@@ -178,22 +185,25 @@ template <class F> F texgen_coord(const FFUniforms& u, int i, const Vec4<F>& obj
 }
 }  // namespace ffdetail
 
-template <bool Flat, bool Textured, bool Discards> struct FixedFunction {
+template <bool Flat, bool Textured, bool Discards, bool Lean = false> struct FixedFunction {
+  static_assert(!(Lean && Textured), "a textured draw needs its texture coordinates");
   using Uniforms = FFUniforms;
-  template <class F> using Varyings = FFVaryings<F>;
-  static constexpr uint64_t flat = Flat ? 0xFFull : 0;  // both colours take the provoking vertex
+  template <class F> using Varyings = std::conditional_t<Lean, FFLeanVaryings<F>, FFVaryings<F>>;
+  static constexpr uint64_t flat = Flat ? (Lean ? 0xFull : 0xFFull) : 0;  // the colours take the provoking vertex
   static constexpr bool discards = Discards;
   static constexpr uint32_t attributes = 0b11111;
 
   template <class F> gpu::Vec4<F> vertex(const Uniforms& u, const gpu::VertexIn<F>& in, Varyings<F>& out) const {
     using namespace ffdetail;
-    if (u.pretransformed) {
-      out.back = in.attr[1];
-      out.front = in.attr[2];
-      out.tex = in.attr[3];
-      out.edge = in.attr[4].x;
-      out.fog = in.attr[4].y;
-      return in.attr[0];
+    if constexpr (!Lean) {
+      if (u.pretransformed) {
+        out.back = in.attr[1];
+        out.front = in.attr[2];
+        out.tex = in.attr[3];
+        out.edge = in.attr[4].x;
+        out.fog = in.attr[4].y;
+        return in.attr[0];
+      }
     }
     const Vec4<F>& pos = in.attr[0];
     const Vec4<F>& color = in.attr[2];
@@ -210,14 +220,16 @@ template <bool Flat, bool Textured, bool Discards> struct FixedFunction {
     if (u.lighting) {
       const Vec3<F> V = eye.xyz();
       out.front = light_face<F>(u, 0, V, n, color);
-      if (u.two_side) out.back = light_face<F>(u, 1, V, -n, color);
-      else out.back = out.front;
+      if constexpr (!Lean) {
+        if (u.two_side) out.back = light_face<F>(u, 1, V, -n, color);
+        else out.back = out.front;
+      }
     } else {
       const F zero(0.0f), one(1.0f);
       const Vec4<F> c(clamp(color.x, zero, one), clamp(color.y, zero, one), clamp(color.z, zero, one),
                       clamp(color.w, zero, one));
       out.front = c;
-      out.back = c;
+      if constexpr (!Lean) out.back = c;
     }
     if constexpr (Textured) {
       Vec4<F> t = in.attr[3];
@@ -237,11 +249,13 @@ template <bool Flat, bool Textured, bool Discards> struct FixedFunction {
       }
       if (!u.identity_texture_matrix) t = u.texture_matrix * t;
       out.tex = t;
-    } else {
+    } else if constexpr (!Lean) {
       out.tex = Vec4<F>(F(0.0f));
     }
-    out.fog = abs(eye.z);
-    out.edge = in.attr[4].x;
+    if constexpr (!Lean) {
+      out.fog = abs(eye.z);
+      out.edge = in.attr[4].x;
+    }
     return u.mvp * pos;
   }
 
@@ -249,10 +263,12 @@ template <bool Flat, bool Textured, bool Discards> struct FixedFunction {
     using namespace ffdetail;
     const F zero(0.0f), one(1.0f);
     Vec4<F> c = v.front;
-    if (u.lighting && u.two_side) {
-      const auto ff = f.front_facing;
-      c = Vec4<F>(select(ff, v.front.x, v.back.x), select(ff, v.front.y, v.back.y), select(ff, v.front.z, v.back.z),
-                  select(ff, v.front.w, v.back.w));
+    if constexpr (!Lean) {
+      if (u.lighting && u.two_side) {
+        const auto ff = f.front_facing;
+        c = Vec4<F>(select(ff, v.front.x, v.back.x), select(ff, v.front.y, v.back.y),
+                    select(ff, v.front.z, v.back.z), select(ff, v.front.w, v.back.w));
+      }
     }
     if constexpr (Textured) {
       const F inv_q = one / v.tex.w;
@@ -260,20 +276,22 @@ template <bool Flat, bool Textured, bool Discards> struct FixedFunction {
       const Vec4<F> tc = texture(u.sampler, gpu::Vec2<F>(s, t));
       c = apply_env(u, c, tc);
     }
-    if (u.fog) {
-      F fac;
-      switch (u.fog_mode) {
-        case FogMode::Linear: fac = (F(u.fog_end) - v.fog) * F(1.0f / (u.fog_end - u.fog_start)); break;
-        case FogMode::Exp: fac = exp(-F(u.fog_density) * v.fog); break;
-        default: {
-          const F d = F(u.fog_density) * v.fog;
-          fac = exp(-(d * d));
-          break;
+    if constexpr (!Lean) {
+      if (u.fog) {
+        F fac;
+        switch (u.fog_mode) {
+          case FogMode::Linear: fac = (F(u.fog_end) - v.fog) * F(1.0f / (u.fog_end - u.fog_start)); break;
+          case FogMode::Exp: fac = exp(-F(u.fog_density) * v.fog); break;
+          default: {
+            const F d = F(u.fog_density) * v.fog;
+            fac = exp(-(d * d));
+            break;
+          }
         }
+        fac = clamp(fac, zero, one);
+        const Vec3<F> fc(glm::vec3(u.fog_color));
+        c = Vec4<F>(fc + (c.xyz() - fc) * fac, c.w);
       }
-      fac = clamp(fac, zero, one);
-      const Vec3<F> fc(glm::vec3(u.fog_color));
-      c = Vec4<F>(fc + (c.xyz() - fc) * fac, c.w);
     }
     if constexpr (Discards) {
       if (u.alpha_test) f.discard(!gpu::compare(u.alpha_func, c.w, F(u.alpha_ref)));
