@@ -697,6 +697,7 @@ void Context::clear(const ClearValues& v, const RenderState& state) {
 
 void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& layout,
                      const RenderState& state, const DrawCall& call, uint32_t required_attribs) {
+  note_draw_submitted();  // from now on earlier resources may be read by queued work
   if (!fb_) throw Error("draw: no framebuffer bound");
   if (unsigned(call.topology) > unsigned(Topology::TriangleFan)) throw Error("draw: invalid topology " + std::to_string(int(call.topology)));
   if (unsigned(state.cull) > unsigned(CullMode::FrontAndBack) || unsigned(state.front_face) > 1 ||

@@ -1,6 +1,7 @@
 #include "tessel/gpu/resource.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <mutex>
 #include <vector>
 
@@ -14,7 +15,12 @@ std::vector<PendingWork*>& registry() {
   static std::vector<PendingWork*> r;
   return r;
 }
+std::atomic<unsigned long long> g_submitted{0};
 }  // namespace
+
+void note_draw_submitted() { g_submitted.fetch_add(1, std::memory_order_acq_rel); }
+
+Resource::Resource() : born_(g_submitted.load(std::memory_order_acquire)) {}
 
 PendingWork::PendingWork() {
   std::lock_guard lock(registry_mutex());
@@ -27,7 +33,7 @@ PendingWork::~PendingWork() {
   r.erase(std::remove(r.begin(), r.end(), this), r.end());
 }
 
-Resource::Resource(Resource&&) noexcept { before_write(); }
+Resource::Resource(Resource&&) noexcept : born_(g_submitted.load(std::memory_order_acquire)) { before_write(); }
 
 Resource& Resource::operator=(Resource&&) noexcept {
   before_write();
@@ -43,6 +49,8 @@ Resource::~Resource() {
 }
 
 void Resource::before_write() const {
+  // No draw was submitted since this resource was made: none can read it.
+  if (g_submitted.load(std::memory_order_acquire) == born_) return;
   std::vector<PendingWork*> busy;
   {
     std::lock_guard lock(registry_mutex());

@@ -321,6 +321,8 @@ TEST(Texture2D, FetchAndStoreOutOfRangeThrow) {
 TEST(Texture2D, MutationsFlushPendingWorkFirst) {
   CountingWork work;
   Texture2D t(Format::RGBA8, 2, 2, 0);
+  TextureCube c(Format::RGBA8, 2);
+  note_draw_submitted();  // a draw queued after the textures were made may read them
   std::vector<uint8_t> d(16, 1);
   int expected = 0;
   auto check = [&](const char* what, auto&& fn) {
@@ -339,7 +341,6 @@ TEST(Texture2D, MutationsFlushPendingWorkFirst) {
   check("generate_mipmaps", [&] { t.generate_mipmaps(); });
   check("allocate_full_chain", [&] { t.allocate_full_chain(); });
   check("level_for_write", [&] { (void)t.level_for_write(0); });
-  TextureCube c(Format::RGBA8, 2);
   check("cube generate_mipmaps", [&] { c.generate_mipmaps(); });
   check("cube face store", [&] { c.face(3).store(0, 0, 0, glm::vec4(1.0f)); });
   // Reading does not flush.
@@ -347,6 +348,23 @@ TEST(Texture2D, MutationsFlushPendingWorkFirst) {
   (void)t.fetch(0, 0, 0);
   (void)texture(Sampler2D{&t, {}}, Vec2<float>(0.5f, 0.5f));
   EXPECT_EQ(work.flushes, expected);
+  work.armed = false;
+}
+
+// A texture made after the last draw was submitted cannot be read by queued work: filling it
+// does not flush (the GL layer makes one per glDrawPixels and per texture rebuild).
+TEST(Texture2D, FreshTextureWritesDoNotFlush) {
+  CountingWork work;
+  note_draw_submitted();
+  Texture2D t(Format::RGBA8, 2, 2, 0);
+  std::vector<uint8_t> d(16, 1);
+  work.armed = true;
+  t.upload(0, d.data(), d.size());
+  t.generate_mipmaps();
+  EXPECT_EQ(work.flushes, 0);
+  note_draw_submitted();  // now a draw may use it
+  t.upload(0, d.data(), d.size());
+  EXPECT_EQ(work.flushes, 1);
   work.armed = false;
 }
 

@@ -20,7 +20,7 @@ class PendingWork {
 
 class Resource {
  public:
-  Resource() = default;
+  Resource();
   Resource(const Resource&) = delete;
   Resource& operator=(const Resource&) = delete;
   Resource(Resource&&) noexcept;
@@ -38,6 +38,15 @@ class Resource {
     } catch (...) {
     }
   }
+
+ private:
+  // The number of draws submitted anywhere when this resource was made: while it is
+  // unchanged, no draw can refer to the resource yet (a fresh buffer filled right after it is
+  // made, a texture built level by level) and writing it needs no flush.
+  unsigned long long born_ = 0;
 };
+
+// Counts a draw submission (Context::submit): resources made before it may be in use.
+void note_draw_submitted();
 
 }  // namespace tessel::gpu
