@@ -90,6 +90,63 @@ bool fetch(Context& c, GLint i, FFVertex* v) {
 
 bool valid_mode(GLenum mode) { return mode <= GL_POLYGON; }
 
+// What a converted range depends on besides the array bytes: the arrays' addresses and
+// formats, the range, and the current values used for disabled arrays.
+std::vector<uint8_t> array_key(const Context& c, GLuint lo, GLuint hi) {
+  std::vector<uint8_t> k;
+  auto add = [&](const void* p, size_t n) {
+    const auto* b = static_cast<const uint8_t*>(p);
+    k.insert(k.end(), b, b + n);
+  };
+  add(&lo, sizeof lo);
+  add(&hi, sizeof hi);
+  for (const ArrayPointer* a : {&c.c.vertex, &c.c.normal, &c.c.color, &c.c.tex, &c.c.edge}) {
+    const uint8_t on = a->enabled && a->pointer;
+    add(&on, 1);
+    if (!on) continue;
+    add(&a->pointer, sizeof a->pointer);
+    add(&a->size, sizeof a->size);
+    add(&a->type, sizeof a->type);
+    add(&a->stride, sizeof a->stride);
+  }
+  const CurrentState& cur = c.s.current;
+  add(&cur.color, sizeof cur.color);
+  add(&cur.normal, sizeof cur.normal);
+  add(&cur.tex, sizeof cur.tex);
+  const uint8_t edge = cur.edge;
+  add(&edge, 1);
+  return k;
+}
+
+// The bytes of elements lo..hi of every enabled array, in order.
+template <class Fn> void for_each_source(const Context& c, GLuint lo, GLuint hi, Fn&& fn) {
+  for (const ArrayPointer* a : {&c.c.vertex, &c.c.normal, &c.c.color, &c.c.tex, &c.c.edge}) {
+    if (!a->enabled || !a->pointer) continue;
+    const int n = a == &c.c.edge ? 1 : a == &c.c.normal ? 3 : a->size;
+    const size_t elem = size_t(n) * size_t(component_bytes(a->type));
+    const uint8_t* first = element(*a, n, GLint(lo));
+    const uint8_t* last = element(*a, n, GLint(hi));
+    fn(first, size_t(last - first) + elem);
+  }
+}
+
+std::vector<uint8_t> source_bytes(const Context& c, GLuint lo, GLuint hi) {
+  std::vector<uint8_t> out;
+  for_each_source(c, lo, hi, [&](const uint8_t* p, size_t n) { out.insert(out.end(), p, p + n); });
+  return out;
+}
+
+bool same_source(const Context& c, GLuint lo, GLuint hi, const std::vector<uint8_t>& saved) {
+  size_t at = 0;
+  bool same = true;
+  for_each_source(c, lo, hi, [&](const uint8_t* p, size_t n) {
+    if (!same) return;
+    if (at + n > saved.size() || std::memcmp(p, saved.data() + at, n) != 0) same = false;
+    at += n;
+  });
+  return same && at == saved.size();
+}
+
 void set_pointer(Context& c, ArrayPointer& a, GLint size, GLenum type, GLsizei stride, const void* ptr,
                  std::initializer_list<GLint> sizes, std::initializer_list<GLenum> types) {
   GL_OUTSIDE_BEGIN();
@@ -268,6 +325,32 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
       const size_t per = mode == GL_TRIANGLES ? 3 : mode == GL_LINES ? 2 : 1;
       std::vector<GLuint> range(size_t(hi - lo) + 1);
       for (size_t k = 0; k < range.size(); ++k) range[k] = lo + GLuint(k);
+      if (mode == GL_TRIANGLES && c.compiling_list == 0 && c.render_mode() == GL_RENDER) {
+        // The same arrays drawn again (a mesh drawn many times with other matrices or
+        // materials): the converted vertices are reused while the bytes they came from and
+        // the current values baked into them are unchanged.
+        Context::ArrayCache& cache = c.array_cache;
+        std::vector<uint8_t> key = array_key(c, lo, hi);
+        const bool hit = cache.vertices && cache.key == key && same_source(c, lo, hi, cache.source);
+        if (!hit) {
+          std::vector<FFVertex> verts = gather(c, range);
+          if (verts.size() == range.size()) {
+            cache.key = std::move(key);
+            cache.source = source_bytes(c, lo, hi);
+            cache.vertices = std::make_shared<const tessel::gpu::Buffer>(verts.data(), verts.size() * sizeof(FFVertex));
+          } else {
+            cache.vertices.reset();
+          }
+        }
+        if (cache.vertices) {
+          FFVertex last;
+          fetch(c, GLint(ids.back()), &last);  // the current values as the draw leaves them
+          std::vector<uint32_t> idx(ids.size() - ids.size() % per);
+          for (size_t k = 0; k < idx.size(); ++k) idx[k] = ids[k] - lo;
+          c.emit_shared(cache.vertices, std::move(idx));
+          return;
+        }
+      }
       // Attributes as the indexed elements leave them: the last index read is the last index.
       std::vector<FFVertex> verts = gather(c, range);
       if (verts.size() == range.size()) {

@@ -160,6 +160,7 @@ void Context::bind_draw_target() {
 
 void Context::release_transient() {
   transient_buffers_.clear();
+  transient_shared_.clear();
   transient_textures_.clear();
   transient_bytes_ = 0;
 }
@@ -393,6 +394,16 @@ void Context::emit(PrimClass cls, std::vector<FFVertex>&& verts, std::vector<uin
   if (batch_.verts.size() > (1u << 20)) send_batch();
 }
 
+void Context::emit_shared(std::shared_ptr<const gpu::Buffer> vertices, std::vector<uint32_t>&& indices) {
+  if (indices.empty() || compiling_only()) return;
+  close_quad_run();
+  if (!batch_.indices.empty()) send_batch();
+  batch_.cls = PrimClass::Triangles;
+  batch_.shared = std::move(vertices);
+  batch_.indices = std::move(indices);
+  send_batch();
+}
+
 TextureObject* Context::texture_for_draw() {
   if (!s.texture.enabled_2d) return nullptr;
   TextureObject& t = bound_texture();
@@ -570,15 +581,17 @@ void Context::send_batch_unchecked() {
   if (b.indices.empty()) return;
   bind_draw_target();
   if (b.cls == PrimClass::Lines && s.line.stipple) return send_stippled_lines(b.verts, b.indices);
-  auto vb = std::make_unique<gpu::Buffer>(b.verts.data(), b.verts.size() * sizeof(FFVertex));
+  std::unique_ptr<gpu::Buffer> own;
+  if (!b.shared) own = std::make_unique<gpu::Buffer>(b.verts.data(), b.verts.size() * sizeof(FFVertex));
+  const gpu::Buffer& vbuf = b.shared ? *b.shared : *own;
   auto ib = std::make_unique<gpu::Buffer>(b.indices.data(), b.indices.size() * sizeof(uint32_t));
   gpu::VertexLayout layout;
   constexpr uint32_t stride = sizeof(FFVertex);
-  layout.attrib(0, *vb, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, pos));
-  layout.attrib(1, *vb, 3, gpu::AttribType::F32, stride, offsetof(FFVertex, normal));
-  layout.attrib(2, *vb, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, color));
-  layout.attrib(3, *vb, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, tex));
-  layout.attrib(4, *vb, 1, gpu::AttribType::F32, stride, offsetof(FFVertex, edge));
+  layout.attrib(0, vbuf, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, pos));
+  layout.attrib(1, vbuf, 3, gpu::AttribType::F32, stride, offsetof(FFVertex, normal));
+  layout.attrib(2, vbuf, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, color));
+  layout.attrib(3, vbuf, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, tex));
+  layout.attrib(4, vbuf, 1, gpu::AttribType::F32, stride, offsetof(FFVertex, edge));
   TextureObject* tex = texture_for_draw();
   auto u = std::make_unique<FFUniforms>();
   build_uniforms(*u, tex);
@@ -601,8 +614,9 @@ void Context::send_batch_unchecked() {
   const DrawFn draw = lean ? kDrawLean[(flat ? 2 : 0) + (discards ? 1 : 0)]
                            : kDraw[(flat ? 4 : 0) + (tex ? 2 : 0) + (discards ? 1 : 0)];
   draw(*gpu_, *u, layout, rs, call);
-  transient_bytes_ += vb->size() + ib->size();
-  transient_buffers_.push_back(std::move(vb));
+  transient_bytes_ += vbuf.size() + ib->size();
+  if (own) transient_buffers_.push_back(std::move(own));
+  else transient_shared_.push_back(b.shared);
   transient_buffers_.push_back(std::move(ib));
   if (transient_bytes_ > kTransientFlushBytes) {
     gpu_->finish();

@@ -329,6 +329,9 @@ class Context {
   }
   // Draws vertices as independent primitives of one class (indices into `verts`).
   void emit(PrimClass cls, std::vector<FFVertex>&& verts, std::vector<uint32_t>&& indices);
+  // Independent triangles whose vertices are already a gpu buffer of FFVertex records (vertex
+  // arrays converted once and reused, api_arrays.cpp). Only for GL_RENDER; not merged.
+  void emit_shared(std::shared_ptr<const gpu::Buffer> vertices, std::vector<uint32_t>&& indices);
   // Converts vertices given in glBegin order for `mode` into independent primitives.
   void emit_mode(GLenum mode, std::vector<FFVertex>&& verts);
 
@@ -364,6 +367,7 @@ class Context {
     PrimClass cls = PrimClass::Triangles;
     std::vector<FFVertex> verts;
     std::vector<uint32_t> indices;
+    std::shared_ptr<const gpu::Buffer> shared;  // when set: the vertices, instead of `verts`
   };
   void send_batch();
   void send_batch_unchecked();
@@ -402,6 +406,7 @@ class Context {
   // Buffers and textures referenced by queued draws: kept until the work has run.
   std::vector<std::unique_ptr<gpu::Buffer>> transient_buffers_;
   std::vector<std::unique_ptr<gpu::Texture2D>> transient_textures_;
+  std::vector<std::shared_ptr<const gpu::Buffer>> transient_shared_;
   size_t transient_bytes_ = 0;
   GLenum error_ = GL_NO_ERROR;
   GLenum render_mode_ = GL_RENDER;
@@ -412,6 +417,15 @@ class Context {
   bool sel_overflow_ = false, sel_hit_ = false;
   float sel_zmin_ = 0.0f, sel_zmax_ = 0.0f;
   std::vector<GLuint> sel_names_;
+
+ public:
+  // The last vertex-array range converted by glDrawElements, reused while its source bytes and
+  // the attributes baked into it are unchanged (api_arrays.cpp).
+  struct ArrayCache {
+    std::vector<uint8_t> key;     // array pointers, formats, range, current values
+    std::vector<uint8_t> source;  // the bytes the conversion read
+    std::shared_ptr<const gpu::Buffer> vertices;
+  } array_cache;
 };
 
 // The context GL calls go to (set by GLUT, or by tessel::gl::make_current).
