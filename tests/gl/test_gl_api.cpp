@@ -186,6 +186,27 @@ TEST_F(GLTest, DrawingReachesTheBuffers) {
   EXPECT_STREQ(reinterpret_cast<const char*>(glGetString(GL_VENDOR)), "Tessel");
 }
 
+// Vertex arrays are read when the draw is issued: a second glDrawElements after the program
+// changed the array (same pointer) draws the new data, not a reused conversion.
+TEST_F(GLTest, ChangedArraysAreReadAgain) {
+  GLfloat v[4][2] = {{-1, -1}, {0, -1}, {0, 0}, {-1, 0}};  // the lower-left quarter
+  const GLubyte idx[6] = {0, 1, 2, 0, 2, 3};
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(2, GL_FLOAT, 0, v);
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColor3f(1, 0, 0);
+  glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_BYTE, idx);
+  for (auto& p : v) p[0] += 1.0f, p[1] += 1.0f;  // now the upper-right quarter, same colour
+  glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_BYTE, idx);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  GLubyte ll[4], ur[4];
+  glReadPixels(10, 10, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, ll);
+  glReadPixels(50, 40, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, ur);
+  EXPECT_EQ(ll[0], 255);
+  EXPECT_EQ(ur[0], 255);  // black if the first draw's vertices had been reused
+}
+
 // Selection mode: hit records (names, depths scaled to 2^32 - 1), overflow, name stack errors.
 TEST_F(GLTest, SelectionHitRecords) {
   GLuint buf[64] = {};
