@@ -1,7 +1,6 @@
 // The rest of GL 1.1: the accumulation buffer (implemented), colour-index calls (kept as
 // state; they do not affect an RGBA window, GL 2.1 §2.7), pixel maps (kept and queryable),
-// and feedback, which Tessel does not implement yet: its calls are accepted and record
-// nothing (docs/gl-coverage.md). Selection mode is in select.cpp, evaluators in eval.cpp.
+// Selection mode is in select.cpp, feedback in feedback.cpp, evaluators in eval.cpp.
 #include <GL/gl.h>
 
 #include <algorithm>
@@ -148,12 +147,5 @@ void GLAPIENTRY glGetPixelMapusv(GLenum map, GLushort* values) {
   const size_t n = it == pixel_maps().end() ? 1 : it->second.size();
   for (size_t i = 0; i < n && values; ++i) values[i] = GLushort(tmp[i] * 65535.0f);
 }
-
-// Feedback: not implemented (glRenderMode(GL_FEEDBACK) draws nothing and returns 0).
-void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum, GLfloat*) {
-  GL_CONTEXT();
-  if (size < 0) c.error(GL_INVALID_VALUE);
-}
-void GLAPIENTRY glPassThrough(GLfloat) {}
 
 }  // extern "C"

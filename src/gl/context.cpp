@@ -377,8 +377,9 @@ void Context::emit(PrimClass cls, std::vector<FFVertex>&& verts, std::vector<uin
   if (indices.empty() || compiling_only()) return;
   close_quad_run();  // earlier quads go first
   if (render_mode_ != GL_RENDER) {
-    // Selection mode tests instead of drawing; feedback mode (not implemented) draws nothing.
+    // Selection and feedback modes report primitives instead of drawing them.
     if (render_mode_ == GL_SELECT) select_primitives(cls, verts, indices);
+    else feedback_primitives(cls, verts, indices);
     return;
   }
   if (!batch_.indices.empty() && batch_.cls != cls) send_batch();
@@ -624,6 +625,31 @@ void Context::send_batch_unchecked() {
   }
 }
 
+// The fixed-function vertex stage on one lane (the same shader the draws use).
+FFPostVertex Context::post_vertex(const FFVertex& v, const FFUniforms& u, bool textured) const {
+  gpu::VertexIn<float> in{};
+  in.attr[0] = gpu::Vec4<float>(v.pos[0], v.pos[1], v.pos[2], v.pos[3]);
+  in.attr[1] = gpu::Vec4<float>(v.normal[0], v.normal[1], v.normal[2], 0.0f);
+  in.attr[2] = gpu::Vec4<float>(v.color[0], v.color[1], v.color[2], v.color[3]);
+  in.attr[3] = gpu::Vec4<float>(v.tex[0], v.tex[1], v.tex[2], v.tex[3]);
+  in.attr[4] = gpu::Vec4<float>(v.edge, 0.0f, 0.0f, 1.0f);
+  FFVaryings<float> out;
+  const gpu::Vec4<float> p = textured ? FixedFunction<false, true, false>{}.vertex(u, in, out)
+                                      : FixedFunction<false, false, false>{}.vertex(u, in, out);
+  FFPostVertex o;
+  const float pv[4] = {p.x, p.y, p.z, p.w};
+  const float fv[4] = {out.front.x, out.front.y, out.front.z, out.front.w};
+  const float bv[4] = {out.back.x, out.back.y, out.back.z, out.back.w};
+  const float tv[4] = {out.tex.x, out.tex.y, out.tex.z, out.tex.w};
+  std::memcpy(o.pos, pv, sizeof pv);
+  std::memcpy(o.front, fv, sizeof fv);
+  std::memcpy(o.back, bv, sizeof bv);
+  std::memcpy(o.tex, tv, sizeof tv);
+  o.edge = v.edge;
+  o.fog = out.fog;
+  return o;
+}
+
 // Stippled lines (GL 2.1 §3.4.2) are cut into their drawn pieces on the CPU, as Mesa's draw
 // module does: each vertex goes through the fixed-function vertex stage (the same shader on
 // one lane), each segment is clipped to the view volume and taken to window coordinates,
@@ -635,32 +661,12 @@ void Context::send_stippled_lines(const std::vector<FFVertex>& verts, const std:
   FFUniforms u;
   build_uniforms(u, tex);
   u.stipple = false;
-  const FixedFunction<false, true, false> shader;
   // The vertex stage on one lane for every vertex the lines use.
   std::vector<FFPostVertex> post(verts.size());
   std::vector<bool> done(verts.size(), false);
   auto process = [&](uint32_t i) -> const FFPostVertex& {
     if (!done[i]) {
-      const FFVertex& v = verts[i];
-      gpu::VertexIn<float> in{};
-      in.attr[0] = gpu::Vec4<float>(v.pos[0], v.pos[1], v.pos[2], v.pos[3]);
-      in.attr[1] = gpu::Vec4<float>(v.normal[0], v.normal[1], v.normal[2], 0.0f);
-      in.attr[2] = gpu::Vec4<float>(v.color[0], v.color[1], v.color[2], v.color[3]);
-      in.attr[3] = gpu::Vec4<float>(v.tex[0], v.tex[1], v.tex[2], v.tex[3]);
-      in.attr[4] = gpu::Vec4<float>(v.edge, 0.0f, 0.0f, 1.0f);
-      FFVaryings<float> out;
-      const gpu::Vec4<float> p = tex ? shader.vertex(u, in, out) : FixedFunction<false, false, false>{}.vertex(u, in, out);
-      FFPostVertex& o = post[i];
-      const float pv[4] = {p.x, p.y, p.z, p.w};
-      const float fv[4] = {out.front.x, out.front.y, out.front.z, out.front.w};
-      const float bv[4] = {out.back.x, out.back.y, out.back.z, out.back.w};
-      const float tv[4] = {out.tex.x, out.tex.y, out.tex.z, out.tex.w};
-      std::memcpy(o.pos, pv, sizeof pv);
-      std::memcpy(o.front, fv, sizeof fv);
-      std::memcpy(o.back, bv, sizeof bv);
-      std::memcpy(o.tex, tv, sizeof tv);
-      o.edge = v.edge;
-      o.fog = out.fog;
+      post[i] = post_vertex(verts[i], u, tex != nullptr);
       done[i] = true;
     }
     return post[i];

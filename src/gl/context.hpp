@@ -357,6 +357,13 @@ class Context {
   std::vector<GLuint>& name_stack() { return sel_names_; }
   void write_hit_record();
   void select_hit(float window_z);
+  // Feedback mode (feedback.cpp).
+  void set_feedback_buffer(GLfloat* buffer, GLsizei size, GLenum type) {
+    fb_buffer_ = buffer;
+    fb_size_ = size;
+    fb_type_ = type;
+  }
+  void pass_through(float token);
 
   gpu::Context& gpu() { return *gpu_; }
   const gpu::Context& gpu() const { return *gpu_; }
@@ -383,6 +390,9 @@ class Context {
     }
   }
   void send_stippled_lines(const std::vector<FFVertex>& verts, const std::vector<uint32_t>& indices);
+  FFPostVertex post_vertex(const FFVertex& v, const FFUniforms& u, bool textured) const;
+  void feedback_primitives(PrimClass cls, const std::vector<FFVertex>& verts, const std::vector<uint32_t>& idx);
+  void feedback_value(float v);
   void close_quad_run();
   void split_quads(const FFVertex* v, uint32_t n, bool along_v1v3, std::vector<FFVertex>& out,
                    std::vector<uint32_t>& idx) const;
@@ -417,6 +427,11 @@ class Context {
   bool sel_overflow_ = false, sel_hit_ = false;
   float sel_zmin_ = 0.0f, sel_zmax_ = 0.0f;
   std::vector<GLuint> sel_names_;
+  GLfloat* fb_buffer_ = nullptr;
+  GLsizei fb_size_ = 0;
+  GLenum fb_type_ = GL_2D;
+  size_t fb_written_ = 0;
+  bool fb_overflow_ = false;
 
  public:
   // The last vertex-array range converted by glDrawElements, reused while its source bytes and

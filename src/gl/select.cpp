@@ -164,7 +164,7 @@ GLint Context::set_render_mode(GLenum mode) {
     error(GL_INVALID_ENUM);
     return 0;
   }
-  if (mode == GL_SELECT && !sel_buffer_) {
+  if ((mode == GL_SELECT && !sel_buffer_) || (mode == GL_FEEDBACK && !fb_buffer_)) {
     error(GL_INVALID_OPERATION);
     return 0;
   }
@@ -173,7 +173,11 @@ GLint Context::set_render_mode(GLenum mode) {
   if (render_mode_ == GL_SELECT) {
     write_hit_record();
     result = sel_overflow_ ? -1 : sel_hits_;
+  } else if (render_mode_ == GL_FEEDBACK) {
+    result = fb_overflow_ ? -1 : GLint(fb_written_);
   }
+  fb_written_ = 0;
+  fb_overflow_ = false;
   render_mode_ = mode;
   sel_written_ = 0;
   sel_hits_ = 0;

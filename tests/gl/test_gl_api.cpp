@@ -264,6 +264,44 @@ TEST_F(GLTest, SelectionHitRecords) {
   glRenderMode(GL_RENDER);
 }
 
+// Feedback mode: tokens and window coordinates, pass-through, overflow.
+TEST_F(GLTest, FeedbackTokens) {
+  GLfloat buf[64] = {};
+  glRenderMode(GL_FEEDBACK);  // no buffer yet
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glFeedbackBuffer(64, GL_2D, buf);
+  glRenderMode(GL_FEEDBACK);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, 64, 0, 48, -1, 1);  // object coordinates are window coordinates
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glPassThrough(7.0f);
+  glBegin(GL_POINTS);
+  glVertex2f(10.5f, 20.5f);
+  glVertex2f(100, 20);  // outside: nothing
+  glEnd();
+  glBegin(GL_LINES);
+  glVertex2f(1, 2);
+  glVertex2f(3, 4);
+  glEnd();
+  EXPECT_EQ(glRenderMode(GL_RENDER), 2 + 3 + 5);
+  EXPECT_EQ(buf[0], float(GL_PASS_THROUGH_TOKEN));
+  EXPECT_EQ(buf[1], 7.0f);
+  EXPECT_EQ(buf[2], float(GL_POINT_TOKEN));
+  EXPECT_FLOAT_EQ(buf[3], 10.5f);
+  EXPECT_FLOAT_EQ(buf[4], 20.5f);
+  EXPECT_EQ(buf[5], float(GL_LINE_TOKEN));
+  EXPECT_FLOAT_EQ(buf[8], 3.0f);
+  glFeedbackBuffer(2, GL_2D, buf);  // too small for a point
+  glRenderMode(GL_FEEDBACK);
+  glBegin(GL_POINTS);
+  glVertex2f(10, 10);
+  glEnd();
+  EXPECT_EQ(glRenderMode(GL_RENDER), -1);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 // Thousands of calls with random arguments: enums drawn from a pool of valid and invalid
 // values, numbers including negatives, NaN and huge ones, and calls inside glBegin/glEnd.
 TEST_F(GLTest, RandomCallSequenceNeverCrashes) {
