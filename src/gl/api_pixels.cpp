@@ -50,17 +50,6 @@ struct PixelRect {
   }
 };
 
-gpu::CompareFunc compare_of(GLenum f) {
-  return f == GL_NEVER ? gpu::CompareFunc::Never
-         : f == GL_LESS ? gpu::CompareFunc::Less
-         : f == GL_EQUAL ? gpu::CompareFunc::Equal
-         : f == GL_LEQUAL ? gpu::CompareFunc::LessEqual
-         : f == GL_GREATER ? gpu::CompareFunc::Greater
-         : f == GL_NOTEQUAL ? gpu::CompareFunc::NotEqual
-         : f == GL_GEQUAL ? gpu::CompareFunc::GreaterEqual
-                          : gpu::CompareFunc::Always;
-}
-
 }  // namespace
 
 void Context::draw_pixels_rgba(float x, float y, int w, int h, const std::vector<uint8_t>& rgba, float zoom_x,

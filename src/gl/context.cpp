@@ -14,19 +14,6 @@ namespace tessel::gl {
 namespace {
 thread_local Context* g_current = nullptr;
 
-gpu::CompareFunc compare_of(GLenum f) {
-  switch (f) {
-    case GL_NEVER: return gpu::CompareFunc::Never;
-    case GL_LESS: return gpu::CompareFunc::Less;
-    case GL_EQUAL: return gpu::CompareFunc::Equal;
-    case GL_LEQUAL: return gpu::CompareFunc::LessEqual;
-    case GL_GREATER: return gpu::CompareFunc::Greater;
-    case GL_NOTEQUAL: return gpu::CompareFunc::NotEqual;
-    case GL_GEQUAL: return gpu::CompareFunc::GreaterEqual;
-    default: return gpu::CompareFunc::Always;
-  }
-}
-
 gpu::StencilOp stencil_op_of(GLenum op) {
   switch (op) {
     case GL_ZERO: return gpu::StencilOp::Zero;
@@ -85,6 +72,28 @@ constexpr size_t kTransientFlushBytes = size_t(256) << 20;
 
 Context* current() { return g_current; }
 void make_current(Context* c) { g_current = c; }
+
+gpu::CompareFunc compare_of(GLenum f) {
+  switch (f) {
+    case GL_NEVER: return gpu::CompareFunc::Never;
+    case GL_LESS: return gpu::CompareFunc::Less;
+    case GL_EQUAL: return gpu::CompareFunc::Equal;
+    case GL_LEQUAL: return gpu::CompareFunc::LessEqual;
+    case GL_GREATER: return gpu::CompareFunc::Greater;
+    case GL_NOTEQUAL: return gpu::CompareFunc::NotEqual;
+    case GL_GEQUAL: return gpu::CompareFunc::GreaterEqual;
+    default: return gpu::CompareFunc::Always;
+  }
+}
+
+FFPostVertex lerp_post(const FFPostVertex& a, const FFPostVertex& b, float t) {
+  FFPostVertex r;
+  const float* pa = &a.pos[0];
+  const float* pb = &b.pos[0];
+  float* pr = &r.pos[0];
+  for (size_t k = 0; k < sizeof(FFPostVertex) / sizeof(float); ++k) pr[k] = pa[k] + (pb[k] - pa[k]) * t;
+  return r;
+}
 
 Context::Context(int width, int height, bool double_buffer, bool depth, bool stencil)
     : double_buffer_(double_buffer), has_depth_(depth || stencil), has_stencil_(stencil) {
@@ -671,14 +680,8 @@ void Context::send_stippled_lines(const std::vector<FFVertex>& verts, const std:
     }
     return post[i];
   };
-  auto lerp = [](const FFPostVertex& a, const FFPostVertex& b, float t) {
-    FFPostVertex r;
-    const float* pa = &a.pos[0];
-    const float* pb = &b.pos[0];
-    float* pr = &r.pos[0];
-    for (size_t k = 0; k < sizeof(FFPostVertex) / sizeof(float); ++k) pr[k] = pa[k] + (pb[k] - pa[k]) * t;
-    return r;
-  };
+  const auto lerp = lerp_post;
+
   const ViewportState& vp = s.viewport;
   const float fw = float(fb_.width()), fh = float(fb_.height());
   // Window coordinates of a clip-space vertex, and back to the full-framebuffer clip space

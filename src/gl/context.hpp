@@ -448,6 +448,11 @@ Context* current();
 void make_current(Context* c);
 inline void make_current_context(Context* c) { make_current(c); }
 
+// The gpu comparison of a GL comparison enum (GL_LESS ...); GL_ALWAYS for anything else.
+gpu::CompareFunc compare_of(GLenum f);
+// Linear interpolation of every value of two post-transform vertices (clipping, stipple).
+FFPostVertex lerp_post(const FFPostVertex& a, const FFPostVertex& b, float t);
+
 // Texture helpers (texture.cpp).
 bool rebuild_texture(TextureObject& t);
 

@@ -13,14 +13,6 @@ namespace tessel::gl {
 
 namespace {
 
-FFPostVertex lerp(const FFPostVertex& a, const FFPostVertex& b, float t) {
-  FFPostVertex r;
-  const float* pa = &a.pos[0];
-  const float* pb = &b.pos[0];
-  float* pr = &r.pos[0];
-  for (size_t k = 0; k < sizeof(FFPostVertex) / sizeof(float); ++k) pr[k] = pa[k] + (pb[k] - pa[k]) * t;
-  return r;
-}
 
 float dot4(const glm::vec4& p, const float* v) { return p.x * v[0] + p.y * v[1] + p.z * v[2] + p.w * v[3]; }
 
@@ -95,7 +87,7 @@ void Context::feedback_primitives(PrimClass cls, const std::vector<FFVertex>& ve
         const FFPostVertex &a = poly[i], &b = poly[(i + 1) % n];
         const float da = dot4(p, a.pos), db = dot4(p, b.pos);
         if (da >= 0.0f) next.push_back(a);
-        if ((da >= 0.0f) != (db >= 0.0f)) next.push_back(lerp(a, b, da / (da - db)));
+        if ((da >= 0.0f) != (db >= 0.0f)) next.push_back(lerp_post(a, b, da / (da - db)));
         if (per == 2 && db >= 0.0f) next.push_back(b);
       }
       poly.swap(next);
