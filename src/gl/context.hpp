@@ -357,6 +357,10 @@ class Context {
   std::vector<GLuint>& name_stack() { return sel_names_; }
   void write_hit_record();
   void select_hit(float window_z);
+  // For primitives processed on the CPU (selection, feedback): the view volume and enabled
+  // user planes in clip space, and whether culling removes a triangle (clip positions).
+  std::vector<glm::vec4> clip_space_planes() const;
+  bool culled(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) const;
   // Feedback mode (feedback.cpp).
   void set_feedback_buffer(GLfloat* buffer, GLsizei size, GLenum type) {
     fb_buffer_ = buffer;

@@ -37,11 +37,7 @@ void Context::feedback_primitives(PrimClass cls, const std::vector<FFVertex>& ve
   FFUniforms u;
   build_uniforms(u, tex);
   const size_t per = cls == PrimClass::Points ? 1 : cls == PrimClass::Lines ? 2 : 3;
-  std::vector<glm::vec4> planes = {glm::vec4(1, 0, 0, 1), glm::vec4(-1, 0, 0, 1), glm::vec4(0, 1, 0, 1),
-                                   glm::vec4(0, -1, 0, 1), glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, -1, 1)};
-  const glm::mat4 inv_p = glm::inverse(projection());
-  for (int i = 0; i < kMaxClipPlanes; ++i)
-    if (s.transform.clip_enabled[size_t(i)]) planes.push_back(glm::vec4(s.transform.clip_plane[size_t(i)]) * inv_p);
+  const std::vector<glm::vec4> planes = clip_space_planes();
   const ViewportState& vp = s.viewport;
   auto write_vertex = [&](const FFPostVertex& v) {
     const float iw = 1.0f / v.pos[3];
@@ -59,20 +55,10 @@ void Context::feedback_primitives(PrimClass cls, const std::vector<FFVertex>& ve
   for (size_t k = 0; k + per <= idx.size(); k += per) {
     poly.clear();
     for (size_t j = 0; j < per; ++j) poly.push_back(post_vertex(verts[idx[k + j]], u, tex != nullptr));
-    if (per == 3 && s.polygon.cull) {
-      bool ok = true;
-      glm::vec2 w[3];
-      for (int j = 0; j < 3; ++j) {
-        if (!(poly[size_t(j)].pos[3] > 0.0f)) ok = false;
-        w[j] = glm::vec2(poly[size_t(j)].pos[0], poly[size_t(j)].pos[1]) / poly[size_t(j)].pos[3];
-      }
-      if (ok) {
-        const float area = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[2].x - w[0].x) * (w[1].y - w[0].y);
-        const bool front = (s.polygon.front_face == GL_CCW) == (area > 0.0f);
-        const GLenum cf = s.polygon.cull_face;
-        if (cf == GL_FRONT_AND_BACK || (cf == GL_FRONT && front) || (cf == GL_BACK && !front)) continue;
-      }
-    }
+    auto clip_pos = [&](size_t j) {
+      return glm::vec4(poly[j].pos[0], poly[j].pos[1], poly[j].pos[2], poly[j].pos[3]);
+    };
+    if (per == 3 && culled(clip_pos(0), clip_pos(1), clip_pos(2))) continue;
     // Clip (Sutherland–Hodgman; for a segment the same keeps its ends in order).
     for (const glm::vec4& p : planes) {
       if (poly.empty()) break;

@@ -35,6 +35,27 @@ void clip_against(std::vector<glm::vec4>& poly, const glm::vec4& plane) {
 }
 }  // namespace
 
+std::vector<glm::vec4> Context::clip_space_planes() const {
+  std::vector<glm::vec4> planes = {glm::vec4(1, 0, 0, 1), glm::vec4(-1, 0, 0, 1), glm::vec4(0, 1, 0, 1),
+                                   glm::vec4(0, -1, 0, 1), glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, -1, 1)};
+  // User planes are kept in eye space; in clip space they are p_eye * P^-1.
+  const glm::mat4 inv_p = glm::inverse(projection());
+  for (int i = 0; i < kMaxClipPlanes; ++i)
+    if (s.transform.clip_enabled[size_t(i)]) planes.push_back(glm::vec4(s.transform.clip_plane[size_t(i)]) * inv_p);
+  return planes;
+}
+
+// Facing from the window-space area (GL 2.1 §2.14.1, eq. 2.6), before clipping; a triangle
+// with a vertex at w <= 0 is not culled here (clipping decides).
+bool Context::culled(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) const {
+  if (!s.polygon.cull || !(a.w > 0.0f) || !(b.w > 0.0f) || !(c.w > 0.0f)) return false;
+  const glm::vec2 w0 = glm::vec2(a) / a.w, w1 = glm::vec2(b) / b.w, w2 = glm::vec2(c) / c.w;
+  const float area = (w1.x - w0.x) * (w2.y - w0.y) - (w2.x - w0.x) * (w1.y - w0.y);
+  const bool front = (s.polygon.front_face == GL_CCW) == (area > 0.0f);
+  const GLenum cf = s.polygon.cull_face;
+  return cf == GL_FRONT_AND_BACK || (cf == GL_FRONT && front) || (cf == GL_BACK && !front);
+}
+
 void Context::write_hit_record() {
   if (!sel_hit_) return;
   sel_hit_ = false;
@@ -68,11 +89,7 @@ void Context::select_primitives(PrimClass cls, const std::vector<FFVertex>& vert
   const glm::mat4& mv = modelview();
   const glm::mat4 mvp = projection() * mv;
   const size_t per = cls == PrimClass::Points ? 1 : cls == PrimClass::Lines ? 2 : 3;
-  std::vector<glm::vec4> planes = {glm::vec4(1, 0, 0, 1), glm::vec4(-1, 0, 0, 1), glm::vec4(0, 1, 0, 1),
-                                   glm::vec4(0, -1, 0, 1), glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, -1, 1)};
-  const glm::mat4 inv_p = glm::inverse(projection());
-  for (int i = 0; i < kMaxClipPlanes; ++i)
-    if (s.transform.clip_enabled[size_t(i)]) planes.push_back(glm::vec4(s.transform.clip_plane[size_t(i)]) * inv_p);
+  const std::vector<glm::vec4> planes = clip_space_planes();
   const ViewportState& vp = s.viewport;
   std::vector<glm::vec4> poly;
   for (size_t k = 0; k + per <= idx.size(); k += per) {
@@ -81,22 +98,7 @@ void Context::select_primitives(PrimClass cls, const std::vector<FFVertex>& vert
       const FFVertex& v = verts[idx[k + j]];
       poly.push_back(mvp * glm::vec4(v.pos[0], v.pos[1], v.pos[2], v.pos[3]));
     }
-    if (per == 3 && s.polygon.cull) {
-      // Facing from the window-space area (GL 2.1 §2.14.1, eq. 2.6), before clipping.
-      float area = 0.0f;
-      bool ok = true;
-      glm::vec2 w[3];
-      for (int j = 0; j < 3; ++j) {
-        if (!(poly[size_t(j)].w > 0.0f)) ok = false;
-        w[j] = glm::vec2(poly[size_t(j)]) / poly[size_t(j)].w;
-      }
-      if (ok) {
-        area = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[2].x - w[0].x) * (w[1].y - w[0].y);
-        const bool front = (s.polygon.front_face == GL_CCW) == (area > 0.0f);
-        const GLenum cf = s.polygon.cull_face;
-        if (cf == GL_FRONT_AND_BACK || (cf == GL_FRONT && front) || (cf == GL_BACK && !front)) continue;
-      }
-    }
+    if (per == 3 && culled(poly[0], poly[1], poly[2])) continue;
     if (per == 1) {
       bool inside = true;
       for (const glm::vec4& p : planes) inside = inside && glm::dot(p, poly[0]) >= 0.0f;
