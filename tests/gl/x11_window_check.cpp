@@ -136,6 +136,11 @@ std::vector<std::pair<int, int>> windows_of_size(Display* d, int w, int h) {
   return found;
 }
 
+// Windows come and go while the program starts (SDL makes and drops helper windows): a query
+// about one that is gone fails, which the callers check, instead of ending the process as
+// Xlib's default error handler would.
+int ignore_x_errors(Display*, XErrorEvent*) { return 0; }
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -155,6 +160,7 @@ int main(int argc, char** argv) {
   }
   frame.rgb.assign(data, data + size_t(frame.w) * size_t(frame.h) * 3);
   stbi_image_free(data);
+  XSetErrorHandler(ignore_x_errors);
   Display* d = XOpenDisplay(nullptr);
   if (!d) {
     std::fprintf(stderr, "x11_window_check: no X display (DISPLAY=%s)\n", std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "");
