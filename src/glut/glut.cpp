@@ -4,8 +4,8 @@
 // window is an SDL2 window that shows the front buffer (window_sdl.cpp). Without one — or
 // when TESSEL_HEADLESS is set (`frames:N,out:DIR`) — glutMainLoop reshapes each window once,
 // then for N frames fires the due timers and the idle callback (frames after the first),
-// calls display and writes the window's visible image to DIR/frame-NNNN.png; then it exits
-// as glutMainLoop does when the last window closes. Time in that mode is virtual: 1000/60 ms
+// calls display and writes the window's visible image to DIR/frame-NNNN.png; then it
+// returns, as it does when the last window closes (the program ends when main returns). Time in that mode is virtual: 1000/60 ms
 // per frame, so a run is the same every time.
 #include "glut_internal.hpp"
 
@@ -77,14 +77,10 @@ void write_frame(Window& w, int frame) {
   }
 }
 
-void finish_main_loop() {
-  if (g_state.action_on_close != GLUT_ACTION_EXIT) {
-    g_state.leave = true;
-    return;
-  }
-  g_state.windows.clear();
-  std::exit(0);
-}
+// The main loop ends by returning to the program, never by exit(): with GLUT_ACTION_EXIT
+// (the default) GLUT would end the process here, and a program's `glutMainLoop(); return 0;`
+// does that itself, with its own cleanup and exit status.
+void finish_main_loop() { g_state.leave = true; }
 
 void headless_main_loop() {
   std::error_code ec;

@@ -112,8 +112,7 @@ void dispatch(const SDL_Event& e) {
           make_current(*w);
           w->close();
         }
-      if (s.action_on_close == GLUT_ACTION_EXIT) std::exit(0);
-      s.leave = true;
+      s.leave = true;  // glutMainLoop returns; the program ends when main does
       return;
     case SDL_WINDOWEVENT: {
       Window* w = window_of(e.window.windowID);
@@ -142,7 +141,6 @@ void dispatch(const SDL_Event& e) {
             make_current(*w);
             w->close();
           }
-          if (s.action_on_close == GLUT_ACTION_EXIT) std::exit(0);
           s.leave = true;
           break;
         default: break;
