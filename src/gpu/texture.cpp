@@ -2,6 +2,7 @@
 #include "tessel/gpu/texture.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -17,6 +18,7 @@
 #define TESSEL_INLINE_LAMBDA __attribute__((always_inline))
 
 namespace tessel::gpu {
+using namespace detail;
 
 namespace {
 
@@ -372,7 +374,6 @@ void TextureCube::generate_mipmaps() {
 
 namespace {
 
-constexpr float kNoCoord = 1.0e30f;
 
 // NaN -> 0 and infinities to a large finite value, so index arithmetic stays defined.
 TESSEL_INLINE float sane(float s) {
@@ -413,16 +414,6 @@ TESSEL_INLINE int wrap_texel(int i, int size, Wrap mode) {
 
 inline bool is_linear(Filter f) {
   return f == Filter::Linear || f == Filter::LinearMipmapNearest || f == Filter::LinearMipmapLinear;
-}
-
-struct LevelRef {
-  const std::byte* data;
-  int w, h;
-};
-
-inline LevelRef level_ref(const Texture2D& t, int i) {
-  const Level& l = t.level(i);
-  return {l.data.data(), l.width, l.height};
 }
 
 // The border colour as a texel of the format: unsigned normalized formats clamp it to [0, 1],
@@ -711,41 +702,6 @@ namespace {
 // CLAMP_TO_EDGE: the same arithmetic as sample_level/run_plan above, lane-parallel, so the
 // results are bit-identical to the per-lane path.
 
-inline Int8 gather_u32(const std::byte* base, Int8 index) {
-#if defined(__AVX2__)
-  return Int8((vx::i32x8)_mm256_i32gather_epi32(reinterpret_cast<const int*>(base), (__m256i)index.v, 4));
-#else
-  Int8 r;
-  for (int i = 0; i < kLanes; ++i) std::memcpy(&r.v[i], base + size_t(uint32_t(index.v[i])) * 4, 4);
-  return r;
-#endif
-}
-
-TESSEL_INLINE Float8 sane8(Float8 s) {
-  s = select(s == s, s, Float8(0.0f));
-  return clamp(s, Float8(-kNoCoord), Float8(kNoCoord));
-}
-
-// floor_to_int for values that are already integral (or huge): clamp to +-2^30, convert.
-TESSEL_INLINE Int8 integral_to_int(Float8 f) {
-  return to_int(clamp(f, Float8(-1073741824.0f), Float8(1073741824.0f)));
-}
-
-TESSEL_INLINE Int8 wrap8(Int8 i, int size, Wrap mode) {
-  if (mode == Wrap::Repeat) return i & Int8(size - 1);  // power-of-two size
-  return min(max(i, Int8(0)), Int8(size - 1));           // ClampToEdge
-}
-
-TESSEL_INLINE Vec4<Float8> decode_rgba8(Int8 t) {
-  const Float8 k(1.0f / 255.0f);
-  return {to_float(t & Int8(0xFF)) * k, to_float((t >> 8) & Int8(0xFF)) * k, to_float((t >> 16) & Int8(0xFF)) * k,
-          to_float(Int8(vx::i32x8((vx::u32x8)t.v >> 24))) * k};
-}
-
-TESSEL_INLINE Vec4<Float8> lerp8(const Vec4<Float8>& a, const Vec4<Float8>& b, Float8 t) {
-  return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t, a.w + (b.w - a.w) * t};
-}
-
 Vec4<Float8> sample_level_rgba8(const LevelRef& L, Wrap ws, Wrap wt, Float8 s, Float8 t, bool linear) {
   const Float8 u = sane8(s) * Float8(float(L.w));
   const Float8 v = sane8(t) * Float8(float(L.h));
@@ -766,48 +722,6 @@ Vec4<Float8> sample_level_rgba8(const LevelRef& L, Wrap ws, Wrap wt, Float8 s, F
 }
 
 #if defined(__AVX2__)
-// Bilinear and trilinear filtering of RGBA8 texels in 16-bit fixed point, as llvmpipe's AoS
-// path does (8-bit weights, each lerp rounded to 8 bits), but without shuffles: each lane's
-// texel is split into its even bytes (R, B) and odd bytes (G, A) as 16-bit fields, and every
-// lerp works on those fields in place.
-struct Rgba16 {
-  __m256i even, odd;  // per lane: R | B << 16 and G | A << 16, values 0..255
-};
-
-// The weight of each lane (0..256) in both 16-bit halves of the lane.
-TESSEL_INLINE __m256i weight_pair(Int8 w) {
-  const __m256i v = (__m256i)w.v;
-  return _mm256_or_si256(v, _mm256_slli_epi32(v, 16));
-}
-// (a * (256 - w) + b * w + 128) >> 8 per 16-bit field: at most 255 * 256 + 128, so u16 holds it.
-TESSEL_INLINE __m256i lerp16(__m256i a, __m256i b, __m256i w) {
-  const __m256i inv = _mm256_sub_epi16(_mm256_set1_epi16(256), w);
-  const __m256i sum = _mm256_add_epi16(_mm256_mullo_epi16(a, inv), _mm256_mullo_epi16(b, w));
-  return _mm256_srli_epi16(_mm256_add_epi16(sum, _mm256_set1_epi16(128)), 8);
-}
-TESSEL_INLINE Rgba16 split(Int8 texels) {
-  const __m256i t = (__m256i)texels.v, mask = _mm256_set1_epi32(0x00FF00FF);
-  return {_mm256_and_si256(t, mask), _mm256_and_si256(_mm256_srli_epi32(t, 8), mask)};
-}
-TESSEL_INLINE Rgba16 lerp16(const Rgba16& a, const Rgba16& b, __m256i w) {
-  return {lerp16(a.even, b.even, w), lerp16(a.odd, b.odd, w)};
-}
-
-TESSEL_INLINE Rgba16 bilinear_rgba16(const LevelRef& L, Wrap ws, Wrap wt, Float8 s, Float8 t) {
-  const Float8 u = sane8(s) * Float8(float(L.w)) - Float8(0.5f);
-  const Float8 v = sane8(t) * Float8(float(L.h)) - Float8(0.5f);
-  const Float8 fu = floor(u), fv = floor(v);
-  const __m256i wa = weight_pair(to_int((u - fu) * Float8(256.0f)));
-  const __m256i wb = weight_pair(to_int((v - fv) * Float8(256.0f)));
-  const Int8 i0 = integral_to_int(fu), j0 = integral_to_int(fv);
-  const Int8 row(L.w);
-  const Int8 x0 = wrap8(i0, L.w, ws), x1 = wrap8(i0 + Int8(1), L.w, ws);
-  const Int8 y0 = wrap8(j0, L.h, wt) * row, y1 = wrap8(j0 + Int8(1), L.h, wt) * row;
-  const Rgba16 t00 = split(gather_u32(L.data, y0 + x0)), t10 = split(gather_u32(L.data, y0 + x1));
-  const Rgba16 t01 = split(gather_u32(L.data, y1 + x0)), t11 = split(gather_u32(L.data, y1 + x1));
-  return lerp16(lerp16(t00, t10, wa), lerp16(t01, t11, wa), wb);
-}
-
 // Both quads use levels p.level0 and p.level1 (if any); quad q blends them by blend[q].
 Vec4<Float8> run_plan_rgba8_linear(const Texture2D& tex, const Plan& p, const float blend[2], const SamplerState& st,
                                    const Vec2<Float8>& uv) {
@@ -839,15 +753,6 @@ struct LevelGuess {
   const Texture2D* texture = nullptr;
   int level0 = 0, level1 = -1;
 };
-
-bool vector_path(const Texture2D& tex, const SamplerState& st) {
-  if (tex.format() != Format::RGBA8) return false;
-  const bool pow2_w = (tex.width() & (tex.width() - 1)) == 0, pow2_h = (tex.height() & (tex.height() - 1)) == 0;
-  const bool ok_s = st.wrap_s == Wrap::ClampToEdge || (st.wrap_s == Wrap::Repeat && pow2_w);
-  const bool ok_t = st.wrap_t == Wrap::ClampToEdge || (st.wrap_t == Wrap::Repeat && pow2_h);
-  // Gather indices are 32-bit: y * width + x must fit.
-  return ok_s && ok_t && int64_t(tex.width()) * tex.height() < (int64_t(1) << 31);
-}
 
 }  // namespace
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "tessel/gpu/vec.hpp"
@@ -61,6 +62,21 @@ TEST(Lanes, GeometricFunctions) {
   EXPECT_EQ(fract(-1.25f), 0.75f);
   EXPECT_EQ(smoothstep(0.0f, 1.0f, 0.5f), 0.5f);
   EXPECT_EQ(clamp(Float8(3.0f), Float8(0.0f), Float8(1.0f))[0], 1.0f);
+}
+
+// floor on lanes is one rounding instruction: it must agree with std::floor everywhere,
+// including halves, values at and beyond 2^23, the largest floats, infinities and NaN.
+TEST(Lanes, FloorMatchesStdFloor) {
+  const float v[] = {-2.5f, -1.5f, -0.5f, -0.0f, 0.0f, 0.49999997f, 0.5f, 1.0f, 2.99999f, -1e-30f, 8388607.5f, -8388607.5f,
+                     8388608.0f, -8388609.0f, 1e20f, -1e20f, 3.4e38f, -3.4e38f, 1.0f / 0.0f, -1.0f / 0.0f};
+  for (float x : v) {
+    Float8 a(1.0f);
+    a[3] = x;
+    const float f = floor(a)[3];
+    EXPECT_EQ(std::signbit(f), std::signbit(std::floor(x))) << x;
+    EXPECT_EQ(f, std::floor(x)) << x;
+  }
+  EXPECT_TRUE(std::isnan(floor(Float8(std::numeric_limits<float>::quiet_NaN()))[0]));
 }
 
 TEST(Lanes, DerivativesAreQuadDifferences) {

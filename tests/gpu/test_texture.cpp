@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include <immintrin.h>
 #endif
 
+#include "tessel/gpu/detail/pipeline.hpp"
 #include "tessel/gpu/texture.hpp"
 
 using namespace tessel::gpu;
@@ -814,4 +816,62 @@ TEST(Wrap, LegacyClamp) {
   const glm::vec4 edge = detail::sample_2d(s, 2.0f, 0.5f, 0.0f);  // s = 1, on the texel row
   EXPECT_NEAR(edge.b, 0.5f, 1e-6f);  // half the last texel ...
   EXPECT_NEAR(edge.g, 0.5f, 1e-6f);  // ... half the border
+}
+
+// Sixteen lanes of trilinear RGBA8 have a path of their own (detail/texture_simd.hpp); it must
+// give the bits of the two halves sampled as eight lanes each, whichever way each call goes:
+// all four quads between the same two levels (the sixteen-lane path), quads on different
+// levels, magnification, beyond the last level, NaN coordinates (the eight-lane fallbacks).
+TEST(Sampling, SixteenLanesGiveTheBitsOfTwoHalvesOfEight) {
+  Texture2D t(Format::RGBA8, 256, 128, 0);
+  std::vector<uint8_t> px(size_t(256) * 128 * 4);
+  std::mt19937 rng(11);
+  for (auto& p : px) p = uint8_t(rng());
+  t.upload_rgba8(0, px.data(), px.size());
+  t.generate_mipmaps();
+  std::uniform_real_distribution<float> pos(-3.0f, 3.0f), lod(-1.5f, 9.5f);
+  int fast = 0;
+  for (int wrap = 0; wrap < 2; ++wrap) {
+    for (int variant = 0; variant < 3; ++variant) {
+      SamplerState st;
+      st.min_filter = Filter::LinearMipmapLinear;
+      st.mag_filter = Filter::Linear;
+      st.wrap_s = st.wrap_t = wrap ? Wrap::ClampToEdge : Wrap::Repeat;
+      if (variant == 1) st.lod_bias = 0.75f;
+      if (variant == 2) {
+        st.min_lod = 1.5f;
+        st.max_lod = 4.25f;
+      }
+      const Sampler2D s{&t, st};
+      for (int iter = 0; iter < 3000; ++iter) {
+        // Four 2x2 quads; one scale for all of them, or one each (every 4th call).
+        Vec2<Float16> uv;
+        const float x0 = pos(rng), y0 = pos(rng);
+        float scale[4];
+        for (int q = 0; q < 4; ++q) scale[q] = (q == 0 || iter % 4 == 0) ? std::exp2(lod(rng)) / 256.0f : scale[0];
+        for (int l = 0; l < 16; ++l) {
+          const int q = l / 4, g = l / 8;  // quad, 4x2 group
+          const float px_x = float(detail::kLaneDx[l % 8] + 4 * g), px_y = float(detail::kLaneDy[l % 8]);
+          uv.x[l] = x0 + px_x * scale[q];
+          uv.y[l] = y0 + px_y * scale[q] * 0.75f;
+        }
+        if (iter % 97 == 5) uv.x[iter % 16] = std::numeric_limits<float>::quiet_NaN();
+        Vec4<Float16> r16;
+        if (detail::trilinear16(t, st, uv, r16)) ++fast;
+        const Vec4<Float16> a = texture(s, uv);
+        const Vec4<Float8> lo = texture(s, lo_half(uv)), hi = texture(s, hi_half(uv));
+        for (int l = 0; l < 16; ++l) {
+          const Vec4<Float8>& h = l < 8 ? lo : hi;
+          const int i = l % 8;
+          ASSERT_EQ(fbits(a.x[l]), fbits(h.x[i])) << "wrap " << wrap << " variant " << variant << " iter " << iter << " lane " << l;
+          ASSERT_EQ(fbits(a.y[l]), fbits(h.y[i])) << l;
+          ASSERT_EQ(fbits(a.z[l]), fbits(h.z[i])) << l;
+          ASSERT_EQ(fbits(a.w[l]), fbits(h.w[i])) << l;
+        }
+      }
+    }
+  }
+  // Both kinds of call happened: the sixteen-lane path and the fallbacks.
+  EXPECT_GT(fast, 3000);
+  EXPECT_LT(fast, 15000);
 }

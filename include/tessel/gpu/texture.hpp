@@ -188,8 +188,16 @@ Vec4<float> texelFetch(const Sampler2D& s, int x, int y, int level);
 Vec4<Float8> texelFetch(const Sampler2D& s, Int8 x, Int8 y, int level);
 glm::ivec2 textureSize(const Sampler2D& s, int level);
 
-// Sixteen lanes (two 4x2 groups side by side) sample as their two halves of eight.
-inline Vec4<Float16> texture(const Sampler2D& s, const Vec2<Float16>& uv) {
+// Sixteen lanes (two 4x2 groups side by side) sample as their two halves of eight; trilinear
+// RGBA8 has a path of its own for sixteen lanes (detail/texture_simd.hpp), with the same result.
+namespace detail {
+inline bool trilinear16(const Texture2D& tex, const SamplerState& st, const Vec2<Float16>& uv, Vec4<Float16>& out);
+}
+__attribute__((always_inline)) inline Vec4<Float16> texture(const Sampler2D& s, const Vec2<Float16>& uv) {
+#if defined(__AVX2__)
+  Vec4<Float16> r;
+  if (s.texture != nullptr && detail::trilinear16(*s.texture, s.state, uv, r)) return r;
+#endif
   return join(texture(s, lo_half(uv)), texture(s, hi_half(uv)));
 }
 inline Vec4<Float16> textureLod(const Sampler2D& s, const Vec2<Float16>& uv, Float16 lod) {
@@ -210,3 +218,5 @@ inline Vec4<Float16> texelFetch(const Sampler2D& s, Int16 x, Int16 y, int level)
 }
 
 }  // namespace tessel::gpu
+
+#include "tessel/gpu/detail/texture_simd.hpp"

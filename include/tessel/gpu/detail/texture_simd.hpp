@@ -1,0 +1,198 @@
+// Eight- and sixteen-lane sampling of RGBA8 textures (REPEAT on power-of-two sizes, or
+// CLAMP_TO_EDGE), in a header so that a shader's fragment function, which the raster loop
+// compiles with everything it calls inlined, keeps its lane values in registers across the
+// texture lookup (an out-of-line call would spill every live vector register around it).
+// texture.cpp uses the same functions for the eight-lane path, so both give the same bits.
+#pragma once
+
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
+
+#include "tessel/gpu/simd.hpp"
+#include "tessel/gpu/texture.hpp"
+#include "tessel/gpu/vec.hpp"
+
+#define TESSEL_ALWAYS_INLINE inline __attribute__((always_inline))
+
+namespace tessel::gpu::detail {
+
+// NaN -> 0 and infinities to a large finite value, so index arithmetic stays defined.
+constexpr float kNoCoord = 1.0e30f;
+
+struct LevelRef {
+  const std::byte* data;
+  int w, h;
+};
+
+TESSEL_ALWAYS_INLINE LevelRef level_ref(const Texture2D& t, int i) {
+  const Level& l = t.level(i);
+  return {l.data.data(), l.width, l.height};
+}
+
+inline Int8 gather_u32(const std::byte* base, Int8 index) {
+#if defined(__AVX2__)
+  return Int8((vx::i32x8)_mm256_i32gather_epi32(reinterpret_cast<const int*>(base), (__m256i)index.v, 4));
+#else
+  Int8 r;
+  for (int i = 0; i < kLanes; ++i) std::memcpy(&r.v[i], base + size_t(uint32_t(index.v[i])) * 4, 4);
+  return r;
+#endif
+}
+
+TESSEL_ALWAYS_INLINE Float8 sane8(Float8 s) {
+  s = select(s == s, s, Float8(0.0f));
+  return clamp(s, Float8(-kNoCoord), Float8(kNoCoord));
+}
+
+// floor_to_int for values that are already integral (or huge): clamp to +-2^30, convert.
+TESSEL_ALWAYS_INLINE Int8 integral_to_int(Float8 f) {
+  return to_int(clamp(f, Float8(-1073741824.0f), Float8(1073741824.0f)));
+}
+
+TESSEL_ALWAYS_INLINE Int8 wrap8(Int8 i, int size, Wrap mode) {
+  if (mode == Wrap::Repeat) return i & Int8(size - 1);  // power-of-two size
+  return min(max(i, Int8(0)), Int8(size - 1));           // ClampToEdge
+}
+
+TESSEL_ALWAYS_INLINE Vec4<Float8> decode_rgba8(Int8 t) {
+  const Float8 k(1.0f / 255.0f);
+  return {to_float(t & Int8(0xFF)) * k, to_float((t >> 8) & Int8(0xFF)) * k, to_float((t >> 16) & Int8(0xFF)) * k,
+          to_float(Int8(vx::i32x8((vx::u32x8)t.v >> 24))) * k};
+}
+
+TESSEL_ALWAYS_INLINE Vec4<Float8> lerp8(const Vec4<Float8>& a, const Vec4<Float8>& b, Float8 t) {
+  return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t, a.w + (b.w - a.w) * t};
+}
+
+inline bool vector_path(const Texture2D& tex, const SamplerState& st) {
+  if (tex.format() != Format::RGBA8) return false;
+  const bool pow2_w = (tex.width() & (tex.width() - 1)) == 0, pow2_h = (tex.height() & (tex.height() - 1)) == 0;
+  const bool ok_s = st.wrap_s == Wrap::ClampToEdge || (st.wrap_s == Wrap::Repeat && pow2_w);
+  const bool ok_t = st.wrap_t == Wrap::ClampToEdge || (st.wrap_t == Wrap::Repeat && pow2_h);
+  // Gather indices are 32-bit: y * width + x must fit.
+  return ok_s && ok_t && int64_t(tex.width()) * tex.height() < (int64_t(1) << 31);
+}
+
+#if defined(__AVX2__)
+// Bilinear and trilinear filtering of RGBA8 texels in 16-bit fixed point, as llvmpipe's AoS
+// path does (8-bit weights, each lerp rounded to 8 bits), but without shuffles: each lane's
+// texel is split into its even bytes (R, B) and odd bytes (G, A) as 16-bit fields, and every
+// lerp works on those fields in place.
+struct Rgba16 {
+  __m256i even, odd;  // per lane: R | B << 16 and G | A << 16, values 0..255
+};
+
+// The weight of each lane (0..256) in both 16-bit halves of the lane.
+TESSEL_ALWAYS_INLINE __m256i weight_pair(Int8 w) {
+  const __m256i v = (__m256i)w.v;
+  return _mm256_or_si256(v, _mm256_slli_epi32(v, 16));
+}
+// (a * (256 - w) + b * w + 128) >> 8 per 16-bit field: at most 255 * 256 + 128, so u16 holds it.
+TESSEL_ALWAYS_INLINE __m256i lerp16(__m256i a, __m256i b, __m256i w) {
+  const __m256i inv = _mm256_sub_epi16(_mm256_set1_epi16(256), w);
+  const __m256i sum = _mm256_add_epi16(_mm256_mullo_epi16(a, inv), _mm256_mullo_epi16(b, w));
+  return _mm256_srli_epi16(_mm256_add_epi16(sum, _mm256_set1_epi16(128)), 8);
+}
+TESSEL_ALWAYS_INLINE Rgba16 split(Int8 texels) {
+  const __m256i t = (__m256i)texels.v, mask = _mm256_set1_epi32(0x00FF00FF);
+  return {_mm256_and_si256(t, mask), _mm256_and_si256(_mm256_srli_epi32(t, 8), mask)};
+}
+TESSEL_ALWAYS_INLINE Rgba16 lerp16(const Rgba16& a, const Rgba16& b, __m256i w) {
+  return {lerp16(a.even, b.even, w), lerp16(a.odd, b.odd, w)};
+}
+
+// s and t have been through sane8.
+TESSEL_ALWAYS_INLINE Rgba16 bilinear_rgba16_sane(const LevelRef& L, Wrap ws, Wrap wt, Float8 s, Float8 t) {
+  const Float8 u = s * Float8(float(L.w)) - Float8(0.5f);
+  const Float8 v = t * Float8(float(L.h)) - Float8(0.5f);
+  const Float8 fu = floor(u), fv = floor(v);
+  const __m256i wa = weight_pair(to_int((u - fu) * Float8(256.0f)));
+  const __m256i wb = weight_pair(to_int((v - fv) * Float8(256.0f)));
+  const Int8 i0 = integral_to_int(fu), j0 = integral_to_int(fv);
+  const Int8 x0 = wrap8(i0, L.w, ws), x1 = wrap8(i0 + Int8(1), L.w, ws);
+  Int8 y0 = wrap8(j0, L.h, wt), y1 = wrap8(j0 + Int8(1), L.h, wt);
+  if ((L.w & (L.w - 1)) == 0) {  // rows of a power-of-two width: a shift, not a multiply
+    const int shift = std::countr_zero(unsigned(L.w));
+    y0 = y0 << shift;
+    y1 = y1 << shift;
+  } else {
+    y0 = y0 * Int8(L.w);
+    y1 = y1 * Int8(L.w);
+  }
+  const Rgba16 t00 = split(gather_u32(L.data, y0 + x0)), t10 = split(gather_u32(L.data, y0 + x1));
+  const Rgba16 t01 = split(gather_u32(L.data, y1 + x0)), t11 = split(gather_u32(L.data, y1 + x1));
+  return lerp16(lerp16(t00, t10, wa), lerp16(t01, t11, wa), wb);
+}
+TESSEL_ALWAYS_INLINE Rgba16 bilinear_rgba16(const LevelRef& L, Wrap ws, Wrap wt, Float8 s, Float8 t) {
+  return bilinear_rgba16_sane(L, ws, wt, sane8(s), sane8(t));
+}
+#endif  // __AVX2__
+
+#if defined(__AVX2__)
+// llvmpipe's log2 of the level of detail (lod_log2 in texture.cpp) on eight lanes.
+TESSEL_ALWAYS_INLINE Float8 lod_log2_8(Float8 x) {
+  const Int8 b = bits_of(x);
+  const Float8 e = to_float(((b >> 23) & Int8(0xFF)) - Int8(127));
+  const Float8 m = float_from_bits((b & Int8(0x007FFFFF)) | Int8(0x3F800000));
+  return e + (m - Float8(1.0f));
+}
+
+// rho^2 of quad_lods for eight lanes, each quad's value (from its origin lane) in all four.
+TESSEL_ALWAYS_INLINE Float8 quad_rho2(const Float8& u, const Float8& v, int w, int h) {
+  const Float8 fw{float(w)}, fh{float(h)};
+  const Float8 ux = dFdx(u) * fw, vx = dFdx(v) * fh, uy = dFdy(u) * fw, vy = dFdy(v) * fh;
+  const Float8 r = max(ux * ux + vx * vx, uy * uy + vy * vy);
+  return Float8(__builtin_shufflevector(r.v, r.v, 0, 0, 0, 0, 4, 4, 4, 4));
+}
+
+// Sixteen lanes (four quads) of LINEAR_MIPMAP_LINEAR on an RGBA8 texture when every quad's
+// LOD falls between the same two levels: the LOD, the mip selection and the blend weights
+// on vectors (no per-quad plan), and both halves' texel addresses and gathers side by side,
+// so that their latencies overlap. The arithmetic is that of texture() on eight lanes, step
+// for step, so the result is bit-identical; false (nothing written) when it does not apply.
+TESSEL_ALWAYS_INLINE bool trilinear16(const Texture2D& tex, const SamplerState& st, const Vec2<Float16>& uv, Vec4<Float16>& out) {
+  if (st.min_filter != Filter::LinearMipmapLinear || tex.levels() < 2 || !vector_path(tex, st)) return false;
+  const int W = tex.width(), H = tex.height();
+  const Float8 r_lo = quad_rho2(uv.x.lo, uv.y.lo, W, H), r_hi = quad_rho2(uv.x.hi, uv.y.hi, W, H);
+  const Float8 kMaxR(3.4e38f), zero(0.0f);
+  if (((r_lo > zero) & (r_lo <= kMaxR) & (r_hi > zero) & (r_hi <= kMaxR)).bits() != 0xFF) return false;
+  // make_plan: l = lod + bias, then max(l, min_lod) and min(l, max_lod) as std::max/min do.
+  auto level_of = [&](Float8 r) {
+    Float8 l = Float8(0.5f) * lod_log2_8(r) + Float8(st.lod_bias);
+    l = select(l < Float8(st.min_lod), Float8(st.min_lod), l);
+    l = select(Float8(st.max_lod) < l, Float8(st.max_lod), l);
+    return l;
+  };
+  const Float8 l_lo = level_of(r_lo), l_hi = level_of(r_hi);
+  const Float8 q(float(tex.levels() - 1));
+  // Minification (l > 0; NaN fails) and below the last level, in every lane.
+  if (((l_lo > zero) & (l_lo < q) & (l_hi > zero) & (l_hi < q)).bits() != 0xFF) return false;
+  const Float8 d_lo = floor(l_lo), d_hi = floor(l_hi);
+  const Int8 lv_lo = to_int(d_lo), lv_hi = to_int(d_hi);
+  const int level = lv_lo[0];
+  if (((lv_lo == Int8(level)) & (lv_hi == Int8(level))).bits() != 0xFF) return false;
+  // The mip blend of each lane's quad as a 16-bit weight, lrint(blend * 256) as run_plan has it.
+  const __m256i w_lo = weight_pair(Int8((vx::i32x8)_mm256_cvtps_epi32((__m256)((l_lo - d_lo) * Float8(256.0f)).v)));
+  const __m256i w_hi = weight_pair(Int8((vx::i32x8)_mm256_cvtps_epi32((__m256)((l_hi - d_hi) * Float8(256.0f)).v)));
+
+  const LevelRef L0 = level_ref(tex, level), L1 = level_ref(tex, level + 1);
+  const Float8 s_lo = sane8(uv.x.lo), t_lo = sane8(uv.y.lo), s_hi = sane8(uv.x.hi), t_hi = sane8(uv.y.hi);
+  const Rgba16 a_lo = bilinear_rgba16_sane(L0, st.wrap_s, st.wrap_t, s_lo, t_lo);
+  const Rgba16 a_hi = bilinear_rgba16_sane(L0, st.wrap_s, st.wrap_t, s_hi, t_hi);
+  const Rgba16 b_lo = bilinear_rgba16_sane(L1, st.wrap_s, st.wrap_t, s_lo, t_lo);
+  const Rgba16 b_hi = bilinear_rgba16_sane(L1, st.wrap_s, st.wrap_t, s_hi, t_hi);
+  const Rgba16 c_lo = lerp16(a_lo, b_lo, w_lo), c_hi = lerp16(a_hi, b_hi, w_hi);
+  const Vec4<Float8> lo = decode_rgba8(Int8((vx::i32x8)_mm256_or_si256(c_lo.even, _mm256_slli_epi32(c_lo.odd, 8))));
+  const Vec4<Float8> hi = decode_rgba8(Int8((vx::i32x8)_mm256_or_si256(c_hi.even, _mm256_slli_epi32(c_hi.odd, 8))));
+  out = join(lo, hi);
+  return true;
+}
+#endif
+
+}  // namespace tessel::gpu::detail
