@@ -728,7 +728,7 @@ Vec4<Float8> run_plan_rgba8_linear(const Texture2D& tex, const Plan& p, const fl
   Rgba16 c = bilinear_rgba16(level_ref(tex, p.level0), st.wrap_s, st.wrap_t, uv.x, uv.y);
   if (p.level1 >= 0 && (blend[0] != 0.0f || blend[1] != 0.0f)) {
     const Rgba16 c1 = bilinear_rgba16(level_ref(tex, p.level1), st.wrap_s, st.wrap_t, uv.x, uv.y);
-    const int16_t w0 = int16_t(std::lrint(blend[0] * 256.0f)), w1 = int16_t(std::lrint(blend[1] * 256.0f));
+    const int16_t w0 = lerp_weight(int(std::lrint(blend[0] * 256.0f))), w1 = lerp_weight(int(std::lrint(blend[1] * 256.0f)));
     c = lerp16(c, c1, _mm256_setr_epi16(w0, w0, w0, w0, w0, w0, w0, w0, w1, w1, w1, w1, w1, w1, w1, w1));
   }
   const __m256i packed = _mm256_or_si256(c.even, _mm256_slli_epi32(c.odd, 8));

@@ -875,3 +875,23 @@ TEST(Sampling, SixteenLanesGiveTheBitsOfTwoHalvesOfEight) {
   EXPECT_GT(fast, 3000);
   EXPECT_LT(fast, 15000);
 }
+
+#if defined(__AVX2__)
+// The 16-bit lerp of RGBA8 filtering is llvmpipe's (a (256 - w) + b w + 128) >> 8, computed
+// with vpmulhrsw: every a, b in 0..255 and every weight 0..256.
+TEST(Sampling, FixedPointLerpIsExactForEveryInput) {
+  for (int w = 0; w <= 256; ++w) {
+    const __m256i m = _mm256_set1_epi16(detail::lerp_weight(w));
+    for (int a = 0; a < 256; ++a) {
+      for (int b0 = 0; b0 < 256; b0 += 16) {
+        alignas(32) int16_t bs[16], out[16];
+        for (int k = 0; k < 16; ++k) bs[k] = int16_t(b0 + k);
+        const __m256i r = detail::lerp16(_mm256_set1_epi16(int16_t(a)), _mm256_load_si256(reinterpret_cast<const __m256i*>(bs)), m);
+        _mm256_store_si256(reinterpret_cast<__m256i*>(out), r);
+        for (int k = 0; k < 16; ++k)
+          ASSERT_EQ(out[k], (a * (256 - w) + (b0 + k) * w + 128) >> 8) << "a " << a << " b " << b0 + k << " w " << w;
+      }
+    }
+  }
+}
+#endif

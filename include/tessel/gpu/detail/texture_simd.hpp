@@ -88,33 +88,53 @@ struct Rgba16 {
   __m256i even, odd;  // per lane: R | B << 16 and G | A << 16, values 0..255
 };
 
-// The weight of each lane (0..256) in both 16-bit halves of the lane.
+// A lerp weight w (0..256) as lerp16 takes it: -128 w, which fits in 16 bits for all of them.
+TESSEL_ALWAYS_INLINE int16_t lerp_weight(int w) { return int16_t(-(w << 7)); }
+// The weight of each lane (0..256) in both 16-bit halves of the lane, as lerp16 takes it.
 TESSEL_ALWAYS_INLINE __m256i weight_pair(Int8 w) {
-  const __m256i v = (__m256i)w.v;
-  return _mm256_or_si256(v, _mm256_slli_epi32(v, 16));
+  const __m256i v = _mm256_slli_epi32((__m256i)w.v, 7);
+  return _mm256_sub_epi16(_mm256_setzero_si256(), _mm256_or_si256(v, _mm256_slli_epi32(v, 16)));
 }
-// (a * (256 - w) + b * w + 128) >> 8 per 16-bit field: at most 255 * 256 + 128, so u16 holds it.
-TESSEL_ALWAYS_INLINE __m256i lerp16(__m256i a, __m256i b, __m256i w) {
-  const __m256i inv = _mm256_sub_epi16(_mm256_set1_epi16(256), w);
-  const __m256i sum = _mm256_add_epi16(_mm256_mullo_epi16(a, inv), _mm256_mullo_epi16(b, w));
-  return _mm256_srli_epi16(_mm256_add_epi16(sum, _mm256_set1_epi16(128)), 8);
+// (a * (256 - w) + b * w + 128) >> 8 per 16-bit field, m = -128 w: that is
+// a + floor(((b - a) w + 128) / 256), and vpmulhrsw gives floor((x y + 2^14) / 2^15), which
+// for x = a - b and y = -128 w is that second term (the product never leaves 32 bits).
+TESSEL_ALWAYS_INLINE __m256i lerp16(__m256i a, __m256i b, __m256i m) {
+  return _mm256_add_epi16(a, _mm256_mulhrs_epi16(_mm256_sub_epi16(a, b), m));
 }
 TESSEL_ALWAYS_INLINE Rgba16 split(Int8 texels) {
-  const __m256i t = (__m256i)texels.v, mask = _mm256_set1_epi32(0x00FF00FF);
-  return {_mm256_and_si256(t, mask), _mm256_and_si256(_mm256_srli_epi32(t, 8), mask)};
+  const __m256i t = (__m256i)texels.v;
+  // Bytes 1 and 3 of each lane to 16-bit fields by one shuffle (-1: zero).
+  const __m256i odd = _mm256_setr_epi8(1, -1, 3, -1, 5, -1, 7, -1, 9, -1, 11, -1, 13, -1, 15, -1,
+                                       1, -1, 3, -1, 5, -1, 7, -1, 9, -1, 11, -1, 13, -1, 15, -1);
+  return {_mm256_and_si256(t, _mm256_set1_epi32(0x00FF00FF)), _mm256_shuffle_epi8(t, odd)};
 }
 TESSEL_ALWAYS_INLINE Rgba16 lerp16(const Rgba16& a, const Rgba16& b, __m256i w) {
   return {lerp16(a.even, b.even, w), lerp16(a.odd, b.odd, w)};
 }
 
-// s and t have been through sane8.
+// The coordinates of the fixed-point path: NaN -> 0 (as sane8), and clamped to +-65536 (whole
+// repeats of the texture, where a float keeps under 8 bits of fraction anyway), so that
+// s * size stays within 2^30 and converts to an integer without a clamp of its own.
+TESSEL_ALWAYS_INLINE Float8 sane8_fixed(Float8 s) {
+  s = Float8(vx::f32x8(_mm256_and_ps(__m256(s.v), _mm256_cmp_ps(__m256(s.v), __m256(s.v), _CMP_ORD_Q))));
+  return clamp(s, Float8(-65536.0f), Float8(65536.0f));
+}
+
+// The channels as floats in [0, 1] (decode_rgba8 of the packed texel, without packing it).
+TESSEL_ALWAYS_INLINE Vec4<Float8> decode_rgba16(const Rgba16& c) {
+  const Float8 k(1.0f / 255.0f);
+  const Int8 e((vx::i32x8)c.even), o((vx::i32x8)c.odd), low(0xFFFF);
+  return {to_float(e & low) * k, to_float(o & low) * k, to_float(e >> 16) * k, to_float(o >> 16) * k};
+}
+
+// s and t have been through sane8_fixed.
 TESSEL_ALWAYS_INLINE Rgba16 bilinear_rgba16_sane(const LevelRef& L, Wrap ws, Wrap wt, Float8 s, Float8 t) {
   const Float8 u = s * Float8(float(L.w)) - Float8(0.5f);
   const Float8 v = t * Float8(float(L.h)) - Float8(0.5f);
   const Float8 fu = floor(u), fv = floor(v);
   const __m256i wa = weight_pair(to_int((u - fu) * Float8(256.0f)));
   const __m256i wb = weight_pair(to_int((v - fv) * Float8(256.0f)));
-  const Int8 i0 = integral_to_int(fu), j0 = integral_to_int(fv);
+  const Int8 i0 = to_int(fu), j0 = to_int(fv);
   const Int8 x0 = wrap8(i0, L.w, ws), x1 = wrap8(i0 + Int8(1), L.w, ws);
   Int8 y0 = wrap8(j0, L.h, wt), y1 = wrap8(j0 + Int8(1), L.h, wt);
   if ((L.w & (L.w - 1)) == 0) {  // rows of a power-of-two width: a shift, not a multiply
@@ -130,7 +150,7 @@ TESSEL_ALWAYS_INLINE Rgba16 bilinear_rgba16_sane(const LevelRef& L, Wrap ws, Wra
   return lerp16(lerp16(t00, t10, wa), lerp16(t01, t11, wa), wb);
 }
 TESSEL_ALWAYS_INLINE Rgba16 bilinear_rgba16(const LevelRef& L, Wrap ws, Wrap wt, Float8 s, Float8 t) {
-  return bilinear_rgba16_sane(L, ws, wt, sane8(s), sane8(t));
+  return bilinear_rgba16_sane(L, ws, wt, sane8_fixed(s), sane8_fixed(t));
 }
 #endif  // __AVX2__
 
@@ -163,8 +183,13 @@ TESSEL_ALWAYS_INLINE bool trilinear16(const Texture2D& tex, const SamplerState& 
   const Float8 kMaxR(3.4e38f), zero(0.0f);
   if (((r_lo > zero) & (r_lo <= kMaxR) & (r_hi > zero) & (r_hi <= kMaxR)).bits() != 0xFF) return false;
   // make_plan: l = lod + bias, then max(l, min_lod) and min(l, max_lod) as std::max/min do.
+  // With no bias and the default range (0.5 log2 of a positive finite float is in [-75, 64))
+  // the three steps change nothing.
+  const bool plain = st.lod_bias == 0.0f && st.min_lod <= -75.0f && st.max_lod >= 64.0f;
   auto level_of = [&](Float8 r) {
-    Float8 l = Float8(0.5f) * lod_log2_8(r) + Float8(st.lod_bias);
+    Float8 l = Float8(0.5f) * lod_log2_8(r);
+    if (plain) return l;
+    l = l + Float8(st.lod_bias);
     l = select(l < Float8(st.min_lod), Float8(st.min_lod), l);
     l = select(Float8(st.max_lod) < l, Float8(st.max_lod), l);
     return l;
@@ -182,15 +207,13 @@ TESSEL_ALWAYS_INLINE bool trilinear16(const Texture2D& tex, const SamplerState& 
   const __m256i w_hi = weight_pair(Int8((vx::i32x8)_mm256_cvtps_epi32((__m256)((l_hi - d_hi) * Float8(256.0f)).v)));
 
   const LevelRef L0 = level_ref(tex, level), L1 = level_ref(tex, level + 1);
-  const Float8 s_lo = sane8(uv.x.lo), t_lo = sane8(uv.y.lo), s_hi = sane8(uv.x.hi), t_hi = sane8(uv.y.hi);
+  const Float8 s_lo = sane8_fixed(uv.x.lo), t_lo = sane8_fixed(uv.y.lo), s_hi = sane8_fixed(uv.x.hi), t_hi = sane8_fixed(uv.y.hi);
   const Rgba16 a_lo = bilinear_rgba16_sane(L0, st.wrap_s, st.wrap_t, s_lo, t_lo);
   const Rgba16 a_hi = bilinear_rgba16_sane(L0, st.wrap_s, st.wrap_t, s_hi, t_hi);
   const Rgba16 b_lo = bilinear_rgba16_sane(L1, st.wrap_s, st.wrap_t, s_lo, t_lo);
   const Rgba16 b_hi = bilinear_rgba16_sane(L1, st.wrap_s, st.wrap_t, s_hi, t_hi);
   const Rgba16 c_lo = lerp16(a_lo, b_lo, w_lo), c_hi = lerp16(a_hi, b_hi, w_hi);
-  const Vec4<Float8> lo = decode_rgba8(Int8((vx::i32x8)_mm256_or_si256(c_lo.even, _mm256_slli_epi32(c_lo.odd, 8))));
-  const Vec4<Float8> hi = decode_rgba8(Int8((vx::i32x8)_mm256_or_si256(c_hi.even, _mm256_slli_epi32(c_hi.odd, 8))));
-  out = join(lo, hi);
+  out = join(decode_rgba16(c_lo), decode_rgba16(c_hi));
   return true;
 }
 #endif
