@@ -40,7 +40,7 @@ enum class CompareFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEq
 
 // Whether `a <func> b` passes: the depth test, the stencil test and shadow comparisons. For
 // scalars the result is a bool; for lane types (Float8, Int8) a mask per lane.
-template <class T, class R = decltype(T() < T())> constexpr R compare(CompareFunc f, T a, T b) {
+template <class T, class R = decltype(T() < T())> __attribute__((always_inline)) constexpr R compare(CompareFunc f, T a, T b) {
   switch (f) {
     case CompareFunc::Never: return R(false);
     case CompareFunc::Less: return a < b;

@@ -189,7 +189,8 @@ template <class S> class Program final : public ProgramBase {
     return depth_stencil_test(d, t, a.x, a.y, mask, z, front);
   }
   template <class F>
-  static unsigned test(const DrawRecord& d, const TargetView& t, Pos a, Pos b, unsigned mask, const F& z, bool front) {
+  __attribute__((always_inline)) static unsigned test(const DrawRecord& d, const TargetView& t, Pos a, Pos b, unsigned mask,
+                                                      const F& z, bool front) {
     if constexpr (lane_width<F> == 8) {
       return test8(d, t, a, mask, z, front);
     } else {
