@@ -532,6 +532,26 @@ TEST(Sampling, NaNAndHugeCoordinatesAreSafe) {
   v[6] = INFINITY;
   const Vec4<Float8> c = texture(Sampler2D{&m, st}, Vec2<Float8>(u, v));
   for (int i = 0; i < kLanes; ++i) EXPECT_FALSE(std::isnan(c.w[i]));
+
+  // The RGBA8 fixed-point path also samples NaN as 0, in both wrap modes.
+  Texture2D r(Format::RGBA8, 8, 8, 1);
+  std::vector<uint8_t> px(8 * 8 * 4);
+  for (size_t i = 0; i < px.size(); ++i) px[i] = uint8_t(i * 37 + 11);
+  r.upload_rgba8(0, px.data(), px.size());
+  for (Wrap w : {Wrap::Repeat, Wrap::ClampToEdge}) {
+    const Sampler2D rs{&r, linear(w)};
+    Float8 a(0.3f), b(0.6f);
+    a[2] = NAN;
+    b[5] = NAN;
+    const Vec4<Float8> n = texture(rs, Vec2<Float8>(a, b));
+    a[2] = 0.0f;
+    b[5] = 0.0f;
+    const Vec4<Float8> z = texture(rs, Vec2<Float8>(a, b));
+    for (int i = 0; i < kLanes; ++i) {
+      EXPECT_EQ(n.x[i], z.x[i]) << i;
+      EXPECT_EQ(n.y[i], z.y[i]) << i;
+    }
+  }
 }
 
 TEST(Sampling, NullTextureIsOpaqueBlack) {

@@ -112,12 +112,14 @@ TESSEL_ALWAYS_INLINE Rgba16 lerp16(const Rgba16& a, const Rgba16& b, __m256i w) 
   return {lerp16(a.even, b.even, w), lerp16(a.odd, b.odd, w)};
 }
 
-// The coordinates of the fixed-point path: NaN -> 0 (as sane8), and clamped to +-65536 (whole
-// repeats of the texture, where a float keeps under 8 bits of fraction anyway), so that
-// s * size stays within 2^30 and converts to an integer without a clamp of its own.
+// The coordinates of the fixed-point path, clamped to +-65536 (whole repeats of the texture,
+// where a float keeps under 8 bits of fraction anyway), so that s * size stays within 2^30
+// and converts to an integer without a clamp of its own. NaN becomes -65536 (vmaxps returns
+// its second operand then), which samples exactly as 0 does, the value sane8 gives NaN: a
+// whole number of repeats for REPEAT, and the first texel for CLAMP_TO_EDGE.
 TESSEL_ALWAYS_INLINE Float8 sane8_fixed(Float8 s) {
-  s = Float8(vx::f32x8(_mm256_and_ps(__m256(s.v), _mm256_cmp_ps(__m256(s.v), __m256(s.v), _CMP_ORD_Q))));
-  return clamp(s, Float8(-65536.0f), Float8(65536.0f));
+  const __m256 lo = _mm256_max_ps(__m256(s.v), _mm256_set1_ps(-65536.0f));
+  return Float8(vx::f32x8(_mm256_min_ps(lo, _mm256_set1_ps(65536.0f))));
 }
 
 // The channels as floats in [0, 1] (decode_rgba8 of the packed texel, without packing it).
