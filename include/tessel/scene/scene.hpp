@@ -1,0 +1,118 @@
+// The scene engine (DESIGN.md, "Engine"), after the lecture notes' class design: a Scene holds
+// one Camera, its Lights and a heterogeneous list of Objects; an Object refers to shared
+// Geometry, Material and Shader and carries its modelling Transform; drawing goes through a
+// RenderState that the scene and the object fill and the shader reads, so that neither the
+// object nor the shader depends on the other.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tessel/gpu/buffer.hpp"
+#include "tessel/gpu/context.hpp"
+#include "tessel/gpu/texture.hpp"
+#include "tessel/scene/camera.hpp"
+#include "tessel/scene/geometry.hpp"
+#include "tessel/scene/transform.hpp"
+
+namespace tessel::scene {
+
+inline constexpr int kMaxLights = 8;
+
+// A light source at a homogeneous world position: w = 0 is a directional light shining from
+// the direction xyz, w != 0 a point (xyz / w). La is its ambient and Le its emitted radiance
+// (the notes' names). A spot light (spot_cos_cutoff > -1) lights only directions within the
+// cutoff angle of spot_direction, weighted by cos^spot_exponent as in GL 1.x.
+struct Light {
+  glm::vec4 wLightPos{0.0f, 1.0f, 1.0f, 0.0f};
+  glm::vec3 La{0.1f}, Le{1.0f};
+  glm::vec3 spot_direction{0.0f, -1.0f, 0.0f};
+  float spot_cos_cutoff = -1.0f;
+  float spot_exponent = 0.0f;
+};
+
+// The notes' material: ambient, diffuse and specular reflectance, shininess, plus emission
+// and an optional texture that multiplies ka and kd. The last three are the ray tracer's.
+struct Material {
+  glm::vec3 ka{0.1f}, kd{0.7f}, ks{0.3f};
+  float shininess = 32.0f;
+  glm::vec3 emission{0.0f};
+  std::shared_ptr<const gpu::Texture2D> texture;
+  glm::vec3 reflectance{0.0f}, transmittance{0.0f};
+  float refractive_index = 1.0f;
+};
+
+// A mesh in GPU buffers, ready to draw (as a triangle list).
+class Geometry {
+ public:
+  // Throws Error (naming `name`) when the mesh is invalid or empty.
+  explicit Geometry(const Mesh& mesh, const std::string& name = "geometry");
+  const Mesh& mesh() const { return mesh_; }
+  const gpu::VertexLayout& layout() const { return layout_; }
+  gpu::DrawCall draw_call() const;
+  int triangles() const { return int(count_ / 3); }
+
+ private:
+  Mesh mesh_;
+  gpu::Buffer vertices_, indices_;
+  gpu::VertexLayout layout_;
+  uint32_t count_ = 0;
+};
+
+// What flows from the scene and the object to the shader.
+struct RenderState {
+  glm::mat4 M{1.0f}, Minv{1.0f}, V{1.0f}, P{1.0f};
+  glm::vec3 wEye{0.0f};
+  const Material* material = nullptr;
+  std::vector<Light> lights;
+  gpu::RenderState pipeline;  // depth test, culling, ...
+};
+
+// A way to draw geometry: fills its GPU uniforms from the render state and submits the draw.
+class Shader {
+ public:
+  virtual ~Shader() = default;
+  virtual void draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const = 0;
+};
+
+class Object {
+ public:
+  Object(std::shared_ptr<const Geometry> geometry, std::shared_ptr<const Material> material,
+         std::shared_ptr<const Shader> shader)
+      : geometry(std::move(geometry)), material(std::move(material)), shader(std::move(shader)) {}
+  virtual ~Object() = default;
+
+  Transform transform;
+  std::shared_ptr<const Geometry> geometry;
+  std::shared_ptr<const Material> material;
+  std::shared_ptr<const Shader> shader;
+  // Animation per second: a turn about transform.axis (radians), and a velocity.
+  float spin = 0.0f;
+  glm::vec3 velocity{0.0f};
+  bool cull_back_faces = true;
+
+  virtual void Animate(float dt);
+  // Fills M, Minv and the material, and draws with the object's shader.
+  virtual void Draw(gpu::Context& ctx, RenderState state) const;
+};
+
+class Scene {
+ public:
+  Camera camera;
+  std::vector<Light> lights;
+  std::vector<std::unique_ptr<Object>> objects;
+  glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};
+
+  Object& add(std::unique_ptr<Object> object);
+  void Animate(float dt);
+  // Clears the bound framebuffer to the background and draws every object with the camera's
+  // V and P (the caller sets camera.aspect). Throws Error for an invalid camera or more than
+  // kMaxLights lights.
+  void Render(gpu::Context& ctx) const;
+  int triangles() const;
+};
+
+}  // namespace tessel::scene
