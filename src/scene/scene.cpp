@@ -59,6 +59,8 @@ void Scene::Render(gpu::Context& ctx) const {
   state.V = camera.V();
   state.P = camera.P();
   state.wEye = camera.eye;
+  state.near = camera.near;
+  state.far = camera.far;
   state.lights = lights;
   state.pipeline.depth_test = true;
   ctx.clear({.color = background, .depth = 1.0f});

@@ -136,7 +136,92 @@ struct PhongGpu {
   }
 };
 
+// The notes' NPR shader: quantized diffuse light and a black silhouette.
+struct NprGpu {
+  struct Uniforms {
+    TransformUniforms t;
+    LightingUniforms l;
+    float bands = 2.0f, silhouette = 0.2f;
+  };
+  template <class F> using Varyings = PhongGpu::Varyings<F>;
+  static constexpr uint32_t attributes = 0b111;
+
+  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+    return PhongGpu{}.vertex(PhongGpu::Uniforms{u.t, u.l}, in, out);
+  }
+  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
+    const Vec3<F> N = normalize(v.wNormal), V = normalize(Vec3<F>(u.l.eye) - v.wPos);
+    F y(1.0f);
+    if (u.l.count > 0) {
+      const glm::vec4 lp = u.l.lights[0].wLightPos;
+      const Vec3<F> L = normalize(Vec3<F>(glm::vec3(lp)) - v.wPos * F(lp.w));
+      const F d = max(dot(N, L), F(0.0f));
+      // Two bands are the notes' (1 above 0.5, 0.5 below); n bands step evenly up to 1.
+      y = u.bands <= 2.0f ? select(d > F(0.5f), F(1.0f), F(0.5f))
+                          : (floor(d * F(u.bands)) + F(1.0f)) * F(1.0f / u.bands);
+      y = min(y, F(1.0f));
+    }
+    Vec3<F> c = Vec3<F>(u.l.kd) * y;
+    if (u.l.textured) c = c * texture(u.l.tex, v.uv).xyz();
+    const auto outline = abs(dot(N, V)) < F(u.silhouette);
+    f.color[0] = Vec4<F>(select(outline, F(0.0f), c.x), select(outline, F(0.0f), c.y), select(outline, F(0.0f), c.z), F(1.0f));
+  }
+};
+
+struct DepthGpu {
+  struct Uniforms {
+    glm::mat4 MVP{1.0f}, MV{1.0f};
+    float near = 0.1f, far = 100.0f;
+  };
+  template <class F> struct Varyings {
+    F eye_depth;
+  };
+  static constexpr uint32_t attributes = 0b1;
+  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+    const Vec4<F> pos(in.attr[0].xyz(), F(1.0f));
+    out.eye_depth = -(u.MV * pos).z;
+    return u.MVP * pos;
+  }
+  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
+    const F g = clamp((F(u.far) - v.eye_depth) * F(1.0f / (u.far - u.near)), F(0.0f), F(1.0f));
+    f.color[0] = Vec4<F>(g, g, g, F(1.0f));
+  }
+};
+
+struct NormalGpu {
+  struct Uniforms {
+    TransformUniforms t;
+  };
+  template <class F> struct Varyings {
+    Vec3<F> wNormal;
+  };
+  static constexpr uint32_t attributes = 0b11;
+  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+    const Vec4<F> pos(in.attr[0].xyz(), F(1.0f));
+    out.wNormal = (u.t.normal * Vec4<F>(in.attr[1].xyz(), F(0.0f))).xyz();
+    return u.t.MVP * pos;
+  }
+  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+    const Vec3<F> n = normalize(v.wNormal) * F(0.5f) + Vec3<F>(F(0.5f));
+    f.color[0] = Vec4<F>(n, F(1.0f));
+  }
+};
+
 }  // namespace
+
+void NprShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {
+  NprGpu::Uniforms u{transforms(state), lighting(state), float(bands_), silhouette_};
+  ctx.draw(NprGpu{}, u, geometry.layout(), state.pipeline, geometry.draw_call());
+}
+
+void DepthShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {
+  DepthGpu::Uniforms u{state.P * state.V * state.M, state.V * state.M, range_ ? from_ : state.near, range_ ? to_ : state.far};
+  ctx.draw(DepthGpu{}, u, geometry.layout(), state.pipeline, geometry.draw_call());
+}
+
+void NormalShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {
+  ctx.draw(NormalGpu{}, NormalGpu::Uniforms{transforms(state)}, geometry.layout(), state.pipeline, geometry.draw_call());
+}
 
 void GouraudShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {
   ctx.draw(GouraudGpu{}, GouraudGpu::Uniforms{transforms(state), lighting(state)}, geometry.layout(), state.pipeline,

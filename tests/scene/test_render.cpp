@@ -2,6 +2,7 @@
 // that show each shader does what its name says.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -86,4 +87,69 @@ TEST(SceneRender, AnimateSpinsAndMoves) {
   s.Animate(0.5f);
   EXPECT_FLOAT_EQ(s.objects[0]->transform.angle, 0.75f);
   EXPECT_FLOAT_EQ(s.objects[0]->transform.position.z, -1.0f);
+}
+
+namespace {
+Scene with_shader(std::shared_ptr<const Shader> shader) {
+  Scene s = tessel::test::make_scene();
+  for (auto& o : s.objects) o->shader = shader;
+  return s;
+}
+}  // namespace
+
+TEST(SceneRender, NprDepthAndNormalViewsMatchTheirGoldenImages) {
+  const std::pair<const char*, std::shared_ptr<const Shader>> shaders[] = {
+      {"npr", std::make_shared<NprShader>()},
+      {"npr4", std::make_shared<NprShader>(4, 0.3f)},
+      {"depth", std::make_shared<DepthShader>(4.0f, 12.0f)},
+      {"normal", std::make_shared<NormalShader>()}};
+  for (const auto& [name, shader] : shaders) {
+    gpu::Texture2D color(gpu::Format::RGBA8, 240, 120);
+    render_into(with_shader(shader), color, 2);
+    test::expect_golden(name, color);
+  }
+}
+
+// The notes' toon shading: on an untextured sphere only the two bands of its diffuse colour
+// and the black outline appear (plus the background).
+TEST(SceneRender, NprHasFlatBandsAndAnOutline) {
+  Scene s = with_shader(std::make_shared<NprShader>());
+  s.objects.pop_back();  // no floor
+  const std::vector<uint8_t> px = render(s, 240, 120, 1);
+  std::map<uint32_t, int> colours;
+  for (size_t i = 0; i < px.size(); i += 4) ++colours[uint32_t(px[i]) | uint32_t(px[i + 1]) << 8 | uint32_t(px[i + 2]) << 16];
+  EXPECT_EQ(colours.size(), 4u);  // background, black, kd, kd / 2
+  EXPECT_GT(colours[0], 50);      // the outline
+}
+
+// The normal view of a sphere: up-facing pixels are green, the depth view is brighter for
+// the nearer sphere.
+TEST(SceneRender, NormalAndDepthViewsEncodeWhatTheySay) {
+  Scene s = with_shader(std::make_shared<NormalShader>());
+  s.objects.pop_back();
+  s.objects.pop_back();  // the left sphere alone
+  std::vector<uint8_t> px = render(s, 240, 120, 1);
+  int top_y = -1, top_x = 0;
+  for (int y = 119; y >= 0 && top_y < 0; --y)
+    for (int x = 0; x < 240; ++x)
+      if (px[(size_t(y) * 240 + size_t(x)) * 4 + 3] == 255 && px[(size_t(y) * 240 + size_t(x)) * 4 + 1] > 200) {
+        top_y = y;
+        top_x = x;
+        break;
+      }
+  ASSERT_GE(top_y, 0) << "no up-facing pixel";
+  EXPECT_LT(top_x, 120);  // the left sphere
+  Scene d = with_shader(std::make_shared<DepthShader>());
+  d.objects.pop_back();
+  d.objects[1]->transform.position.z = -3.0f;  // push the right sphere back
+  px = render(d, 240, 120, 1);
+  auto grey_at = [&](int x, int y) { return int(px[(size_t(y) * 240 + size_t(x)) * 4]); };
+  int left = 0, right = 0;
+  for (int y = 0; y < 120; ++y)
+    for (int x = 0; x < 240; ++x) {
+      const int g = grey_at(x, y);
+      if (x < 120) left = std::max(left, g);
+      else right = std::max(right, g);
+    }
+  EXPECT_GT(left, right + 10);
 }

@@ -66,6 +66,7 @@ class Geometry {
 struct RenderState {
   glm::mat4 M{1.0f}, Minv{1.0f}, V{1.0f}, P{1.0f};
   glm::vec3 wEye{0.0f};
+  float near = 0.1f, far = 100.0f;  // the camera's clipping distances (depth views)
   const Material* material = nullptr;
   std::vector<Light> lights;
   gpu::RenderState pipeline;  // depth test, culling, ...

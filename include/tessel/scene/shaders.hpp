@@ -24,4 +24,36 @@ class PhongShader : public Shader {
   void draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const override;
 };
 
+// Non-photorealistic (toon) shading after the notes: the diffuse colour in `bands` flat
+// levels of max(N.L, 0) for the first light (2 bands: full where N.L > 0.5, half elsewhere),
+// and black where |N.V| < silhouette, the outline of the object.
+class NprShader : public Shader {
+ public:
+  explicit NprShader(int bands = 2, float silhouette = 0.2f) : bands_(bands < 1 ? 1 : bands), silhouette_(silhouette) {}
+  void draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const override;
+
+ private:
+  int bands_;
+  float silhouette_;
+};
+
+// The distance from the camera as grey, linear in eye-space depth: white at `from`, black at
+// `to` (by default the camera's near and far planes).
+class DepthShader : public Shader {
+ public:
+  DepthShader() = default;
+  DepthShader(float from, float to) : from_(from), to_(to), range_(to > from) {}
+  void draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const override;
+
+ private:
+  float from_ = 0.0f, to_ = 0.0f;
+  bool range_ = false;
+};
+
+// The world-space shading normal as colour: 0.5 N + 0.5 (x red, y green, z blue).
+class NormalShader : public Shader {
+ public:
+  void draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const override;
+};
+
 }  // namespace tessel::scene
