@@ -1,5 +1,6 @@
-// The tessel command. `tessel render` renders the built-in demo scene to a PNG; `tessel bench`
-// renders the standard benchmark scenes, optionally beside Mesa's llvmpipe.
+// The tessel command. `tessel render [SCENE]` renders a scene file (docs/scene-format.md), or
+// the built-in demo scene, to PNG; `tessel bench` renders the standard benchmark scenes,
+// optionally beside Mesa's llvmpipe.
 #include <cstdio>
 #include <string>
 
@@ -7,6 +8,7 @@
 
 #include "bench.hpp"
 #include "demo.hpp"
+#include "scene_render.hpp"
 #include "tessel/gpu/format.hpp"
 
 namespace {
@@ -30,16 +32,18 @@ int main(int argc, char** argv) {
   CLI::App app{"Tessel: a real-time 3D rendering pipeline on the CPU"};
   app.require_subcommand(1);
 
-  auto* render = app.add_subcommand("render", "Render the built-in demo scene to a PNG file");
-  std::string size = "1280x720", out = "out/demo.png";
+  auto* render = app.add_subcommand("render", "Render a scene file (or, without one, the built-in demo scene) to PNG");
+  std::string size = "1280x720", out = "out/demo.png", scene_path, shading, frames;
   int threads = 0;
   bool stats = false;
-  render->add_option("--size", size, "Image size WxH")->capture_default_str();
-  render->add_option("--threads", threads, "Worker threads (0 = one per hardware thread)")
-      ->check(CLI::Range(0, 64))
-      ->capture_default_str();
-  render->add_option("-o,--output", out, "Output PNG file")->capture_default_str();
-  render->add_flag("--stats", stats, "Print the pipeline's counters");
+  render->add_option("scene", scene_path, "Scene file (JSON, docs/scene-format.md); without it the built-in demo");
+  render->add_option("--size", size, "Image size WxH (default: the scene's render.size; the demo: 1280x720)");
+  render->add_option("--threads", threads, "Worker threads (0 = one per hardware thread; default: the scene's)")
+      ->check(CLI::Range(0, 64));
+  render->add_option("-o,--output", out, "Output PNG file (with --frames: NAME_0001.png ...)")->capture_default_str();
+  render->add_option("--shading", shading, "Draw every object with this shader: gouraud, phong, npr, depth, normal");
+  render->add_option("--frames", frames, "Render frames A..B of the animation (render.fps a second), numbered files");
+  render->add_flag("--stats", stats, "Print the pipeline's counters (JSON with a scene file)");
 
   auto* bench = app.add_subcommand("bench", "Render the standard scenes and print the time per frame");
   tessel::apps::BenchOptions bo;
@@ -76,6 +80,41 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "tessel bench: %s\n", e.what());
       return 1;
     }
+  }
+
+  if (render->parsed() && !scene_path.empty()) {
+    tessel::apps::SceneRenderOptions so;
+    so.scene = scene_path;
+    so.output = out;
+    so.shading = shading;
+    so.stats = stats;
+    if (render->count("--threads")) so.threads = threads;
+    if (render->count("--size") && (!parse_size(size, so.width, so.height) || so.width < 1 || so.height < 1 ||
+                                    so.width > 16384 || so.height > 16384)) {
+      std::fprintf(stderr, "tessel render: --size '%s': expected WxH with 1 <= W, H <= 16384\n", size.c_str());
+      return 2;
+    }
+    if (render->count("--frames")) {
+      const auto dots = frames.find("..");
+      try {
+        size_t a = 0, b = 0;
+        if (dots == std::string::npos) throw std::invalid_argument("no ..");
+        so.first_frame = std::stoi(frames.substr(0, dots), &a);
+        so.last_frame = std::stoi(frames.substr(dots + 2), &b);
+        if (a != dots || b != frames.size() - dots - 2 || so.first_frame < 0 || so.last_frame < so.first_frame ||
+            so.last_frame > 1000000)
+          throw std::invalid_argument("range");
+      } catch (const std::exception&) {
+        std::fprintf(stderr, "tessel render: --frames '%s': expected A..B with 0 <= A <= B\n", frames.c_str());
+        return 2;
+      }
+      so.frames = true;
+    }
+    return tessel::apps::render_scene(so);
+  }
+  if (render->parsed() && (!shading.empty() || !frames.empty())) {
+    std::fprintf(stderr, "tessel render: --shading and --frames need a scene file\n");
+    return 2;
   }
 
   if (render->parsed()) {

@@ -1,0 +1,100 @@
+#include "scene_render.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+#include "tessel/gpu/framebuffer.hpp"
+#include "tessel/gpu/image.hpp"
+#include "tessel/scene/scene_file.hpp"
+
+namespace tessel::apps {
+
+namespace {
+
+std::string frame_path(const std::string& out, int frame) {
+  char num[16];
+  std::snprintf(num, sizeof num, "_%04d", frame);
+  const auto dot = out.rfind('.');
+  const auto slash = out.rfind('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return out + num + ".png";
+  return out.substr(0, dot) + num + out.substr(dot);
+}
+
+void progress(int done, int total) {
+  const int width = 30, filled = total ? done * width / total : width;
+  std::fprintf(stderr, "\r[%s%s] %d/%d frames", std::string(size_t(filled), '#').c_str(),
+               std::string(size_t(width - filled), ' ').c_str(), done, total);
+  if (done == total) std::fprintf(stderr, "\n");
+}
+
+}  // namespace
+
+int render_scene(const SceneRenderOptions& o) {
+  scene::SceneFile file;
+  try {
+    file = scene::load_scene_file(o.scene);
+    if (!o.shading.empty()) {
+      const auto shader = scene::shader_by_name(o.shading);
+      if (!shader) {
+        std::fprintf(stderr, "tessel render: --shading '%s': expected gouraud, phong, npr, depth or normal\n", o.shading.c_str());
+        return 2;
+      }
+      for (auto& obj : file.scene.objects) obj->shader = shader;
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tessel render: %s\n", e.what());
+    return 1;
+  }
+  const int w = o.width ? o.width : file.render.width, h = o.height ? o.height : file.render.height;
+  const int threads = o.threads >= 0 ? o.threads : file.render.threads;
+  scene::Scene& s = file.scene;
+  s.camera.aspect = float(w) / float(h);
+  try {
+    gpu::Texture2D color(gpu::Format::RGBA8, w, h), depth(gpu::Format::Depth24Stencil8, w, h);
+    gpu::Framebuffer fb(&color, &depth);
+    gpu::Context ctx(threads);
+    ctx.bind_framebuffer(&fb);
+    const float dt = 1.0f / file.render.fps;
+    // Frames before the first are animated, not drawn.
+    for (int f = 0; f < o.first_frame; ++f) s.Animate(dt);
+    const int total = o.last_frame - o.first_frame + 1;
+    if (o.stats) std::printf("{\"scene\": \"%s\", \"width\": %d, \"height\": %d, \"threads\": %d, \"frames\": [", o.scene.c_str(), w, h, ctx.threads());
+    for (int f = o.first_frame; f <= o.last_frame; ++f) {
+      const gpu::Stats before = ctx.stats();
+      const auto t0 = std::chrono::steady_clock::now();
+      s.Render(ctx);
+      ctx.finish();
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      const std::string path = o.frames ? frame_path(o.output, f) : o.output;
+      gpu::write_png(path, color);
+      const gpu::Stats& a = ctx.stats();
+      if (o.stats)
+        std::printf("%s\n  {\"frame\": %d, \"file\": \"%s\", \"ms\": %.3f, \"triangles_in\": %llu, \"culled\": %llu, "
+                    "\"clipped\": %llu, \"triangles_set_up\": %llu, \"vertices_shaded\": %llu, \"fragments_shaded\": %llu, "
+                    "\"fragments_written\": %llu}",
+                    f == o.first_frame ? "" : ",", f, path.c_str(), ms,
+                    (unsigned long long)(a.primitives_in - before.primitives_in),
+                    (unsigned long long)(a.primitives_culled - before.primitives_culled),
+                    (unsigned long long)(a.primitives_clipped - before.primitives_clipped),
+                    (unsigned long long)(a.triangles_setup - before.triangles_setup),
+                    (unsigned long long)(a.vertices_shaded - before.vertices_shaded),
+                    (unsigned long long)(a.fragments_shaded - before.fragments_shaded),
+                    (unsigned long long)(a.fragments_written - before.fragments_written));
+      else if (!o.frames)
+        std::printf("rendered %s (%d triangles, %dx%d) to %s in %.1f ms\n", o.scene.c_str(), s.triangles(), w, h, path.c_str(), ms);
+      if (o.frames && total > 1) progress(f - o.first_frame + 1, total);
+      s.Animate(dt);
+    }
+    if (o.stats) std::printf("\n]}\n");
+    else if (o.frames)
+      std::printf("rendered frames %d..%d of %s (%dx%d) to %s\n", o.first_frame, o.last_frame, o.scene.c_str(), w, h,
+                  frame_path(o.output, o.first_frame).c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tessel render: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace tessel::apps

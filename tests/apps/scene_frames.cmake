@@ -1,0 +1,28 @@
+# `tessel render SCENE --frames 3..5 --stats`: three numbered PNGs, JSON statistics for each,
+# and a waving flag (frames differ).
+# Run as: cmake -DTESSEL=<path> -DSCENE=<file> -DOUT=<dir> -P scene_frames.cmake
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT})
+execute_process(COMMAND ${TESSEL} render ${SCENE} --size 160x120 --threads 2 --frames 3..5 --stats -o ${OUT}/f.png
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "tessel render --frames failed (${rc}): ${err}")
+endif()
+foreach(f 0003 0004 0005)
+  if(NOT EXISTS ${OUT}/f_${f}.png)
+    message(FATAL_ERROR "missing ${OUT}/f_${f}.png; output: ${out}")
+  endif()
+endforeach()
+if(EXISTS ${OUT}/f_0002.png OR EXISTS ${OUT}/f_0006.png)
+  message(FATAL_ERROR "frames outside 3..5 were written")
+endif()
+string(JSON nframes LENGTH "${out}" frames)
+string(JSON tri GET "${out}" frames 0 triangles_in)
+if(NOT nframes EQUAL 3 OR tri LESS 1000)
+  message(FATAL_ERROR "--stats: expected 3 frames with triangles, got: ${out}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/f_0003.png ${OUT}/f_0004.png RESULT_VARIABLE same)
+if(same EQUAL 0)
+  message(FATAL_ERROR "frames 3 and 4 are identical: the flag did not wave")
+endif()
+message(STATUS "frames 3..5 written; ${tri} triangles a frame")
