@@ -171,13 +171,18 @@ std::shared_ptr<Material> read_material(const Node& n, const std::map<std::strin
 }
 
 Light read_light(const Node& n) {
-  n.only({"position", "direction", "ambient", "color", "spot"});
+  n.only({"position", "direction", "ambient", "color", "spot", "attenuation"});
   Light l;
   if (n.has("position") == n.has("direction")) n.fail("give either 'position' (a point light) or 'direction' (toward the light)");
   l.wLightPos = n.has("position") ? glm::vec4(n.at("position").vec<3>(), 1.0f) : glm::vec4(n.at("direction").vec<3>(), 0.0f);
   if (n.has("direction") && glm::length(glm::vec3(l.wLightPos)) == 0.0f) n.at("direction").fail("the direction is zero");
   l.La = n.has("ambient") ? n.at("ambient").colour() : glm::vec3(0.0f);
   l.Le = n.has("color") ? n.at("color").colour() : glm::vec3(1.0f);
+  if (n.has("attenuation")) {
+    if (!n.has("position")) n.at("attenuation").fail("only a point light is attenuated");
+    l.attenuation = n.at("attenuation").vec<3>(0.0f, 1e6f);
+    if (l.attenuation == glm::vec3(0.0f)) n.at("attenuation").fail("the factors are all zero");
+  }
   if (n.has("spot")) {
     const Node s = n.at("spot");
     s.only({"direction", "cutoff", "exponent"});

@@ -74,6 +74,11 @@ Radiance<F> illuminate(const LightingUniforms& u, const Vec3<F>& p, const Vec3<F
     const F cost = max(dot(N, L), F(0.0f));
     const Vec3<F> H = normalize(L + V);
     const F cosd = select(cost > F(0.0f), pow(max(dot(N, H), F(0.0f)), F(u.shininess)), F(0.0f));
+    if (l.wLightPos.w != 0.0f && (l.attenuation.y != 0.0f || l.attenuation.z != 0.0f || l.attenuation.x != 1.0f)) {
+      const Vec3<F> d = Vec3<F>(glm::vec3(l.wLightPos) / l.wLightPos.w) - p;
+      const F d2 = dot(d, d);
+      spot = spot / (F(l.attenuation.x) + F(l.attenuation.y) * sqrt(d2) + F(l.attenuation.z) * d2);
+    }
     const Vec3<F> Le = Vec3<F>(l.Le) * spot;
     r.ambient_diffuse = r.ambient_diffuse + Vec3<F>(u.ka * l.La) + Vec3<F>(u.kd) * Le * cost;
     r.specular = r.specular + Vec3<F>(u.ks) * Le * cosd;

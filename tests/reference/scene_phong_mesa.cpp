@@ -44,7 +44,7 @@ void main() {
 )";
 
 const char* kFragment = R"(#version 330 core
-struct Light { vec4 pos; vec3 La; vec3 Le; vec3 spot_dir; float spot_cos; float spot_exp; };
+struct Light { vec4 pos; vec3 La; vec3 Le; vec3 att; vec3 spot_dir; float spot_cos; float spot_exp; };
 uniform Light lights[8];
 uniform int nlights;
 uniform vec3 ka, kd, ks, emission, eye;
@@ -65,6 +65,10 @@ void main() {
     if (lights[i].spot_cos > -1.0) {
       float c = dot(-L, normalize(lights[i].spot_dir));
       spot = c >= lights[i].spot_cos ? (lights[i].spot_exp == 0.0 ? 1.0 : pow(max(c, 0.0), lights[i].spot_exp)) : 0.0;
+    }
+    if (lights[i].pos.w != 0.0) {
+      vec3 d = lights[i].pos.xyz / lights[i].pos.w - wPos;
+      spot /= lights[i].att.x + lights[i].att.y * length(d) + lights[i].att.z * dot(d, d);
     }
     float cost = max(dot(N, L), 0.0);
     vec3 Hv = normalize(L + V);
@@ -119,6 +123,7 @@ std::vector<uint8_t> render_mesa(const Scene& s, float shine_scale) {
     glUniform4fv(loc(b + "pos"), 1, glm::value_ptr(l.wLightPos));
     glUniform3fv(loc(b + "La"), 1, glm::value_ptr(l.La));
     glUniform3fv(loc(b + "Le"), 1, glm::value_ptr(l.Le));
+    glUniform3fv(loc(b + "att"), 1, glm::value_ptr(l.attenuation));
     glUniform3fv(loc(b + "spot_dir"), 1, glm::value_ptr(l.spot_direction));
     glUniform1f(loc(b + "spot_cos"), l.spot_cos_cutoff);
     glUniform1f(loc(b + "spot_exp"), l.spot_exponent);

@@ -46,7 +46,8 @@ inline Scene make_scene(float shininess = 40.0f, bool gouraud_left = true) {
   Light lamp;
   lamp.wLightPos = glm::vec4(2.0f, 2.0f, 2.0f, 1.0f);
   lamp.La = glm::vec3(0.0f);
-  lamp.Le = glm::vec3(0.6f, 0.5f, 0.4f);
+  lamp.Le = glm::vec3(0.9f, 0.75f, 0.6f);
+  lamp.attenuation = glm::vec3(1.0f, 0.0f, 0.05f);
   s.lights = {sun, lamp};
   auto sphere = std::make_shared<Geometry>(Sphere().create(8, 12), "sphere");
   auto floor = std::make_shared<Geometry>(Plane(8.0f).create(1, 1), "floor");

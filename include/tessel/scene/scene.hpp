@@ -25,10 +25,13 @@ inline constexpr int kMaxLights = 8;
 // A light source at a homogeneous world position: w = 0 is a directional light shining from
 // the direction xyz, w != 0 a point (xyz / w). La is its ambient and Le its emitted radiance
 // (the notes' names). A spot light (spot_cos_cutoff > -1) lights only directions within the
-// cutoff angle of spot_direction, weighted by cos^spot_exponent as in GL 1.x.
+// cutoff angle of spot_direction, weighted by cos^spot_exponent as in GL 1.x. A point light's
+// Le is divided by c + l d + q d^2 at distance d, attenuation = (c, l, q) (GL 1.x's
+// attenuation factors; the default (1, 0, 0) does not attenuate).
 struct Light {
   glm::vec4 wLightPos{0.0f, 1.0f, 1.0f, 0.0f};
   glm::vec3 La{0.1f}, Le{1.0f};
+  glm::vec3 attenuation{1.0f, 0.0f, 0.0f};
   glm::vec3 spot_direction{0.0f, -1.0f, 0.0f};
   float spot_cos_cutoff = -1.0f;
   float spot_exponent = 0.0f;
