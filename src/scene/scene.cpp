@@ -1,8 +1,14 @@
 #include "tessel/scene/scene.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "tessel/gpu/format.hpp"
+#include "tessel/gpu/framebuffer.hpp"
+#include "tessel/scene/shaders.hpp"
 
 namespace tessel::scene {
 
@@ -51,11 +57,82 @@ void Scene::Animate(float dt) {
   for (auto& o : objects) o->Animate(dt);
 }
 
+glm::vec4 Scene::bounding_sphere() const {
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const auto& o : objects) {
+    if (!o->geometry) continue;
+    const glm::mat4 M = o->transform.world();
+    for (const VertexData& v : o->geometry->mesh().vertices) {
+      const glm::vec3 p = glm::vec3(M * glm::vec4(v.pos, 1.0f));
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  }
+  if (lo.x > hi.x) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  return glm::vec4((lo + hi) * 0.5f, std::max(glm::length(hi - lo) * 0.5f, 1e-3f));
+}
+
+glm::mat4 Scene::shadow_matrix(const Light& light) const {
+  const glm::vec4 b = bounding_sphere();
+  const glm::vec3 c(b), w = glm::vec3(light.wLightPos);
+  const float r = b.w;
+  auto up_for = [](const glm::vec3& dir) {
+    return std::fabs(glm::normalize(dir).y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+  };
+  if (light.wLightPos.w == 0.0f) {
+    // Directional: an orthographic box around the bounding sphere, looking along -direction.
+    const glm::vec3 d = glm::normalize(w);
+    const glm::mat4 V = glm::lookAt(c + d * (2.0f * r), c, up_for(d));
+    return glm::ortho(-r, r, -r, r, r * 0.9f, r * 3.1f) * V;
+  }
+  const glm::vec3 p = w / light.wLightPos.w;
+  const float dist = glm::length(c - p);
+  if (light.spot_cos_cutoff > -1.0f) {
+    const glm::vec3 d = glm::normalize(light.spot_direction);
+    const float half = std::acos(std::clamp(light.spot_cos_cutoff, -1.0f, 1.0f));
+    if (half > glm::radians(85.0f)) throw Error("shadows: a spot light wider than 170 degrees cannot cast a shadow map");
+    const float far = std::max(dist + r, 1e-2f), near = std::max(far * 1e-3f, dist - r > 0.0f ? (dist - r) * 0.9f : far * 1e-3f);
+    return glm::perspective(2.0f * half + glm::radians(2.0f), 1.0f, near, far) * glm::lookAt(p, p + d, up_for(d));
+  }
+  if (dist <= r * 1.01f)
+    throw Error("shadows: the point light is inside the scene's bounding sphere (omnidirectional shadow maps are not "
+                "supported yet; use a spot or directional light)");
+  const glm::vec3 d = (c - p) / dist;
+  const float half = std::asin(std::min(r / dist, 0.999f));
+  return glm::perspective(2.0f * half, 1.0f, (dist - r) * 0.9f, dist + r) * glm::lookAt(p, c, up_for(d));
+}
+
 void Scene::Render(gpu::Context& ctx) const {
   camera.validate();
   if (lights.size() > size_t(kMaxLights))
     throw Error("scene: " + std::to_string(lights.size()) + " lights, at most " + std::to_string(kMaxLights));
   RenderState state;
+  if (shadows.enabled) {
+    if (shadows.light < 0 || size_t(shadows.light) >= lights.size())
+      throw Error("shadows: light " + std::to_string(shadows.light) + " does not exist (the scene has " +
+                  std::to_string(lights.size()) + ")");
+    if (shadows.size < 16 || shadows.size > 8192) throw Error("shadows: the map size must be 16..8192");
+    if (shadows.pcf < 0 || shadows.pcf > 8) throw Error("shadows: pcf must be 0..8");
+    state.light_VP = shadow_matrix(lights[size_t(shadows.light)]);
+    if (!shadow_map_ || shadow_map_->width() != shadows.size)
+      shadow_map_ = std::make_unique<gpu::Texture2D>(gpu::Format::Depth32F, shadows.size, shadows.size);
+    // The light pass: depth only, both faces, pushed back by the slope-scaled and constant bias.
+    gpu::Framebuffer* previous = ctx.framebuffer();
+    gpu::Framebuffer light_fb(nullptr, shadow_map_.get());
+    ctx.bind_framebuffer(&light_fb);
+    ctx.clear({.clear_color = false, .depth = 1.0f});
+    gpu::RenderState pass;
+    pass.depth_test = true;
+    pass.offset_fill = true;
+    pass.offset_factor = shadows.slope_bias;
+    pass.offset_units = shadows.constant_bias;
+    for (const auto& o : objects)
+      if (o->geometry) draw_shadow_depth(ctx, state.light_VP * o->transform.world(), *o->geometry, pass);
+    ctx.bind_framebuffer(previous);
+    state.shadow_map = shadow_map_.get();
+    state.shadow_light = shadows.light;
+    state.pcf = shadows.pcf;
+  }
   state.V = camera.V();
   state.P = camera.P();
   state.wEye = camera.eye;

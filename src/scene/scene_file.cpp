@@ -236,7 +236,22 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
   std::string default_shader = "phong";
   if (root.has("render")) {
     const Node r = root.at("render");
-    r.only({"size", "background", "threads", "fps", "shading"});
+    r.only({"size", "background", "threads", "fps", "shading", "shadows"});
+    if (r.has("shadows")) {
+      const Node sh = r.at("shadows");
+      ShadowSettings& ss = s.shadows;
+      if (sh.json_value().is_boolean()) {
+        ss.enabled = sh.boolean();
+      } else {
+        sh.only({"light", "size", "pcf", "slope_bias", "constant_bias"});
+        ss.enabled = true;
+        if (sh.has("light")) ss.light = sh.at("light").integer(0, kMaxLights - 1);
+        if (sh.has("size")) ss.size = sh.at("size").integer(16, 8192);
+        if (sh.has("pcf")) ss.pcf = sh.at("pcf").integer(0, 8);
+        if (sh.has("slope_bias")) ss.slope_bias = sh.at("slope_bias").number(-100.0f, 100.0f);
+        if (sh.has("constant_bias")) ss.constant_bias = sh.at("constant_bias").number(-1e6f, 1e6f);
+      }
+    }
     if (r.has("size")) {
       const Node sz = r.at("size");
       if (!sz.json_value().is_array() || sz.json_value().size() != 2) sz.fail("expected [width, height]");
@@ -280,6 +295,10 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
     if (ls.json_value().size() > size_t(kMaxLights)) ls.fail("at most " + std::to_string(kMaxLights) + " lights");
     for (size_t i = 0; i < ls.json_value().size(); ++i) s.lights.push_back(read_light(ls.item(i)));
   }
+
+  if (s.shadows.enabled && size_t(s.shadows.light) >= s.lights.size())
+    root.at("render").at("shadows").fail("light " + std::to_string(s.shadows.light) + " does not exist (there are " +
+                                         std::to_string(s.lights.size()) + " lights)");
 
   std::map<std::string, std::shared_ptr<const gpu::Texture2D>> textures;
   if (root.has("textures")) {

@@ -22,6 +22,12 @@ struct LightingUniforms {
   glm::vec3 eye{0.0f};
   bool textured = false;
   Sampler2D tex;
+  // Shadow mapping (PhongShader): the light whose Le the map scales, its matrix, the kernel.
+  int shadow_light = -1;
+  glm::mat4 light_VP{1.0f};
+  Sampler2DShadow shadow;
+  int pcf = 0;
+  float texel = 0.0f;
 };
 
 struct TransformUniforms {
@@ -44,7 +50,31 @@ LightingUniforms lighting(const RenderState& s) {
   u.tex.texture = m.texture.get();
   u.tex.state.min_filter = Filter::LinearMipmapLinear;
   u.tex.state.mag_filter = Filter::Linear;
+  if (s.shadow_map) {
+    u.shadow_light = s.shadow_light;
+    u.light_VP = s.light_VP;
+    u.shadow.texture = s.shadow_map;
+    // Outside the map is lit: the border (depth 1) passes every reference up to the far plane.
+    u.shadow.state.wrap_s = u.shadow.state.wrap_t = Wrap::ClampToBorder;
+    u.shadow.state.border_color = glm::vec4(1.0f);
+    u.pcf = s.pcf;
+    u.texel = 1.0f / float(s.shadow_map->width());
+  }
   return u;
+}
+
+// The fraction of the shadow map's percentage-closer compares that see p from the light.
+template <class F> F shadow_visibility(const LightingUniforms& u, const Vec3<F>& p) {
+  const Vec4<F> q = u.light_VP * Vec4<F>(p, F(1.0f));
+  const F inv = F(1.0f) / q.w;
+  const F x = q.x * inv * F(0.5f) + F(0.5f), y = q.y * inv * F(0.5f) + F(0.5f), z = q.z * inv * F(0.5f) + F(0.5f);
+  F sum(0.0f);
+  for (int j = -u.pcf; j <= u.pcf; ++j)
+    for (int i = -u.pcf; i <= u.pcf; ++i)
+      sum = sum + texture(u.shadow, Vec3<F>(x + F(float(i) * u.texel), y + F(float(j) * u.texel), z));
+  const float n = float((2 * u.pcf + 1) * (2 * u.pcf + 1));
+  // Beyond the light's far plane or behind it: nothing to compare with, lit.
+  return select((z > F(1.0f)) | (q.w <= F(0.0f)), F(1.0f), sum * F(1.0f / n));
 }
 
 TransformUniforms transforms(const RenderState& s) {
@@ -58,7 +88,7 @@ template <class F> struct Radiance {
 };
 
 template <class F>
-Radiance<F> illuminate(const LightingUniforms& u, const Vec3<F>& p, const Vec3<F>& N) {
+Radiance<F> illuminate(const LightingUniforms& u, const Vec3<F>& p, const Vec3<F>& N, const F* visibility = nullptr) {
   const Vec3<F> V = normalize(Vec3<F>(u.eye) - p);
   Radiance<F> r{Vec3<F>(F(0.0f)), Vec3<F>(F(0.0f))};
   for (int i = 0; i < u.count; ++i) {
@@ -79,6 +109,7 @@ Radiance<F> illuminate(const LightingUniforms& u, const Vec3<F>& p, const Vec3<F
       const F d2 = dot(d, d);
       spot = spot / (F(l.attenuation.x) + F(l.attenuation.y) * sqrt(d2) + F(l.attenuation.z) * d2);
     }
+    if (visibility && i == u.shadow_light) spot = spot * *visibility;
     const Vec3<F> Le = Vec3<F>(l.Le) * spot;
     r.ambient_diffuse = r.ambient_diffuse + Vec3<F>(u.ka * l.La) + Vec3<F>(u.kd) * Le * cost;
     r.specular = r.specular + Vec3<F>(u.ks) * Le * cosd;
@@ -134,7 +165,13 @@ struct PhongGpu {
     return u.t.MVP * pos;
   }
   template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
-    const Radiance<F> r = illuminate(u.l, v.wPos, normalize(v.wNormal));
+    Radiance<F> r;
+    if (u.l.shadow_light >= 0) {
+      const F vis = shadow_visibility(u.l, v.wPos);
+      r = illuminate(u.l, v.wPos, normalize(v.wNormal), &vis);
+    } else {
+      r = illuminate(u.l, v.wPos, normalize(v.wNormal));
+    }
     Vec3<F> c = r.ambient_diffuse;
     if (u.l.textured) c = c * texture(u.l.tex, v.uv).xyz();
     f.color[0] = Vec4<F>(c + r.specular, F(1.0f));
@@ -212,7 +249,23 @@ struct NormalGpu {
   }
 };
 
+struct DepthOnlyGpu {
+  struct Uniforms {
+    glm::mat4 MVP{1.0f};
+  };
+  template <class F> struct Varyings {};
+  static constexpr uint32_t attributes = 0b1;
+  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>&) const {
+    return u.MVP * Vec4<F>(in.attr[0].xyz(), F(1.0f));
+  }
+  template <class F> void fragment(const Uniforms&, const Varyings<F>&, Fragment<F>&) const {}
+};
+
 }  // namespace
+
+void draw_shadow_depth(gpu::Context& ctx, const glm::mat4& MVP, const Geometry& geometry, const gpu::RenderState& pipeline) {
+  ctx.draw(DepthOnlyGpu{}, DepthOnlyGpu::Uniforms{MVP}, geometry.layout(), pipeline, geometry.draw_call());
+}
 
 void NprShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {
   NprGpu::Uniforms u{transforms(state), lighting(state), float(bands_), silhouette_};

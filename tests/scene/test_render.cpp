@@ -153,3 +153,115 @@ TEST(SceneRender, NormalAndDepthViewsEncodeWhatTheySay) {
     }
   EXPECT_GT(left, right + 10);
 }
+
+// --- shadow mapping ---------------------------------------------------------------------------
+
+namespace {
+
+// A floor, a cylinder standing on it at the origin, a directional light from the upper
+// right: the cylinder's shadow falls along -x from its base.
+Scene shadow_scene(bool with_cylinder, ShadowSettings settings) {
+  Scene s;
+  s.camera.eye = glm::vec3(0.0f, 6.0f, 6.0f);
+  s.camera.lookat = glm::vec3(-1.0f, 0.0f, 0.0f);
+  s.camera.fov = 0.8f;
+  s.camera.aspect = 1.0f;
+  s.camera.near = 1.0f;
+  s.camera.far = 30.0f;
+  Light sun;
+  sun.wLightPos = glm::vec4(1.0f, 1.2f, 0.0f, 0.0f);
+  sun.La = glm::vec3(0.1f);
+  sun.Le = glm::vec3(0.9f);
+  s.lights = {sun};
+  s.shadows = settings;
+  s.shadows.enabled = true;
+  auto phong = std::make_shared<PhongShader>();
+  auto grey = std::make_shared<Material>();
+  grey->kd = glm::vec3(0.8f);
+  grey->ka = glm::vec3(0.8f);
+  grey->ks = glm::vec3(0.0f);
+  s.add(std::make_unique<Object>(std::make_shared<Geometry>(Plane(12.0f).create(4, 4), "floor"), grey, phong));
+  if (with_cylinder) {
+    auto& c = s.add(std::make_unique<Object>(std::make_shared<Geometry>(Cylinder(0.4f, 2.0f).create(1, 32), "post"), grey, phong));
+    c.cull_back_faces = false;
+  }
+  return s;
+}
+
+struct Shot {
+  std::vector<uint8_t> px;
+  glm::mat4 VP;
+  int size;
+  // The red channel where the world point p lands.
+  int at(const glm::vec3& p) const {
+    const glm::vec4 c = VP * glm::vec4(p, 1.0f);
+    const int x = int((c.x / c.w * 0.5f + 0.5f) * float(size)), y = int((c.y / c.w * 0.5f + 0.5f) * float(size));
+    return px[(size_t(y) * size_t(size) + size_t(x)) * 4];
+  }
+};
+
+Shot shoot(const Scene& s, int size = 256) {
+  return {render(s, size, size, 2), s.camera.P() * s.camera.V(), size};
+}
+
+}  // namespace
+
+// Shadow acne: a floor with nothing above it must be lit everywhere, exactly as without
+// shadows. Without the bias the floor shadows itself.
+TEST(Shadows, NoAcneOnAnUnoccludedFloor) {
+  Scene lit = shadow_scene(false, {});
+  lit.shadows.enabled = false;
+  const std::vector<uint8_t> ref = render(lit, 256, 256, 2);
+  const test::ImageDiff d = test::diff_rgba(ref, render(shadow_scene(false, {}), 256, 256, 2));
+  EXPECT_EQ(d.differing, 0) << d.differing << " floor pixels darkened by acne";
+  ShadowSettings none;
+  none.slope_bias = 0.0f;
+  none.constant_bias = 0.0f;
+  const test::ImageDiff acne = test::diff_rgba(ref, render(shadow_scene(false, none), 256, 256, 2));
+  EXPECT_GT(acne.differing, 256 * 256 / 20) << "without bias the floor should show acne";
+}
+
+// Peter-panning: the shadow must start at the foot of the post, not a gap away from it. A
+// constant bias far too large detaches it (which this test must notice).
+TEST(Shadows, TheShadowTouchesTheFootOfTheCaster) {
+  const Shot s = shoot(shadow_scene(true, {}));
+  const int lit = s.at({-3.0f, 0.0f, 2.5f});       // open floor
+  const int near_foot = s.at({-0.5f, 0.0f, 0.0f});  // 0.1 past the post's radius, toward the shadow
+  const int mid = s.at({-1.2f, 0.0f, 0.0f});
+  EXPECT_LT(near_foot, lit * 6 / 10) << "lit " << lit << ", beside the foot " << near_foot;
+  EXPECT_LT(mid, lit * 6 / 10);
+  ShadowSettings far;
+  far.constant_bias = 4e6f;  // about 5 scene units of depth: more than the post is thick
+  const Shot detached = shoot(shadow_scene(true, far));
+  EXPECT_GT(detached.at({-0.5f, 0.0f, 0.0f}), lit * 8 / 10) << "a huge bias should detach the shadow";
+}
+
+// Percentage-closer filtering: a larger kernel widens the band of partly lit pixels along
+// the shadow's edge.
+TEST(Shadows, LargerPcfKernelsGiveSofterEdges) {
+  auto penumbra = [](int pcf) {
+    ShadowSettings st;
+    st.pcf = pcf;
+    st.size = 512;
+    const Shot s = shoot(shadow_scene(true, st));
+    const int lit = s.at({-3.0f, 0.0f, 2.5f}), dark = s.at({-1.5f, 0.0f, 0.0f});
+    int n = 0;
+    for (size_t i = 0; i < s.px.size(); i += 4) {
+      const int v = s.px[i];
+      if (v > dark + (lit - dark) / 10 && v < lit - (lit - dark) / 10) ++n;
+    }
+    return n;
+  };
+  const int hard = penumbra(0), soft = penumbra(2), softer = penumbra(4);
+  EXPECT_GT(soft, hard + hard / 4) << "pcf 0: " << hard << ", pcf 2: " << soft;
+  EXPECT_GT(softer, soft) << "pcf 2: " << soft << ", pcf 4: " << softer;
+}
+
+TEST(Shadows, BadSettingsAreErrors) {
+  ShadowSettings st;
+  st.light = 3;
+  EXPECT_THROW(render(shadow_scene(true, st), 32, 32, 1), gpu::Error);
+  Scene inside = shadow_scene(true, {});
+  inside.lights[0].wLightPos = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);  // a point light among the objects
+  EXPECT_THROW(render(inside, 32, 32, 1), gpu::Error);
+}

@@ -77,9 +77,10 @@ template <class S> constexpr int varying_count() {
   using V1 = typename S::template Varyings<float>;
   using V8 = typename S::template Varyings<Float8>;
   using V16 = typename S::template Varyings<Float16>;
-  static_assert(sizeof(V1) % sizeof(float) == 0 && sizeof(V8) == sizeof(V1) / 4 * sizeof(Float8) &&
-                    sizeof(V16) == sizeof(V1) / 4 * sizeof(Float16),
-                "Varyings<F> must consist of F values only");
+  static_assert((std::is_empty_v<V1> && std::is_empty_v<V8> && std::is_empty_v<V16>) ||
+                    (sizeof(V1) % sizeof(float) == 0 && sizeof(V8) == sizeof(V1) / 4 * sizeof(Float8) &&
+                     sizeof(V16) == sizeof(V1) / 4 * sizeof(Float16)),
+                "Varyings<F> must consist of F values only (or be empty)");
   static_assert(std::is_trivially_copyable_v<V1> && std::is_trivially_copyable_v<V8> &&
                 std::is_trivially_copyable_v<V16>);
   constexpr int n = std::is_empty_v<V1> ? 0 : int(sizeof(V1) / sizeof(float));

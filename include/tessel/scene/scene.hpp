@@ -65,6 +65,20 @@ class Geometry {
   uint32_t count_ = 0;
 };
 
+// Shadow mapping: a depth pass from one light into a depth texture, then lit shaders that
+// support it (PhongShader) compare each point's depth seen from the light with the map.
+// Directional lights and spot lights cast shadows; a point light only when it is outside
+// the scene's bounding sphere (one frustum toward the scene; no cube maps yet).
+struct ShadowSettings {
+  bool enabled = false;
+  int light = 0;               // the index of the light that casts shadows
+  int size = 2048;             // the map's width and height in texels (16..8192)
+  float slope_bias = 2.0f;     // the light pass's polygon offset: factor (slope-scaled) ...
+  float constant_bias = 4.0f;  // ... and units, against shadow acne
+  int pcf = 1;                 // percentage-closer filtering: (2 pcf + 1)^2 bilinear compares,
+                               // one texel apart (0: the 2x2 bilinear compare alone)
+};
+
 // What flows from the scene and the object to the shader.
 struct RenderState {
   glm::mat4 M{1.0f}, Minv{1.0f}, V{1.0f}, P{1.0f};
@@ -73,6 +87,12 @@ struct RenderState {
   const Material* material = nullptr;
   std::vector<Light> lights;
   gpu::RenderState pipeline;  // depth test, culling, ...
+  // Shadows (when shadow_map is set): light shadow_light's visibility comes from the map,
+  // looked up at light_VP * (world position).
+  const gpu::Texture2D* shadow_map = nullptr;
+  glm::mat4 light_VP{1.0f};
+  int shadow_light = -1;
+  int pcf = 0;
 };
 
 // A way to draw geometry: fills its GPU uniforms from the render state and submits the draw.
@@ -109,6 +129,7 @@ class Scene {
   std::vector<Light> lights;
   std::vector<std::unique_ptr<Object>> objects;
   glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};
+  ShadowSettings shadows;
 
   Object& add(std::unique_ptr<Object> object);
   void Animate(float dt);
@@ -117,6 +138,13 @@ class Scene {
   // kMaxLights lights.
   void Render(gpu::Context& ctx) const;
   int triangles() const;
+  // The smallest sphere around every object's vertices found by a bounding box (centre, radius).
+  glm::vec4 bounding_sphere() const;
+  // The light's view-projection for its shadow map (Error when the light cannot cast one).
+  glm::mat4 shadow_matrix(const Light& light) const;
+
+ private:
+  mutable std::unique_ptr<gpu::Texture2D> shadow_map_;  // reused from frame to frame
 };
 
 }  // namespace tessel::scene

@@ -17,8 +17,13 @@ class GouraudShader : public Shader {
   void draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const override;
 };
 
+// The light pass of shadow mapping: the geometry's depth through MVP, nothing else.
+void draw_shadow_depth(gpu::Context& ctx, const glm::mat4& MVP, const Geometry& geometry, const gpu::RenderState& pipeline);
+
 // Per-pixel (Phong) shading with the Blinn-Phong specular term: the normal and the position
-// are interpolated and the formula is evaluated at each pixel.
+// are interpolated and the formula is evaluated at each pixel. With a shadow map in the
+// render state, the shadowing light's Le is scaled by the fraction of PCF compares that see
+// the point (1 outside the map).
 class PhongShader : public Shader {
  public:
   void draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const override;
