@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config ccache
-  libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev
+  libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   # the reference oracle: Mesa llvmpipe through EGL (surfaceless) and desktop GL
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev libopengl-dev libosmesa6-dev

@@ -12,6 +12,7 @@
 
 #include "tessel/gpu/format.hpp"
 #include "tessel/gpu/image.hpp"
+#include "tessel/scene/model.hpp"
 #include "tessel/scene/shaders.hpp"
 
 namespace tessel::scene {
@@ -194,7 +195,7 @@ Light read_light(const Node& n) {
   return l;
 }
 
-const char* kSurfaces = "sphere, flag, torus, cylinder, cone, plane";
+const char* kSurfaces = "sphere, flag, torus, cylinder, cone, plane, mesh";
 
 }  // namespace
 
@@ -333,7 +334,8 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
       const Node o = os.item(i);
       o.only({"name", "geometry", "material", "shader", "position", "scale", "rotation", "parent", "animate", "cull"});
       const Node g = o.at("geometry");
-      g.only({"type", "rows", "columns", "radius", "center", "width", "height", "depth", "waves", "phase", "major", "minor", "size"});
+      g.only({"type", "rows", "columns", "radius", "center", "width", "height", "depth", "waves", "phase", "major", "minor", "size",
+              "file"});
       const std::string type = g.at("type").string();
       const int rows = g.has("rows") ? g.at("rows").integer(1, 4096) : 16;
       const int cols = g.has("columns") ? g.at("columns").integer(1, 4096) : 32;
@@ -360,7 +362,24 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
         }
       }
       std::unique_ptr<Object> obj;
-      if (type == "flag") {
+      std::vector<std::unique_ptr<Object>> extra_parts;  // a model's parts after the first
+      if (type == "mesh") {
+        std::string file = g.at("file").string();
+        if (!file.empty() && file[0] != '/') file = folder + "/" + file;
+        Model model;
+        try {
+          model = load_obj(file);
+        } catch (const Error& e) {
+          g.at("file").fail(e.what());
+        }
+        for (size_t k = 0; k < model.parts.size(); ++k) {
+          const Model::Part& part = model.parts[k];
+          std::shared_ptr<const Material> pm = o.has("material") || part.material < 0 ? mat : model.materials[size_t(part.material)];
+          auto po = std::make_unique<Object>(std::make_shared<Geometry>(part.mesh, file + ": " + part.name), pm, shader);
+          if (k == 0) obj = std::move(po);
+          else extra_parts.push_back(std::move(po));
+        }
+      } else if (type == "flag") {
         auto flag = std::make_shared<Flag>(num("width", 1.0f), num("height", 1.0f), num("depth", 0.1f, -1e6f), num("waves", 2.0f, -1e6f),
                                            g.has("phase") ? g.at("phase").number() : 0.0f);
         obj = std::make_unique<WavingObject>(flag, rows, cols, phase_speed, mat, shader);
@@ -393,6 +412,11 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
       }
       if (o.has("cull")) obj->cull_back_faces = o.at("cull").boolean();
       Object& added = s.add(std::move(obj));
+      for (auto& part : extra_parts) {
+        part->transform.parent = &added.transform;
+        part->cull_back_faces = added.cull_back_faces;
+        s.add(std::move(part));
+      }
       if (o.has("name")) {
         const std::string nm = o.at("name").string();
         if (!named.emplace(nm, &added).second) o.at("name").fail("another object is already named '" + nm + "'");

@@ -1,0 +1,36 @@
+// Models from files: Wavefront OBJ with its MTL materials (through tinyobjloader). A model is
+// a list of parts, one per (shape, material) pair, each a triangle mesh with normals (smooth
+// normals are computed where the file has none) and texture coordinates.
+//
+// MTL to the scene's Material: Ka -> ka, Kd -> kd, Ks -> ks, Ns -> shininess, Ke -> emission,
+// map_Kd -> texture (relative to the .mtl's folder), Ni -> refractive_index,
+// Tf -> transmittance. Errors name the file and the problem; indices that point outside the
+// file's vertices, non-finite numbers and empty files are errors, never a crash.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tessel/scene/scene.hpp"
+
+namespace tessel::scene {
+
+struct Model {
+  struct Part {
+    std::string name;
+    Mesh mesh;
+    int material = -1;  // index into materials, -1: none given
+  };
+  std::vector<Part> parts;
+  std::vector<std::shared_ptr<Material>> materials;
+};
+
+// Reads path (.obj) and the .mtl files it names, and the textures they name.
+Model load_obj(const std::string& path);
+// From text: mtl_text stands for the file an `mtllib` line of the OBJ names (without such a
+// line there are no materials); `name` is used in messages, `folder` for texture paths.
+Model parse_obj(const std::string& obj_text, const std::string& mtl_text, const std::string& name,
+                const std::string& folder = ".");
+
+}  // namespace tessel::scene
