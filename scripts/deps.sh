@@ -7,6 +7,8 @@ packages=(
   build-essential cmake ninja-build pkg-config ccache
   libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  # the libFuzzer targets (scripts/fuzz.sh)
+  clang libclang-rt-14-dev
   # the reference oracle: Mesa llvmpipe through EGL (surfaceless) and desktop GL
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev libopengl-dev libosmesa6-dev
   # GLUT windows (SDL2), and the GL 1.x comparison tests: each program built against Mesa's

@@ -81,7 +81,11 @@ template <int N> struct IntN {
   constexpr IntN(V x) : v(x) {}
   IntN(int32_t s) : v(V{} + s) {}
   int32_t operator[](int i) const { return v[i]; }
+#if defined(__clang__)
+  int32_t& operator[](int i) { return reinterpret_cast<int32_t*>(&v)[i]; }  // clang: no references to vector elements
+#else
   int32_t& operator[](int i) { return v[i]; }
+#endif
   friend IntN operator+(IntN a, IntN b) { return a.v + b.v; }
   friend IntN operator-(IntN a, IntN b) { return a.v - b.v; }
   friend IntN operator*(IntN a, IntN b) { return a.v * b.v; }
@@ -116,7 +120,11 @@ template <int N> struct FloatN {
   }
   void store(float* p) const { std::memcpy(p, &v, sizeof v); }
   float operator[](int i) const { return v[i]; }
+#if defined(__clang__)
+  float& operator[](int i) { return reinterpret_cast<float*>(&v)[i]; }
+#else
   float& operator[](int i) { return v[i]; }
+#endif
   friend FloatN operator+(FloatN a, FloatN b) { return a.v + b.v; }
   friend FloatN operator-(FloatN a, FloatN b) { return a.v - b.v; }
   friend FloatN operator*(FloatN a, FloatN b) { return a.v * b.v; }
