@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config ccache
-  libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
+  libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev libtinygltf-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   # the libFuzzer targets (scripts/fuzz.sh)
   clang libclang-rt-14-dev

@@ -19,6 +19,8 @@ namespace {
 
 glm::vec3 v3(const tinyobj::real_t* a) { return glm::vec3(float(a[0]), float(a[1]), float(a[2])); }
 
+}  // namespace
+
 // Normals for a mesh that has none: at each corner, the area-weighted sum of the normals of
 // the faces around that position that turn less than 45 degrees from the corner's own face,
 // so that curved surfaces shade smoothly and creases (a roof's ridge, a cube's edges) stay
@@ -62,6 +64,8 @@ void smooth_normals(Mesh& mesh) {
   mesh.vertices = std::move(out);
   mesh.indices = std::move(indices);
 }
+
+namespace {
 
 Model convert(const tinyobj::ObjReader& r, const std::string& name, const std::string& folder) {
   const tinyobj::attrib_t& at = r.GetAttrib();

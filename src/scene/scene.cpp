@@ -124,7 +124,9 @@ void Scene::Render(gpu::Context& ctx) const {
     gpu::RenderState pass;
     pass.depth_test = true;
     pass.offset_fill = true;
-    pass.offset_factor = shadows.slope_bias;
+    // A PCF tap k texels away meets the receiver's own depth k slopes further on: the slope
+    // bias grows with the kernel (receiver-plane acne otherwise, in rings on a floor).
+    pass.offset_factor = shadows.slope_bias * float(1 + shadows.pcf);
     pass.offset_units = shadows.constant_bias;
     for (const auto& o : objects)
       if (o->geometry) draw_shadow_depth(ctx, state.light_VP * o->transform.world(), *o->geometry, pass);

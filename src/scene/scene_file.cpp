@@ -368,7 +368,9 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
         if (!file.empty() && file[0] != '/') file = folder + "/" + file;
         Model model;
         try {
-          model = load_obj(file);
+          const auto dot = file.rfind('.');
+          const std::string ext = dot == std::string::npos ? "" : file.substr(dot);
+          model = ext == ".gltf" || ext == ".glb" ? load_gltf(file) : load_obj(file);
         } catch (const Error& e) {
           g.at("file").fail(e.what());
         }

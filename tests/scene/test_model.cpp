@@ -2,6 +2,9 @@
 // (smooth, but creases kept), and bad files as errors naming the file, the face and the index.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "tessel/gpu/format.hpp"
@@ -86,5 +89,91 @@ TEST(Obj, BadFilesAreErrorsNamingWhatAndWhere) {
     FAIL();
   } catch (const gpu::Error& e) {
     EXPECT_NE(std::string(e.what()).find("/no/such/model.obj: cannot open"), std::string::npos);
+  }
+}
+
+// --- glTF 2.0 -------------------------------------------------------------------------------
+
+namespace {
+std::string read_text(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+std::string gltf_error(const std::string& text) {
+  try {
+    parse_gltf(text.data(), text.size(), "bad.gltf");
+  } catch (const gpu::Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) s.replace(at, from.size(), to);
+  return s;
+}
+}  // namespace
+
+TEST(Gltf, NodeHierarchyMaterialsAndTexture) {
+  const Model m = load_gltf(std::string(TESSEL_SCENES_DIR) + "/models/pyramids.gltf");
+  ASSERT_EQ(m.parts.size(), 4u);  // big, small, mirror, top (base has no mesh)
+  ASSERT_EQ(m.materials.size(), 2u);
+  const Material& brick = *m.materials[0];
+  ASSERT_NE(brick.texture, nullptr);
+  EXPECT_EQ(brick.texture->width(), 64);
+  EXPECT_EQ(brick.kd, glm::vec3(1.0f));
+  EXPECT_NEAR(brick.ks.x, 0.04f, 1e-6f);  // a dielectric's Fresnel colour
+  const Material& gold = *m.materials[1];
+  EXPECT_NEAR(gold.ks.y, 0.76f, 1e-6f);  // a metal's is its base colour
+  EXPECT_NEAR(gold.kd.y, 0.76f * 0.25f, 1e-6f);
+  EXPECT_NEAR(gold.shininess, 2.0f / std::pow(0.35f, 4.0f) - 2.0f, 0.01f);
+  // The apex of "top" (translation (0, 1, 0), scale 0.4, child of "small" at (1.5, 0, 0.4)
+  // turned 45 degrees about y) lands at (1.5, 1.4, 0.4).
+  bool found = false;
+  for (const Model::Part& p : m.parts)
+    for (const VertexData& v : p.mesh.vertices) found = found || glm::length(v.pos - glm::vec3(1.5f, 1.4f, 0.4f)) < 1e-5f;
+  EXPECT_TRUE(found);
+  // Every part, the mirrored one too, has its triangles facing its normals.
+  for (const Model::Part& p : m.parts) {
+    for (size_t i = 0; i < p.mesh.indices.size(); i += 3) {
+      const VertexData &a = p.mesh.vertices[p.mesh.indices[i]], &b = p.mesh.vertices[p.mesh.indices[i + 1]],
+                       &c = p.mesh.vertices[p.mesh.indices[i + 2]];
+      EXPECT_GT(glm::dot(glm::cross(b.pos - a.pos, c.pos - a.pos), a.norm), 0.0f) << p.name;
+    }
+  }
+}
+
+TEST(Gltf, BinaryGlbGivesTheSameModel) {
+  const Model a = load_gltf(std::string(TESSEL_SCENES_DIR) + "/models/pyramids.gltf");
+  const Model b = load_gltf(std::string(TESSEL_SCENES_DIR) + "/models/pyramids.glb");
+  ASSERT_EQ(a.parts.size(), b.parts.size());
+  for (size_t i = 0; i < a.parts.size(); ++i) {
+    ASSERT_EQ(a.parts[i].mesh.vertices.size(), b.parts[i].mesh.vertices.size());
+    for (size_t v = 0; v < a.parts[i].mesh.vertices.size(); ++v)
+      EXPECT_EQ(a.parts[i].mesh.vertices[v].pos, b.parts[i].mesh.vertices[v].pos);
+  }
+}
+
+TEST(Gltf, BadFilesAreErrorsNamingWhatAndWhere) {
+  const std::string good = read_text(std::string(TESSEL_SCENES_DIR) + "/models/pyramids.gltf");
+  ASSERT_FALSE(good.empty());
+  EXPECT_EQ(gltf_error(good), "(no error)");
+  EXPECT_NE(gltf_error(good.substr(0, good.size() / 2)).find("bad.gltf: "), std::string::npos);
+  EXPECT_NE(gltf_error("").find("bad.gltf: "), std::string::npos);
+  EXPECT_NE(gltf_error("glTF\x02\0\0\0garbage").find("bad.gltf: "), std::string::npos);
+  // An accessor whose elements run past its view.
+  EXPECT_NE(gltf_error(replaced(good, "\"count\": 18,\n   \"type\": \"VEC2\"", "\"count\": 40,\n   \"type\": \"VEC2\"")).find(
+                "TEXCOORD_0: accessor 2 reads past the end of its buffer"),
+            std::string::npos)
+      << gltf_error(replaced(good, "\"count\": 18,\n   \"type\": \"VEC2\"", "\"count\": 40,\n   \"type\": \"VEC2\""));
+  EXPECT_NE(gltf_error(replaced(good, "\"POSITION\": 0,", "\"POSITIONS\": 0,")).find("mesh 'stone' primitive 0 has no POSITION"),
+            std::string::npos);
+  EXPECT_NE(gltf_error(replaced(good, "\"mesh\": 0,", "\"mesh\": 7,")).find("bad.gltf: "), std::string::npos);
+  try {
+    load_gltf("/no/such/model.glb");
+    FAIL();
+  } catch (const gpu::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/no/such/model.glb: cannot open"), std::string::npos);
   }
 }

@@ -1,4 +1,5 @@
-// Models from files: Wavefront OBJ with its MTL materials (through tinyobjloader). A model is
+// Models from files: Wavefront OBJ with its MTL materials (through tinyobjloader), and glTF 2.0
+// (through tinygltf). A model is
 // a list of parts, one per (shape, material) pair, each a triangle mesh with normals (smooth
 // normals are computed where the file has none) and texture coordinates.
 //
@@ -32,5 +33,16 @@ Model load_obj(const std::string& path);
 // line there are no materials); `name` is used in messages, `folder` for texture paths.
 Model parse_obj(const std::string& obj_text, const std::string& mtl_text, const std::string& name,
                 const std::string& folder = ".");
+
+// glTF 2.0 (.gltf, .glb): the default scene's meshes placed by their nodes' world matrices,
+// base colour textures, and the PBR factors mapped to the Phong material (docs/scene-format.md).
+Model load_gltf(const std::string& path);
+// From bytes (.glb when they start with "glTF"); external buffers and images are looked up in
+// `folder`.
+Model parse_gltf(const void* data, size_t size, const std::string& name, const std::string& folder = ".");
+
+// Corner normals for a triangle list without them: the area-weighted face normals around
+// each position within 45 degrees of the corner's face (curves smooth, creases sharp).
+void smooth_normals(Mesh& mesh);
 
 }  // namespace tessel::scene

@@ -73,7 +73,8 @@ struct ShadowSettings {
   bool enabled = false;
   int light = 0;               // the index of the light that casts shadows
   int size = 2048;             // the map's width and height in texels (16..8192)
-  float slope_bias = 2.0f;     // the light pass's polygon offset: factor (slope-scaled) ...
+  float slope_bias = 2.0f;     // the light pass's polygon offset: factor (slope-scaled, times
+                               // pcf + 1, as the kernel reaches that many texels) ...
   float constant_bias = 4.0f;  // ... and units, against shadow acne
   int pcf = 1;                 // percentage-closer filtering: (2 pcf + 1)^2 bilinear compares,
                                // one texel apart (0: the 2x2 bilinear compare alone)
