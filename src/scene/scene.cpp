@@ -144,6 +144,44 @@ void Scene::Render(gpu::Context& ctx) const {
   state.pipeline.depth_test = true;
   ctx.clear({.color = background, .depth = 1.0f});
   for (const auto& o : objects) o->Draw(ctx, state);
+  if (planar_shadows.enabled) draw_planar_shadows(ctx, state);
+}
+
+void Scene::draw_planar_shadows(gpu::Context& ctx, const RenderState& state) const {
+  const PlanarShadowSettings& ps = planar_shadows;
+  if (ps.light < 0 || size_t(ps.light) >= lights.size())
+    throw Error("planar shadows: light " + std::to_string(ps.light) + " does not exist (the scene has " +
+                std::to_string(lights.size()) + ")");
+  const float nlen = glm::length(glm::vec3(ps.plane));
+  if (!(nlen > 0.0f) || !std::isfinite(nlen) || !std::isfinite(ps.plane.w)) throw Error("planar shadows: the plane has no normal");
+  const glm::vec4 P = ps.plane / nlen;
+  const glm::vec4 L = lights[size_t(ps.light)].wLightPos;
+  // Projection onto the plane from L (homogeneous, so directional lights work too):
+  // S = (P.L) I - L P^T, column-major: S[c][r] = (P.L) delta(r, c) - L[r] P[c].
+  const float pl = glm::dot(P, L);
+  glm::mat4 S(0.0f);
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) S[c][r] = (r == c ? pl : 0.0f) - L[r] * P[c];
+  gpu::RenderState pass = state.pipeline;
+  pass.cull = gpu::CullMode::None;  // the flattening can reverse the winding
+  pass.offset_fill = true;
+  pass.offset_factor = -1.0f;
+  pass.offset_units = -4.0f;
+  const glm::mat4 VP = state.P * state.V;
+  for (const auto& o : objects) {
+    if (!o->geometry || !o->planar_shadow) continue;
+    const glm::mat4 M = o->transform.world();
+    // Objects lying in the plane (the receiver) cast nothing; nor do those entirely on the
+    // side away from the light.
+    bool in_plane = true, lit_side = false;
+    for (const VertexData& v : o->geometry->mesh().vertices) {
+      const float dist = glm::dot(P, M * glm::vec4(v.pos, 1.0f));
+      in_plane = in_plane && std::fabs(dist) < 1e-4f;
+      lit_side = lit_side || (pl > 0.0f ? dist > 1e-4f : dist < -1e-4f);
+    }
+    if (in_plane || !lit_side) continue;
+    draw_flat(ctx, VP * S * M, ps.color, *o->geometry, pass);
+  }
 }
 
 int Scene::triangles() const {

@@ -237,7 +237,18 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
   std::string default_shader = "phong";
   if (root.has("render")) {
     const Node r = root.at("render");
-    r.only({"size", "background", "threads", "fps", "shading", "shadows"});
+    r.only({"size", "background", "threads", "fps", "shading", "shadows", "planar_shadows"});
+    if (r.has("planar_shadows")) {
+      const Node ps = r.at("planar_shadows");
+      ps.only({"light", "plane", "color"});
+      s.planar_shadows.enabled = true;
+      if (ps.has("light")) s.planar_shadows.light = ps.at("light").integer(0, kMaxLights - 1);
+      if (ps.has("plane")) {
+        s.planar_shadows.plane = ps.at("plane").vec<4>();
+        if (glm::length(glm::vec3(s.planar_shadows.plane)) == 0.0f) ps.at("plane").fail("the plane's normal (a, b, c) is zero");
+      }
+      if (ps.has("color")) s.planar_shadows.color = ps.at("color").colour();
+    }
     if (r.has("shadows")) {
       const Node sh = r.at("shadows");
       ShadowSettings& ss = s.shadows;
@@ -297,6 +308,9 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
     for (size_t i = 0; i < ls.json_value().size(); ++i) s.lights.push_back(read_light(ls.item(i)));
   }
 
+  if (s.planar_shadows.enabled && size_t(s.planar_shadows.light) >= s.lights.size())
+    root.at("render").at("planar_shadows").fail("light " + std::to_string(s.planar_shadows.light) + " does not exist (there are " +
+                                                std::to_string(s.lights.size()) + " lights)");
   if (s.shadows.enabled && size_t(s.shadows.light) >= s.lights.size())
     root.at("render").at("shadows").fail("light " + std::to_string(s.shadows.light) + " does not exist (there are " +
                                          std::to_string(s.lights.size()) + " lights)");
@@ -332,7 +346,8 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
     std::vector<std::pair<Object*, Node>> parents;
     for (size_t i = 0; i < os.json_value().size(); ++i) {
       const Node o = os.item(i);
-      o.only({"name", "geometry", "material", "shader", "position", "scale", "rotation", "parent", "animate", "cull"});
+      o.only({"name", "geometry", "material", "shader", "position", "scale", "rotation", "parent", "animate", "cull",
+              "planar_shadow"});
       const Node g = o.at("geometry");
       g.only({"type", "rows", "columns", "radius", "center", "width", "height", "depth", "waves", "phase", "major", "minor", "size",
               "file"});
@@ -413,10 +428,12 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
         if (anim.has("velocity")) obj->velocity = anim.at("velocity").vec<3>();
       }
       if (o.has("cull")) obj->cull_back_faces = o.at("cull").boolean();
+      if (o.has("planar_shadow")) obj->planar_shadow = o.at("planar_shadow").boolean();
       Object& added = s.add(std::move(obj));
       for (auto& part : extra_parts) {
         part->transform.parent = &added.transform;
         part->cull_back_faces = added.cull_back_faces;
+        part->planar_shadow = added.planar_shadow;
         s.add(std::move(part));
       }
       if (o.has("name")) {

@@ -261,7 +261,27 @@ struct DepthOnlyGpu {
   template <class F> void fragment(const Uniforms&, const Varyings<F>&, Fragment<F>&) const {}
 };
 
+struct FlatGpu {
+  struct Uniforms {
+    glm::mat4 MVP{1.0f};
+    glm::vec3 color{0.0f};
+  };
+  template <class F> struct Varyings {};
+  static constexpr uint32_t attributes = 0b1;
+  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>&) const {
+    return u.MVP * Vec4<F>(in.attr[0].xyz(), F(1.0f));
+  }
+  template <class F> void fragment(const Uniforms& u, const Varyings<F>&, Fragment<F>& f) const {
+    f.color[0] = Vec4<F>(Vec3<F>(u.color), F(1.0f));
+  }
+};
+
 }  // namespace
+
+void draw_flat(gpu::Context& ctx, const glm::mat4& MVP, const glm::vec3& color, const Geometry& geometry,
+               const gpu::RenderState& pipeline) {
+  ctx.draw(FlatGpu{}, FlatGpu::Uniforms{MVP, color}, geometry.layout(), pipeline, geometry.draw_call());
+}
 
 void draw_shadow_depth(gpu::Context& ctx, const glm::mat4& MVP, const Geometry& geometry, const gpu::RenderState& pipeline) {
   ctx.draw(DepthOnlyGpu{}, DepthOnlyGpu::Uniforms{MVP}, geometry.layout(), pipeline, geometry.draw_call());

@@ -265,3 +265,30 @@ TEST(Shadows, BadSettingsAreErrors) {
   inside.lights[0].wLightPos = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);  // a point light among the objects
   EXPECT_THROW(render(inside, 32, 32, 1), gpu::Error);
 }
+
+// Projected planar shadows: the sphere's shadow is centred where the ray from the light
+// through its centre meets the floor, in exactly the shadow colour; the floor itself (in the
+// plane) casts nothing, so far from the sphere the floor keeps its shading.
+TEST(PlanarShadows, TheShadowLiesAlongTheLightRay) {
+  Scene s = shadow_scene(true, {});
+  s.shadows.enabled = false;
+  s.objects.pop_back();  // no post
+  auto ball = std::make_shared<Geometry>(Sphere(0.5f).create(16, 32), "ball");
+  auto& b = s.add(std::make_unique<Object>(ball, s.objects[0]->material, std::make_shared<PhongShader>()));
+  b.transform.position = glm::vec3(0.0f, 1.5f, 0.0f);
+  s.lights[0].wLightPos = glm::vec4(1.0f, 4.0f, 0.5f, 1.0f);  // a point light
+  s.planar_shadows.enabled = true;
+  s.planar_shadows.color = glm::vec3(0.0f, 0.0f, 1.0f);  // blue, to tell it from shading
+  const Shot shot = shoot(s);
+  // L + t (C - L) with y = 0: t = 4 / 2.5.
+  const glm::vec3 L(1.0f, 4.0f, 0.5f), C(0.0f, 1.5f, 0.0f), X = L + (C - L) * (4.0f / 2.5f);
+  auto pixel = [&](const glm::vec3& p) {
+    const glm::vec4 c = shot.VP * glm::vec4(p, 1.0f);
+    const int x = int((c.x / c.w * 0.5f + 0.5f) * 256.0f), y = int((c.y / c.w * 0.5f + 0.5f) * 256.0f);
+    const uint8_t* q = &shot.px[(size_t(y) * 256 + size_t(x)) * 4];
+    return glm::ivec3(q[0], q[1], q[2]);
+  };
+  EXPECT_EQ(pixel(X), glm::ivec3(0, 0, 255));
+  EXPECT_NE(pixel(glm::vec3(-3.0f, 0.0f, 2.5f)), glm::ivec3(0, 0, 255));  // open floor
+  EXPECT_NE(pixel(X + glm::vec3(1.2f, 0.0f, 0.0f)), glm::ivec3(0, 0, 255));
+}

@@ -80,6 +80,18 @@ struct ShadowSettings {
                                // one texel apart (0: the 2x2 bilinear compare alone)
 };
 
+// Projected planar shadows (the notes' "black shadow" pass): after the objects are drawn,
+// each object is drawn again flattened onto the plane a x + b y + c z + d = 0 along the
+// rays from a light (the projection matrix (P.L) I - L P^T), in one colour, a little toward
+// the camera so that it wins against the plane it lies on. Objects that lie in the plane
+// (the floor itself) cast nothing; an object can opt out with Object::planar_shadow.
+struct PlanarShadowSettings {
+  bool enabled = false;
+  int light = 0;
+  glm::vec4 plane{0.0f, 1.0f, 0.0f, 0.0f};
+  glm::vec3 color{0.0f};
+};
+
 // What flows from the scene and the object to the shader.
 struct RenderState {
   glm::mat4 M{1.0f}, Minv{1.0f}, V{1.0f}, P{1.0f};
@@ -118,6 +130,7 @@ class Object {
   float spin = 0.0f;
   glm::vec3 velocity{0.0f};
   bool cull_back_faces = true;
+  bool planar_shadow = true;  // casts a projected planar shadow when the scene draws them
 
   virtual void Animate(float dt);
   // Fills M, Minv and the material, and draws with the object's shader.
@@ -131,6 +144,7 @@ class Scene {
   std::vector<std::unique_ptr<Object>> objects;
   glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};
   ShadowSettings shadows;
+  PlanarShadowSettings planar_shadows;
 
   Object& add(std::unique_ptr<Object> object);
   void Animate(float dt);
@@ -145,6 +159,7 @@ class Scene {
   glm::mat4 shadow_matrix(const Light& light) const;
 
  private:
+  void draw_planar_shadows(gpu::Context& ctx, const RenderState& state) const;
   mutable std::unique_ptr<gpu::Texture2D> shadow_map_;  // reused from frame to frame
 };
 

@@ -20,6 +20,11 @@ class GouraudShader : public Shader {
 // The light pass of shadow mapping: the geometry's depth through MVP, nothing else.
 void draw_shadow_depth(gpu::Context& ctx, const glm::mat4& MVP, const Geometry& geometry, const gpu::RenderState& pipeline);
 
+// A projected planar shadow: the geometry through MVP (which includes the projection onto
+// the plane), in one colour.
+void draw_flat(gpu::Context& ctx, const glm::mat4& MVP, const glm::vec3& color, const Geometry& geometry,
+               const gpu::RenderState& pipeline);
+
 // Per-pixel (Phong) shading with the Blinn-Phong specular term: the normal and the position
 // are interpolated and the formula is evaluated at each pixel. With a shadow map in the
 // render state, the shadowing light's Le is scaled by the fraction of PCF compares that see
