@@ -104,9 +104,21 @@ glm::mat4 Scene::shadow_matrix(const Light& light) const {
 
 void Scene::Render(gpu::Context& ctx) const {
   camera.validate();
-  if (lights.size() > size_t(kMaxLights))
-    throw Error("scene: " + std::to_string(lights.size()) + " lights, at most " + std::to_string(kMaxLights));
+  const size_t max_lights = size_t(deferred ? kMaxDeferredLights : kMaxLights);
+  if (lights.size() > max_lights)
+    throw Error("scene: " + std::to_string(lights.size()) + " lights, at most " + std::to_string(max_lights) +
+                (deferred ? "" : " (deferred shading takes " + std::to_string(kMaxDeferredLights) + ")"));
   RenderState state;
+  if (deferred) {
+    state.V = camera.V();
+    state.P = camera.P();
+    state.wEye = camera.eye;
+    state.near = camera.near;
+    state.far = camera.far;
+    state.pipeline.depth_test = true;
+    render_deferred(ctx, state);
+    return;
+  }
   if (shadows.enabled) {
     if (shadows.light < 0 || size_t(shadows.light) >= lights.size())
       throw Error("shadows: light " + std::to_string(shadows.light) + " does not exist (the scene has " +
@@ -145,6 +157,40 @@ void Scene::Render(gpu::Context& ctx) const {
   ctx.clear({.color = background, .depth = 1.0f});
   for (const auto& o : objects) o->Draw(ctx, state);
   if (planar_shadows.enabled) draw_planar_shadows(ctx, state);
+}
+
+void Scene::render_deferred(gpu::Context& ctx, const RenderState& base) const {
+  gpu::Framebuffer* target = ctx.framebuffer();
+  if (!target) throw Error("scene: no framebuffer bound");
+  const int w = target->width(), h = target->height();
+  if (gbuffer_.empty() || gbuffer_[0]->width() != w || gbuffer_[0]->height() != h) {
+    gbuffer_.clear();
+    const gpu::Format formats[6] = {gpu::Format::RGBA32F, gpu::Format::RGBA32F, gpu::Format::RGBA8,
+                                    gpu::Format::RGBA8,   gpu::Format::RGBA8,   gpu::Format::RGBA8};
+    for (gpu::Format f : formats) gbuffer_.push_back(std::make_unique<gpu::Texture2D>(f, w, h));
+    gbuffer_.push_back(std::make_unique<gpu::Texture2D>(gpu::Format::Depth24, w, h));
+  }
+  // Pass 1: geometry into the G-buffer, all six attachments at once.
+  gpu::Framebuffer g;
+  for (int i = 0; i < 6; ++i) g.color[size_t(i)].texture = gbuffer_[size_t(i)].get();
+  g.depth.texture = gbuffer_[6].get();
+  ctx.bind_framebuffer(&g);
+  ctx.clear({.color = glm::vec4(0.0f), .depth = 1.0f});
+  for (const auto& o : objects) {
+    if (!o->geometry) continue;
+    RenderState state = base;
+    state.M = o->transform.world();
+    state.Minv = o->transform.world_inverse();
+    state.material = o->material.get();
+    state.pipeline.cull = o->cull_back_faces ? gpu::CullMode::Back : gpu::CullMode::None;
+    draw_gbuffer(ctx, state, *o->geometry);
+  }
+  // Pass 2: one full-screen triangle lights every pixel from the G-buffer.
+  ctx.bind_framebuffer(target);
+  ctx.clear({.color = background, .depth = 1.0f});
+  std::vector<const gpu::Texture2D*> views;
+  for (int i = 0; i < 6; ++i) views.push_back(gbuffer_[size_t(i)].get());
+  draw_deferred_lighting(ctx, views, lights, camera.eye, background);
 }
 
 void Scene::draw_planar_shadows(gpu::Context& ctx, const RenderState& state) const {

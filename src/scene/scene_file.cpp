@@ -237,7 +237,8 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
   std::string default_shader = "phong";
   if (root.has("render")) {
     const Node r = root.at("render");
-    r.only({"size", "background", "threads", "fps", "shading", "shadows", "planar_shadows"});
+    r.only({"size", "background", "threads", "fps", "shading", "shadows", "planar_shadows", "deferred"});
+    if (r.has("deferred")) s.deferred = r.at("deferred").boolean();
     if (r.has("planar_shadows")) {
       const Node ps = r.at("planar_shadows");
       ps.only({"light", "plane", "color"});
@@ -304,7 +305,9 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
   if (root.has("lights")) {
     const Node ls = root.at("lights");
     if (!ls.json_value().is_array()) ls.fail("expected an array of lights");
-    if (ls.json_value().size() > size_t(kMaxLights)) ls.fail("at most " + std::to_string(kMaxLights) + " lights");
+    const size_t max_lights = size_t(s.deferred ? kMaxDeferredLights : kMaxLights);
+    if (ls.json_value().size() > max_lights)
+      ls.fail("at most " + std::to_string(max_lights) + " lights" + (s.deferred ? "" : " (with render.deferred: " + std::to_string(kMaxDeferredLights) + ")"));
     for (size_t i = 0; i < ls.json_value().size(); ++i) s.lights.push_back(read_light(ls.item(i)));
   }
 

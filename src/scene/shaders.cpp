@@ -276,7 +276,104 @@ struct FlatGpu {
   }
 };
 
+struct GBufferGpu {
+  struct Uniforms {
+    TransformUniforms t;
+    LightingUniforms l;
+  };
+  template <class F> using Varyings = PhongGpu::Varyings<F>;
+  static constexpr uint32_t attributes = 0b111;
+  static constexpr int outputs = 6;
+  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+    return PhongGpu{}.vertex(PhongGpu::Uniforms{u.t, u.l}, in, out);
+  }
+  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
+    Vec3<F> tex(F(1.0f));
+    if (u.l.textured) tex = texture(u.l.tex, v.uv).xyz();
+    f.color[0] = Vec4<F>(v.wPos, F(u.l.shininess));
+    f.color[1] = Vec4<F>(normalize(v.wNormal), F(1.0f));
+    f.color[2] = Vec4<F>(Vec3<F>(u.l.kd) * tex, F(1.0f));
+    f.color[3] = Vec4<F>(Vec3<F>(u.l.ks), F(1.0f));
+    f.color[4] = Vec4<F>(Vec3<F>(u.l.ka) * tex, F(1.0f));
+    f.color[5] = Vec4<F>(Vec3<F>(u.l.emission), F(1.0f));
+  }
+};
+
+struct DeferredLightGpu {
+  struct Uniforms {
+    std::array<Sampler2D, 6> g;
+    std::array<Light, kMaxDeferredLights> lights{};
+    int count = 0;
+    glm::vec3 eye{0.0f};
+    glm::vec4 background{0.0f};
+  };
+  template <class F> struct Varyings {};
+  static constexpr uint32_t attributes = 0b1;
+  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>&) const {
+    return Vec4<F>(in.attr[0].x, in.attr[0].y, F(0.0f), F(1.0f));
+  }
+  template <class F> void fragment(const Uniforms& u, const Varyings<F>&, Fragment<F>& f) const {
+    const IntOf<F> x = to_int(f.coord.x), y = to_int(f.coord.y);
+    const Vec4<F> g0 = texelFetch(u.g[0], x, y, 0), g1 = texelFetch(u.g[1], x, y, 0);
+    const Vec3<F> kd = texelFetch(u.g[2], x, y, 0).xyz(), ks = texelFetch(u.g[3], x, y, 0).xyz();
+    const Vec3<F> ka = texelFetch(u.g[4], x, y, 0).xyz(), em = texelFetch(u.g[5], x, y, 0).xyz();
+    const Vec3<F> p = g0.xyz(), N = g1.xyz();
+    const F shine = g0.w;
+    const Vec3<F> V = normalize(Vec3<F>(u.eye) - p);
+    Vec3<F> c = em;
+    for (int i = 0; i < u.count; ++i) {
+      const Light& l = u.lights[size_t(i)];
+      const Vec3<F> L = normalize(Vec3<F>(glm::vec3(l.wLightPos)) - p * F(l.wLightPos.w));
+      F k(1.0f);
+      if (l.wLightPos.w != 0.0f && (l.attenuation.y != 0.0f || l.attenuation.z != 0.0f || l.attenuation.x != 1.0f)) {
+        const Vec3<F> d = Vec3<F>(glm::vec3(l.wLightPos) / l.wLightPos.w) - p;
+        const F d2 = dot(d, d);
+        k = F(1.0f) / (F(l.attenuation.x) + F(l.attenuation.y) * sqrt(d2) + F(l.attenuation.z) * d2);
+      }
+      if (l.spot_cos_cutoff > -1.0f) {
+        const F cs = dot(-L, Vec3<F>(glm::normalize(l.spot_direction)));
+        k = k * select(cs >= F(l.spot_cos_cutoff), l.spot_exponent == 0.0f ? F(1.0f) : pow(max(cs, F(0.0f)), F(l.spot_exponent)),
+                       F(0.0f));
+      }
+      const F cost = max(dot(N, L), F(0.0f));
+      const Vec3<F> H = normalize(L + V);
+      // The shininess differs per pixel here: pow of a lane vector.
+      const F cosd = select(cost > F(0.0f), pow(max(dot(N, H), F(1e-30f)), shine), F(0.0f));
+      c = c + ka * Vec3<F>(l.La) + (kd * cost + ks * cosd) * (Vec3<F>(l.Le) * k);
+    }
+    const auto empty = g1.w == F(0.0f);
+    f.color[0] = Vec4<F>(select(empty, F(u.background.r), c.x), select(empty, F(u.background.g), c.y),
+                         select(empty, F(u.background.b), c.z), select(empty, F(u.background.a), F(1.0f)));
+  }
+};
+
 }  // namespace
+
+void draw_gbuffer(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) {
+  ctx.draw(GBufferGpu{}, GBufferGpu::Uniforms{transforms(state), lighting(state)}, geometry.layout(), state.pipeline,
+           geometry.draw_call());
+}
+
+void draw_deferred_lighting(gpu::Context& ctx, const std::vector<const gpu::Texture2D*>& gbuffer,
+                            const std::vector<Light>& lights, const glm::vec3& eye, const glm::vec4& background) {
+  auto u = std::make_unique<DeferredLightGpu::Uniforms>();
+  for (size_t i = 0; i < 6 && i < gbuffer.size(); ++i) {
+    u->g[i].texture = gbuffer[i];
+    u->g[i].state.min_filter = Filter::Nearest;
+    u->g[i].state.mag_filter = Filter::Nearest;
+  }
+  u->count = int(std::min<size_t>(lights.size(), kMaxDeferredLights));
+  for (int i = 0; i < u->count; ++i) u->lights[size_t(i)] = lights[size_t(i)];
+  u->eye = eye;
+  u->background = background;
+  // One triangle that covers the viewport.
+  static const float tri[6] = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
+  const Buffer vb(tri, sizeof tri);
+  VertexLayout layout;
+  layout.attrib(0, vb, 2, AttribType::F32, 8, 0);
+  gpu::RenderState pass;
+  ctx.draw(DeferredLightGpu{}, *u, layout, pass, DrawCall{.topology = Topology::Triangles, .count = 3});
+}
 
 void draw_flat(gpu::Context& ctx, const glm::mat4& MVP, const glm::vec3& color, const Geometry& geometry,
                const gpu::RenderState& pipeline) {

@@ -292,3 +292,22 @@ TEST(PlanarShadows, TheShadowLiesAlongTheLightRay) {
   EXPECT_NE(pixel(glm::vec3(-3.0f, 0.0f, 2.5f)), glm::ivec3(0, 0, 255));  // open floor
   EXPECT_NE(pixel(X + glm::vec3(1.2f, 0.0f, 0.0f)), glm::ivec3(0, 0, 255));
 }
+
+// Deferred shading computes the same formula as PhongShader from the G-buffer: the images of
+// one scene agree (pixels off by more than 2/255 at most 0.1%).
+TEST(Deferred, AgreesWithForwardPhong) {
+  Scene fwd = tessel::test::make_scene(40.0f, /*gouraud_left=*/false);
+  const std::vector<uint8_t> a = render(fwd, 240, 120, 2);
+  Scene def = tessel::test::make_scene(40.0f, false);
+  def.deferred = true;
+  const std::vector<uint8_t> b = render(def, 240, 120, 2);
+  const test::ImageDiff d = test::diff_rgba(a, b);
+  EXPECT_TRUE(d.passes()) << d.differing << " of " << d.total << " pixels differ (max " << d.max_diff << ")";
+  std::printf("deferred vs forward: %d of %d pixels differ by more than 2/255 (max %d)\n", d.differing, d.total, d.max_diff);
+  // Identical for any thread count, and it takes more lights than forward shading.
+  EXPECT_EQ(b, render(def, 240, 120, 1));
+  def.lights.resize(40, def.lights[1]);
+  EXPECT_NO_THROW(render(def, 32, 32, 1));
+  fwd.lights.resize(40, fwd.lights[1]);
+  EXPECT_THROW(render(fwd, 32, 32, 1), gpu::Error);
+}

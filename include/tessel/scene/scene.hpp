@@ -21,6 +21,8 @@
 namespace tessel::scene {
 
 inline constexpr int kMaxLights = 8;
+// Deferred shading lights every pixel once from the G-buffer, so it takes many more lights.
+inline constexpr int kMaxDeferredLights = 256;
 
 // A light source at a homogeneous world position: w = 0 is a directional light shining from
 // the direction xyz, w != 0 a point (xyz / w). La is its ambient and Le its emitted radiance
@@ -145,12 +147,17 @@ class Scene {
   glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};
   ShadowSettings shadows;
   PlanarShadowSettings planar_shadows;
+  // Deferred shading: the objects write position, normal and material into a G-buffer (six
+  // colour attachments drawn at once, MRT), then one full-screen pass lights every pixel with
+  // the notes' Blinn-Phong formula from up to kMaxDeferredLights lights. Object shaders and
+  // shadows are not used in this mode.
+  bool deferred = false;
 
   Object& add(std::unique_ptr<Object> object);
   void Animate(float dt);
   // Clears the bound framebuffer to the background and draws every object with the camera's
   // V and P (the caller sets camera.aspect). Throws Error for an invalid camera or more than
-  // kMaxLights lights.
+  // kMaxLights lights (kMaxDeferredLights when deferred).
   void Render(gpu::Context& ctx) const;
   int triangles() const;
   // The smallest sphere around every object's vertices found by a bounding box (centre, radius).
@@ -160,6 +167,8 @@ class Scene {
 
  private:
   void draw_planar_shadows(gpu::Context& ctx, const RenderState& state) const;
+  void render_deferred(gpu::Context& ctx, const RenderState& state) const;
+  mutable std::vector<std::unique_ptr<gpu::Texture2D>> gbuffer_;  // positions, normals, kd, ks, ka, emission, depth
   mutable std::unique_ptr<gpu::Texture2D> shadow_map_;  // reused from frame to frame
 };
 

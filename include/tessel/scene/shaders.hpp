@@ -25,6 +25,14 @@ void draw_shadow_depth(gpu::Context& ctx, const glm::mat4& MVP, const Geometry& 
 void draw_flat(gpu::Context& ctx, const glm::mat4& MVP, const glm::vec3& color, const Geometry& geometry,
                const gpu::RenderState& pipeline);
 
+// Deferred shading's two passes: an object into the G-buffer (attachments: world position
+// and shininess, normal, kd, ks, ka, emission; the texture already applied to kd and ka), and
+// the full-screen lighting pass that reads it (pixels the objects did not cover get
+// `background`).
+void draw_gbuffer(gpu::Context& ctx, const RenderState& state, const Geometry& geometry);
+void draw_deferred_lighting(gpu::Context& ctx, const std::vector<const gpu::Texture2D*>& gbuffer,
+                            const std::vector<Light>& lights, const glm::vec3& eye, const glm::vec4& background);
+
 // Per-pixel (Phong) shading with the Blinn-Phong specular term: the normal and the position
 // are interpolated and the formula is evaluated at each pixel. With a shadow map in the
 // render state, the shadowing light's Le is scaled by the fraction of PCF compares that see
