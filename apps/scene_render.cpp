@@ -37,7 +37,7 @@ int render_scene(const SceneRenderOptions& o) {
     if (!o.shading.empty()) {
       const auto shader = scene::shader_by_name(o.shading);
       if (!shader) {
-        std::fprintf(stderr, "tessel render: --shading '%s': expected gouraud, phong, npr, depth or normal\n", o.shading.c_str());
+        std::fprintf(stderr, "tessel render: --shading '%s': expected gouraud, phong, normalmap, npr, depth or normal\n", o.shading.c_str());
         return 2;
       }
       for (auto& obj : file.scene.objects) obj->shader = shader;

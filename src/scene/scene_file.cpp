@@ -119,8 +119,39 @@ class WavingObject : public Object {
 };
 
 std::shared_ptr<const gpu::Texture2D> read_texture(const Node& n, const std::string& folder) {
-  n.only({"file", "checker"});
-  if (n.has("file") == n.has("checker")) n.fail("give either 'file' or 'checker'");
+  n.only({"file", "checker", "bumps"});
+  if (int(n.has("file")) + int(n.has("checker")) + int(n.has("bumps")) != 1) n.fail("give one of 'file', 'checker' or 'bumps'");
+  if (n.has("bumps")) {
+    // A tangent-space normal map of round bumps: count x count of them, `height` scaling
+    // their slope, for NormalMapShader.
+    const Node b = n.at("bumps");
+    b.only({"size", "count", "height"});
+    const int size = b.has("size") ? b.at("size").integer(4, 4096) : 256;
+    const int count = b.has("count") ? b.at("count").integer(1, size / 2) : 8;
+    const float height = b.has("height") ? b.at("height").number(0.0f, 10.0f) : 1.0f;
+    std::vector<uint8_t> px(size_t(size) * size_t(size) * 4);
+    const float cell = float(size) / float(count);
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const float dx = (std::fmod(float(x) + 0.5f, cell) / cell - 0.5f) * 2.0f;
+        const float dy = (std::fmod(float(y) + 0.5f, cell) / cell - 0.5f) * 2.0f;
+        const float r2 = dx * dx + dy * dy;
+        // Bump height h = height (1 - r^2 / 0.81)^2 inside radius 0.9 of the cell: its slope
+        // falls to 0 at the rim, so the map has no seams; the normal is (-dh/dx, -dh/dy, 1).
+        glm::vec3 nrm(0.0f, 0.0f, 1.0f);
+        if (r2 < 0.81f) {
+          const float f = 1.0f - r2 / 0.81f, k = 4.0f * height * f / 0.81f;
+          nrm = glm::normalize(glm::vec3(k * dx, k * dy, 1.0f));
+        }
+        uint8_t* p = &px[(size_t(y) * size_t(size) + size_t(x)) * 4];
+        for (int i = 0; i < 3; ++i) p[i] = uint8_t(std::lround((nrm[i] * 0.5f + 0.5f) * 255.0f));
+        p[3] = 255;
+      }
+    auto t = std::make_shared<gpu::Texture2D>(gpu::Format::RGBA8, size, size, 0);
+    t->upload_rgba8(0, px.data(), px.size());
+    t->generate_mipmaps();
+    return t;
+  }
   if (n.has("file")) {
     std::string f = n.at("file").string();
     if (!f.empty() && f[0] != '/') f = folder + "/" + f;
@@ -152,7 +183,7 @@ std::shared_ptr<const gpu::Texture2D> read_texture(const Node& n, const std::str
 }
 
 std::shared_ptr<Material> read_material(const Node& n, const std::map<std::string, std::shared_ptr<const gpu::Texture2D>>& textures) {
-  n.only({"ka", "kd", "ks", "shininess", "emission", "texture", "reflectance", "transmittance", "refractive_index"});
+  n.only({"ka", "kd", "ks", "shininess", "emission", "texture", "normal_map", "reflectance", "transmittance", "refractive_index"});
   auto m = std::make_shared<Material>();
   if (n.has("kd")) m->kd = n.at("kd").colour();
   m->ka = n.has("ka") ? n.at("ka").colour() : m->kd * 0.1f;
@@ -162,6 +193,12 @@ std::shared_ptr<Material> read_material(const Node& n, const std::map<std::strin
   if (n.has("reflectance")) m->reflectance = n.at("reflectance").colour();
   if (n.has("transmittance")) m->transmittance = n.at("transmittance").colour();
   if (n.has("refractive_index")) m->refractive_index = n.at("refractive_index").number(0.01f, 100.0f);
+  if (n.has("normal_map")) {
+    const Node t = n.at("normal_map");
+    const auto it = textures.find(t.string());
+    if (it == textures.end()) t.fail("no texture named '" + t.string() + "'");
+    m->normal_map = it->second;
+  }
   if (n.has("texture")) {
     const Node t = n.at("texture");
     const auto it = textures.find(t.string());
@@ -203,7 +240,7 @@ std::shared_ptr<const Shader> shader_by_name(const std::string& name) {
   static const std::map<std::string, std::shared_ptr<const Shader>> library = {
       {"gouraud", std::make_shared<GouraudShader>()}, {"phong", std::make_shared<PhongShader>()},
       {"npr", std::make_shared<NprShader>()},         {"depth", std::make_shared<DepthShader>()},
-      {"normal", std::make_shared<NormalShader>()}};
+      {"normal", std::make_shared<NormalShader>()},   {"normalmap", std::make_shared<NormalMapShader>()}};
   const auto it = library.find(name);
   return it == library.end() ? nullptr : it->second;
 }
@@ -228,6 +265,11 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
     const auto colon = msg.find(": ", msg.find("parse error"));
     if (colon != std::string::npos) msg = msg.substr(colon + 2);
     throw Error(name + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + msg);
+  } catch (const json::exception& e) {
+    // Not a syntax error but still the text's fault: a number too large for a double.
+    std::string msg = e.what();
+    const auto bracket = msg.find("] ");
+    throw Error(name + ": " + (bracket == std::string::npos ? msg : msg.substr(bracket + 2)));
   }
   SceneFile out;
   Scene& s = out.scene;
@@ -279,7 +321,7 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
     if (r.has("fps")) out.render.fps = r.at("fps").number(0.001f, 10000.0f);
     if (r.has("shading")) {
       default_shader = r.at("shading").string();
-      if (!shader_by_name(default_shader)) r.at("shading").fail("unknown shading '" + default_shader + "' (expected gouraud, phong, npr, depth, normal)");
+      if (!shader_by_name(default_shader)) r.at("shading").fail("unknown shading '" + default_shader + "' (expected gouraud, phong, normalmap, npr, depth, normal)");
     }
   }
 
@@ -368,7 +410,7 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
       std::string shader_name = default_shader;
       if (o.has("shader")) shader_name = o.at("shader").string();
       auto shader = shader_by_name(shader_name);
-      if (!shader) (o.has("shader") ? o.at("shader") : o).fail("unknown shader '" + shader_name + "' (expected gouraud, phong, npr, depth, normal)");
+      if (!shader) (o.has("shader") ? o.at("shader") : o).fail("unknown shader '" + shader_name + "' (expected gouraud, phong, normalmap, npr, depth, normal)");
       float phase_speed = 0.0f;
       Node anim = o;
       if (o.has("animate")) {

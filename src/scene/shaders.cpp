@@ -178,6 +178,44 @@ struct PhongGpu {
   }
 };
 
+struct NormalMapGpu {
+  struct Uniforms {
+    TransformUniforms t;
+    LightingUniforms l;
+    bool mapped = false;
+    Sampler2D normal_map;
+  };
+  template <class F> using Varyings = PhongGpu::Varyings<F>;
+  static constexpr uint32_t attributes = 0b111;
+  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+    return PhongGpu{}.vertex(PhongGpu::Uniforms{u.t, u.l}, in, out);
+  }
+  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
+    Vec3<F> N = normalize(v.wNormal);
+    if (u.mapped) {
+      // The cotangent frame of the surface at the pixel from the derivatives of position and
+      // uv (it needs no tangents in the mesh), scaled so that the larger axis has length 1.
+      const Vec3<F> dp1 = dFdx(v.wPos), dp2 = dFdy(v.wPos);
+      const Vec2<F> duv1 = dFdx(v.uv), duv2 = dFdy(v.uv);
+      const Vec3<F> dp2perp = cross(dp2, N), dp1perp = cross(N, dp1);
+      const Vec3<F> T = dp2perp * duv1.x + dp1perp * duv2.x;
+      const Vec3<F> B = dp2perp * duv1.y + dp1perp * duv2.y;
+      const F m = max(dot(T, T), dot(B, B));
+      const F inv = select(m > F(0.0f), inversesqrt(m), F(0.0f));
+      const Vec3<F> t = texture(u.normal_map, v.uv).xyz() * F(2.0f) - Vec3<F>(F(1.0f));
+      const Vec3<F> mapped = T * (t.x * inv) + B * (t.y * inv) + N * t.z;
+      // Where the frame is degenerate (uv constant over the quad) keep the interpolated normal.
+      const auto ok = m > F(0.0f);
+      const Vec3<F> n = normalize(mapped);
+      N = Vec3<F>(select(ok, n.x, N.x), select(ok, n.y, N.y), select(ok, n.z, N.z));
+    }
+    const Radiance<F> r = illuminate(u.l, v.wPos, N);
+    Vec3<F> c = r.ambient_diffuse;
+    if (u.l.textured) c = c * texture(u.l.tex, v.uv).xyz();
+    f.color[0] = Vec4<F>(c + r.specular, F(1.0f));
+  }
+};
+
 // The notes' NPR shader: quantized diffuse light and a black silhouette.
 struct NprGpu {
   struct Uniforms {
@@ -382,6 +420,17 @@ void draw_flat(gpu::Context& ctx, const glm::mat4& MVP, const glm::vec3& color, 
 
 void draw_shadow_depth(gpu::Context& ctx, const glm::mat4& MVP, const Geometry& geometry, const gpu::RenderState& pipeline) {
   ctx.draw(DepthOnlyGpu{}, DepthOnlyGpu::Uniforms{MVP}, geometry.layout(), pipeline, geometry.draw_call());
+}
+
+void NormalMapShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {
+  NormalMapGpu::Uniforms u{transforms(state), lighting(state), false, {}};
+  if (state.material && state.material->normal_map) {
+    u.mapped = true;
+    u.normal_map.texture = state.material->normal_map.get();
+    u.normal_map.state.min_filter = Filter::LinearMipmapLinear;
+    u.normal_map.state.mag_filter = Filter::Linear;
+  }
+  ctx.draw(NormalMapGpu{}, u, geometry.layout(), state.pipeline, geometry.draw_call());
 }
 
 void NprShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {

@@ -311,3 +311,72 @@ TEST(Deferred, AgreesWithForwardPhong) {
   fwd.lights.resize(40, fwd.lights[1]);
   EXPECT_THROW(render(fwd, 32, 32, 1), gpu::Error);
 }
+
+// Normal mapping: a map whose normals all lean toward +u must light a surface as if it were
+// turned toward its d(position)/du: brighter under a light from that side, darker from the
+// other. Checked at the middle of a floor and of a sphere (a left-handed parametrization),
+// and a flat map (0, 0, 1) must give PhongShader's image.
+TEST(NormalMap, TheMapTurnsTheSurfaceTheWayItSays) {
+  auto constant_map = [](glm::vec3 n) {
+    n = glm::normalize(n);
+    std::vector<uint8_t> px(16 * 16 * 4);
+    for (size_t i = 0; i < px.size(); i += 4) {
+      for (int c = 0; c < 3; ++c) px[i + size_t(c)] = uint8_t(std::lround((n[c] * 0.5f + 0.5f) * 255.0f));
+      px[i + 3] = 255;
+    }
+    auto t = std::make_shared<gpu::Texture2D>(gpu::Format::RGBA8, 16, 16, 0);
+    t->upload_rgba8(0, px.data(), px.size());
+    t->generate_mipmaps();
+    return t;
+  };
+  auto centre_value = [&](std::shared_ptr<const Geometry> g, glm::vec3 light_dir, std::shared_ptr<gpu::Texture2D> map,
+                          std::shared_ptr<const Shader> shader) {
+    Scene s;
+    s.camera.eye = glm::vec3(0.0f, 0.0f, 4.0f);
+    s.camera.lookat = glm::vec3(0.0f);
+    s.camera.aspect = 1.0f;
+    Light l;
+    l.wLightPos = glm::vec4(light_dir, 0.0f);
+    l.La = glm::vec3(0.0f);
+    s.lights = {l};
+    auto m = std::make_shared<Material>();
+    m->kd = glm::vec3(0.8f);
+    m->ks = glm::vec3(0.0f);
+    m->normal_map = map;
+    s.add(std::make_unique<Object>(g, m, shader));
+    const std::vector<uint8_t> px = render(s, 64, 64, 1);
+    return int(px[(32 * 64 + 32) * 4]);
+  };
+  const auto nm = std::make_shared<NormalMapShader>();
+  const auto lean = constant_map({0.6f, 0.0f, 0.8f}), flat = constant_map({0.0f, 0.0f, 1.0f});
+  // A square facing the camera: the plane turned up toward +z, so u runs along +x.
+  auto plane = std::make_shared<Object>(std::make_shared<Geometry>(Plane(2.0f).create(2, 2), "p"), nullptr, nm);
+  Mesh square = Plane(2.0f).create(2, 2);
+  for (VertexData& v : square.vertices) {
+    v.pos = glm::vec3(v.pos.x, -v.pos.z, 0.0f);
+    v.norm = glm::vec3(0.0f, 0.0f, 1.0f);
+  }
+  const auto sq = std::make_shared<Geometry>(square, "square");
+  const glm::vec3 from_u(1.0f, 0.0f, 0.6f), from_minus_u(-1.0f, 0.0f, 0.6f);
+  EXPECT_GT(centre_value(sq, from_u, lean, nm), centre_value(sq, from_u, flat, nm) + 20);
+  EXPECT_LT(centre_value(sq, from_minus_u, lean, nm), centre_value(sq, from_minus_u, flat, nm) - 20);
+  EXPECT_NEAR(centre_value(sq, from_u, flat, nm), centre_value(sq, from_u, flat, std::make_shared<PhongShader>()), 1);
+  // The sphere's front point (u = 0.25, v = 0.5 faces +y in the notes' parametrization, so
+  // turn it toward the camera): d(position)/du there is the direction to light from.
+  Transform t;
+  t.axis = glm::vec3(1.0f, 0.0f, 0.0f);
+  t.angle = 1.5707963f;
+  Mesh ball = Sphere().create(32, 64);
+  for (VertexData& v : ball.vertices) {
+    v.pos = glm::vec3(t.M() * glm::vec4(v.pos, 1.0f));
+    v.norm = glm::vec3(t.M() * glm::vec4(v.norm, 0.0f));
+  }
+  glm::vec3 a, b, unused;
+  Sphere().eval(0.26f, 0.5f, a, unused);
+  Sphere().eval(0.24f, 0.5f, b, unused);
+  const glm::vec3 du = glm::normalize(glm::vec3(t.M() * glm::vec4(a - b, 0.0f)));
+  const auto sphere = std::make_shared<Geometry>(ball, "ball");
+  const glm::vec3 light = du + glm::vec3(0.0f, 0.0f, 0.6f);
+  EXPECT_GT(centre_value(sphere, light, lean, nm), centre_value(sphere, light, flat, nm) + 20) << "du " << du.x << " " << du.y << " " << du.z;
+  (void)plane;
+}

@@ -96,6 +96,7 @@ TEST(SceneFile, MistakesNameTheFileThePlaceAndTheProblem) {
   const std::pair<const char*, const char*> cases[] = {
       {"{\n  \"objects\": [\n    {\"geometry\": }\n  ]\n}", "bad.json:3:18: syntax error while parsing value"},
       {"[1, 2]", "bad.json: scene: expected an object"},
+      {"444e440000000088", "bad.json: number overflow parsing '444e440000000088'"},  // found by fuzz_scene_file
       {R"({"objectz": []})", "bad.json: scene: unknown field 'objectz'"},
       {R"({"objects": [{"geometry": {"type": "cubee"}}]})", "bad.json: scene.objects[0].geometry.type: unknown surface 'cubee'"},
       {R"({"objects": [{"material": "x"}]})", "bad.json: scene.objects[0]: missing field 'geometry'"},

@@ -46,6 +46,9 @@ struct Material {
   float shininess = 32.0f;
   glm::vec3 emission{0.0f};
   std::shared_ptr<const gpu::Texture2D> texture;
+  // A tangent-space normal map (RGB = (n + 1) / 2, +z out of the surface, v up), used by
+  // NormalMapShader.
+  std::shared_ptr<const gpu::Texture2D> normal_map;
   glm::vec3 reflectance{0.0f}, transmittance{0.0f};
   float refractive_index = 1.0f;
 };

@@ -28,7 +28,8 @@ SceneFile load_scene_file(const std::string& path);
 // The same from text; `name` stands for the file in messages, `folder` for relative paths.
 SceneFile parse_scene(const std::string& text, const std::string& name, const std::string& folder = ".");
 
-// A shader of the library by name: gouraud, phong, npr, depth, normal (nullptr if unknown).
+// A shader of the library by name: gouraud, phong, normalmap, npr, depth, normal (nullptr if
+// unknown).
 std::shared_ptr<const Shader> shader_by_name(const std::string& name);
 
 }  // namespace tessel::scene

@@ -42,6 +42,15 @@ class PhongShader : public Shader {
   void draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const override;
 };
 
+// Phong shading with the material's normal map: the tangent frame comes per pixel from the
+// screen-space derivatives of the position and the texture coordinates (no tangents are
+// needed in the mesh), and the map's normal replaces the interpolated one. Without a normal
+// map it draws as PhongShader.
+class NormalMapShader : public Shader {
+ public:
+  void draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const override;
+};
+
 // Non-photorealistic (toon) shading after the notes: the diffuse colour in `bands` flat
 // levels of max(N.L, 0) for the first light (2 bands: full where N.L > 0.5, half elsewhere),
 // and black where |N.V| < silhouette, the outline of the object.
