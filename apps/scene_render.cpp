@@ -72,7 +72,7 @@ int render_scene(const SceneRenderOptions& o) {
       if (o.stats)
         std::printf("%s\n  {\"frame\": %d, \"file\": \"%s\", \"ms\": %.3f, \"triangles_in\": %llu, \"culled\": %llu, "
                     "\"clipped\": %llu, \"triangles_set_up\": %llu, \"vertices_shaded\": %llu, \"fragments_shaded\": %llu, "
-                    "\"fragments_written\": %llu}",
+                    "\"fragments_written\": %llu, \"fragments_rejected_by_depth\": %llu}",
                     f == o.first_frame ? "" : ",", f, path.c_str(), ms,
                     (unsigned long long)(a.primitives_in - before.primitives_in),
                     (unsigned long long)(a.primitives_culled - before.primitives_culled),
@@ -80,7 +80,8 @@ int render_scene(const SceneRenderOptions& o) {
                     (unsigned long long)(a.triangles_setup - before.triangles_setup),
                     (unsigned long long)(a.vertices_shaded - before.vertices_shaded),
                     (unsigned long long)(a.fragments_shaded - before.fragments_shaded),
-                    (unsigned long long)(a.fragments_written - before.fragments_written));
+                    (unsigned long long)(a.fragments_written - before.fragments_written),
+                    (unsigned long long)(a.fragments_rejected - before.fragments_rejected));
       else if (!o.frames)
         std::printf("rendered %s (%d triangles, %dx%d) to %s in %.1f ms\n", o.scene.c_str(), s.triangles(), w, h, path.c_str(), ms);
       if (o.frames && total > 1) progress(f - o.first_frame + 1, total);

@@ -914,6 +914,7 @@ void Context::flush() {
     stats_.triangles_setup += c.triangles_setup;
     stats_.fragments_shaded += c.fragments_shaded;
     stats_.fragments_written += c.fragments_written;
+    stats_.fragments_rejected += c.fragments_rejected;
   }
 }
 

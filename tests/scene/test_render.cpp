@@ -380,3 +380,26 @@ TEST(NormalMap, TheMapTurnsTheSurfaceTheWayItSays) {
   EXPECT_GT(centre_value(sphere, light, lean, nm), centre_value(sphere, light, flat, nm) + 20) << "du " << du.x << " " << du.y << " " << du.z;
   (void)plane;
 }
+
+// The pipeline counts fragments the depth test rejects: none for one convex object, and the
+// floor drawn after the spheres loses the pixels they cover (at most their pixel count).
+TEST(SceneRender, FragmentsRejectedByDepthAreCounted) {
+  auto stats_of = [](const Scene& s) {
+    gpu::Texture2D color(gpu::Format::RGBA8, 240, 120), depth(gpu::Format::Depth24Stencil8, 240, 120);
+    gpu::Framebuffer fb(&color, &depth);
+    gpu::Context ctx(2);
+    ctx.bind_framebuffer(&fb);
+    s.Render(ctx);
+    ctx.finish();
+    return ctx.stats();
+  };
+  Scene one = tessel::test::make_scene();
+  one.objects.resize(1);
+  EXPECT_EQ(stats_of(one).fragments_rejected, 0u);
+  Scene spheres = tessel::test::make_scene();
+  spheres.objects.pop_back();
+  const gpu::Stats a = stats_of(spheres), all = stats_of(tessel::test::make_scene());
+  EXPECT_GT(all.fragments_rejected, 500u);
+  EXPECT_LE(all.fragments_rejected, a.fragments_written);
+  EXPECT_EQ(all.fragments_shaded, all.fragments_written);  // early depth: rejected ones are never shaded
+}

@@ -95,6 +95,7 @@ struct Counters {
   uint64_t triangles_setup = 0;
   uint64_t fragments_shaded = 0;    // lanes covered when the shader ran
   uint64_t fragments_written = 0;   // samples that passed every test
+  uint64_t fragments_rejected = 0;  // samples the depth or stencil test rejected
 };
 
 class ProgramBase;

@@ -112,6 +112,7 @@ template <class S> class Program final : public ProgramBase {
       if (pending_mask) shade<Float8>(d, t, p, pending, pending, pending_mask, c);
       counters.fragments_shaded += c.fragments_shaded;
       counters.fragments_written += c.fragments_written;
+    counters.fragments_rejected += c.fragments_rejected;
       return;
     }
     for (int by = miny & ~7; by <= maxy; by += 8) {
@@ -173,6 +174,7 @@ template <class S> class Program final : public ProgramBase {
     if (pending_mask) shade<Float8>(d, t, p, pending, pending, pending_mask, c);
     counters.fragments_shaded += c.fragments_shaded;
     counters.fragments_written += c.fragments_written;
+    counters.fragments_rejected += c.fragments_rejected;
   }
 
  private:
@@ -180,7 +182,7 @@ template <class S> class Program final : public ProgramBase {
     int x, y;
   };
   struct FragmentCounts {
-    uint64_t fragments_shaded = 0, fragments_written = 0;
+    uint64_t fragments_shaded = 0, fragments_written = 0, fragments_rejected = 0;
   };
 
   // Depth/stencil test of the 8 lanes of group a, or the 16 of groups a and b.
@@ -232,7 +234,9 @@ template <class S> class Program final : public ProgramBase {
     z = clamp(z, F(d.depth_min), F(d.depth_max));
     const bool tests = d.state.depth_test || d.state.stencil_test;
     if (tests && d.early_depth) {
+      const unsigned covered = mask;
       mask = test(d, t, a, b, mask, z, p.front);
+      c.fragments_rejected += unsigned(__builtin_popcount(covered & ~mask));
       if (!mask) return;
     }
     const F oow = fma(F(p.oow[2]), fy, fma(F(p.oow[1]), fx, F(p.oow[0])));
@@ -259,7 +263,11 @@ template <class S> class Program final : public ProgramBase {
     if constexpr (shader_discards<S>()) mask &= ~f.killed.bits();
     if constexpr (shader_writes_depth<S>()) z = clamp(f.depth, F(0.0f), F(1.0f));
     c.fragments_shaded += unsigned(__builtin_popcount(mask));
-    if (tests && !d.early_depth) mask = test(d, t, a, b, mask, z, p.front);
+    if (tests && !d.early_depth) {
+      const unsigned shaded = mask;
+      mask = test(d, t, a, b, mask, z, p.front);
+      c.fragments_rejected += unsigned(__builtin_popcount(shaded & ~mask));
+    }
     if (!mask) return;
     if constexpr (N == 8) {
       write8(d, t, a, mask, f.color.data(), outputs);
