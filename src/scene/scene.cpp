@@ -1,6 +1,7 @@
 #include "tessel/scene/scene.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -125,14 +126,30 @@ void Scene::Render(gpu::Context& ctx) const {
                   std::to_string(lights.size()) + ")");
     if (shadows.size < 16 || shadows.size > 8192) throw Error("shadows: the map size must be 16..8192");
     if (shadows.pcf < 0 || shadows.pcf > 8) throw Error("shadows: pcf must be 0..8");
-    state.light_VP = shadow_matrix(lights[size_t(shadows.light)]);
-    if (!shadow_map_ || shadow_map_->width() != shadows.size)
-      shadow_map_ = std::make_unique<gpu::Texture2D>(gpu::Format::Depth32F, shadows.size, shadows.size);
+    const Light& sl = lights[size_t(shadows.light)];
+    // A point light (not a spot) sees every direction: six 90-degree maps, one per cube face.
+    const bool cube = sl.wLightPos.w != 0.0f && !(sl.spot_cos_cutoff > -1.0f);
+    const int faces = cube ? 6 : 1;
+    std::array<glm::mat4, 6> vp{};
+    if (cube) {
+      const glm::vec3 p = glm::vec3(sl.wLightPos) / sl.wLightPos.w;
+      const glm::vec4 b = bounding_sphere();
+      const float far = glm::length(glm::vec3(b) - p) + b.w * 1.01f, near = std::max(far * 1e-3f, 1e-3f);
+      // GL's cube face order and orientation (GL 4.6 table 8.19): +X, -X, +Y, -Y, +Z, -Z.
+      const glm::vec3 dir[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+      const glm::vec3 up[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+      const glm::mat4 P = glm::perspective(glm::radians(90.0f), 1.0f, near, far);
+      for (int f = 0; f < 6; ++f) vp[size_t(f)] = P * glm::lookAt(p, p + dir[f], up[f]);
+    } else {
+      vp[0] = shadow_matrix(sl);
+    }
+    const int size = cube ? std::min(shadows.size, 1024) : shadows.size;
+    if (shadow_maps_.size() != size_t(faces) || shadow_maps_[0]->width() != size) {
+      shadow_maps_.clear();
+      for (int f = 0; f < faces; ++f) shadow_maps_.push_back(std::make_unique<gpu::Texture2D>(gpu::Format::Depth32F, size, size));
+    }
     // The light pass: depth only, both faces, pushed back by the slope-scaled and constant bias.
     gpu::Framebuffer* previous = ctx.framebuffer();
-    gpu::Framebuffer light_fb(nullptr, shadow_map_.get());
-    ctx.bind_framebuffer(&light_fb);
-    ctx.clear({.clear_color = false, .depth = 1.0f});
     gpu::RenderState pass;
     pass.depth_test = true;
     pass.offset_fill = true;
@@ -140,10 +157,26 @@ void Scene::Render(gpu::Context& ctx) const {
     // bias grows with the kernel (receiver-plane acne otherwise, in rings on a floor).
     pass.offset_factor = shadows.slope_bias * float(1 + shadows.pcf);
     pass.offset_units = shadows.constant_bias;
-    for (const auto& o : objects)
-      if (o->geometry) draw_shadow_depth(ctx, state.light_VP * o->transform.world(), *o->geometry, pass);
+    std::vector<gpu::Framebuffer> fbs;
+    fbs.reserve(size_t(faces));
+    for (int f = 0; f < faces; ++f) {
+      fbs.emplace_back(nullptr, shadow_maps_[size_t(f)].get());
+      ctx.bind_framebuffer(&fbs.back());
+      ctx.clear({.clear_color = false, .depth = 1.0f});
+      for (const auto& o : objects)
+        if (o->geometry) draw_shadow_depth(ctx, vp[size_t(f)] * o->transform.world(), *o->geometry, pass);
+    }
     ctx.bind_framebuffer(previous);
-    state.shadow_map = shadow_map_.get();
+    state.light_VP = vp[0];
+    state.shadow_map = shadow_maps_[0].get();
+    if (cube) {
+      state.cube_shadow = true;
+      state.cube_light = glm::vec3(sl.wLightPos) / sl.wLightPos.w;
+      for (int f = 0; f < 6; ++f) {
+        state.cube_maps[size_t(f)] = shadow_maps_[size_t(f)].get();
+        state.cube_VP[size_t(f)] = vp[size_t(f)];
+      }
+    }
     state.shadow_light = shadows.light;
     state.pcf = shadows.pcf;
   }

@@ -28,6 +28,10 @@ struct LightingUniforms {
   Sampler2DShadow shadow;
   int pcf = 0;
   float texel = 0.0f;
+  bool cube = false;
+  glm::vec3 cube_light{0.0f};
+  std::array<Sampler2DShadow, 6> cube_maps{};
+  std::array<glm::mat4, 6> cube_VP{};
 };
 
 struct TransformUniforms {
@@ -59,8 +63,38 @@ LightingUniforms lighting(const RenderState& s) {
     u.shadow.state.border_color = glm::vec4(1.0f);
     u.pcf = s.pcf;
     u.texel = 1.0f / float(s.shadow_map->width());
+    if (s.cube_shadow) {
+      u.cube = true;
+      u.cube_light = s.cube_light;
+      u.cube_VP = s.cube_VP;
+      for (size_t f = 0; f < 6; ++f) {
+        u.cube_maps[f] = u.shadow;
+        u.cube_maps[f].texture = s.cube_maps[f];
+      }
+    }
   }
   return u;
+}
+
+// A point light's cube of maps: per lane, the face the direction from the light falls in
+// (the largest coordinate, GL 4.6 table 8.19), then the same PCF compares on that face.
+template <class F> F cube_visibility(const LightingUniforms& u, const Vec3<F>& p) {
+  F vis(1.0f);
+  for (int l = 0; l < lane_width<F>; ++l) {
+    const glm::vec3 wp(p.x[l], p.y[l], p.z[l]), d = wp - u.cube_light;
+    const glm::vec3 a = glm::abs(d);
+    const int face = a.x >= a.y && a.x >= a.z ? (d.x >= 0.0f ? 0 : 1) : a.y >= a.z ? (d.y >= 0.0f ? 2 : 3) : (d.z >= 0.0f ? 4 : 5);
+    const glm::vec4 q = u.cube_VP[size_t(face)] * glm::vec4(wp, 1.0f);
+    if (!(q.w > 0.0f)) continue;
+    const float x = q.x / q.w * 0.5f + 0.5f, y = q.y / q.w * 0.5f + 0.5f, z = q.z / q.w * 0.5f + 0.5f;
+    if (!(z <= 1.0f)) continue;
+    float sum = 0.0f;
+    for (int j = -u.pcf; j <= u.pcf; ++j)
+      for (int i = -u.pcf; i <= u.pcf; ++i)
+        sum += detail::sample_2d_compare(u.cube_maps[size_t(face)], x + float(i) * u.texel, y + float(j) * u.texel, z, 0.0f);
+    vis[l] = sum / float((2 * u.pcf + 1) * (2 * u.pcf + 1));
+  }
+  return vis;
 }
 
 // The fraction of the shadow map's percentage-closer compares that see p from the light.
@@ -167,7 +201,7 @@ struct PhongGpu {
   template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
     Radiance<F> r;
     if (u.l.shadow_light >= 0) {
-      const F vis = shadow_visibility(u.l, v.wPos);
+      const F vis = u.l.cube ? cube_visibility(u.l, v.wPos) : shadow_visibility(u.l, v.wPos);
       r = illuminate(u.l, v.wPos, normalize(v.wNormal), &vis);
     } else {
       r = illuminate(u.l, v.wPos, normalize(v.wNormal));

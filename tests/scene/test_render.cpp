@@ -261,9 +261,33 @@ TEST(Shadows, BadSettingsAreErrors) {
   ShadowSettings st;
   st.light = 3;
   EXPECT_THROW(render(shadow_scene(true, st), 32, 32, 1), gpu::Error);
-  Scene inside = shadow_scene(true, {});
-  inside.lights[0].wLightPos = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);  // a point light among the objects
-  EXPECT_THROW(render(inside, 32, 32, 1), gpu::Error);
+  ShadowSettings big;
+  big.size = 9000;
+  EXPECT_THROW(render(shadow_scene(true, big), 32, 32, 1), gpu::Error);
+}
+
+// A point light among the objects casts shadows every way (a cube of six maps): four posts
+// around it each darken the floor behind them, and the floor between light and post is lit.
+TEST(Shadows, APointLightCastsShadowsInEveryDirection) {
+  Scene s = shadow_scene(false, {});
+  s.lights[0].wLightPos = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
+  s.lights[0].attenuation = glm::vec3(1.0f, 0.0f, 0.0f);
+  s.camera.eye = glm::vec3(0.0f, 12.0f, 0.01f);
+  s.camera.lookat = glm::vec3(0.0f);
+  auto post = std::make_shared<Geometry>(Cylinder(0.3f, 2.0f).create(1, 24), "post");
+  const glm::vec3 at[4] = {{2, 0, 0}, {-2, 0, 0}, {0, 0, 2}, {0, 0, -2}};
+  for (const glm::vec3& p : at) {
+    auto& o = s.add(std::make_unique<Object>(post, s.objects[0]->material, std::make_shared<PhongShader>()));
+    o.transform.position = p;
+    o.cull_back_faces = false;
+  }
+  const Shot shot = shoot(s);
+  for (const glm::vec3& p : at) {
+    const glm::vec3 dir = glm::normalize(p);
+    const int before = shot.at(dir * 1.2f), behind = shot.at(dir * 3.2f);
+    EXPECT_GT(before, 40) << "between the light and the post at " << p.x << ", " << p.z;
+    EXPECT_LT(behind, before / 3) << "behind the post at " << p.x << ", " << p.z << ": " << behind << " vs " << before;
+  }
 }
 
 // Projected planar shadows: the sphere's shadow is centred where the ray from the light

@@ -5,6 +5,7 @@
 // object nor the shader depends on the other.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -72,8 +73,8 @@ class Geometry {
 
 // Shadow mapping: a depth pass from one light into a depth texture, then lit shaders that
 // support it (PhongShader) compare each point's depth seen from the light with the map.
-// Directional lights and spot lights cast shadows; a point light only when it is outside
-// the scene's bounding sphere (one frustum toward the scene; no cube maps yet).
+// Directional and spot lights render one map; a point light renders six (a cube of 90-degree
+// frusta, at most 1024 texels a side), so it may stand among the objects.
 struct ShadowSettings {
   bool enabled = false;
   int light = 0;               // the index of the light that casts shadows
@@ -111,6 +112,11 @@ struct RenderState {
   glm::mat4 light_VP{1.0f};
   int shadow_light = -1;
   int pcf = 0;
+  // A point light's six maps (GL cube face order), used instead when cube_shadow is set.
+  bool cube_shadow = false;
+  glm::vec3 cube_light{0.0f};
+  std::array<const gpu::Texture2D*, 6> cube_maps{};
+  std::array<glm::mat4, 6> cube_VP{};
 };
 
 // A way to draw geometry: fills its GPU uniforms from the render state and submits the draw.
@@ -172,7 +178,7 @@ class Scene {
   void draw_planar_shadows(gpu::Context& ctx, const RenderState& state) const;
   void render_deferred(gpu::Context& ctx, const RenderState& state) const;
   mutable std::vector<std::unique_ptr<gpu::Texture2D>> gbuffer_;  // positions, normals, kd, ks, ka, emission, depth
-  mutable std::unique_ptr<gpu::Texture2D> shadow_map_;  // reused from frame to frame
+  mutable std::vector<std::unique_ptr<gpu::Texture2D>> shadow_maps_;  // 1 or 6 (a point light's cube), reused
 };
 
 }  // namespace tessel::scene
