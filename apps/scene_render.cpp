@@ -3,6 +3,9 @@
 #include <chrono>
 #include <cstdio>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "tessel/gpu/framebuffer.hpp"
 #include "tessel/gpu/image.hpp"
@@ -19,6 +22,20 @@ std::string frame_path(const std::string& out, int frame) {
   const auto slash = out.rfind('/');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return out + num + ".png";
   return out.substr(0, dot) + num + out.substr(dot);
+}
+
+// The counters as JSON members (no braces).
+std::string counters_json(const gpu::Stats& c) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "\"triangles_in\": %llu, \"culled\": %llu, \"clipped\": %llu, \"triangles_set_up\": %llu, "
+                "\"vertices_shaded\": %llu, \"fragments_shaded\": %llu, \"fragments_written\": %llu, "
+                "\"fragments_rejected_by_depth\": %llu",
+                (unsigned long long)c.primitives_in, (unsigned long long)c.primitives_culled,
+                (unsigned long long)c.primitives_clipped, (unsigned long long)c.triangles_setup,
+                (unsigned long long)c.vertices_shaded, (unsigned long long)c.fragments_shaded,
+                (unsigned long long)c.fragments_written, (unsigned long long)c.fragments_rejected);
+  return buf;
 }
 
 void progress(int done, int total) {
@@ -59,29 +76,24 @@ int render_scene(const SceneRenderOptions& o) {
     // Frames before the first are animated, not drawn.
     for (int f = 0; f < o.first_frame; ++f) s.Animate(dt);
     const int total = o.last_frame - o.first_frame + 1;
-    if (o.stats) std::printf("{\"scene\": \"%s\", \"width\": %d, \"height\": %d, \"threads\": %d, \"frames\": [", o.scene.c_str(), w, h, ctx.threads());
+    if (o.stats) std::printf("{\"scene\": %s, \"width\": %d, \"height\": %d, \"threads\": %d, \"frames\": [", nlohmann::json(o.scene).dump().c_str(), w, h, ctx.threads());
     for (int f = o.first_frame; f <= o.last_frame; ++f) {
       const gpu::Stats before = ctx.stats();
+      std::vector<scene::PassStats> passes;
       const auto t0 = std::chrono::steady_clock::now();
-      s.Render(ctx);
+      s.Render(ctx, o.stats ? &passes : nullptr);
       ctx.finish();
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       const std::string path = o.frames ? frame_path(o.output, f) : o.output;
       gpu::write_png(path, color);
-      const gpu::Stats& a = ctx.stats();
-      if (o.stats)
-        std::printf("%s\n  {\"frame\": %d, \"file\": \"%s\", \"ms\": %.3f, \"triangles_in\": %llu, \"culled\": %llu, "
-                    "\"clipped\": %llu, \"triangles_set_up\": %llu, \"vertices_shaded\": %llu, \"fragments_shaded\": %llu, "
-                    "\"fragments_written\": %llu, \"fragments_rejected_by_depth\": %llu}",
-                    f == o.first_frame ? "" : ",", f, path.c_str(), ms,
-                    (unsigned long long)(a.primitives_in - before.primitives_in),
-                    (unsigned long long)(a.primitives_culled - before.primitives_culled),
-                    (unsigned long long)(a.primitives_clipped - before.primitives_clipped),
-                    (unsigned long long)(a.triangles_setup - before.triangles_setup),
-                    (unsigned long long)(a.vertices_shaded - before.vertices_shaded),
-                    (unsigned long long)(a.fragments_shaded - before.fragments_shaded),
-                    (unsigned long long)(a.fragments_written - before.fragments_written),
-                    (unsigned long long)(a.fragments_rejected - before.fragments_rejected));
+      if (o.stats) {
+        std::printf("%s\n  {\"frame\": %d, \"file\": %s, \"ms\": %.3f, %s,\n   \"passes\": [", f == o.first_frame ? "" : ",",
+                    f, nlohmann::json(path).dump().c_str(), ms, counters_json(ctx.stats() - before).c_str());
+        for (size_t i = 0; i < passes.size(); ++i)
+          std::printf("%s\n    {\"pass\": \"%s\", \"ms\": %.3f, %s}", i ? "," : "", passes[i].name.c_str(), passes[i].ms,
+                      counters_json(passes[i].counters).c_str());
+        std::printf("]}");
+      }
       else if (!o.frames)
         std::printf("rendered %s (%d triangles, %dx%d) to %s in %.1f ms\n", o.scene.c_str(), s.triangles(), w, h, path.c_str(), ms);
       if (o.frames && total > 1) progress(f - o.first_frame + 1, total);

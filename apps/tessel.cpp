@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
   render->add_option("-o,--output", out, "Output PNG file (with --frames: NAME_0001.png ...)")->capture_default_str();
   render->add_option("--shading", shading, "Draw every object with this shader: gouraud, phong, normalmap, npr, depth, normal");
   render->add_option("--frames", frames, "Render frames A..B of the animation (render.fps a second), numbered files");
-  render->add_flag("--stats", stats, "Print the pipeline's counters (JSON with a scene file)");
+  render->add_flag("--stats", stats,
+                  "Print the pipeline's counters; with a scene file JSON per frame and per pass (shadow, objects, planar_shadows, gbuffer, lighting) with ms");
 
   auto* bench = app.add_subcommand("bench", "Render the standard scenes and print the time per frame");
   tessel::apps::BenchOptions bo;
@@ -136,6 +137,7 @@ int main(int argc, char** argv) {
         std::printf("  triangles set up    %llu\n", (unsigned long long)s.triangles_setup);
         std::printf("  fragments shaded    %llu\n", (unsigned long long)s.fragments_shaded);
         std::printf("  fragments written   %llu\n", (unsigned long long)s.fragments_written);
+        std::printf("  rejected by depth   %llu\n", (unsigned long long)s.fragments_rejected);
       }
     } catch (const std::exception& e) {
       std::fprintf(stderr, "tessel render: %s\n", e.what());

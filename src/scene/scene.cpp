@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -103,7 +104,37 @@ glm::mat4 Scene::shadow_matrix(const Light& light) const {
   return glm::perspective(2.0f * half, 1.0f, (dist - r) * 0.9f, dist + r) * glm::lookAt(p, c, up_for(d));
 }
 
-void Scene::Render(gpu::Context& ctx) const {
+// Cuts a frame into passes for Render's caller: end(name) finishes the work queued since the
+// previous end and records it. Without a list to fill it does nothing, so the passes stay
+// one stream of work for the pipeline.
+class Scene::PassClock {
+ public:
+  PassClock(gpu::Context& ctx, std::vector<PassStats>* passes) : ctx_(ctx), passes_(passes) { restart(); }
+  void end(const char* name) {
+    if (!passes_) return;
+    ctx_.finish();
+    PassStats p;
+    p.name = name;
+    p.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count();
+    p.counters = ctx_.stats() - before_;
+    passes_->push_back(std::move(p));
+    restart();
+  }
+
+ private:
+  void restart() {
+    if (!passes_) return;
+    before_ = ctx_.stats();
+    t0_ = std::chrono::steady_clock::now();
+  }
+  gpu::Context& ctx_;
+  std::vector<PassStats>* passes_;
+  gpu::Stats before_;
+  std::chrono::steady_clock::time_point t0_;
+};
+
+void Scene::Render(gpu::Context& ctx, std::vector<PassStats>* passes) const {
+  PassClock clock(ctx, passes);
   camera.validate();
   const size_t max_lights = size_t(deferred ? kMaxDeferredLights : kMaxLights);
   if (lights.size() > max_lights)
@@ -117,7 +148,7 @@ void Scene::Render(gpu::Context& ctx) const {
     state.near = camera.near;
     state.far = camera.far;
     state.pipeline.depth_test = true;
-    render_deferred(ctx, state);
+    render_deferred(ctx, state, clock);
     return;
   }
   if (shadows.enabled) {
@@ -167,6 +198,7 @@ void Scene::Render(gpu::Context& ctx) const {
         if (o->geometry) draw_shadow_depth(ctx, vp[size_t(f)] * o->transform.world(), *o->geometry, pass);
     }
     ctx.bind_framebuffer(previous);
+    clock.end("shadow");
     state.light_VP = vp[0];
     state.shadow_map = shadow_maps_[0].get();
     if (cube) {
@@ -189,10 +221,14 @@ void Scene::Render(gpu::Context& ctx) const {
   state.pipeline.depth_test = true;
   ctx.clear({.color = background, .depth = 1.0f});
   for (const auto& o : objects) o->Draw(ctx, state);
-  if (planar_shadows.enabled) draw_planar_shadows(ctx, state);
+  clock.end("objects");
+  if (planar_shadows.enabled) {
+    draw_planar_shadows(ctx, state);
+    clock.end("planar_shadows");
+  }
 }
 
-void Scene::render_deferred(gpu::Context& ctx, const RenderState& base) const {
+void Scene::render_deferred(gpu::Context& ctx, const RenderState& base, PassClock& clock) const {
   gpu::Framebuffer* target = ctx.framebuffer();
   if (!target) throw Error("scene: no framebuffer bound");
   const int w = target->width(), h = target->height();
@@ -218,12 +254,14 @@ void Scene::render_deferred(gpu::Context& ctx, const RenderState& base) const {
     state.pipeline.cull = o->cull_back_faces ? gpu::CullMode::Back : gpu::CullMode::None;
     draw_gbuffer(ctx, state, *o->geometry);
   }
+  clock.end("gbuffer");
   // Pass 2: one full-screen triangle lights every pixel from the G-buffer.
   ctx.bind_framebuffer(target);
   ctx.clear({.color = background, .depth = 1.0f});
   std::vector<const gpu::Texture2D*> views;
   for (int i = 0; i < 6; ++i) views.push_back(gbuffer_[size_t(i)].get());
   draw_deferred_lighting(ctx, views, lights, camera.eye, background);
+  clock.end("lighting");
 }
 
 void Scene::draw_planar_shadows(gpu::Context& ctx, const RenderState& state) const {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <string>
 #include <memory>
 #include <vector>
 
@@ -426,4 +427,51 @@ TEST(SceneRender, FragmentsRejectedByDepthAreCounted) {
   EXPECT_GT(all.fragments_rejected, 500u);
   EXPECT_LE(all.fragments_rejected, a.fragments_written);
   EXPECT_EQ(all.fragments_shaded, all.fragments_written);  // early depth: rejected ones are never shaded
+}
+
+// Render(ctx, &passes) reports each pass with its own counters, which add up to the frame's,
+// and the image is the one Render(ctx) draws.
+TEST(SceneRender, PassesAreTimedAndCountedApart) {
+  auto run = [](const Scene& s, std::vector<PassStats>* passes, gpu::Stats& total) {
+    gpu::Texture2D color(gpu::Format::RGBA8, 128, 128), depth(gpu::Format::Depth24Stencil8, 128, 128);
+    gpu::Framebuffer fb(&color, &depth);
+    gpu::Context ctx(2);
+    ctx.bind_framebuffer(&fb);
+    s.Render(ctx, passes);
+    ctx.finish();
+    total = ctx.stats();
+    return gpu::read_rgba8(color);
+  };
+  auto names = [](const std::vector<PassStats>& p) {
+    std::string n;
+    for (const PassStats& x : p) n += (n.empty() ? "" : " ") + x.name;
+    return n;
+  };
+  Scene s = shadow_scene(true, {});
+  s.planar_shadows.enabled = true;
+  gpu::Stats plain_total, total;
+  std::vector<PassStats> passes;
+  const std::vector<uint8_t> plain = run(s, nullptr, plain_total);
+  EXPECT_EQ(run(s, &passes, total), plain);
+  EXPECT_EQ(names(passes), "shadow objects planar_shadows");
+  uint64_t tris = 0, frags = 0;
+  for (const PassStats& p : passes) {
+    EXPECT_GE(p.ms, 0.0);
+    EXPECT_GT(p.counters.primitives_in, 0u) << p.name;
+    tris += p.counters.primitives_in;
+    frags += p.counters.fragments_written;
+  }
+  EXPECT_EQ(tris, total.primitives_in);
+  EXPECT_EQ(frags, total.fragments_written);
+  EXPECT_EQ(total.primitives_in, plain_total.primitives_in);
+  // The light pass draws the floor and the post once each, from the light.
+  EXPECT_EQ(passes[0].counters.primitives_in, uint64_t(s.triangles()));
+
+  Scene d = shadow_scene(true, {});
+  d.shadows.enabled = false;
+  d.deferred = true;
+  passes.clear();
+  run(d, &passes, total);
+  EXPECT_EQ(names(passes), "gbuffer lighting");
+  EXPECT_EQ(passes[1].counters.primitives_in, 1u);  // one full-screen triangle
 }

@@ -148,6 +148,15 @@ class Object {
   virtual void Draw(gpu::Context& ctx, RenderState state) const;
 };
 
+// One pass of a frame, as Scene::Render reports it when asked: its name ("shadow" for the
+// light pass, "objects", "planar_shadows", "gbuffer", "lighting"), the wall-clock time from
+// its first submission to the end of its work, and what the pipeline counted in it.
+struct PassStats {
+  std::string name;
+  double ms = 0.0;
+  gpu::Stats counters;
+};
+
 class Scene {
  public:
   Camera camera;
@@ -166,8 +175,10 @@ class Scene {
   void Animate(float dt);
   // Clears the bound framebuffer to the background and draws every object with the camera's
   // V and P (the caller sets camera.aspect). Throws Error for an invalid camera or more than
-  // kMaxLights lights (kMaxDeferredLights when deferred).
-  void Render(gpu::Context& ctx) const;
+  // kMaxLights lights (kMaxDeferredLights when deferred). With `passes`, each pass is
+  // finished before the next starts and its time and counters are appended there (the image
+  // is the same either way; without it the passes run as one stream of work).
+  void Render(gpu::Context& ctx, std::vector<PassStats>* passes = nullptr) const;
   int triangles() const;
   // The smallest sphere around every object's vertices found by a bounding box (centre, radius).
   glm::vec4 bounding_sphere() const;
@@ -175,8 +186,9 @@ class Scene {
   glm::mat4 shadow_matrix(const Light& light) const;
 
  private:
+  class PassClock;
   void draw_planar_shadows(gpu::Context& ctx, const RenderState& state) const;
-  void render_deferred(gpu::Context& ctx, const RenderState& state) const;
+  void render_deferred(gpu::Context& ctx, const RenderState& state, PassClock& clock) const;
   mutable std::vector<std::unique_ptr<gpu::Texture2D>> gbuffer_;  // positions, normals, kd, ks, ka, emission, depth
   mutable std::vector<std::unique_ptr<gpu::Texture2D>> shadow_maps_;  // 1 or 6 (a point light's cube), reused
 };

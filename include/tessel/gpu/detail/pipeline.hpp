@@ -98,6 +98,14 @@ struct Counters {
   uint64_t fragments_rejected = 0;  // samples the depth or stencil test rejected
 };
 
+// What was counted between two readings (a later one minus an earlier one).
+inline Counters operator-(const Counters& a, const Counters& b) {
+  return {a.vertices_shaded - b.vertices_shaded,       a.primitives_in - b.primitives_in,
+          a.primitives_clipped - b.primitives_clipped, a.primitives_culled - b.primitives_culled,
+          a.triangles_setup - b.triangles_setup,       a.fragments_shaded - b.fragments_shaded,
+          a.fragments_written - b.fragments_written,   a.fragments_rejected - b.fragments_rejected};
+}
+
 class ProgramBase;
 
 // One queued draw, with everything it needs copied out of the caller's objects.
