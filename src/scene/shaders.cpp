@@ -3,6 +3,7 @@
 #include "tessel/scene/shaders.hpp"
 
 #include <array>
+#include <cmath>
 
 #include "tessel/gpu/shader.hpp"
 #include "tessel/gpu/vec.hpp"
@@ -67,8 +68,11 @@ LightingUniforms lighting(const RenderState& s) {
       u.cube = true;
       u.cube_light = s.cube_light;
       u.cube_VP = s.cube_VP;
+      // A tap always lands on the face its direction picks, at most half a texel from
+      // its edge: the edge texel, not the border, is its neighbour there.
       for (size_t f = 0; f < 6; ++f) {
         u.cube_maps[f] = u.shadow;
+        u.cube_maps[f].state.wrap_s = u.cube_maps[f].state.wrap_t = Wrap::ClampToEdge;
         u.cube_maps[f].texture = s.cube_maps[f];
       }
     }
@@ -76,23 +80,63 @@ LightingUniforms lighting(const RenderState& s) {
   return u;
 }
 
-// A point light's cube of maps: per lane, the face the direction from the light falls in
-// (the largest coordinate, GL 4.6 table 8.19), then the same PCF compares on that face.
+// The cube face a direction from the light falls in: the largest coordinate (GL 4.6 table
+// 8.19), faces in GL's order +X, -X, +Y, -Y, +Z, -Z.
+int cube_face(const glm::vec3& d) {
+  const glm::vec3 a = glm::abs(d);
+  if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0f ? 0 : 1;
+  if (a.y >= a.z) return d.y >= 0.0f ? 2 : 3;
+  return d.z >= 0.0f ? 4 : 5;
+}
+
+// A point light's cube of maps. Each PCF tap is a point beside p, one texel of p's face
+// apart along that face's two axes, and is looked up on the face its own direction falls
+// in, so taps past a face's edge continue on the neighbouring face instead of reading as
+// lit. The depth compared is always p's own, as that face sees it: a tap is off the
+// receiver (in p's image plane, not on its surface), and its own depth on a face that sees
+// the surface edge-on would fall behind the surface and shadow it.
 template <class F> F cube_visibility(const LightingUniforms& u, const Vec3<F>& p) {
   F vis(1.0f);
+  const float n = float((2 * u.pcf + 1) * (2 * u.pcf + 1));
   for (int l = 0; l < lane_width<F>; ++l) {
     const glm::vec3 wp(p.x[l], p.y[l], p.z[l]), d = wp - u.cube_light;
-    const glm::vec3 a = glm::abs(d);
-    const int face = a.x >= a.y && a.x >= a.z ? (d.x >= 0.0f ? 0 : 1) : a.y >= a.z ? (d.y >= 0.0f ? 2 : 3) : (d.z >= 0.0f ? 4 : 5);
-    const glm::vec4 q = u.cube_VP[size_t(face)] * glm::vec4(wp, 1.0f);
-    if (!(q.w > 0.0f)) continue;
-    const float x = q.x / q.w * 0.5f + 0.5f, y = q.y / q.w * 0.5f + 0.5f, z = q.z / q.w * 0.5f + 0.5f;
-    if (!(z <= 1.0f)) continue;
+    const int face = cube_face(d), major = face / 2;
+    // A texel of a 90-degree face at the distance of p along the face's axis.
+    const float step = 2.0f * std::fabs(d[major]) * u.texel;
+    glm::vec3 ea(0.0f), eb(0.0f);
+    ea[(major + 1) % 3] = step;
+    eb[(major + 2) % 3] = step;
+    // Per face a tap reaches: p and the two steps through that face's matrix (a tap's clip
+    // position is then q0 + i qa + j qb), and p's depth there (2: beyond the far plane or
+    // behind the light, lit). Computed when a tap first lands on the face.
+    struct FaceView {
+      bool ready = false;
+      glm::vec4 q0, qa, qb;
+      float ref;
+    };
+    FaceView views[6];
     float sum = 0.0f;
     for (int j = -u.pcf; j <= u.pcf; ++j)
-      for (int i = -u.pcf; i <= u.pcf; ++i)
-        sum += detail::sample_2d_compare(u.cube_maps[size_t(face)], x + float(i) * u.texel, y + float(j) * u.texel, z, 0.0f);
-    vis[l] = sum / float((2 * u.pcf + 1) * (2 * u.pcf + 1));
+      for (int i = -u.pcf; i <= u.pcf; ++i) {
+        const int f = cube_face(d + float(i) * ea + float(j) * eb);
+        FaceView& fv = views[f];
+        if (!fv.ready) {
+          const glm::mat4& VP = u.cube_VP[size_t(f)];
+          fv.q0 = VP * glm::vec4(wp, 1.0f);
+          fv.qa = VP * glm::vec4(ea, 0.0f);
+          fv.qb = VP * glm::vec4(eb, 0.0f);
+          const float z = fv.q0.z / fv.q0.w * 0.5f + 0.5f;
+          fv.ref = fv.q0.w > 0.0f && z <= 1.0f ? z : 2.0f;
+          fv.ready = true;
+        }
+        if (fv.ref > 1.0f) {
+          sum += 1.0f;
+          continue;
+        }
+        const glm::vec4 q = fv.q0 + float(i) * fv.qa + float(j) * fv.qb;
+        sum += detail::sample_2d_compare(u.cube_maps[size_t(f)], q.x / q.w * 0.5f + 0.5f, q.y / q.w * 0.5f + 0.5f, fv.ref, 0.0f);
+      }
+    vis[l] = sum / n;
   }
   return vis;
 }

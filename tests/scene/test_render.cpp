@@ -291,6 +291,41 @@ TEST(Shadows, APointLightCastsShadowsInEveryDirection) {
   }
 }
 
+// PCF near a cube-face edge: a post's shadow on the floor crosses the edge between the -Y
+// and +X maps (where the floor is 45 degrees from below the light). Taps past one face's
+// edge are compared on the next face, so the shadow stays dark across it; read as lit,
+// they drew a bright band across the shadow.
+TEST(Shadows, PcfContinuesAcrossCubeFaceEdges) {
+  ShadowSettings st;
+  st.size = 64;
+  st.pcf = 2;
+  Scene s = shadow_scene(false, st);
+  s.lights[0].wLightPos = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
+  s.camera.eye = glm::vec3(1.4f, 6.0f, 0.01f);
+  s.camera.lookat = glm::vec3(1.4f, 0.0f, 0.0f);
+  auto& post = s.add(std::make_unique<Object>(std::make_shared<Geometry>(Cylinder(0.15f, 0.8f).create(1, 24), "post"),
+                                              s.objects[0]->material, std::make_shared<PhongShader>()));
+  post.transform.position = glm::vec3(0.5f, 0.0f, 0.0f);
+  post.cull_back_faces = false;
+  const Shot shot = shoot(s);
+  const int lit = shot.at({1.0f, 0.0f, 1.0f});
+  int brightest = 0;
+  float where = 0.0f;
+  for (float x = 0.8f; x <= 2.0f; x += 0.005f)
+    if (shot.at({x, 0.0f, 0.0f}) > brightest) {
+      brightest = shot.at({x, 0.0f, 0.0f});
+      where = x;
+    }
+  EXPECT_GT(lit, 60);
+  EXPECT_LT(brightest, lit / 3) << "in the shadow at x = " << where << ": " << brightest << ", lit floor " << lit;
+  // Nor may a lit floor darken along the edges: the taps' compares there are the receiver's.
+  s.objects.pop_back();
+  const std::vector<uint8_t> open = render(s, 256, 256, 2);
+  s.shadows.enabled = false;
+  const test::ImageDiff d = test::diff_rgba(render(s, 256, 256, 2), open);
+  EXPECT_EQ(d.differing, 0) << d.differing << " pixels of the unoccluded floor are shadowed";
+}
+
 // Projected planar shadows: the sphere's shadow is centred where the ray from the light
 // through its centre meets the floor, in exactly the shadow colour; the floor itself (in the
 // plane) casts nothing, so far from the sphere the floor keeps its shading.
