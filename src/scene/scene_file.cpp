@@ -183,12 +183,19 @@ std::shared_ptr<const gpu::Texture2D> read_texture(const Node& n, const std::str
 }
 
 std::shared_ptr<Material> read_material(const Node& n, const std::map<std::string, std::shared_ptr<const gpu::Texture2D>>& textures) {
-  n.only({"ka", "kd", "ks", "shininess", "emission", "texture", "normal_map", "reflectance", "transmittance", "refractive_index"});
+  n.only({"ka", "kd", "ks", "shininess", "specular", "emission", "texture", "normal_map", "reflectance", "transmittance",
+          "refractive_index"});
   auto m = std::make_shared<Material>();
   if (n.has("kd")) m->kd = n.at("kd").colour();
   m->ka = n.has("ka") ? n.at("ka").colour() : m->kd * 0.1f;
   if (n.has("ks")) m->ks = n.at("ks").colour();
   if (n.has("shininess")) m->shininess = n.at("shininess").number(0.0f, 10000.0f);
+  if (n.has("specular")) {
+    const std::string sp = n.at("specular").string();
+    if (sp == "blinn") m->specular = Specular::Blinn;
+    else if (sp == "phong") m->specular = Specular::Phong;
+    else n.at("specular").fail("unknown specular model '" + sp + "' (expected blinn or phong)");
+  }
   if (n.has("emission")) m->emission = n.at("emission").colour();
   if (n.has("reflectance")) m->reflectance = n.at("reflectance").colour();
   if (n.has("transmittance")) m->transmittance = n.at("transmittance").colour();

@@ -20,6 +20,7 @@ struct LightingUniforms {
   int count = 0;
   glm::vec3 ka{0.0f}, kd{0.0f}, ks{0.0f}, emission{0.0f};
   float shininess = 1.0f;
+  bool phong_specular = false;  // Specular::Phong: R.V instead of N.H
   glm::vec3 eye{0.0f};
   bool textured = false;
   Sampler2D tex;
@@ -50,6 +51,7 @@ LightingUniforms lighting(const RenderState& s) {
   u.ks = m.ks;
   u.emission = m.emission;
   u.shininess = m.shininess;
+  u.phong_specular = m.specular == Specular::Phong;
   u.eye = s.wEye;
   u.textured = m.texture != nullptr;
   u.tex.texture = m.texture.get();
@@ -165,6 +167,12 @@ template <class F> struct Radiance {
   Vec3<F> ambient_diffuse, specular;
 };
 
+// The cosine the specular exponent applies to (before max(., 0)): Phong's R.V, R the light
+// direction mirrored about N, or Blinn's N.H.
+template <class F> F specular_cosine(const Vec3<F>& N, const Vec3<F>& L, const Vec3<F>& V, bool phong) {
+  return phong ? dot(reflect(-L, N), V) : dot(N, normalize(L + V));
+}
+
 template <class F>
 Radiance<F> illuminate(const LightingUniforms& u, const Vec3<F>& p, const Vec3<F>& N, const F* visibility = nullptr) {
   const Vec3<F> V = normalize(Vec3<F>(u.eye) - p);
@@ -180,8 +188,7 @@ Radiance<F> illuminate(const LightingUniforms& u, const Vec3<F>& p, const Vec3<F
                     F(0.0f));
     }
     const F cost = max(dot(N, L), F(0.0f));
-    const Vec3<F> H = normalize(L + V);
-    const F cosd = select(cost > F(0.0f), pow(max(dot(N, H), F(0.0f)), F(u.shininess)), F(0.0f));
+    const F cosd = select(cost > F(0.0f), pow(max(specular_cosine(N, L, V, u.phong_specular), F(0.0f)), F(u.shininess)), F(0.0f));
     if (l.wLightPos.w != 0.0f && (l.attenuation.y != 0.0f || l.attenuation.z != 0.0f || l.attenuation.x != 1.0f)) {
       const Vec3<F> d = Vec3<F>(glm::vec3(l.wLightPos) / l.wLightPos.w) - p;
       const F d2 = dot(d, d);
@@ -409,7 +416,7 @@ struct GBufferGpu {
     f.color[0] = Vec4<F>(v.wPos, F(u.l.shininess));
     f.color[1] = Vec4<F>(normalize(v.wNormal), F(1.0f));
     f.color[2] = Vec4<F>(Vec3<F>(u.l.kd) * tex, F(1.0f));
-    f.color[3] = Vec4<F>(Vec3<F>(u.l.ks), F(1.0f));
+    f.color[3] = Vec4<F>(Vec3<F>(u.l.ks), F(u.l.phong_specular ? 0.0f : 1.0f));  // alpha: Blinn
     f.color[4] = Vec4<F>(Vec3<F>(u.l.ka) * tex, F(1.0f));
     f.color[5] = Vec4<F>(Vec3<F>(u.l.emission), F(1.0f));
   }
@@ -431,7 +438,9 @@ struct DeferredLightGpu {
   template <class F> void fragment(const Uniforms& u, const Varyings<F>&, Fragment<F>& f) const {
     const IntOf<F> x = to_int(f.coord.x), y = to_int(f.coord.y);
     const Vec4<F> g0 = texelFetch(u.g[0], x, y, 0), g1 = texelFetch(u.g[1], x, y, 0);
-    const Vec3<F> kd = texelFetch(u.g[2], x, y, 0).xyz(), ks = texelFetch(u.g[3], x, y, 0).xyz();
+    const Vec4<F> g3 = texelFetch(u.g[3], x, y, 0);
+    const Vec3<F> kd = texelFetch(u.g[2], x, y, 0).xyz(), ks = g3.xyz();
+    const auto blinn = g3.w > F(0.5f);
     const Vec3<F> ka = texelFetch(u.g[4], x, y, 0).xyz(), em = texelFetch(u.g[5], x, y, 0).xyz();
     const Vec3<F> p = g0.xyz(), N = g1.xyz();
     const F shine = g0.w;
@@ -452,9 +461,9 @@ struct DeferredLightGpu {
                        F(0.0f));
       }
       const F cost = max(dot(N, L), F(0.0f));
-      const Vec3<F> H = normalize(L + V);
-      // The shininess differs per pixel here: pow of a lane vector.
-      const F cosd = select(cost > F(0.0f), pow(max(dot(N, H), F(1e-30f)), shine), F(0.0f));
+      // The specular model and the shininess differ per pixel here: pow of a lane vector.
+      const F sc = select(blinn, specular_cosine(N, L, V, false), specular_cosine(N, L, V, true));
+      const F cosd = select(cost > F(0.0f), pow(max(sc, F(1e-30f)), shine), F(0.0f));
       c = c + ka * Vec3<F>(l.La) + (kd * cost + ks * cosd) * (Vec3<F>(l.Le) * k);
     }
     const auto empty = g1.w == F(0.0f);

@@ -510,3 +510,36 @@ TEST(SceneRender, PassesAreTimedAndCountedApart) {
   EXPECT_EQ(names(passes), "gbuffer lighting");
   EXPECT_EQ(passes[1].counters.primitives_in, 1u);  // one full-screen triangle
 }
+
+// Phong's specular model mirrors L about N and takes R.V: where Blinn's N.H is cos(a), R.V
+// is about cos(2a), so with one exponent Phong's highlight is much smaller, and a quarter of
+// Blinn's exponent gives about Blinn's highlight. The deferred pass reads the model from the
+// G-buffer and agrees with forward shading.
+TEST(SceneRender, PhongSpecularModelNarrowsTheHighlightAndDeferredAgrees) {
+  auto with_model = [](Specular model, float shininess, bool deferred) {
+    Scene s = tessel::test::make_scene(shininess, /*gouraud_left=*/false);
+    s.objects.pop_back();  // the spheres alone
+    for (auto& o : s.objects) {
+      auto m = std::make_shared<Material>(*o->material);
+      m->specular = model;
+      o->material = m;
+    }
+    s.deferred = deferred;
+    return s;
+  };
+  auto highlight = [](const std::vector<uint8_t>& px) {
+    int n = 0;
+    for (size_t i = 0; i < px.size(); i += 4)
+      if (px[i] > 200 && px[i + 1] > 150) ++n;  // red spheres turn white only in the highlight
+    return n;
+  };
+  const std::vector<uint8_t> phong = render(with_model(Specular::Phong, 60.0f, false), 240, 120, 2);
+  const int hb = highlight(render(with_model(Specular::Blinn, 60.0f, false), 240, 120, 2)), hp = highlight(phong);
+  const int hq = highlight(render(with_model(Specular::Phong, 15.0f, false), 240, 120, 2));
+  EXPECT_GT(hp, 5);
+  EXPECT_GT(hb, 2 * hp) << "Blinn " << hb << " highlight pixels, Phong " << hp;
+  EXPECT_GT(hq, hb * 2 / 3) << "Blinn at 60: " << hb << ", Phong at 15: " << hq;
+  EXPECT_LT(hq, hb * 3 / 2) << "Blinn at 60: " << hb << ", Phong at 15: " << hq;
+  const test::ImageDiff d = test::diff_rgba(phong, render(with_model(Specular::Phong, 60.0f, true), 240, 120, 2));
+  EXPECT_TRUE(d.passes()) << d.differing << " of " << d.total << " pixels differ (max " << d.max_diff << ")";
+}

@@ -56,7 +56,7 @@ TEST(SceneFile, FieldsReachTheScene) {
     "camera": {"eye": [1, 2, 3], "lookat": [0, 0, 0], "fov": 60, "near": 0.2, "far": 20},
     "lights": [{"position": [1, 1, 1], "ambient": 0.2, "color": [1, 0.5, 0.25],
                 "spot": {"direction": [0, -1, 0], "cutoff": 30, "exponent": 4}}],
-    "materials": {"m": {"kd": [0.5, 0.25, 1], "ks": 0.5, "shininess": 12}},
+    "materials": {"m": {"kd": [0.5, 0.25, 1], "ks": 0.5, "shininess": 12, "specular": "phong"}},
     "objects": [{"name": "a", "geometry": {"type": "torus", "major": 2, "minor": 0.5, "rows": 4, "columns": 8},
                  "material": "m", "shader": "gouraud", "position": [1, 0, 0], "scale": 2,
                  "rotation": {"axis": [0, 0, 1], "angle": 90}, "animate": {"spin": 180, "velocity": [0, 1, 0]}},
@@ -74,6 +74,8 @@ TEST(SceneFile, FieldsReachTheScene) {
   const Object& a = *f.scene.objects[0];
   EXPECT_EQ(a.material->kd, glm::vec3(0.5f, 0.25f, 1.0f));
   EXPECT_EQ(a.material->ka, glm::vec3(0.05f, 0.025f, 0.1f));  // 0.1 kd when not given
+  EXPECT_EQ(a.material->specular, Specular::Phong);
+  EXPECT_EQ(f.scene.objects[1]->material->specular, Specular::Blinn);
   EXPECT_EQ(a.transform.scale, glm::vec3(2.0f));
   EXPECT_EQ(a.geometry->triangles(), 4 * 8 * 2);
   EXPECT_EQ(f.scene.objects[1]->transform.parent, &a.transform);
@@ -113,6 +115,7 @@ TEST(SceneFile, MistakesNameTheFileThePlaceAndTheProblem) {
       {R"({"render": {"size": [0, 10]}})", "scene.render.size[0]: value 0 is outside 1 .. 16384"},
       {R"({"textures": {"t": {"file": "no/such.png"}}})", "scene.textures.t: "},
       {R"({"materials": {"m": {"texture": "t"}}})", "scene.materials.m.texture: no texture named 't'"},
+      {R"({"materials": {"m": {"specular": "cook"}}})", "scene.materials.m.specular: unknown specular model 'cook' (expected blinn or phong)"},
       {R"({"objects": [{"geometry": {"type": "sphere"}, "animate": {"flag_phase": 1}}]})", "only a flag has a phase"},
   };
   for (const auto& [text, expect] : cases) {

@@ -40,11 +40,17 @@ struct Light {
   float spot_exponent = 0.0f;
 };
 
+// The specular term's cosine: Blinn's max(N.H, 0) with the halfway vector H = normalize(L + V)
+// (the notes' model), or Phong's max(R.V, 0) with the mirrored light direction
+// R = 2 (N.L) N - L. For a similar highlight Phong's exponent is about a quarter of Blinn's.
+enum class Specular : uint8_t { Blinn, Phong };
+
 // The notes' material: ambient, diffuse and specular reflectance, shininess, plus emission
 // and an optional texture that multiplies ka and kd. The last three are the ray tracer's.
 struct Material {
   glm::vec3 ka{0.1f}, kd{0.7f}, ks{0.3f};
   float shininess = 32.0f;
+  Specular specular = Specular::Blinn;
   glm::vec3 emission{0.0f};
   std::shared_ptr<const gpu::Texture2D> texture;
   // A tangent-space normal map (RGB = (n + 1) / 2, +z out of the surface, v up), used by

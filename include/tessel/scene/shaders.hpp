@@ -1,8 +1,9 @@
 // The shader library of the scene engine. Each is the notes' illumination model
 //   colour = emission + sum over lights of [ka La + (kd cos(theta) + ks cos(delta)^shininess) Le]
-// (cos(theta) = max(N.L, 0), cos(delta) = max(N.H, 0) with the Blinn halfway vector H, the
-// specular term only where N.L > 0), evaluated in world space, with the texture (when the
-// material has one) multiplying ka and kd.
+// (cos(theta) = max(N.L, 0), cos(delta) = max(N.H, 0) with the Blinn halfway vector H, or
+// max(R.V, 0) for a material whose specular model is Specular::Phong; the specular term only
+// where N.L > 0), evaluated in world space, with the texture (when the material has one)
+// multiplying ka and kd.
 #pragma once
 
 #include "tessel/scene/scene.hpp"
