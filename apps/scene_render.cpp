@@ -24,18 +24,12 @@ std::string frame_path(const std::string& out, int frame) {
   return out.substr(0, dot) + num + out.substr(dot);
 }
 
-// The counters as JSON members (no braces).
-std::string counters_json(const gpu::Stats& c) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "\"triangles_in\": %llu, \"culled\": %llu, \"clipped\": %llu, \"triangles_set_up\": %llu, "
-                "\"vertices_shaded\": %llu, \"fragments_shaded\": %llu, \"fragments_written\": %llu, "
-                "\"fragments_rejected_by_depth\": %llu",
-                (unsigned long long)c.primitives_in, (unsigned long long)c.primitives_culled,
-                (unsigned long long)c.primitives_clipped, (unsigned long long)c.triangles_setup,
-                (unsigned long long)c.vertices_shaded, (unsigned long long)c.fragments_shaded,
-                (unsigned long long)c.fragments_written, (unsigned long long)c.fragments_rejected);
-  return buf;
+// A JSON object with the counters (more members may be added after them).
+nlohmann::ordered_json counters_json(const gpu::Stats& c) {
+  return {{"triangles_in", c.primitives_in},         {"culled", c.primitives_culled},
+          {"clipped", c.primitives_clipped},         {"triangles_set_up", c.triangles_setup},
+          {"vertices_shaded", c.vertices_shaded},    {"fragments_shaded", c.fragments_shaded},
+          {"fragments_written", c.fragments_written}, {"fragments_rejected_by_depth", c.fragments_rejected}};
 }
 
 void progress(int done, int total) {
@@ -76,7 +70,10 @@ int render_scene(const SceneRenderOptions& o) {
     // Frames before the first are animated, not drawn.
     for (int f = 0; f < o.first_frame; ++f) s.Animate(dt);
     const int total = o.last_frame - o.first_frame + 1;
-    if (o.stats) std::printf("{\"scene\": %s, \"width\": %d, \"height\": %d, \"threads\": %d, \"frames\": [", nlohmann::json(o.scene).dump().c_str(), w, h, ctx.threads());
+    // The frames are streamed into the JSON as they are rendered.
+    if (o.stats)
+      std::printf("{\"scene\": %s, \"width\": %d, \"height\": %d, \"threads\": %d, \"frames\": [",
+                  nlohmann::json(o.scene).dump().c_str(), w, h, ctx.threads());
     for (int f = o.first_frame; f <= o.last_frame; ++f) {
       const gpu::Stats before = ctx.stats();
       std::vector<scene::PassStats> passes;
@@ -87,15 +84,18 @@ int render_scene(const SceneRenderOptions& o) {
       const std::string path = o.frames ? frame_path(o.output, f) : o.output;
       gpu::write_png(path, color);
       if (o.stats) {
-        std::printf("%s\n  {\"frame\": %d, \"file\": %s, \"ms\": %.3f, %s,\n   \"passes\": [", f == o.first_frame ? "" : ",",
-                    f, nlohmann::json(path).dump().c_str(), ms, counters_json(ctx.stats() - before).c_str());
-        for (size_t i = 0; i < passes.size(); ++i)
-          std::printf("%s\n    {\"pass\": \"%s\", \"ms\": %.3f, %s}", i ? "," : "", passes[i].name.c_str(), passes[i].ms,
-                      counters_json(passes[i].counters).c_str());
-        std::printf("]}");
-      }
-      else if (!o.frames)
+        nlohmann::ordered_json frame = {{"frame", f}, {"file", path}, {"ms", ms}};
+        frame.update(counters_json(ctx.stats() - before));
+        nlohmann::ordered_json& list = frame["passes"] = nlohmann::ordered_json::array();
+        for (const scene::PassStats& p : passes) {
+          nlohmann::ordered_json pass = {{"pass", p.name}, {"ms", p.ms}};
+          pass.update(counters_json(p.counters));
+          list.push_back(std::move(pass));
+        }
+        std::printf("%s\n  %s", f == o.first_frame ? "" : ",", frame.dump().c_str());
+      } else if (!o.frames) {
         std::printf("rendered %s (%d triangles, %dx%d) to %s in %.1f ms\n", o.scene.c_str(), s.triangles(), w, h, path.c_str(), ms);
+      }
       if (o.frames && total > 1) progress(f - o.first_frame + 1, total);
       s.Animate(dt);
     }

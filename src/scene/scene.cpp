@@ -260,7 +260,10 @@ void Scene::render_deferred(gpu::Context& ctx, const RenderState& base, PassCloc
   ctx.clear({.color = background, .depth = 1.0f});
   std::vector<const gpu::Texture2D*> views;
   for (int i = 0; i < 6; ++i) views.push_back(gbuffer_[size_t(i)].get());
-  draw_deferred_lighting(ctx, views, lights, camera.eye, background);
+  const bool phong = std::any_of(objects.begin(), objects.end(), [](const auto& o) {
+    return o->geometry && o->material && o->material->specular == Specular::Phong;
+  });
+  draw_deferred_lighting(ctx, views, lights, camera.eye, background, phong);
   clock.end("lighting");
 }
 

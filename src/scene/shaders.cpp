@@ -429,6 +429,7 @@ struct DeferredLightGpu {
     int count = 0;
     glm::vec3 eye{0.0f};
     glm::vec4 background{0.0f};
+    bool phong_specular = false;  // some pixel's material takes Phong's R.V (ks's alpha 0)
   };
   template <class F> struct Varyings {};
   static constexpr uint32_t attributes = 0b1;
@@ -462,7 +463,8 @@ struct DeferredLightGpu {
       }
       const F cost = max(dot(N, L), F(0.0f));
       // The specular model and the shininess differ per pixel here: pow of a lane vector.
-      const F sc = select(blinn, specular_cosine(N, L, V, false), specular_cosine(N, L, V, true));
+      F sc = specular_cosine(N, L, V, false);
+      if (u.phong_specular) sc = select(blinn, sc, specular_cosine(N, L, V, true));
       const F cosd = select(cost > F(0.0f), pow(max(sc, F(1e-30f)), shine), F(0.0f));
       c = c + ka * Vec3<F>(l.La) + (kd * cost + ks * cosd) * (Vec3<F>(l.Le) * k);
     }
@@ -480,7 +482,8 @@ void draw_gbuffer(gpu::Context& ctx, const RenderState& state, const Geometry& g
 }
 
 void draw_deferred_lighting(gpu::Context& ctx, const std::vector<const gpu::Texture2D*>& gbuffer,
-                            const std::vector<Light>& lights, const glm::vec3& eye, const glm::vec4& background) {
+                            const std::vector<Light>& lights, const glm::vec3& eye, const glm::vec4& background,
+                            bool phong_specular) {
   auto u = std::make_unique<DeferredLightGpu::Uniforms>();
   for (size_t i = 0; i < 6 && i < gbuffer.size(); ++i) {
     u->g[i].texture = gbuffer[i];
@@ -491,6 +494,7 @@ void draw_deferred_lighting(gpu::Context& ctx, const std::vector<const gpu::Text
   for (int i = 0; i < u->count; ++i) u->lights[size_t(i)] = lights[size_t(i)];
   u->eye = eye;
   u->background = background;
+  u->phong_specular = phong_specular;
   // One triangle that covers the viewport.
   static const float tri[6] = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
   const Buffer vb(tri, sizeof tri);

@@ -29,10 +29,12 @@ void draw_flat(gpu::Context& ctx, const glm::mat4& MVP, const glm::vec3& color, 
 // Deferred shading's two passes: an object into the G-buffer (attachments: world position
 // and shininess, normal, kd, ks, ka, emission; the texture already applied to kd and ka), and
 // the full-screen lighting pass that reads it (pixels the objects did not cover get
-// `background`).
+// `background`). `phong_specular`: some object's material uses Specular::Phong (else every
+// pixel takes Blinn's N.H without looking).
 void draw_gbuffer(gpu::Context& ctx, const RenderState& state, const Geometry& geometry);
 void draw_deferred_lighting(gpu::Context& ctx, const std::vector<const gpu::Texture2D*>& gbuffer,
-                            const std::vector<Light>& lights, const glm::vec3& eye, const glm::vec4& background);
+                            const std::vector<Light>& lights, const glm::vec3& eye, const glm::vec4& background,
+                            bool phong_specular);
 
 // Per-pixel (Phong) shading with the Blinn-Phong specular term: the normal and the position
 // are interpolated and the formula is evaluated at each pixel. With a shadow map in the
