@@ -21,15 +21,18 @@
 namespace tessel::glut {
 
 namespace {
-// Never destroyed: programs leave GLUT by exit() from inside callbacks, when the windows'
+// Never destroyed: programs end the process from inside their callbacks, when the windows'
 // contexts may still be in use and other statics (the gpu layer's) may already be gone.
 State& g_state = *new State;
 
-void fatal(const char* what) {
-  // GLUT's own rule (GLUT 3.7 spec §2): errors in using GLUT are fatal and end the program.
-  std::fprintf(stderr, "tessel glut: %s\n", what);
+// GLUT 3.7 (§2) makes errors in using GLUT fatal; a library must not end the program, so
+// Tessel reports them on stderr, ignores the call that made them and lets glutMainLoop return
+// (the program then ends the way its main() does).
+void report(const std::string& what) {
+  std::fprintf(stderr, "tessel glut: %s\n", what.c_str());
   std::fflush(stderr);
-  std::_Exit(1);
+  g_state.failed = true;
+  g_state.leave = true;
 }
 
 void parse_headless(Headless& h, const char* spec) {
@@ -73,11 +76,11 @@ void write_frame(Window& w, int frame) {
   try {
     gpu::write_png(path, width, height, 3, rgb.data());
   } catch (const std::exception& e) {
-    fatal((std::string("cannot write ") + path + ": " + e.what()).c_str());
+    report("cannot write " + path + ": " + e.what());
   }
 }
 
-// The main loop ends by returning to the program, never by exit(): with GLUT_ACTION_EXIT
+// The main loop ends by returning to the program, never by ending the process: with GLUT_ACTION_EXIT
 // (the default) GLUT would end the process here, and a program's `glutMainLoop(); return 0;`
 // does that itself, with its own cleanup and exit status.
 void finish_main_loop() { g_state.leave = true; }
@@ -85,7 +88,7 @@ void finish_main_loop() { g_state.leave = true; }
 void headless_main_loop() {
   std::error_code ec;
   std::filesystem::create_directories(g_state.headless.out, ec);
-  if (ec) fatal(("cannot create the output folder " + g_state.headless.out + ": " + ec.message()).c_str());
+  if (ec) return report("cannot create the output folder " + g_state.headless.out + ": " + ec.message());
   for (int frame = 0; frame < g_state.headless.frames && !g_state.leave; ++frame) {
     if (frame > 0) {
       g_state.virtual_ms += 1000.0 / 60.0;
@@ -166,7 +169,7 @@ void service_window(Window& w) {
   if (w.redisplay && w.visible) {
     w.redisplay = false;
     make_current(w);
-    if (!w.display) fatal("no display callback registered for a window");
+    if (!w.display) return report("no display callback registered for window " + std::to_string(id));
     w.display();
     if (!window(id)) return;
     // A single-buffered window shows what was drawn; a double-buffered one its front buffer.
@@ -207,21 +210,16 @@ using namespace tessel;
 using namespace tessel::glut;
 
 namespace {
+// The current window, or nullptr after reporting that `fn` was called without one.
 Window* need_window(const char* fn) {
   Window* w = current_window();
-  if (!w) {
-    std::fprintf(stderr, "tessel glut: %s called with no current window\n", fn);
-    std::fflush(stderr);
-    std::_Exit(1);
-  }
+  if (!w) report(std::string(fn) + " called with no current window");
   return w;
 }
-void need_init(const char* fn) {
-  if (!state().initialized) {
-    std::fprintf(stderr, "tessel glut: %s called before glutInit\n", fn);
-    std::fflush(stderr);
-    std::_Exit(1);
-  }
+// Whether glutInit has run (reported for `fn` when not).
+bool need_init(const char* fn) {
+  if (!state().initialized) report(std::string(fn) + " called before glutInit");
+  return state().initialized;
 }
 }  // namespace
 
@@ -287,7 +285,7 @@ void GLAPIENTRY glutInitWindowSize(int w, int h) {
 }
 
 int GLAPIENTRY glutCreateWindow(const char* title) {
-  need_init("glutCreateWindow");
+  if (!need_init("glutCreateWindow")) return 0;
   State& s = state();
   auto w = std::make_unique<Window>();
   w->id = int(s.windows.size()) + 1;
@@ -328,28 +326,34 @@ int GLAPIENTRY glutGetWindow(void) { return current_window() ? state().current_w
 void GLAPIENTRY glutSetWindow(int win) {
   if (Window* w = window(win)) make_current(*w);
 }
-void GLAPIENTRY glutPostRedisplay(void) { need_window("glutPostRedisplay")->redisplay = true; }
+void GLAPIENTRY glutPostRedisplay(void) {
+  if (Window* w = need_window("glutPostRedisplay")) w->redisplay = true;
+}
 void GLAPIENTRY glutPostWindowRedisplay(int win) {
   if (Window* w = window(win)) w->redisplay = true;
 }
 void GLAPIENTRY glutSwapBuffers(void) {
   Window* w = need_window("glutSwapBuffers");
+  if (!w) return;
   w->context->swap_buffers();
   if (w->native && (w->mode & GLUT_DOUBLE)) native_present(*w);
 }
 void GLAPIENTRY glutSetWindowTitle(const char* title) {
   Window* w = need_window("glutSetWindowTitle");
+  if (!w) return;
   w->title = title ? title : "";
   if (w->native) native_set_title(*w);
 }
 void GLAPIENTRY glutSetIconTitle(const char*) {}
 void GLAPIENTRY glutPositionWindow(int x, int y) {
   Window* w = need_window("glutPositionWindow");
+  if (!w) return;
   w->x = x;
   w->y = y;
 }
 void GLAPIENTRY glutReshapeWindow(int width, int height) {
   Window* w = need_window("glutReshapeWindow");
+  if (!w) return;
   if (width <= 0 || height <= 0) return;
   if (w->native) native_resize(*w, width, height);
   w->width = width;
@@ -363,25 +367,31 @@ void GLAPIENTRY glutPushWindow(void) {}
 void GLAPIENTRY glutIconifyWindow(void) {}
 void GLAPIENTRY glutShowWindow(void) {
   Window* w = need_window("glutShowWindow");
+  if (!w) return;
   w->visible = true;
   w->redisplay = true;
 }
-void GLAPIENTRY glutHideWindow(void) { need_window("glutHideWindow")->visible = false; }
+void GLAPIENTRY glutHideWindow(void) {
+  if (Window* w = need_window("glutHideWindow")) w->visible = false;
+}
 void GLAPIENTRY glutFullScreen(void) {
   Window* w = need_window("glutFullScreen");
+  if (!w) return;
   if (w->native) native_fullscreen(*w, true);
 }
 void GLAPIENTRY glutFullScreenToggle(void) { glutFullScreen(); }
 void GLAPIENTRY glutLeaveFullScreen(void) {
   Window* w = need_window("glutLeaveFullScreen");
+  if (!w) return;
   if (w->native) native_fullscreen(*w, false);
 }
 void GLAPIENTRY glutSetCursor(int) {}
 void GLAPIENTRY glutWarpPointer(int, int) {}
 
 void GLAPIENTRY glutMainLoop(void) {
-  need_init("glutMainLoop");
+  if (!need_init("glutMainLoop")) return;
   State& s = state();
+  if (s.failed) return;  // an error already reported: the program ends as its main() does
   s.leave = false;
   if (s.headless.on) headless_main_loop();
   else windowed_main_loop();
@@ -401,7 +411,9 @@ void GLAPIENTRY glutExit(void) {
 
 // --- callbacks ---
 #define SET_CALLBACK(name, member, type) \
-  void GLAPIENTRY name(decltype(Window::member) f) { need_window(#name)->member = f; }
+  void GLAPIENTRY name(decltype(Window::member) f) {    \
+    if (Window* w = need_window(#name)) w->member = f; \
+  }
 
 SET_CALLBACK(glutDisplayFunc, display, void (*)(void))
 SET_CALLBACK(glutKeyboardFunc, keyboard, void (*)(unsigned char, int, int))
@@ -421,13 +433,13 @@ SET_CALLBACK(glutWMCloseFunc, close, void (*)(void))
 
 void GLAPIENTRY glutReshapeFunc(void (*f)(int, int)) {
   Window* w = need_window("glutReshapeFunc");
+  if (!w) return;
   w->reshape = f;
   w->reshape_pending = true;
 }
 void GLAPIENTRY glutIdleFunc(void (*f)(void)) { state().idle = f; }
 void GLAPIENTRY glutTimerFunc(unsigned int ms, void (*f)(int), int value) {
-  need_init("glutTimerFunc");
-  if (!f) return;
+  if (!need_init("glutTimerFunc") || !f) return;
   State& s = state();
   s.timers.push_back({now_ms() + double(ms), s.timer_seq++, f, value, s.current_window});
 }
@@ -446,7 +458,7 @@ void GLAPIENTRY glutForceJoystickFunc(void) {}
 
 // --- menus ---
 int GLAPIENTRY glutCreateMenu(void (*callback)(int)) {
-  need_init("glutCreateMenu");
+  if (!need_init("glutCreateMenu")) return 0;
   State& s = state();
   auto m = std::make_unique<Menu>();
   m->id = int(s.menus.size()) + 1;
@@ -488,10 +500,12 @@ void GLAPIENTRY glutRemoveMenuItem(int item) {
 }
 void GLAPIENTRY glutAttachMenu(int button) {
   Window* w = need_window("glutAttachMenu");
+  if (!w) return;
   if (button >= 0 && button < 3) w->menu_for_button[button] = state().current_menu;
 }
 void GLAPIENTRY glutDetachMenu(int button) {
   Window* w = need_window("glutDetachMenu");
+  if (!w) return;
   if (button >= 0 && button < 3) w->menu_for_button[button] = 0;
 }
 

@@ -99,6 +99,9 @@ struct State {
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
   int modifiers = 0;        // valid inside input callbacks
   bool leave = false;       // glutLeaveMainLoop
+  // A GLUT error (misuse that GLUT 3.7 calls fatal, or a headless frame that could not be
+  // written) was reported: the offending call did nothing and glutMainLoop returns.
+  bool failed = false;
   int action_on_close = GLUT_ACTION_EXIT;
   bool ignore_key_repeat = false;
   int program_argc = 0;

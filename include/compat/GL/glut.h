@@ -17,7 +17,11 @@
 #define __glut_h__ 1
 #define __GLUT_H__ 1
 
-#include <stdlib.h> /* exit(): GLUT programs customarily rely on glut.h for it */
+/* stdlib.h: GLUT programs customarily end themselves from their own keyboard and menu
+   callbacks with stdlib's exit without including stdlib.h, relying on glut.h (SGI's and
+   freeglut's include it). Tessel itself never ends the program: GLUT errors are reported on
+   stderr and glutMainLoop returns. */
+#include <stdlib.h>
 
 #include <GL/gl.h>
 #include <GL/glu.h>
