@@ -115,8 +115,18 @@ glm::vec4 blend(const BlendTarget& b, glm::vec4 s, glm::vec4 d, glm::vec4 k, boo
 // Sets the texels [x0, x1) x [y0, y1) of an image with `bytes`-byte texels (a divisor of 64)
 // to (old & keep) | set per byte, keep and set being one texel's pattern (set has no bits in
 // keep). keep all zero is a plain fill and never reads; keep all ones changes nothing.
+// Non-temporal stores (RASTER_NOTES: the target's lines are written whole, and reading them
+// first only to overwrite them doubles the memory traffic of a frame's last writes).
+bool streamable(const void* p, size_t stride, size_t bytes) {
+  return ((reinterpret_cast<uintptr_t>(p) | stride | bytes) & 15) == 0;
+}
+void stream_row(std::byte* dst, const std::byte* src, size_t bytes) {
+  for (size_t off = 0; off < bytes; off += 16)
+    _mm_stream_si128(reinterpret_cast<__m128i*>(dst + off), _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + off)));
+}
+
 void fill_rect(std::byte* data, size_t row_bytes, size_t bytes, const uint8_t* keep, const uint8_t* set,
-               int x0, int y0, int x1, int y1) {
+               int x0, int y0, int x1, int y1, bool stream) {
   bool reads = false, writes = false;
   for (size_t i = 0; i < bytes; ++i) {
     reads |= keep[i] != 0;
@@ -133,6 +143,15 @@ void fill_rect(std::byte* data, size_t row_bytes, size_t bytes, const uint8_t* k
   std::memcpy(kw, kb, 64);
   std::memcpy(sw, sb, 64);
   const size_t n = size_t(x1 - x0) * bytes;
+  if (!reads && stream && streamable(data + size_t(y0) * row_bytes + size_t(x0) * bytes, row_bytes, n) && 64 % bytes == 0) {
+    // Every 16-byte step of a row starts on a texel (the bytes per texel divide 64).
+    for (int y = y0; y < y1; ++y)
+      for (size_t off = 0; off < n; off += 64)
+        stream_row(data + size_t(y) * row_bytes + size_t(x0) * bytes + off, reinterpret_cast<const std::byte*>(sb),
+                   std::min<size_t>(64, n - off));
+    _mm_sfence();
+    return;
+  }
   for (int y = y0; y < y1; ++y) {
     std::byte* p = data + size_t(y) * row_bytes + size_t(x0) * bytes;
     size_t off = 0;
@@ -239,7 +258,17 @@ void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsi
   }
 }
 
-void clear_rect(const TargetView& t, const ClearPrim& c, int x0, int y0, int x1, int y1) {
+void copy_rows(std::byte* dst, size_t dst_stride, const std::byte* src, size_t src_stride, size_t row_bytes, int rows,
+               bool stream) {
+  if (!stream || !streamable(dst, dst_stride, row_bytes)) {
+    for (int y = 0; y < rows; ++y) std::memcpy(dst + size_t(y) * dst_stride, src + size_t(y) * src_stride, row_bytes);
+    return;
+  }
+  for (int y = 0; y < rows; ++y) stream_row(dst + size_t(y) * dst_stride, src + size_t(y) * src_stride, row_bytes);
+  _mm_sfence();
+}
+
+void clear_rect(const TargetView& t, const ClearPrim& c, int x0, int y0, int x1, int y1, bool stream) {
   if (x0 >= x1 || y0 >= y1) return;
   // Colour: the clear colour is encoded once; the channels outside the write mask keep their
   // bytes. Every colour format stores each channel in its own bytes and decodes and encodes
@@ -259,7 +288,7 @@ void clear_rect(const TargetView& t, const ClearPrim& c, int x0, int y0, int x1,
         set[ch * per_channel + b] = 0;
       }
     }
-    fill_rect(ct.data, ct.row_bytes, info.bytes, keep, set, x0, y0, x1, y1);
+    fill_rect(ct.data, ct.row_bytes, info.bytes, keep, set, x0, y0, x1, y1, stream);
   }
   // Depth and stencil share one 32-bit word: new = (old & keep) | set.
   if (t.depth && (c.clear_depth || (c.clear_stencil && t.has_stencil))) {
@@ -282,7 +311,7 @@ void clear_rect(const TargetView& t, const ClearPrim& c, int x0, int y0, int x1,
     uint8_t kb[4], sb[4];
     std::memcpy(kb, &keep, 4);
     std::memcpy(sb, &set, 4);
-    fill_rect(t.depth, t.depth_row_bytes, 4, kb, sb, x0, y0, x1, y1);
+    fill_rect(t.depth, t.depth_row_bytes, 4, kb, sb, x0, y0, x1, y1, stream);
   }
 }
 

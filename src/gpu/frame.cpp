@@ -531,14 +531,20 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
   const BinEntry* e = next();
   if (!e) return;  // nothing touches this tile
   const BinEntry* second = next();
-  auto run_clear = [&](const TargetView& v, const BinEntry& entry) {
+  auto run_clear = [&](const TargetView& v, const BinEntry& entry, bool stream) {
     const auto* c = reinterpret_cast<const ClearPrim*>(entry.prim);
     const int cx0 = std::max(x0, c->base.minx), cx1 = std::min(x1, c->base.maxx + 1);
     const int cy0 = std::max(y0, c->base.miny), cy1 = std::min(y1, c->base.maxy + 1);
-    if (cx0 < cx1 && cy0 < cy1) clear_rect(v, *c, cx0, cy0, cx1, cy1);
+    if (cx0 < cx1 && cy0 < cy1) clear_rect(v, *c, cx0, cy0, cx1, cy1, stream);
   };
+  // A tile whose first command clears every attachment whole: its old contents are not read,
+  // and a frame that starts that way is taken to be written once and not read back by the
+  // next one, so its lines go to the target with non-temporal stores (a frame that keeps
+  // something, the stencil say, reads the target back next time: the lines stay cached).
+  const bool fresh = e->prim->kind == PrimKind::Clear &&
+                     clears_everything(target, *reinterpret_cast<const ClearPrim*>(e->prim), x0, y0, x1, y1);
   if (!second && e->prim->kind == PrimKind::Clear) {
-    run_clear(target, *e);  // a tile that is only cleared needs no local copy
+    run_clear(target, *e, fresh);  // a tile that is only cleared needs no local copy
     return;
   }
 
@@ -551,8 +557,6 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
   const int tw = x1 - x0;
   size_t color_bpp = 0;
   if (local) {
-    const bool fresh = e->prim->kind == PrimKind::Clear &&
-                       clears_everything(target, *reinterpret_cast<const ClearPrim*>(e->prim), x0, y0, x1, y1);
     if (target.color[0].data) {
       color_bpp = format_info(target.color[0].format).bytes;
       const size_t rb = size_t(kTileSize) * color_bpp;
@@ -560,10 +564,8 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
       view.color[0].data = tile_origin(w.tile_color.data(), rb, color_bpp, x0, y0);
       view.color[0].row_bytes = rb;
       if (!fresh)
-        for (int y = y0; y < y1; ++y)
-          std::memcpy(w.tile_color.data() + size_t(y - y0) * rb,
-                      target.color[0].data + size_t(y) * target.color[0].row_bytes + size_t(x0) * color_bpp,
-                      size_t(tw) * color_bpp);
+        copy_rows(w.tile_color.data(), rb, target.color[0].data + size_t(y0) * target.color[0].row_bytes + size_t(x0) * color_bpp,
+                  target.color[0].row_bytes, size_t(tw) * color_bpp, y1 - y0);
     }
     if (target.depth) {
       const size_t rb = size_t(kTileSize) * 4;
@@ -571,30 +573,24 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
       view.depth = tile_origin(w.tile_depth.data(), rb, 4, x0, y0);
       view.depth_row_bytes = rb;
       if (!fresh)
-        for (int y = y0; y < y1; ++y)
-          std::memcpy(w.tile_depth.data() + size_t(y - y0) * rb,
-                      target.depth + size_t(y) * target.depth_row_bytes + size_t(x0) * 4, size_t(tw) * 4);
+        copy_rows(w.tile_depth.data(), rb, target.depth + size_t(y0) * target.depth_row_bytes + size_t(x0) * 4,
+                  target.depth_row_bytes, size_t(tw) * 4, y1 - y0);
     }
   }
 
   for (; e; e = second ? std::exchange(second, nullptr) : next()) {
-    if (e->prim->kind == PrimKind::Clear) run_clear(view, *e);
+    if (e->prim->kind == PrimKind::Clear) run_clear(view, *e, false);
     else e->draw->program->raster(*e->draw, view, *e->prim, x0, y0, x1, y1, w.counters);
   }
 
   if (local) {
-    if (target.color[0].data) {
-      const size_t rb = size_t(kTileSize) * color_bpp;
-      for (int y = y0; y < y1; ++y)
-        std::memcpy(target.color[0].data + size_t(y) * target.color[0].row_bytes + size_t(x0) * color_bpp,
-                    w.tile_color.data() + size_t(y - y0) * rb, size_t(tw) * color_bpp);
-    }
-    if (target.depth) {
-      const size_t rb = size_t(kTileSize) * 4;
-      for (int y = y0; y < y1; ++y)
-        std::memcpy(target.depth + size_t(y) * target.depth_row_bytes + size_t(x0) * 4,
-                    w.tile_depth.data() + size_t(y - y0) * rb, size_t(tw) * 4);
-    }
+    if (target.color[0].data)
+      copy_rows(target.color[0].data + size_t(y0) * target.color[0].row_bytes + size_t(x0) * color_bpp,
+                target.color[0].row_bytes, w.tile_color.data(), size_t(kTileSize) * color_bpp, size_t(tw) * color_bpp, y1 - y0,
+                fresh);
+    if (target.depth)
+      copy_rows(target.depth + size_t(y0) * target.depth_row_bytes + size_t(x0) * 4, target.depth_row_bytes,
+                w.tile_depth.data(), size_t(kTileSize) * 4, size_t(tw) * 4, y1 - y0, fresh);
   }
 }
 

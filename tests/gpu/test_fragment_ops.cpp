@@ -672,3 +672,48 @@ TEST(ClearRect, MatchesPerPixelReferenceForEveryFormatAndMask) {
                                             << clear_stencil << " mask " << int(smask) << " z " << z;
             }
 }
+
+// Clears and tile copies into the target with non-temporal stores write what the plain ones
+// write, on 16-byte aligned rows (streamed) and on rows that are not (the plain fallback).
+TEST(ClearRect, StreamedStoresWriteWhatPlainStoresWrite) {
+  struct R { int x0, y0, x1, y1; };
+  const R rects[] = {{0, 0, 64, 8}, {4, 1, 36, 7}, {1, 2, 30, 5}, {16, 0, 17, 8}};
+  uint32_t seed = 7000;
+  for (Format f : {Format::RGBA8, Format::RGBA32F, Format::Depth24Stencil8, Format::Depth32F})
+    for (size_t pad : {size_t(0), size_t(4)})
+      for (const R& r : rects) {
+        const bool depth = f == Format::Depth24Stencil8 || f == Format::Depth32F;
+        const size_t bytes = format_info(f).bytes, row = 64 * bytes + pad;
+        // 16-byte aligned storage (operator new aligns vectors to 16) plus an optional pad.
+        std::vector<std::byte> a = random_bytes(row * 8, seed++), b = a;
+        detail::ClearPrim c;
+        c.color_mask_bits = 1;
+        c.color[0] = {0.2f, 0.4f, 0.6f, 0.8f};
+        c.write_mask[0] = 0xF;
+        c.clear_depth = c.clear_stencil = true;
+        c.depth = 0.3f;
+        detail::TargetView ta;
+        ta.width = 64;
+        ta.height = 8;
+        if (depth) {
+          ta.depth_row_bytes = row;
+          ta.depth_format = f;
+          ta.has_stencil = f == Format::Depth24Stencil8;
+        } else {
+          ta.color_count = 1;
+          ta.color[0] = {nullptr, row, f};
+        }
+        detail::TargetView tb = ta;
+        (depth ? ta.depth : ta.color[0].data) = a.data();
+        (depth ? tb.depth : tb.color[0].data) = b.data();
+        detail::clear_rect(ta, c, r.x0, r.y0, r.x1, r.y1, true);
+        detail::clear_rect(tb, c, r.x0, r.y0, r.x1, r.y1, false);
+        ASSERT_TRUE(a == b) << format_info(f).name << " pad " << pad << " rect " << r.x0 << "," << r.y0;
+        // A tile copied out, streamed and plain.
+        const std::vector<std::byte> tile = random_bytes(64 * bytes * 8, seed++);
+        const size_t off = size_t(r.y0) * row + size_t(r.x0) * bytes, n = size_t(r.x1 - r.x0) * bytes;
+        detail::copy_rows(a.data() + off, row, tile.data(), 64 * bytes, n, r.y1 - r.y0, true);
+        detail::copy_rows(b.data() + off, row, tile.data(), 64 * bytes, n, r.y1 - r.y0, false);
+        ASSERT_TRUE(a == b) << format_info(f).name << " pad " << pad << " copy " << r.x0 << "," << r.y0;
+      }
+}

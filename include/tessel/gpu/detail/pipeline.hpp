@@ -176,7 +176,15 @@ unsigned depth_stencil_test(const DrawRecord& d, const TargetView& t, int gx, in
                             bool front);
 void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask, const Vec4<Float8>* colors,
                   int outputs);
-void clear_rect(const TargetView& t, const ClearPrim& c, int x0, int y0, int x1, int y1);
+// `stream`: the rectangle is in the whole target (not a tile-local copy) and nothing will read
+// it back soon, so whole rows are written with non-temporal stores, without first reading
+// the lines they overwrite.
+void clear_rect(const TargetView& t, const ClearPrim& c, int x0, int y0, int x1, int y1, bool stream = false);
+// Copies `rows` rows of `row_bytes` (between a tile-local buffer and the target); with
+// `stream`, into the target with non-temporal stores where the addresses allow (16-byte
+// aligned).
+void copy_rows(std::byte* dst, size_t dst_stride, const std::byte* src, size_t src_stride, size_t row_bytes, int rows,
+               bool stream = false);
 
 // Lane offsets of a 4x2 group (two 2x2 quads side by side).
 inline constexpr int kLaneDx[8] = {0, 1, 0, 1, 2, 3, 2, 3};
