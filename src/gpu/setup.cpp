@@ -16,6 +16,7 @@
 #include <cstring>
 
 #include "stages.hpp"
+#include "tessel/gpu/simd.hpp"
 
 namespace tessel::gpu::detail {
 
@@ -39,6 +40,33 @@ float polygon_offset(const DrawRecord& d, const WinVert& v0, const WinVert& v1, 
     r = std::ldexp(1.0, e - 1 - 23);
   }
   return float(m * d.state.offset_factor + r * d.state.offset_units);
+}
+
+// Coverage of a small triangle (small_edges) whose bbox lies in the 8x8 pixels from
+// (minx & ~3, miny & ~1), in Prim::cover's layout.
+static uint64_t small_coverage(const EdgeEq* e, int minx, int miny, int maxx, int maxy) {
+  const int gx0 = minx & ~3, gy0 = miny & ~1;
+  const Int8 lane_dx(vx::i32x8{0, 1, 0, 1, 2, 3, 2, 3}), lane_dy(vx::i32x8{0, 0, 1, 1, 0, 0, 1, 1});
+  Int8 base[3];
+  int32_t sa[3], sb[3];
+  for (int i = 0; i < 3; ++i) {
+    sa[i] = int32_t(e[i].a);
+    sb[i] = int32_t(e[i].b);
+    base[i] = Int8(int32_t(e[i].c + e[i].a * gx0 + e[i].b * gy0)) + Int8(sa[i]) * lane_dx + Int8(sb[i]) * lane_dy;
+  }
+  uint64_t cover = 0;
+  for (int gy = gy0; gy <= maxy; gy += 2) {
+    for (int gx = gx0; gx <= maxx; gx += 4) {
+      const int ox = gx - gx0, oy = gy - gy0;
+      const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
+      const Mask8 in = ((base[0] + Int8(sa[0] * ox + sb[0] * oy)) > Int8(0)) &
+                       ((base[1] + Int8(sa[1] * ox + sb[1] * oy)) > Int8(0)) &
+                       ((base[2] + Int8(sa[2] * ox + sb[2] * oy)) > Int8(0)) & (px >= Int8(minx)) &
+                       (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy));
+      cover |= uint64_t(in.bits()) << (8 * ((oy >> 1) * 2 + (ox >> 2)));
+    }
+  }
+  return cover;
 }
 
 // Plane (value at v0, d/dx, d/dy) through three values at the vertices.
@@ -97,6 +125,26 @@ Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, 
   maxy = std::min(maxy, d.area_y1 - 1);
   if (minx > maxx || miny > maxy) return nullptr;
 
+  EdgeEq e[3];
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    const int64_t dx = X[j] - X[i], dy = Y[j] - Y[i];
+    // E(P) = dx (Py - Yi) - dy (Px - Xi), positive to the left of i->j (the interior).
+    const bool owns_ties = dy < 0 || (dy == 0 && dx > 0);
+    e[i].a = -dy * kSubpixelOne;
+    e[i].b = dx * kSubpixelOne;
+    e[i].c = dy * X[i] - dx * Y[i] + (owns_ties ? 1 : 0);
+  }
+  // Most triangles of a tessellated mesh cover a few pixels, and a quarter of those none at
+  // all: their coverage is found here, so the empty ones cost no planes, no memory and no
+  // raster work, and the raster phase reads the others' groups from a mask.
+  uint64_t cover = 0;
+  const int gx0 = minx & ~3, gy0 = miny & ~1;
+  if (maxx < gx0 + 8 && maxy < gy0 + 8 && small_edges(e)) {
+    cover = small_coverage(e, minx, miny, maxx, maxy);
+    if (!cover) return nullptr;
+  }
+
   const int K = d.program->varyings;
   auto* p = static_cast<Prim*>(arena.allocate(sizeof(Prim) + sizeof(float) * 3 * size_t(K)));
   new (p) Prim;  // no zeroing: every field is set below
@@ -107,15 +155,10 @@ Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, 
   p->miny = miny;
   p->maxx = maxx;
   p->maxy = maxy;
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    const int64_t dx = X[j] - X[i], dy = Y[j] - Y[i];
-    // E(P) = dx (Py - Yi) - dy (Px - Xi), positive to the left of i->j (the interior).
-    const bool owns_ties = dy < 0 || (dy == 0 && dx > 0);
-    p->e[i].a = -dy * kSubpixelOne;
-    p->e[i].b = dx * kSubpixelOne;
-    p->e[i].c = dy * X[i] - dx * Y[i] + (owns_ties ? 1 : 0);
-  }
+  p->cover = cover;
+  p->e[0] = e[0];
+  p->e[1] = e[1];
+  p->e[2] = e[2];
 
   // Planes from the float window positions, anchored at v0.
   PlaneSolver s;

@@ -39,15 +39,32 @@ struct EdgeEq {
   int64_t c, a, b;
 };
 
+// Whether the edges of a triangle are short enough that at any pixel of its bbox their
+// values fit 32-bit lanes: when every edge spans under 56 pixels in x and y (|a|, |b| =
+// 256 |dy|, 256 |dx| with dx, dy in 1/256 pixel), the whole triangle does, and at any pixel
+// of its bbox E = dx (256 j - Y) - dy (256 i - X) stays below 2 * (60 * 256)^2 < 2^29 in
+// magnitude. (The bbox alone is not enough: it is cut to the render area, and a huge
+// triangle can show a small part.)
+inline bool small_edges(const EdgeEq* e) {
+  constexpr int64_t kSmall = int64_t(56) << (2 * kSubpixelBits);
+  bool small = true;
+  for (int i = 0; i < 3; ++i)
+    small = small && e[i].a > -kSmall && e[i].a < kSmall && e[i].b > -kSmall && e[i].b < kSmall;
+  return small;
+}
+
 // A triangle ready for the raster phase, followed in memory by 3*varyings floats: the planes
 // of value/w (or of the value itself for flat and noperspective components), as three arrays
 // of `varyings` floats: the values at the anchor, then d/dx, then d/dy.
 struct Prim {
   PrimKind kind = PrimKind::Triangle;
   bool front = true;
-  uint32_t draw = 0;
   uint32_t prim_id = 0;
   int minx = 0, miny = 0, maxx = -1, maxy = -1;  // inclusive pixel bbox within the render area
+  // For a small triangle, its coverage worked out at setup (0 when not): the 4x2 groups of
+  // the 8x8 pixels from (minx & ~3, miny & ~1), group (col, row) in byte 2 row + col, lanes
+  // in kLaneDx/kLaneDy order, already cut to the bbox. The raster phase then needs no edges.
+  uint64_t cover = 0;
   EdgeEq e[3];
   float xr = 0, yr = 0;     // anchor of the planes, window coordinates
   float z[3] = {0, 0, 0};   // window depth plane

@@ -79,15 +79,30 @@ template <class S> class Program final : public ProgramBase {
         pending_mask = 0;
       }
     };
+    auto finish = [&] {
+      if (pending_mask) shade<Float8>(d, t, p, pending, pending, pending_mask, c);
+      counters.fragments_shaded += c.fragments_shaded;
+      counters.fragments_written += c.fragments_written;
+      counters.fragments_rejected += c.fragments_rejected;
+    };
+    // Coverage found at setup (Prim::cover): only the cut to this tile is left to do.
+    if (p.cover) {
+      const int gx0 = p.minx & ~3, gy0 = p.miny & ~1;
+      const bool whole = minx == p.minx && maxx == p.maxx && miny == p.miny && maxy == p.maxy;
+      for (uint64_t m = p.cover; m;) {
+        const int byte = __builtin_ctzll(m) >> 3;
+        const Pos g{gx0 + (byte & 1) * 4, gy0 + (byte >> 1) * 2};
+        unsigned gm = unsigned(m >> (8 * byte)) & 0xFF;
+        m &= ~(uint64_t(0xFF) << (8 * byte));
+        if (!whole) gm &= bbox_mask(g.x, g.y);
+        if (gm) emit(g, gm);
+      }
+      finish();
+      return;
+    }
     // Small triangles (most of a tessellated mesh): no block classification; the 4x2 groups
-    // of the bbox are tested directly. When every edge spans under 56 pixels in x and y
-    // (|a|, |b| = 256 |dy|, 256 |dx| with dx, dy in 1/256 pixel), the whole triangle does,
-    // and at any pixel of its bbox E = dx (256 j - Y) - dy (256 i - X) stays below
-    // 2 * (60 * 256)^2 < 2^29 in magnitude: 32-bit lanes hold it. (The bbox alone is not
-    // enough: it is cut to the render area, and a huge triangle can show a small part.)
-    bool small = true;
-    constexpr int64_t kSmall = int64_t(56) << (2 * kSubpixelBits);
-    for (const EdgeEq& e : p.e) small = small && e.a > -kSmall && e.a < kSmall && e.b > -kSmall && e.b < kSmall;
+    // of the bbox are tested directly, in 32-bit lanes (small_edges).
+    const bool small = small_edges(p.e);
     if (small) {
       const int gx0 = minx & ~3, gy0 = miny & ~1;
       Int8 base[3];
