@@ -112,7 +112,9 @@ template <int N> struct FloatN {
   V v;
   FloatN() = default;
   constexpr FloatN(V x) : v(x) {}
-  FloatN(float s) : v(V{} + s) {}
+  // A broadcast (not 0 + s: GCC may not fold a float add of zero, so that would cost an
+  // add in front of every broadcast).
+  FloatN(float s) : v(V{s, s, s, s, s, s, s, s}) { static_assert(N == 8); }
   static FloatN load(const float* p) {
     FloatN r;
     std::memcpy(&r.v, p, sizeof r.v);

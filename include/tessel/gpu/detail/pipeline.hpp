@@ -167,10 +167,11 @@ class ProgramBase {
   // clip positions and n * varyings floats.
   virtual void shade_vertices(const DrawRecord& d, const uint32_t* ids, int n, uint32_t instance,
                               glm::vec4* pos, float* vars) const = 0;
-  // Rasterizes and shades one triangle inside the tile rectangle [x0,x1) x [y0,y1), writing
-  // through `t` (the draw's attachments, or the raster phase's tile-local copies of them).
-  virtual void raster(const DrawRecord& d, const TargetView& t, const Prim& p, int x0, int y0, int x1, int y1,
-                      Counters& c) const = 0;
+  // Rasterizes and shades n consecutive triangles of one draw, in order, inside the tile
+  // rectangle [x0,x1) x [y0,y1), writing through `t` (the draw's attachments, or the raster
+  // phase's tile-local copies of them).
+  virtual void raster(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0, int y0,
+                      int x1, int y1, Counters& c) const = 0;
 };
 
 // --- stage functions (each in its own .cpp) --------------------------------------------------

@@ -44,10 +44,48 @@ template <class S> class Program final : public ProgramBase {
     }
   }
 
-  void raster(const DrawRecord& d, const TargetView& t, const Prim& p, int x0, int y0, int x1, int y1,
-              Counters& counters) const override {
+  void raster(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0, int y0, int x1,
+              int y1, Counters& counters) const override {
     // Fragment counts are kept in registers here and added to the worker's counters once.
     FragmentCounts c;
+    // Covered 4x2 groups are shaded two at a time as sixteen lanes (two independent halves
+    // keep both vector pipes busy through the shader's long dependency chains), each half
+    // with its own triangle's planes; `pending` waits for a partner, from the same triangle
+    // or a later one. The older group is the low half: depth and stencil are tested (and
+    // written) for the low half before the high half, and colour is written in that order
+    // too, so two groups on the same pixels still meet in submission order.
+    const Prim* pending_prim = nullptr;
+    Pos pending{0, 0};
+    unsigned pending_mask = 0;
+    auto emit = [&](const Prim& p, Pos g, unsigned m) {
+      if (!pending_mask) {
+        pending_prim = &p;
+        pending = g;
+        pending_mask = m;
+      } else {
+        shade<Float16>(d, t, *pending_prim, p, pending, g, pending_mask | (m << 8), c);
+        pending_mask = 0;
+      }
+    };
+    for (int i = 0; i < n; ++i) raster_one(*prims[i], x0, y0, x1, y1, emit);
+    if (pending_mask) shade<Float8>(d, t, *pending_prim, *pending_prim, pending, pending, pending_mask, c);
+    counters.fragments_shaded += c.fragments_shaded;
+    counters.fragments_written += c.fragments_written;
+    counters.fragments_rejected += c.fragments_rejected;
+  }
+
+ private:
+  struct Pos {
+    int x, y;
+  };
+  struct FragmentCounts {
+    uint64_t fragments_shaded = 0, fragments_written = 0, fragments_rejected = 0;
+  };
+
+  // The coverage of one triangle in the tile rectangle, as emit(p, group, lane mask) per
+  // covered 4x2 group.
+  template <class Emit>
+  __attribute__((always_inline)) static void raster_one(const Prim& p, int x0, int y0, int x1, int y1, Emit& emit) {
     const int minx = std::max(p.minx, x0), maxx = std::min(p.maxx, x1 - 1);
     const int miny = std::max(p.miny, y0), maxy = std::min(p.maxy, y1 - 1);
     if (minx > maxx || miny > maxy) return;
@@ -57,33 +95,6 @@ template <class S> class Program final : public ProgramBase {
       if (gx >= minx && gx + 3 <= maxx && gy >= miny && gy + 1 <= maxy) return 0xFF;
       const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
       return ((px >= Int8(minx)) & (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy))).bits();
-    };
-    // With |a|, |b| < 2^26 an edge that crosses an 8x8 block stays below 2^30 in magnitude
-    // inside it, so its values are stepped in 32-bit lanes; larger steps (triangles
-    // thousands of pixels across) take the 64-bit per-lane path.
-    bool narrow = true;
-    for (const EdgeEq& e : p.e)
-      narrow = narrow && e.a > -(int64_t(1) << 26) && e.a < (int64_t(1) << 26) && e.b > -(int64_t(1) << 26) &&
-               e.b < (int64_t(1) << 26);
-    // Covered 4x2 groups are shaded two at a time as sixteen lanes (two independent halves
-    // keep both vector pipes busy through the shader's long dependency chains); `pending`
-    // waits for a partner. Groups of one triangle never overlap, so the order is free.
-    Pos pending{0, 0};
-    unsigned pending_mask = 0;
-    auto emit = [&](Pos g, unsigned m) {
-      if (!pending_mask) {
-        pending = g;
-        pending_mask = m;
-      } else {
-        shade<Float16>(d, t, p, pending, g, pending_mask | (m << 8), c);
-        pending_mask = 0;
-      }
-    };
-    auto finish = [&] {
-      if (pending_mask) shade<Float8>(d, t, p, pending, pending, pending_mask, c);
-      counters.fragments_shaded += c.fragments_shaded;
-      counters.fragments_written += c.fragments_written;
-      counters.fragments_rejected += c.fragments_rejected;
     };
     // Coverage found at setup (Prim::cover): only the cut to this tile is left to do.
     if (p.cover) {
@@ -95,15 +106,13 @@ template <class S> class Program final : public ProgramBase {
         unsigned gm = unsigned(m >> (8 * byte)) & 0xFF;
         m &= ~(uint64_t(0xFF) << (8 * byte));
         if (!whole) gm &= bbox_mask(g.x, g.y);
-        if (gm) emit(g, gm);
+        if (gm) emit(p, g, gm);
       }
-      finish();
       return;
     }
     // Small triangles (most of a tessellated mesh): no block classification; the 4x2 groups
     // of the bbox are tested directly, in 32-bit lanes (small_edges).
-    const bool small = small_edges(p.e);
-    if (small) {
+    if (small_edges(p.e)) {
       const int gx0 = minx & ~3, gy0 = miny & ~1;
       Int8 base[3];
       int32_t sa[3], sb[3];
@@ -121,15 +130,18 @@ template <class S> class Program final : public ProgramBase {
                            ((base[1] + Int8(sa[1] * ox + sb[1] * oy)) > Int8(0)) &
                            ((base[2] + Int8(sa[2] * ox + sb[2] * oy)) > Int8(0));
           mask &= in.bits();
-          if (mask) emit({gx, gy}, mask);
+          if (mask) emit(p, Pos{gx, gy}, mask);
         }
       }
-      if (pending_mask) shade<Float8>(d, t, p, pending, pending, pending_mask, c);
-      counters.fragments_shaded += c.fragments_shaded;
-      counters.fragments_written += c.fragments_written;
-    counters.fragments_rejected += c.fragments_rejected;
       return;
     }
+    // With |a|, |b| < 2^26 an edge that crosses an 8x8 block stays below 2^30 in magnitude
+    // inside it, so its values are stepped in 32-bit lanes; larger steps (triangles
+    // thousands of pixels across) take the 64-bit per-lane path.
+    bool narrow = true;
+    for (const EdgeEq& e : p.e)
+      narrow = narrow && e.a > -(int64_t(1) << 26) && e.a < (int64_t(1) << 26) && e.b > -(int64_t(1) << 26) &&
+               e.b < (int64_t(1) << 26);
     for (int by = miny & ~7; by <= maxy; by += 8) {
       for (int bx = minx & ~7; bx <= maxx; bx += 8) {
         // Classify the 8x8 block against each edge from its corner pixels: edges that do
@@ -181,24 +193,12 @@ template <class S> class Program final : public ProgramBase {
           if (gy + 1 < miny || gy > maxy) continue;
           for (int gx = bx; gx < bx + 8; gx += 4) {
             const unsigned m = group_mask(gx, gy);
-            if (m) emit({gx, gy}, m);
+            if (m) emit(p, Pos{gx, gy}, m);
           }
         }
       }
     }
-    if (pending_mask) shade<Float8>(d, t, p, pending, pending, pending_mask, c);
-    counters.fragments_shaded += c.fragments_shaded;
-    counters.fragments_written += c.fragments_written;
-    counters.fragments_rejected += c.fragments_rejected;
   }
-
- private:
-  struct Pos {
-    int x, y;
-  };
-  struct FragmentCounts {
-    uint64_t fragments_shaded = 0, fragments_written = 0, fragments_rejected = 0;
-  };
 
   // Depth/stencil test of the 8 lanes of group a, or the 16 of groups a and b.
   __attribute__((always_inline)) static unsigned test8(const DrawRecord& d, const TargetView& t, Pos a, unsigned mask, const Float8& z, bool front) {
@@ -207,13 +207,13 @@ template <class S> class Program final : public ProgramBase {
   }
   template <class F>
   __attribute__((always_inline)) static unsigned test(const DrawRecord& d, const TargetView& t, Pos a, Pos b, unsigned mask,
-                                                      const F& z, bool front) {
+                                                      const F& z, bool front_a, bool front_b) {
     if constexpr (lane_width<F> == 8) {
-      return test8(d, t, a, mask, z, front);
+      return test8(d, t, a, mask, z, front_a);
     } else {
       unsigned lo = mask & 0xFF, hi = mask >> 8;
-      if (lo) lo = test8(d, t, a, lo, lo_half(z), front);
-      if (hi) hi = test8(d, t, b, hi, hi_half(z), front);
+      if (lo) lo = test8(d, t, a, lo, lo_half(z), front_a);
+      if (hi) hi = test8(d, t, b, hi, hi_half(z), front_b);
       return lo | (hi << 8);
     }
   }
@@ -223,13 +223,21 @@ template <class S> class Program final : public ProgramBase {
     write_colors(d, t, a.x, a.y, mask, colors, outputs);
   }
 
-  // Shades the 4x2 group at a (eight lanes), or the groups at a and b (sixteen lanes: a in
-  // lanes 0-7, b in lanes 8-15). flatten: the shader and every GLSL function it calls are
+  // A value per half: x on eight lanes; x in lanes 0-7 and y in lanes 8-15 on sixteen.
+  // V is F, MaskOf<F> or IntOf<F>.
+  template <class F, class V, class T> __attribute__((always_inline)) static V halves(T x, T y) {
+    if constexpr (lane_width<F> == 8) return V(x);
+    else return join(decltype(lo_half(V()))(x), decltype(lo_half(V()))(y));
+  }
+  template <class F> __attribute__((always_inline)) static F halves(float x, float y) { return halves<F, F>(x, y); }
+
+  // Shades the 4x2 group at a of triangle pa (eight lanes; pb is pa), or also the group at b
+  // of triangle pb (sixteen lanes: a in lanes 0-7, b in lanes 8-15). flatten: the shader and every GLSL function it calls are
   // inlined here, so lane values stay in registers (lane values passed to an out-of-line
   // call go through memory); always_inline: with two call sites GCC would outline it.
   template <class F>
-  __attribute__((flatten, always_inline)) inline void shade(const DrawRecord& d, const TargetView& t, const Prim& p, Pos a, Pos b,
-                                      unsigned mask, FragmentCounts& c) const {
+  __attribute__((flatten, always_inline)) inline void shade(const DrawRecord& d, const TargetView& t, const Prim& pa, const Prim& pb,
+                                                                  Pos a, Pos b, unsigned mask, FragmentCounts& c) const {
     constexpr int K = varying_count<S>();
     constexpr int N = lane_width<F>;
     constexpr int outputs = shader_outputs<S>();
@@ -244,24 +252,28 @@ template <class S> class Program final : public ProgramBase {
       cx = join(Float8(float(a.x)) + dx8, Float8(float(b.x)) + dx8);
       cy = join(Float8(float(a.y)) + dy8, Float8(float(b.y)) + dy8);
     }
-    const F fx = cx - F(p.xr), fy = cy - F(p.yr);
-    F z = fma(F(p.z[2]), fy, fma(F(p.z[1]), fx, F(p.z[0])));
+    auto plane = [&](const float* qa, const float* qb, F fx, F fy) {
+      return fma(halves<F>(qa[2], qb[2]), fy, fma(halves<F>(qa[1], qb[1]), fx, halves<F>(qa[0], qb[0])));
+    };
+    const F fx = cx - halves<F>(pa.xr, pb.xr), fy = cy - halves<F>(pa.yr, pb.yr);
+    F z = plane(pa.z, pb.z, fx, fy);
     z = clamp(z, F(d.depth_min), F(d.depth_max));
     const bool tests = d.state.depth_test || d.state.stencil_test;
     if (tests && d.early_depth) {
       const unsigned covered = mask;
-      mask = test(d, t, a, b, mask, z, p.front);
+      mask = test(d, t, a, b, mask, z, pa.front, pb.front);
       c.fragments_rejected += unsigned(__builtin_popcount(covered & ~mask));
       if (!mask) return;
     }
-    const F oow = fma(F(p.oow[2]), fy, fma(F(p.oow[1]), fx, F(p.oow[0])));
+    const F oow = plane(pa.oow, pb.oow, fx, fy);
     const F w = F(1.0f) / oow;
     Varyings<F> vary;
     if constexpr (K > 0) {
       F lanes[K];
-      const float* pl = p.planes();
+      const float *pla = pa.planes(), *plb = pb.planes();
       for (int k = 0; k < K; ++k) {
-        F v = fma(F(pl[2 * K + k]), fy, fma(F(pl[K + k]), fx, F(pl[k])));
+        F v = fma(halves<F>(pla[2 * K + k], plb[2 * K + k]), fy,
+                  fma(halves<F>(pla[K + k], plb[K + k]), fx, halves<F>(pla[k], plb[k])));
         if (!(((flat | noperspective) >> k) & 1)) v = v * w;
         lanes[k] = v;
       }
@@ -269,8 +281,8 @@ template <class S> class Program final : public ProgramBase {
     }
     Fragment<F> f;
     f.coord = Vec4<F>(cx, cy, z, oow);
-    f.front_facing = MaskOf<F>(p.front);
-    f.primitive_id = IntOf<F>(int32_t(p.prim_id));
+    f.front_facing = halves<F, MaskOf<F>>(pa.front, pb.front);
+    f.primitive_id = halves<F, IntOf<F>>(int32_t(pa.prim_id), int32_t(pb.prim_id));
     for (int i = 0; i < outputs; ++i) f.color[size_t(i)] = Vec4<F>(F(0.0f));
     f.depth = z;
     f.killed = MaskOf<F>(false);
@@ -280,7 +292,7 @@ template <class S> class Program final : public ProgramBase {
     c.fragments_shaded += unsigned(__builtin_popcount(mask));
     if (tests && !d.early_depth) {
       const unsigned shaded = mask;
-      mask = test(d, t, a, b, mask, z, p.front);
+      mask = test(d, t, a, b, mask, z, pa.front, pb.front);
       c.fragments_rejected += unsigned(__builtin_popcount(shaded & ~mask));
     }
     if (!mask) return;
