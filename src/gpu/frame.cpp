@@ -21,6 +21,7 @@
 #include <condition_variable>
 #include <functional>
 #include <mutex>
+#include <span>
 #include <string>
 #include <utility>
 #include <thread>
@@ -255,7 +256,20 @@ void Context::Frame::bin(Worker& w, uint32_t chunk, const DrawRecord* d, const P
         const int x0 = std::max(tx * kTileSize, p->minx), x1 = std::min(tx * kTileSize + kTileSize - 1, p->maxx);
         const int y0 = std::max(ty * kTileSize, p->miny), y1 = std::min(ty * kTileSize + kTileSize - 1, p->maxy);
         bool out = false;
-        for (const EdgeEq& e : p->e) {
+        if (p->cover) {
+          // Covered groups are 4x2 aligned and tiles are multiples of them: a tile is touched
+          // when one of its groups is in the cover.
+          const int gx0 = p->minx & ~3, gy0 = p->miny & ~1;
+          bool any = false;
+          for (int g = 0; g < 8 && !any; ++g) {
+            const int gx = gx0 + (g & 1) * 4, gy = gy0 + (g >> 1) * 2;
+            any = ((p->cover >> (8 * g)) & 0xFF) && (gx >> kTileShift) == tx && (gy >> kTileShift) == ty;
+          }
+          if (!any) continue;
+          w.bins[size_t(ty) * tiles_x + tx].push_back({chunk, p, d});
+          continue;
+        }
+        for (const EdgeEq& e : std::span(p->edges(d->program->varyings), 3)) {
           const int64_t hi = e.c + std::max(e.a * x0, e.a * x1) + std::max(e.b * y0, e.b * y1);
           if (hi <= 0) { out = true; break; }
         }
@@ -603,7 +617,7 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
     // A tile's triangles are a sparse subsequence of the frame's (which does not fit any
     // cache), in no pattern the hardware prefetcher follows: each would be a miss to memory
     // when its turn came, so they are fetched as the run is gathered.
-    const size_t bytes = sizeof(Prim) + sizeof(float) * 3 * size_t(run_draw->program->varyings);
+    const size_t bytes = Prim::bytes(run_draw->program->varyings, e->prim->cover == 0);
     for (size_t o = 0; o < bytes; o += 64) __builtin_prefetch(reinterpret_cast<const char*>(e->prim) + o);
     run[run_n++] = e->prim;
   }

@@ -53,9 +53,10 @@ inline bool small_edges(const EdgeEq* e) {
   return small;
 }
 
-// A triangle ready for the raster phase, followed in memory by 3*varyings floats: the planes
-// of value/w (or of the value itself for flat and noperspective components), as three arrays
-// of `varyings` floats: the values at the anchor, then d/dx, then d/dy.
+// A triangle ready for the raster phase (64 bytes), followed in memory by 3 * varyings
+// floats: the planes of value/w (or of the value itself for flat and noperspective
+// components), as three arrays of `varyings` floats: the values at the anchor, then d/dx,
+// then d/dy; and then, unless `cover` says where it covers, its three edge equations.
 struct Prim {
   PrimKind kind = PrimKind::Triangle;
   bool front = true;
@@ -63,15 +64,28 @@ struct Prim {
   int minx = 0, miny = 0, maxx = -1, maxy = -1;  // inclusive pixel bbox within the render area
   // For a small triangle, its coverage worked out at setup (0 when not): the 4x2 groups of
   // the 8x8 pixels from (minx & ~3, miny & ~1), group (col, row) in byte 2 row + col, lanes
-  // in kLaneDx/kLaneDy order, already cut to the bbox. The raster phase then needs no edges.
+  // in kLaneDx/kLaneDy order, already cut to the bbox. The raster phase then needs no edges,
+  // and the Prim has none.
   uint64_t cover = 0;
-  EdgeEq e[3];
   float xr = 0, yr = 0;     // anchor of the planes, window coordinates
   float z[3] = {0, 0, 0};   // window depth plane
   float oow[3] = {0, 0, 0}; // 1/w plane
   const float* planes() const { return reinterpret_cast<const float*>(this + 1); }
   float* planes() { return reinterpret_cast<float*>(this + 1); }
+  // The edges (only when cover == 0), after the planes of `varyings` components.
+  static size_t edges_offset(int varyings) { return (sizeof(float) * 3 * size_t(varyings) + 7) & ~size_t(7); }
+  const EdgeEq* edges(int varyings) const {
+    return reinterpret_cast<const EdgeEq*>(reinterpret_cast<const char*>(this + 1) + edges_offset(varyings));
+  }
+  EdgeEq* edges(int varyings) {
+    return reinterpret_cast<EdgeEq*>(reinterpret_cast<char*>(this + 1) + edges_offset(varyings));
+  }
+  // Bytes of a triangle's Prim with its planes, and its edges unless it has a cover.
+  static size_t bytes(int varyings, bool with_edges) {
+    return sizeof(Prim) + edges_offset(varyings) + (with_edges ? 3 * sizeof(EdgeEq) : 0);
+  }
 };
+static_assert(sizeof(Prim) == 64);
 
 // What a clear command does to the pixels in its rectangle.
 struct ClearPrim {

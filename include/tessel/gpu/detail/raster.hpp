@@ -110,14 +110,15 @@ template <class S> class Program final : public ProgramBase {
       }
       return;
     }
+    const EdgeEq* pe = p.edges(varying_count<S>());
     // Small triangles (most of a tessellated mesh): no block classification; the 4x2 groups
     // of the bbox are tested directly, in 32-bit lanes (small_edges).
-    if (small_edges(p.e)) {
+    if (small_edges(pe)) {
       const int gx0 = minx & ~3, gy0 = miny & ~1;
       Int8 base[3];
       int32_t sa[3], sb[3];
       for (int i = 0; i < 3; ++i) {
-        const EdgeEq& e = p.e[i];
+        const EdgeEq& e = pe[i];
         sa[i] = int32_t(e.a);
         sb[i] = int32_t(e.b);
         base[i] = Int8(int32_t(e.c + e.a * gx0 + e.b * gy0)) + Int8(sa[i]) * lane_dx + Int8(sb[i]) * lane_dy;
@@ -139,7 +140,7 @@ template <class S> class Program final : public ProgramBase {
     // inside it, so its values are stepped in 32-bit lanes; larger steps (triangles
     // thousands of pixels across) take the 64-bit per-lane path.
     bool narrow = true;
-    for (const EdgeEq& e : p.e)
+    for (const EdgeEq& e : {pe[0], pe[1], pe[2]})
       narrow = narrow && e.a > -(int64_t(1) << 26) && e.a < (int64_t(1) << 26) && e.b > -(int64_t(1) << 26) &&
                e.b < (int64_t(1) << 26);
     for (int by = miny & ~7; by <= maxy; by += 8) {
@@ -150,7 +151,7 @@ template <class S> class Program final : public ProgramBase {
         bool outside = false;
         int64_t e00[3];
         for (int i = 0; i < 3; ++i) {
-          const EdgeEq& e = p.e[i];
+          const EdgeEq& e = pe[i];
           e00[i] = e.c + e.a * bx + e.b * by;
           const int64_t lo = e00[i] + std::min<int64_t>(0, e.a * 7) + std::min<int64_t>(0, e.b * 7);
           const int64_t hi = e00[i] + std::max<int64_t>(0, e.a * 7) + std::max<int64_t>(0, e.b * 7);
@@ -164,8 +165,8 @@ template <class S> class Program final : public ProgramBase {
         if (narrow) {
           for (int i = 0; i < 3; ++i) {
             if (!(crossing & (1u << i))) continue;
-            step_a[ne] = int32_t(p.e[i].a);
-            step_b[ne] = int32_t(p.e[i].b);
+            step_a[ne] = int32_t(pe[i].a);
+            step_b[ne] = int32_t(pe[i].b);
             base[ne] = Int8(int32_t(e00[i])) + Int8(step_a[ne]) * lane_dx + Int8(step_b[ne]) * lane_dy;
             ++ne;
           }
@@ -183,7 +184,7 @@ template <class S> class Program final : public ProgramBase {
               for (int l = 0; l < kLanes; ++l) {
                 const int px = gx + kLaneDx[l], py = gy + kLaneDy[l];
                 for (int i = 0; i < 3; ++i)
-                  if ((crossing & (1u << i)) && !(p.e[i].c + p.e[i].a * px + p.e[i].b * py > 0)) mask &= ~(1u << l);
+                  if ((crossing & (1u << i)) && !(pe[i].c + pe[i].a * px + pe[i].b * py > 0)) mask &= ~(1u << l);
               }
             }
           }
