@@ -73,6 +73,7 @@ struct Worker {
   // code is 0, the window position (computed once, shared by every primitive using it).
   std::vector<unsigned> codes;
   std::vector<WinVert> win;
+  std::vector<float> soa;  // clip positions as blocks of 8 x, 8 y, 8 z, 8 w
   // Tile-local copies of the colour and depth attachments during the raster phase.
   std::vector<std::byte> tile_color, tile_depth;
   ClipVert clip_a[24], clip_b[24];
@@ -352,19 +353,15 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
   const size_t nv = w.ids.size();
   w.pos.resize(nv);
   w.vars.resize(nv * size_t(K) + 1);
-  d.program->shade_vertices(d, w.ids.data(), int(nv), ch.instance, w.pos.data(), w.vars.data());
+  w.soa.resize((nv + 7) / 8 * 32);
+  d.program->shade_vertices(d, w.ids.data(), int(nv), ch.instance, w.pos.data(), w.vars.data(), w.soa.data());
   w.counters.vertices_shaded += nv;
 
   // 2. Per vertex: clip code, and the window position of the vertices inside every plane.
   const ClipPlanes planes = make_clip_planes(d);
   w.codes.resize(nv);
   w.win.resize(nv);
-  for (size_t i = 0; i < nv; ++i) {
-    const glm::vec4& p = w.pos[i];
-    const unsigned code = finite(p) ? clip_code(planes, p) : kNotFinite;
-    w.codes[i] = code;
-    if (code == 0) to_window(d, p, &w.vars[i * size_t(K)], w.win[i]);
-  }
+  finish_vertices(d, planes, w.soa.data(), w.vars.data(), K, nv, w.codes.data(), w.win.data());
 
   // 3. Assembly, clipping, setup, binning.
   const PolygonMode mode_front = d.state.polygon_mode;

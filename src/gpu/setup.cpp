@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "stages.hpp"
 #include "tessel/gpu/simd.hpp"
@@ -40,6 +41,58 @@ float polygon_offset(const DrawRecord& d, const WinVert& v0, const WinVert& v1, 
     r = std::ldexp(1.0, e - 1 - 23);
   }
   return float(m * d.state.offset_factor + r * d.state.offset_units);
+}
+
+void finish_vertices(const DrawRecord& d, const ClipPlanes& planes, const float* soa, const float* vars, int K,
+                     size_t n, unsigned* codes, WinVert* win) {
+  const Float8 inf(std::numeric_limits<float>::infinity());
+  const Float8 band(2.0f * kGuardBand), limit(2.0f * kGuardBand * float(kSubpixelOne));
+  for (size_t base = 0; base < n; base += 8) {
+    const float* b = soa + base * 4;
+    const Float8 x = Float8::load(b), y = Float8::load(b + 8), z = Float8::load(b + 16), w = Float8::load(b + 24);
+    // clip_code: distances in the same order of operations, NaN outside.
+    Int8 code(0);
+    for (int i = 0; i < planes.count; ++i) {
+      const glm::vec4& pn = planes.n[i];
+      const Float8 dist = Float8(pn.x) * x + Float8(pn.y) * y + Float8(pn.z) * z + Float8(pn.w) * w + Float8(planes.d[i]);
+      code = code | select(dist >= Float8(0.0f), Int8(0), Int8(int32_t(1u << i)));
+    }
+    const Mask8 finite = (abs(x) < inf) & (abs(y) < inf) & (abs(z) < inf) & (abs(w) < inf);
+    code = select(finite, code, Int8(int32_t(kNotFinite)));
+    // to_window and snap_vertex.
+    const Float8 oow = Float8(1.0f) / w;
+    const Float8 wx = x * oow * Float8(d.vp_scale[0]) + Float8(d.vp_offset[0]);
+    const Float8 wy = y * oow * Float8(d.vp_scale[1]) + Float8(d.vp_offset[1]);
+    const Float8 wz = z * oow * Float8(d.vp_scale[2]) + Float8(d.vp_offset[2]);
+    const Mask8 usable = (abs(wx) < inf) & (abs(wy) < inf) & (abs(wz) < inf) & (abs(oow) < inf) &
+                         (oow > Float8(0.0f)) & (abs(wx) <= band) & (abs(wy) <= band);
+    auto snap8 = [&](Float8 v) {
+      Float8 r = (v - Float8(0.5f)) * Float8(float(kSubpixelOne));
+#if defined(__AVX__)
+      r = Float8(__builtin_ia32_roundps256(r.v, 0x8));  // to nearest even, as nearbyint
+#else
+      for (int l = 0; l < 8; ++l) r[l] = std::nearbyint(r[l]);
+#endif
+      return select(usable, to_int(min(max(r, -limit), limit)), Int8(0));
+    };
+    const Int8 sx = snap8(wx), sy = snap8(wy);
+    const int m = int(std::min<size_t>(8, n - base));
+    for (int l = 0; l < m; ++l) {
+      const size_t i = base + size_t(l);
+      codes[i] = unsigned(code[l]);
+      if (code[l] == 0) {
+        WinVert& v = win[i];
+        v.x = wx[l];
+        v.y = wy[l];
+        v.z = wz[l];
+        v.oow = oow[l];
+        v.var = vars + i * size_t(K);
+        v.sx = sx[l];
+        v.sy = sy[l];
+        v.usable = usable[l];
+      }
+    }
+  }
 }
 
 // Coverage of a small triangle (small_edges) whose bbox lies in the 8x8 pixels from

@@ -128,6 +128,13 @@ inline WinVert to_window(const DrawRecord& d, const glm::vec4& pos, const float*
   return v;
 }
 
+// Clip codes (clip_code, kNotFinite for NaN/Inf) of n shaded vertices, and the window
+// position (to_window) of each one inside every plane; eight at a time. `soa` holds the clip
+// positions as blocks of eight x, eight y, eight z and eight w; vars the varyings, K per
+// vertex. The same bits as the one-vertex functions.
+void finish_vertices(const DrawRecord& d, const ClipPlanes& planes, const float* soa, const float* vars, int K,
+                     size_t n, unsigned* codes, WinVert* win);
+
 // How setup decides the facing of a triangle.
 enum class Facing : int8_t { FromArea = -1, Back = 0, Front = 1 };
 

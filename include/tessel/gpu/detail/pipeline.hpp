@@ -178,9 +178,10 @@ class ProgramBase {
   bool discards = false, writes_depth = false;
   int outputs = 1;
   // Fetches and shades n vertices (element ids, base vertex added) of one instance; writes
-  // clip positions and n * varyings floats.
+  // clip positions and n * varyings floats, and, unless soa is null, the clip positions again
+  // as blocks of eight x, eight y, eight z and eight w (n rounded up to a multiple of 8).
   virtual void shade_vertices(const DrawRecord& d, const uint32_t* ids, int n, uint32_t instance,
-                              glm::vec4* pos, float* vars) const = 0;
+                              glm::vec4* pos, float* vars, float* soa = nullptr) const = 0;
   // Rasterizes and shades n consecutive triangles of one draw, in order, inside the tile
   // rectangle [x0,x1) x [y0,y1), writing through `t` (the draw's attachments, or the raster
   // phase's tile-local copies of them).

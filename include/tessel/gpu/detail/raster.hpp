@@ -26,7 +26,7 @@ template <class S> class Program final : public ProgramBase {
   }
 
   void shade_vertices(const DrawRecord& d, const uint32_t* ids, int n, uint32_t instance,
-                      glm::vec4* pos, float* vars) const override {
+                      glm::vec4* pos, float* vars, float* soa) const override {
     constexpr int K = varying_count<S>();
     for (int base = 0; base < n; base += kLanes) {
       const int m = std::min(kLanes, n - base);
@@ -35,6 +35,13 @@ template <class S> class Program final : public ProgramBase {
       Varyings<Float8> out{};
       Vec4<Float8> p = shader_.vertex(uniforms_, in, out);
       for (int l = 0; l < m; ++l) pos[base + l] = glm::vec4(p.x[l], p.y[l], p.z[l], p.w[l]);
+      if (soa) {
+        float* b = soa + size_t(base) * 4;
+        p.x.store(b);
+        p.y.store(b + 8);
+        p.z.store(b + 16);
+        p.w.store(b + 24);
+      }
       if constexpr (K > 0) {
         Float8 lanes[K];
         std::memcpy(lanes, &out, sizeof lanes);
