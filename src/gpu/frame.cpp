@@ -26,6 +26,7 @@
 #include <utility>
 #include <thread>
 
+#include "setup_triangle.hpp"
 #include "stages.hpp"
 #include "tessel/gpu/context.hpp"
 
@@ -420,8 +421,8 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     if ((c0 | c1 | c2) == 0 && fill) {
       // The common case: nothing to clip, one triangle.
       bool culled = false;
-      Prim* pr = setup_triangle(d, w.win[s[0]], w.win[s[1]], w.win[s[2]], flat_src, prim_id, Facing::FromArea,
-                                d.state.offset_fill, w.arena, w.counters, &culled);
+      Prim* pr = setup_triangle_inline(d, w.win[s[0]], w.win[s[1]], w.win[s[2]], flat_src, prim_id,
+                                       Facing::FromArea, d.state.offset_fill, w.arena, w.counters, &culled);
       if (culled) ++w.counters.primitives_culled;
       if (pr) bin(w, chunk_index, &d, pr);
       continue;

@@ -16,8 +16,7 @@
 #include <cstring>
 #include <limits>
 
-#include "stages.hpp"
-#include "tessel/gpu/simd.hpp"
+#include "setup_triangle.hpp"
 
 namespace tessel::gpu::detail {
 
@@ -95,162 +94,10 @@ void finish_vertices(const DrawRecord& d, const ClipPlanes& planes, const float*
   }
 }
 
-// Coverage of a small triangle (small_edges) whose bbox lies in the 8x8 pixels from
-// (minx & ~3, miny & ~1), in Prim::cover's layout.
-static uint64_t small_coverage(const EdgeEq* e, int minx, int miny, int maxx, int maxy) {
-  const int gx0 = minx & ~3, gy0 = miny & ~1;
-  const Int8 lane_dx(vx::i32x8{0, 1, 0, 1, 2, 3, 2, 3}), lane_dy(vx::i32x8{0, 0, 1, 1, 0, 0, 1, 1});
-  Int8 base[3];
-  int32_t sa[3], sb[3];
-  for (int i = 0; i < 3; ++i) {
-    sa[i] = int32_t(e[i].a);
-    sb[i] = int32_t(e[i].b);
-    base[i] = Int8(int32_t(e[i].c + e[i].a * gx0 + e[i].b * gy0)) + Int8(sa[i]) * lane_dx + Int8(sb[i]) * lane_dy;
-  }
-  uint64_t cover = 0;
-  for (int gy = gy0; gy <= maxy; gy += 2) {
-    for (int gx = gx0; gx <= maxx; gx += 4) {
-      const int ox = gx - gx0, oy = gy - gy0;
-      const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
-      const Mask8 in = ((base[0] + Int8(sa[0] * ox + sb[0] * oy)) > Int8(0)) &
-                       ((base[1] + Int8(sa[1] * ox + sb[1] * oy)) > Int8(0)) &
-                       ((base[2] + Int8(sa[2] * ox + sb[2] * oy)) > Int8(0)) & (px >= Int8(minx)) &
-                       (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy));
-      cover |= uint64_t(in.bits()) << (8 * ((oy >> 1) * 2 + (ox >> 2)));
-    }
-  }
-  return cover;
-}
-
-// Plane (value at v0, d/dx, d/dy) through three values at the vertices.
-struct PlaneSolver {
-  double dx1, dy1, dx2, dy2, inv_det;
-  void solve(float a0, float a1, float a2, float* out) const {
-    const double d1 = double(a1) - a0, d2 = double(a2) - a0;
-    out[0] = a0;
-    out[1] = float((d1 * dy2 - d2 * dy1) * inv_det);
-    out[2] = float((d2 * dx1 - d1 * dx2) * inv_det);
-  }
-};
-
 Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2,
                      const float* flat_src, uint32_t prim_id, Facing facing, bool apply_offset,
                      Arena& arena, Counters& c, bool* culled) {
-  if (culled) *culled = false;
-  // Clipping keeps positions finite and inside the guard band; a vertex that still is not
-  // (w rounded to 0, overflow in the interpolation) drops the triangle.
-  if (!v0.usable || !v1.usable || !v2.usable) return nullptr;
-  int64_t X[3] = {v0.sx, v1.sx, v2.sx};
-  int64_t Y[3] = {v0.sy, v1.sy, v2.sy};
-  int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
-  if (area == 0) return nullptr;
-
-  bool front;
-  if (facing == Facing::FromArea) {
-    const bool ccw = area > 0;
-    front = (d.state.front_face == FrontFace::CCW) == ccw;
-    const CullMode cm = d.state.cull;
-    if (cm == CullMode::FrontAndBack || (cm == CullMode::Front && front) ||
-        (cm == CullMode::Back && !front)) {
-      if (culled) *culled = true;
-      return nullptr;
-    }
-  } else {
-    front = facing == Facing::Front;
-  }
-  // Edges are set up on the counter-clockwise order.
-  if (area < 0) {
-    std::swap(X[1], X[2]);
-    std::swap(Y[1], Y[2]);
-  }
-
-  int64_t minX = std::min({X[0], X[1], X[2]}), maxX = std::max({X[0], X[1], X[2]});
-  int64_t minY = std::min({Y[0], Y[1], Y[2]}), maxY = std::max({Y[0], Y[1], Y[2]});
-  // Pixels whose lattice point lies in [min, max): the last row/column can only be touched by
-  // an edge that does not own it.
-  int minx = int(minX >> kSubpixelBits), maxx = int((maxX - 1) >> kSubpixelBits);
-  int miny = int(minY >> kSubpixelBits), maxy = int((maxY - 1) >> kSubpixelBits);
-  if (minX & (kSubpixelOne - 1)) ++minx;  // first lattice point at or after min
-  if (minY & (kSubpixelOne - 1)) ++miny;
-  minx = std::max(minx, d.area_x0);
-  miny = std::max(miny, d.area_y0);
-  maxx = std::min(maxx, d.area_x1 - 1);
-  maxy = std::min(maxy, d.area_y1 - 1);
-  if (minx > maxx || miny > maxy) return nullptr;
-
-  EdgeEq e[3];
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    const int64_t dx = X[j] - X[i], dy = Y[j] - Y[i];
-    // E(P) = dx (Py - Yi) - dy (Px - Xi), positive to the left of i->j (the interior).
-    const bool owns_ties = dy < 0 || (dy == 0 && dx > 0);
-    e[i].a = -dy * kSubpixelOne;
-    e[i].b = dx * kSubpixelOne;
-    e[i].c = dy * X[i] - dx * Y[i] + (owns_ties ? 1 : 0);
-  }
-  // Most triangles of a tessellated mesh cover a few pixels, and a quarter of those none at
-  // all: their coverage is found here, so the empty ones cost no planes, no memory and no
-  // raster work, and the raster phase reads the others' groups from a mask.
-  uint64_t cover = 0;
-  const int gx0 = minx & ~3, gy0 = miny & ~1;
-  if (maxx < gx0 + 8 && maxy < gy0 + 8 && small_edges(e)) {
-    cover = small_coverage(e, minx, miny, maxx, maxy);
-    if (!cover) return nullptr;
-  }
-
-  const int K = d.program->varyings;
-  auto* p = static_cast<Prim*>(arena.allocate(Prim::bytes(K, cover == 0)));
-  // The frame's Prims do not fit in any cache: the lines a few Prims ahead are requested
-  // now, so that their first stores do not wait on memory.
-  for (int o = 0; o < 256; o += 64) __builtin_prefetch(reinterpret_cast<char*>(p) + 1024 + o, 1);
-  new (p) Prim;  // no zeroing: every field is set below
-  p->kind = PrimKind::Triangle;
-  p->front = front;
-  p->prim_id = prim_id;
-  p->minx = minx;
-  p->miny = miny;
-  p->maxx = maxx;
-  p->maxy = maxy;
-  p->cover = cover;
-  if (!cover) std::copy_n(e, 3, p->edges(K));
-
-  // Planes from the float window positions, anchored at v0.
-  PlaneSolver s;
-  s.dx1 = double(v1.x) - v0.x;
-  s.dy1 = double(v1.y) - v0.y;
-  s.dx2 = double(v2.x) - v0.x;
-  s.dy2 = double(v2.y) - v0.y;
-  double det = s.dx1 * s.dy2 - s.dx2 * s.dy1;
-  if (std::fabs(det) < 1e-12) det = double(area) / double(kSubpixelOne * kSubpixelOne);
-  s.inv_det = 1.0 / det;
-  p->xr = v0.x;
-  p->yr = v0.y;
-  s.solve(v0.z, v1.z, v2.z, p->z);
-  if (apply_offset) p->z[0] += polygon_offset(d, v0, v1, v2);
-  s.solve(v0.oow, v1.oow, v2.oow, p->oow);
-  // Varying planes (structure of arrays: values at the anchor, then d/dx, then d/dy).
-  // Perspective-correct components are interpolated as value/w.
-  float* pl = p->planes();
-  const uint64_t flat = d.program->flat, noper = d.program->noperspective;
-  const uint64_t linear = flat | noper;
-  for (int k = 0; k < K; ++k) {
-    const bool lin = (linear >> k) & 1;
-    const float a0 = lin ? v0.var[k] : v0.var[k] * v0.oow;
-    const float a1 = lin ? v1.var[k] : v1.var[k] * v1.oow;
-    const float a2 = lin ? v2.var[k] : v2.var[k] * v2.oow;
-    const double d1 = double(a1) - a0, d2 = double(a2) - a0;
-    pl[k] = a0;
-    pl[K + k] = float((d1 * s.dy2 - d2 * s.dy1) * s.inv_det);
-    pl[2 * K + k] = float((d2 * s.dx1 - d1 * s.dx2) * s.inv_det);
-  }
-  for (uint64_t f = flat; f; f &= f - 1) {
-    const int k = __builtin_ctzll(f);
-    if (k >= K) break;
-    pl[k] = flat_src[k];
-    pl[K + k] = pl[2 * K + k] = 0.0f;
-  }
-  ++c.triangles_setup;
-  return p;
+  return setup_triangle_inline(d, v0, v1, v2, flat_src, prim_id, facing, apply_offset, arena, c, culled);
 }
 
 int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const float* flat_src,
