@@ -296,7 +296,7 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
                                         const DrawRecord& d) {
   const int K = d.program->varyings;
   const int ps = prim_size(d.topology);
-  const uint32_t n_elements = d.indexed ? uint32_t(d.indices.size()) : d.count;
+  const uint32_t n_elements = d.count;
   const uint32_t nprims = ch.end - ch.begin;
 
   // 1. Vertex ids of the chunk's primitives, each shaded once (post-transform cache).
@@ -305,13 +305,17 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
   uint32_t* ids = w.prim_slots.data();  // element ids first, replaced by slots below
   if (d.topology == Topology::Triangles) {
     const size_t e0 = size_t(ch.begin) * 3;
-    if (d.indexed) std::memcpy(ids, d.indices.data() + e0, total * sizeof(uint32_t));
+    if (d.indexed) std::memcpy(ids, d.elements + e0, total * sizeof(uint32_t));
     else for (size_t i = 0; i < total; ++i) ids[i] = d.first + uint32_t(e0 + i);
   } else {
     uint32_t e[3];
     for (uint32_t p = 0; p < nprims; ++p) {
       prim_elements(d.topology, ch.begin + p, n_elements, e);
-      for (int k = 0; k < ps; ++k) ids[size_t(p) * ps + k] = d.indexed ? d.indices[e[k]] : d.first + e[k];
+      for (int k = 0; k < ps; ++k) {
+        uint32_t id = d.first + e[k];
+        if (d.indexed) std::memcpy(&id, d.elements + e[k], 4);  // may be a buffer's bytes
+        ids[size_t(p) * ps + k] = id;
+      }
     }
   }
   w.ids.clear();
@@ -603,7 +607,7 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
     run_n = 0;
   };
   for (; e; e = second ? std::exchange(second, nullptr) : next()) {
-    if (e->prim->kind == PrimKind::Clear) {
+    if (!e->draw) {  // a clear (reading the Prim's kind here would wait on memory)
       flush_run();
       run_clear(view, *e, false);
       continue;
@@ -615,7 +619,7 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
     // A tile's triangles are a sparse subsequence of the frame's (which does not fit any
     // cache), in no pattern the hardware prefetcher follows: each would be a miss to memory
     // when its turn came, so they are fetched as the run is gathered.
-    const size_t bytes = Prim::bytes(run_draw->program->varyings, e->prim->cover == 0);
+    const size_t bytes = Prim::bytes(run_draw->program->varyings, true);
     for (size_t o = 0; o < bytes; o += 64) __builtin_prefetch(reinterpret_cast<const char*>(e->prim) + o);
     run[run_n++] = e->prim;
   }
@@ -784,20 +788,22 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
     const std::byte* src = call.index_buffer->data() + begin;
     const uint32_t restart = isz == 1 ? 0xFFu : isz == 2 ? 0xFFFFu : 0xFFFFFFFFu;
     if (isz == 4 && !state.primitive_restart && call.base_vertex == 0) {
-      // The common case: 32-bit indices used as they are; one copy and a maximum.
-      d->indices.resize(call.count);
-      std::memcpy(d->indices.data(), src, size_t(call.count) * 4);
-      uint32_t m = 0;
-      for (const uint32_t id : d->indices) m = std::max(m, id);
+      // The common case: 32-bit indices read where they are, checked against their maximum.
+      const uint32_t m = call.index_buffer->max_u32(begin, call.count);
       if (m > uint32_t(INT32_MAX)) {
-        const size_t at = size_t(std::find_if(d->indices.begin(), d->indices.end(),
-                                              [](uint32_t id) { return id > uint32_t(INT32_MAX); }) - d->indices.begin());
-        throw Error("draw: index " + std::to_string(d->indices[at]) + " at position " + std::to_string(at) +
-                    " plus base vertex 0 is out of range");
+        for (uint32_t at = 0; at < call.count; ++at) {
+          uint32_t id;
+          std::memcpy(&id, src + size_t(at) * 4, 4);
+          if (id > uint32_t(INT32_MAX))
+            throw Error("draw: index " + std::to_string(id) + " at position " + std::to_string(at) +
+                        " plus base vertex 0 is out of range");
+        }
       }
       max_id = m;
+      d->elements = reinterpret_cast<const uint32_t*>(src);  // read with memcpy only
+      d->count = call.count;
     }
-    std::vector<uint32_t> raw(d->indices.empty() ? call.count : 0);
+    std::vector<uint32_t> raw(d->elements ? 0 : call.count);
     for (uint32_t i = 0; i < uint32_t(raw.size()); ++i) {
       uint32_t v = 0;
       std::memcpy(&v, src + size_t(i) * isz, isz);
@@ -814,7 +820,10 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
       max_id = std::max(max_id, uint32_t(id));
     }
     d->indexed = true;
-    d->count = uint32_t(d->indices.size());
+    if (!d->elements) {
+      d->elements = d->indices.data();
+      d->count = uint32_t(d->indices.size());
+    }
   } else {
     if (uint64_t(call.first) + call.count > uint64_t(INT32_MAX)) throw Error("draw: vertex range overflows");
     d->first = call.first;

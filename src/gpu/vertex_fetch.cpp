@@ -24,7 +24,23 @@ void Buffer::update(size_t offset, const void* data, size_t bytes) {
                 std::to_string(offset + bytes) + ") is past the end of a buffer of " +
                 std::to_string(data_.size()) + " bytes");
   before_write();
+  max_cache_.clear();
   if (bytes) std::memcpy(data_.data() + offset, data, bytes);
+}
+
+uint32_t Buffer::max_u32(size_t offset, size_t count) const {
+  for (const RangeMax& r : max_cache_)
+    if (r.offset == offset && r.count == count) return r.max;
+  const std::byte* p = data_.data() + offset;
+  uint32_t m = 0;
+  for (size_t i = 0; i < count; ++i) {
+    uint32_t v;
+    std::memcpy(&v, p + 4 * i, 4);
+    m = std::max(m, v);
+  }
+  if (max_cache_.size() >= 1024) max_cache_.clear();  // bounded: ranges of many different draws
+  max_cache_.push_back({offset, count, m});
+  return m;
 }
 
 namespace detail {

@@ -57,6 +57,33 @@ TEST(Robustness, IndexOutOfRangeIsAnError) {
   EXPECT_EQ(s.lit(), 0u);  // nothing was queued
 }
 
+// Draws read 32-bit index buffers in place and remember each range's largest index: a
+// change to the buffer runs the queued draw first (with the old indices), and the next draw
+// checks the new ones.
+TEST(Robustness, IndexBufferChangedAfterADrawIsReadAsItWasAndCheckedAgain) {
+  Scene s;
+  Mesh m({tv(-1, -1, 0, 1), tv(1, -1, 0, 1), tv(-1, 1, 0, 1), tv(1, 1, 0, 1)});
+  const uint32_t lower[] = {0, 1, 2};
+  Buffer ib(lower, sizeof lower);
+  s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 3, .index_buffer = &ib});
+  const uint32_t upper[] = {1, 3, 2};
+  ib.update(0, upper, sizeof upper);  // the lower-left triangle is drawn before this
+  // The lower-left half without the 16 pixels on the diagonal (which the fill rule gives to
+  // the upper-right triangle, 136 pixels).
+  EXPECT_EQ(s.lit(), 120u);
+  const uint32_t bad[] = {1, 4, 2};
+  ib.update(0, bad, sizeof bad);
+  try {
+    s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 3, .index_buffer = &ib});
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex attribute 0"), std::string::npos) << e.what();
+  }
+  ib.update(0, upper, sizeof upper);
+  s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 3, .index_buffer = &ib});
+  EXPECT_EQ(s.lit(), 16u * 16u);
+}
+
 TEST(Robustness, MissingAttributeIsAnError) {
   Scene s;
   Mesh m({tv(-1, -1, 0, 1), tv(1, -1, 0, 1), tv(0, 1, 0, 1)});

@@ -29,6 +29,7 @@ class Buffer : public Resource {
 
   void assign(const void* data, size_t bytes) {
     before_write();
+    max_cache_.clear();
     data_.resize(bytes);
     if (bytes) std::memcpy(data_.data(), data, bytes);
   }
@@ -36,9 +37,18 @@ class Buffer : public Resource {
   void update(size_t offset, const void* data, size_t bytes);
   size_t size() const { return data_.size(); }
   const std::byte* data() const { return data_.data(); }
+  // The largest of `count` 32-bit values from byte `offset` (4-aligned, in range): what a
+  // draw must check its indices against. Remembered per range until the buffer changes, as
+  // GL drivers do for index buffers drawn again every frame (Mesa's vbo minmax cache).
+  uint32_t max_u32(size_t offset, size_t count) const;
 
  private:
   std::vector<std::byte> data_;
+  struct RangeMax {
+    size_t offset, count;
+    uint32_t max;
+  };
+  mutable std::vector<RangeMax> max_cache_;
 };
 
 // The type of one attribute component in memory.

@@ -145,10 +145,13 @@ struct DrawRecord {
   RenderState state;
   VertexLayout layout;
   Topology topology = Topology::Triangles;  // after primitive-restart expansion
-  // The element stream: either `count` consecutive vertices from `first`, or the indices
-  // read from an index buffer / expanded by primitive restart, base vertex added.
+  // The element stream: either `count` consecutive vertices from `first`, or `count`
+  // indices at `elements`: the index buffer's own memory when its 32-bit indices can be used
+  // as they are (a buffer flushes queued work before it changes or goes, so they stay valid),
+  // otherwise `indices`, converted or expanded by primitive restart, base vertex added.
   bool indexed = false;
   uint32_t first = 0, count = 0;
+  const uint32_t* elements = nullptr;
   std::vector<uint32_t> indices;
   uint32_t instance_count = 1, base_instance = 0;
   uint32_t prim_count = 0;  // per instance
