@@ -619,8 +619,6 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
     // A tile's triangles are a sparse subsequence of the frame's (which does not fit any
     // cache), in no pattern the hardware prefetcher follows: each would be a miss to memory
     // when its turn came, so they are fetched as the run is gathered.
-    const size_t bytes = Prim::bytes(run_draw->program->varyings, true);
-    for (size_t o = 0; o < bytes; o += 64) __builtin_prefetch(reinterpret_cast<const char*>(e->prim) + o);
     run[run_n++] = e->prim;
   }
   flush_run();

@@ -74,7 +74,23 @@ template <class S> class Program final : public ProgramBase {
         pending_mask = 0;
       }
     };
-    for (int i = 0; i < n; ++i) raster_one(*prims[i], x0, y0, x1, y1, emit);
+    // A tile's triangles are a sparse walk through the frame's Prims (which fit no cache),
+    // in no pattern the hardware prefetcher follows: each would wait on memory when its turn
+    // came, so the one kAhead places on is requested before each (four lines: a Prim with
+    // six varyings and edges is 208 bytes).
+    constexpr int kAhead = 8;
+    auto prefetch = [](const Prim* p) {
+      const char* q = reinterpret_cast<const char*>(p);
+      __builtin_prefetch(q);
+      __builtin_prefetch(q + 64);
+      __builtin_prefetch(q + 128);
+      __builtin_prefetch(q + 192);
+    };
+    for (int i = 0; i < n && i < kAhead; ++i) prefetch(prims[i]);
+    for (int i = 0; i < n; ++i) {
+      if (i + kAhead < n) prefetch(prims[i + kAhead]);
+      raster_one(*prims[i], x0, y0, x1, y1, emit);
+    }
     if (pending_mask) shade<Float8>(d, t, *pending_prim, *pending_prim, pending, pending, pending_mask, c);
     counters.fragments_shaded += c.fragments_shaded;
     counters.fragments_written += c.fragments_written;
