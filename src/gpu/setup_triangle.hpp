@@ -152,7 +152,27 @@ __attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawReco
   float* pl = p->planes();
   const uint64_t flat = d.program->flat, noper = d.program->noperspective;
   const uint64_t linear = flat | noper;
-  for (int k = 0; k < K; ++k) {
+  int k = 0;
+  // Four components at a time where all four are perspective-correct: the same operations
+  // as below, in float and double vectors loaded straight from the vertices' varyings.
+  using f4 = float __attribute__((vector_size(16)));
+  using d4 = double __attribute__((vector_size(32)));
+  auto load4 = [](const float* q) {
+    f4 r;
+    std::memcpy(&r, q, sizeof r);
+    return r;
+  };
+  auto store4 = [](float* q, f4 r) { std::memcpy(q, &r, sizeof r); };
+  const d4 dx1 = d4{} + s.dx1, dy1 = d4{} + s.dy1, dx2 = d4{} + s.dx2, dy2 = d4{} + s.dy2, inv = d4{} + s.inv_det;
+  for (; k + 4 <= K && !((linear >> k) & 0xF); k += 4) {
+    const f4 a0 = load4(v0.var + k) * v0.oow, a1 = load4(v1.var + k) * v1.oow, a2 = load4(v2.var + k) * v2.oow;
+    const d4 b0 = __builtin_convertvector(a0, d4);
+    const d4 d1 = __builtin_convertvector(a1, d4) - b0, d2 = __builtin_convertvector(a2, d4) - b0;
+    store4(pl + k, a0);
+    store4(pl + K + k, __builtin_convertvector((d1 * dy2 - d2 * dy1) * inv, f4));
+    store4(pl + 2 * K + k, __builtin_convertvector((d2 * dx1 - d1 * dx2) * inv, f4));
+  }
+  for (; k < K; ++k) {
     const bool lin = (linear >> k) & 1;
     const float a0 = lin ? v0.var[k] : v0.var[k] * v0.oow;
     const float a1 = lin ? v1.var[k] : v1.var[k] * v1.oow;
