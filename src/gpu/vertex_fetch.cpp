@@ -178,7 +178,7 @@ void fetch_attributes(const VertexLayout& layout, uint32_t id, uint32_t instance
 }
 
 void fetch_attributes8(const VertexLayout& layout, const uint32_t* ids, int n, uint32_t instance,
-                       VertexIn<Float8>& in) {
+                       VertexIn<Float8>& in, bool per_vertex_only) {
   uint32_t lane[kLanes];
   for (int l = 0; l < kLanes; ++l) {
     lane[l] = ids[std::min(l, n - 1)];
@@ -188,6 +188,7 @@ void fetch_attributes8(const VertexLayout& layout, const uint32_t* ids, int n, u
   for (int i = 0; i < kMaxVertexAttribs; ++i) {
     const VertexAttrib& a = layout.attribs[i];
     Vec4<Float8>& out = in.attr[size_t(i)];
+    if (per_vertex_only && (!a.enabled || layout.bindings[a.binding].divisor)) continue;
     if (!a.enabled) {
       broadcast_store(layout.current[size_t(i)].data(), out);
       continue;

@@ -199,9 +199,11 @@ class ProgramBase {
 void fetch_attributes(const VertexLayout& layout, uint32_t id, uint32_t instance, float out[][4]);
 // The same for the eight lanes of a vertex batch: vertices ids[0..n) (1 <= n <= 8; lanes n..7
 // repeat ids[n-1]) of `instance`, every location, vertex_id and instance_id; the values are
-// bit for bit those of fetch_attributes.
+// bit for bit those of fetch_attributes. With per_vertex_only, the locations that are the
+// same for every vertex of the instance (not enabled, or with a divisor) are left as a
+// previous call of the same instance wrote them.
 void fetch_attributes8(const VertexLayout& layout, const uint32_t* ids, int n, uint32_t instance,
-                       VertexIn<Float8>& in);
+                       VertexIn<Float8>& in, bool per_vertex_only = false);
 // Throws Error when a draw would read past a buffer (names the attribute and the numbers).
 void validate_vertex_range(const VertexLayout& layout, uint32_t max_id, uint32_t instance_end,
                            uint32_t required_attribs);

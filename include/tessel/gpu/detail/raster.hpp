@@ -28,10 +28,10 @@ template <class S> class Program final : public ProgramBase {
   void shade_vertices(const DrawRecord& d, const uint32_t* ids, int n, uint32_t instance,
                       glm::vec4* pos, float* vars, float* soa) const override {
     constexpr int K = varying_count<S>();
+    VertexIn<Float8> in;  // the constant locations are written by the first batch only
     for (int base = 0; base < n; base += kLanes) {
       const int m = std::min(kLanes, n - base);
-      VertexIn<Float8> in;
-      fetch_attributes8(d.layout, ids + base, m, instance, in);
+      fetch_attributes8(d.layout, ids + base, m, instance, in, base > 0);
       Varyings<Float8> out{};
       Vec4<Float8> p = shader_.vertex(uniforms_, in, out);
       for (int l = 0; l < m; ++l) pos[base + l] = glm::vec4(p.x[l], p.y[l], p.z[l], p.w[l]);
