@@ -373,10 +373,20 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
   const PolygonMode mode_back = d.state.polygon_mode_per_face ? d.state.polygon_mode_back : mode_front;
   const bool fill = mode_front == PolygonMode::Fill && mode_back == PolygonMode::Fill;
   Prim* out[2];
+  const bool filled_triangles = ps == 3 && fill;
   for (uint32_t p = 0; p < nprims; ++p) {
     const uint32_t prim_id = ch.begin + p;
     const uint32_t* s = &w.prim_slots[size_t(p) * ps];
     ++w.counters.primitives_in;
+    if (filled_triangles && (w.codes[s[0]] | w.codes[s[1]] | w.codes[s[2]]) == 0) {
+      // The common case: a filled triangle inside every plane, set up here without a call.
+      bool culled = false;
+      Prim* pr = setup_triangle_inline(d, w.win[s[0]], w.win[s[1]], w.win[s[2]], &w.vars[size_t(s[2]) * K], prim_id,
+                                       Facing::FromArea, d.state.offset_fill, w.arena, w.counters, &culled);
+      if (culled) ++w.counters.primitives_culled;
+      if (pr) bin(w, chunk_index, &d, pr);
+      continue;
+    }
     unsigned any_code = 0;
     for (int k = 0; k < ps; ++k) any_code |= w.codes[s[k]];
     if (any_code & kNotFinite) continue;  // NaN or Inf position: the primitive is dropped
@@ -422,15 +432,6 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     const float* flat_src = var_of(s[2]);
     const unsigned c0 = w.codes[s[0]], c1 = w.codes[s[1]], c2 = w.codes[s[2]];
     if (c0 & c1 & c2) continue;
-    if ((c0 | c1 | c2) == 0 && fill) {
-      // The common case: nothing to clip, one triangle.
-      bool culled = false;
-      Prim* pr = setup_triangle_inline(d, w.win[s[0]], w.win[s[1]], w.win[s[2]], flat_src, prim_id,
-                                       Facing::FromArea, d.state.offset_fill, w.arena, w.counters, &culled);
-      if (culled) ++w.counters.primitives_culled;
-      if (pr) bin(w, chunk_index, &d, pr);
-      continue;
-    }
     WinVert wv[24];
     int nw;
     if ((c0 | c1 | c2) == 0) {
