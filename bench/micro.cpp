@@ -196,23 +196,32 @@ void BM_VertexShading(benchmark::State& state) {
 }
 BENCHMARK(BM_VertexShading);
 
-// Clip codes: each clip-space position against the near, far, w > 0 and guard-band planes
-// (about a tenth of the positions are outside near or far).
+// Clip codes and window positions, as the geometry phase computes them (finish_vertices,
+// eight vertices at a time): each clip-space position against the near, far, w > 0 and
+// guard-band planes (about a tenth are outside near or far), then divided, mapped to the
+// viewport and snapped.
 void BM_ClipCodes(benchmark::State& state) {
   const DrawRecord d = record_for<ConstShader>();
   const ClipPlanes planes = make_clip_planes(d);
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f), uw(0.5f, 2.0f);
   const int n = 65536;
-  std::vector<glm::vec4> pos(static_cast<size_t>(n));
-  for (auto& p : pos) {
+  std::vector<float> soa(size_t(n) * 4);  // blocks of 8 x, 8 y, 8 z, 8 w
+  for (int i = 0; i < n; ++i) {
     const float w = uw(rng);
-    p = {1.5f * u(rng) * w, 1.5f * u(rng) * w, 1.1f * u(rng) * w, w};
+    float* b = &soa[size_t(i / 8) * 32 + size_t(i % 8)];
+    b[0] = 1.5f * u(rng) * w;
+    b[8] = 1.5f * u(rng) * w;
+    b[16] = 1.1f * u(rng) * w;
+    b[24] = w;
   }
+  std::vector<unsigned> codes(static_cast<size_t>(n));
+  std::vector<WinVert> win(static_cast<size_t>(n));
+  const float vars[1] = {0.0f};
   for (auto _ : state) {
-    unsigned any = 0;
-    for (const glm::vec4& p : pos) any += clip_code(planes, p);
-    benchmark::DoNotOptimize(any);
+    finish_vertices(d, planes, soa.data(), vars, 0, size_t(n), codes.data(), win.data());
+    benchmark::DoNotOptimize(codes.data());
+    benchmark::DoNotOptimize(win.data());
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * n);
 }

@@ -112,9 +112,6 @@ glm::vec4 blend(const BlendTarget& b, glm::vec4 s, glm::vec4 d, glm::vec4 k, boo
   return {rgb, a};
 }
 
-// Sets the texels [x0, x1) x [y0, y1) of an image with `bytes`-byte texels (a divisor of 64)
-// to (old & keep) | set per byte, keep and set being one texel's pattern (set has no bits in
-// keep). keep all zero is a plain fill and never reads; keep all ones changes nothing.
 // Non-temporal stores (RASTER_NOTES: the target's lines are written whole, and reading them
 // first only to overwrite them doubles the memory traffic of a frame's last writes).
 bool streamable(const void* p, size_t stride, size_t bytes) {
@@ -125,6 +122,9 @@ void stream_row(std::byte* dst, const std::byte* src, size_t bytes) {
     _mm_stream_si128(reinterpret_cast<__m128i*>(dst + off), _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + off)));
 }
 
+// Sets the texels [x0, x1) x [y0, y1) of an image with `bytes`-byte texels (a divisor of 64)
+// to (old & keep) | set per byte, keep and set being one texel's pattern (set has no bits in
+// keep). keep all zero is a plain fill and never reads; keep all ones changes nothing.
 void fill_rect(std::byte* data, size_t row_bytes, size_t bytes, const uint8_t* keep, const uint8_t* set,
                int x0, int y0, int x1, int y1, bool stream) {
   bool reads = false, writes = false;

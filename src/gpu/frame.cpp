@@ -142,10 +142,6 @@ std::vector<uint32_t> expand_restart(Topology& t, const std::vector<uint32_t>& i
   return out;
 }
 
-bool finite(const glm::vec4& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
-}
-
 }  // namespace
 
 // --- worker pool ------------------------------------------------------------------------------
@@ -262,18 +258,16 @@ void Context::Frame::bin(Worker& w, uint32_t chunk, const DrawRecord* d, const P
           // Covered groups are 4x2 aligned and tiles are multiples of them: a tile is touched
           // when one of its groups is in the cover.
           const int gx0 = p->minx & ~3, gy0 = p->miny & ~1;
-          bool any = false;
-          for (int g = 0; g < 8 && !any; ++g) {
+          out = true;
+          for (int g = 0; g < 8 && out; ++g) {
             const int gx = gx0 + (g & 1) * 4, gy = gy0 + (g >> 1) * 2;
-            any = ((p->cover >> (8 * g)) & 0xFF) && (gx >> kTileShift) == tx && (gy >> kTileShift) == ty;
+            out = !(((p->cover >> (8 * g)) & 0xFF) && (gx >> kTileShift) == tx && (gy >> kTileShift) == ty);
           }
-          if (!any) continue;
-          w.bins[size_t(ty) * tiles_x + tx].push_back({chunk, p, d});
-          continue;
-        }
-        for (const EdgeEq& e : std::span(p->edges(d->program->varyings), 3)) {
-          const int64_t hi = e.c + std::max(e.a * x0, e.a * x1) + std::max(e.b * y0, e.b * y1);
-          if (hi <= 0) { out = true; break; }
+        } else {
+          for (const EdgeEq& e : std::span(p->edges(d->program->varyings), 3)) {
+            const int64_t hi = e.c + std::max(e.a * x0, e.a * x1) + std::max(e.b * y0, e.b * y1);
+            if (hi <= 0) { out = true; break; }
+          }
         }
         if (out) continue;
       }
@@ -617,10 +611,7 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
       flush_run();
       run_draw = e->draw;
     }
-    // A tile's triangles are a sparse subsequence of the frame's (which does not fit any
-    // cache), in no pattern the hardware prefetcher follows: each would be a miss to memory
-    // when its turn came, so they are fetched as the run is gathered.
-    run[run_n++] = e->prim;
+    run[run_n++] = e->prim;  // not touched here: raster() prefetches the run's Prims ahead
   }
   flush_run();
 

@@ -15,37 +15,30 @@ namespace tessel::gpu::detail {
 // (minx & ~3, miny & ~1), in Prim::cover's layout.
 inline uint64_t small_coverage(const EdgeEq* e, int minx, int miny, int maxx, int maxy) {
   const int gx0 = minx & ~3, gy0 = miny & ~1;
+  const SmallEdgeLanes edges(e, gx0, gy0);
   const Int8 lane_dx(vx::i32x8{0, 1, 0, 1, 2, 3, 2, 3}), lane_dy(vx::i32x8{0, 0, 1, 1, 0, 0, 1, 1});
-  Int8 base[3];
-  int32_t sa[3], sb[3];
-  for (int i = 0; i < 3; ++i) {
-    sa[i] = int32_t(e[i].a);
-    sb[i] = int32_t(e[i].b);
-    base[i] = Int8(int32_t(e[i].c + e[i].a * gx0 + e[i].b * gy0)) + Int8(sa[i]) * lane_dx + Int8(sb[i]) * lane_dy;
-  }
   uint64_t cover = 0;
   for (int gy = gy0; gy <= maxy; gy += 2) {
     for (int gx = gx0; gx <= maxx; gx += 4) {
       const int ox = gx - gx0, oy = gy - gy0;
       const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
-      const Mask8 in = ((base[0] + Int8(sa[0] * ox + sb[0] * oy)) > Int8(0)) &
-                       ((base[1] + Int8(sa[1] * ox + sb[1] * oy)) > Int8(0)) &
-                       ((base[2] + Int8(sa[2] * ox + sb[2] * oy)) > Int8(0)) & (px >= Int8(minx)) &
-                       (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy));
-      cover |= uint64_t(in.bits()) << (8 * ((oy >> 1) * 2 + (ox >> 2)));
+      const unsigned in = edges.at(ox, oy) &
+                          ((px >= Int8(minx)) & (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy))).bits();
+      cover |= uint64_t(in) << (8 * ((oy >> 1) * 2 + (ox >> 2)));
     }
   }
   return cover;
 }
 
-// Plane (value at v0, d/dx, d/dy) through three values at the vertices.
+// Plane (value at v0, d/dx, d/dy) through three values at the vertices, written `stride`
+// floats apart.
 struct PlaneSolver {
   double dx1, dy1, dx2, dy2, inv_det;
-  void solve(float a0, float a1, float a2, float* out) const {
+  void solve(float a0, float a1, float a2, float* out, int stride = 1) const {
     const double d1 = double(a1) - a0, d2 = double(a2) - a0;
     out[0] = a0;
-    out[1] = float((d1 * dy2 - d2 * dy1) * inv_det);
-    out[2] = float((d2 * dx1 - d1 * dx2) * inv_det);
+    out[stride] = float((d1 * dy2 - d2 * dy1) * inv_det);
+    out[2 * stride] = float((d2 * dx1 - d1 * dx2) * inv_det);
   }
 };
 
@@ -153,8 +146,8 @@ __attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawReco
   const uint64_t flat = d.program->flat, noper = d.program->noperspective;
   const uint64_t linear = flat | noper;
   int k = 0;
-  // Four components at a time where all four are perspective-correct: the same operations
-  // as below, in float and double vectors loaded straight from the vertices' varyings.
+  // Four components at a time where all four are perspective-correct: PlaneSolver's
+  // operations in float and double vectors, loaded straight from the vertices' varyings.
   using f4 = float __attribute__((vector_size(16)));
   using d4 = double __attribute__((vector_size(32)));
   auto load4 = [](const float* q) {
@@ -174,13 +167,8 @@ __attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawReco
   }
   for (; k < K; ++k) {
     const bool lin = (linear >> k) & 1;
-    const float a0 = lin ? v0.var[k] : v0.var[k] * v0.oow;
-    const float a1 = lin ? v1.var[k] : v1.var[k] * v1.oow;
-    const float a2 = lin ? v2.var[k] : v2.var[k] * v2.oow;
-    const double d1 = double(a1) - a0, d2 = double(a2) - a0;
-    pl[k] = a0;
-    pl[K + k] = float((d1 * s.dy2 - d2 * s.dy1) * s.inv_det);
-    pl[2 * K + k] = float((d2 * s.dx1 - d1 * s.dx2) * s.inv_det);
+    s.solve(lin ? v0.var[k] : v0.var[k] * v0.oow, lin ? v1.var[k] : v1.var[k] * v1.oow,
+            lin ? v2.var[k] : v2.var[k] * v2.oow, pl + k, K);
   }
   for (uint64_t f = flat; f; f &= f - 1) {
     const int k = __builtin_ctzll(f);

@@ -53,6 +53,28 @@ inline bool small_edges(const EdgeEq* e) {
   return small;
 }
 
+// The three edges of a small triangle (small_edges) in 32-bit lanes over the 4x2 groups
+// from (gx0, gy0): at(ox, oy) is the lane mask (kLaneDx/kLaneDy order) of the group at
+// (gx0 + ox, gy0 + oy) inside all three. Setup (Prim::cover) and the raster phase's small
+// triangles use it.
+struct SmallEdgeLanes {
+  Int8 base[3];
+  int32_t sa[3], sb[3];
+  SmallEdgeLanes(const EdgeEq* e, int gx0, int gy0) {
+    const Int8 lane_dx(vx::i32x8{0, 1, 0, 1, 2, 3, 2, 3}), lane_dy(vx::i32x8{0, 0, 1, 1, 0, 0, 1, 1});
+    for (int i = 0; i < 3; ++i) {
+      sa[i] = int32_t(e[i].a);
+      sb[i] = int32_t(e[i].b);
+      base[i] = Int8(int32_t(e[i].c + e[i].a * gx0 + e[i].b * gy0)) + Int8(sa[i]) * lane_dx + Int8(sb[i]) * lane_dy;
+    }
+  }
+  unsigned at(int ox, int oy) const {
+    return (((base[0] + Int8(sa[0] * ox + sb[0] * oy)) > Int8(0)) & ((base[1] + Int8(sa[1] * ox + sb[1] * oy)) > Int8(0)) &
+            ((base[2] + Int8(sa[2] * ox + sb[2] * oy)) > Int8(0)))
+        .bits();
+  }
+};
+
 // A triangle ready for the raster phase (64 bytes), followed in memory by 3 * varyings
 // floats: the planes of value/w (or of the value itself for flat and noperspective
 // components), as three arrays of `varyings` floats: the values at the anchor, then d/dx,

@@ -138,22 +138,10 @@ template <class S> class Program final : public ProgramBase {
     // of the bbox are tested directly, in 32-bit lanes (small_edges).
     if (small_edges(pe)) {
       const int gx0 = minx & ~3, gy0 = miny & ~1;
-      Int8 base[3];
-      int32_t sa[3], sb[3];
-      for (int i = 0; i < 3; ++i) {
-        const EdgeEq& e = pe[i];
-        sa[i] = int32_t(e.a);
-        sb[i] = int32_t(e.b);
-        base[i] = Int8(int32_t(e.c + e.a * gx0 + e.b * gy0)) + Int8(sa[i]) * lane_dx + Int8(sb[i]) * lane_dy;
-      }
+      const SmallEdgeLanes edges(pe, gx0, gy0);
       for (int gy = gy0; gy <= maxy; gy += 2) {
         for (int gx = gx0; gx <= maxx; gx += 4) {
-          unsigned mask = bbox_mask(gx, gy);
-          const int ox = gx - gx0, oy = gy - gy0;
-          const Mask8 in = ((base[0] + Int8(sa[0] * ox + sb[0] * oy)) > Int8(0)) &
-                           ((base[1] + Int8(sa[1] * ox + sb[1] * oy)) > Int8(0)) &
-                           ((base[2] + Int8(sa[2] * ox + sb[2] * oy)) > Int8(0));
-          mask &= in.bits();
+          const unsigned mask = bbox_mask(gx, gy) & edges.at(gx - gx0, gy - gy0);
           if (mask) emit(p, Pos{gx, gy}, mask);
         }
       }
@@ -256,8 +244,8 @@ template <class S> class Program final : public ProgramBase {
   template <class F> __attribute__((always_inline)) static F halves(float x, float y) { return halves<F, F>(x, y); }
 
   // Shades the 4x2 group at a of triangle pa (eight lanes; pb is pa), or also the group at b
-  // of triangle pb (sixteen lanes: a in lanes 0-7, b in lanes 8-15). flatten: the shader and every GLSL function it calls are
-  // inlined here, so lane values stay in registers (lane values passed to an out-of-line
+  // of triangle pb (sixteen lanes: a in lanes 0-7, b in lanes 8-15). flatten: the shader and
+  // every GLSL function it calls are inlined here, so lane values stay in registers (lane values passed to an out-of-line
   // call go through memory); always_inline: with two call sites GCC would outline it.
   template <class F>
   __attribute__((flatten, always_inline)) inline void shade(const DrawRecord& d, const TargetView& t, const Prim& pa, const Prim& pb,
@@ -276,11 +264,13 @@ template <class S> class Program final : public ProgramBase {
       cx = join(Float8(float(a.x)) + dx8, Float8(float(b.x)) + dx8);
       cy = join(Float8(float(a.y)) + dy8, Float8(float(b.y)) + dy8);
     }
-    auto plane = [&](const float* qa, const float* qb, F fx, F fy) {
-      return fma(halves<F>(qa[2], qb[2]), fy, fma(halves<F>(qa[1], qb[1]), fx, halves<F>(qa[0], qb[0])));
+    // A plane (value, d/dx, d/dy, `stride` floats apart) of each half's triangle at the lanes.
+    auto plane = [&](const float* qa, const float* qb, int stride, F fx, F fy) {
+      return fma(halves<F>(qa[2 * stride], qb[2 * stride]), fy,
+                 fma(halves<F>(qa[stride], qb[stride]), fx, halves<F>(qa[0], qb[0])));
     };
     const F fx = cx - halves<F>(pa.xr, pb.xr), fy = cy - halves<F>(pa.yr, pb.yr);
-    F z = plane(pa.z, pb.z, fx, fy);
+    F z = plane(pa.z, pb.z, 1, fx, fy);
     z = clamp(z, F(d.depth_min), F(d.depth_max));
     const bool tests = d.state.depth_test || d.state.stencil_test;
     if (tests && d.early_depth) {
@@ -289,15 +279,14 @@ template <class S> class Program final : public ProgramBase {
       c.fragments_rejected += unsigned(__builtin_popcount(covered & ~mask));
       if (!mask) return;
     }
-    const F oow = plane(pa.oow, pb.oow, fx, fy);
+    const F oow = plane(pa.oow, pb.oow, 1, fx, fy);
     const F w = F(1.0f) / oow;
     Varyings<F> vary;
     if constexpr (K > 0) {
       F lanes[K];
       const float *pla = pa.planes(), *plb = pb.planes();
       for (int k = 0; k < K; ++k) {
-        F v = fma(halves<F>(pla[2 * K + k], plb[2 * K + k]), fy,
-                  fma(halves<F>(pla[K + k], plb[K + k]), fx, halves<F>(pla[k], plb[k])));
+        F v = plane(pla + k, plb + k, K, fx, fy);
         if (!(((flat | noperspective) >> k) & 1)) v = v * w;
         lanes[k] = v;
       }
