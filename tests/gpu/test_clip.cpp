@@ -2,6 +2,10 @@
 // plane or reaching behind the eye (w <= 0), which must render exactly as their clipped parts.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
+#include <random>
+
 #include "shaders.hpp"
 #include "stages.hpp"
 #include "tessel/gpu/image.hpp"
@@ -118,6 +122,55 @@ TEST(Clip, CodesAndTrivialCases) {
   EXPECT_NEAR(t0, 0.5f, 1e-6f);
   EXPECT_EQ(t1, 1.0f);
   EXPECT_FALSE(clip_line(planes, ~0u, {0, 0, -3, 1}, {0, 0, -2, 1}, t0, t1));
+}
+
+// The geometry phase computes clip codes and window positions eight vertices at a time
+// (finish_vertices); they must be the one-vertex functions' bit for bit, NaN, Inf, w <= 0,
+// the guard band and a user plane included, for a count that is not a multiple of eight.
+TEST(Clip, EightVerticesAtATimeMatchOneAtATime) {
+  DrawRecord d = record_for(640, 480);
+  d.vp_scale[2] = d.vp_offset[2] = 0.5f;
+  d.state.clip_plane_enable = 1;
+  d.state.clip_planes[0] = {0.3f, -0.2f, 0.1f, 0.9f};
+  const ClipPlanes planes = make_clip_planes(d);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f), uw(-0.2f, 2.0f);
+  const size_t n = 1003;
+  const int K = 2;
+  std::vector<glm::vec4> pos(n);
+  std::vector<float> soa((n + 7) / 8 * 32), vars(n * K);
+  const float specials[] = {NAN, INFINITY, -INFINITY, 0.0f, -0.0f, 1e30f, 1e-30f};
+  for (size_t i = 0; i < n; ++i) {
+    const float w = uw(rng);
+    glm::vec4 p{80.0f * u(rng) * w, 80.0f * u(rng) * w, 1.2f * u(rng) * w, w};
+    if (i % 17 == 0) p[int(i / 17) % 4] = specials[(i / 68) % 7];
+    pos[i] = p;
+    for (int c = 0; c < 4; ++c) soa[i / 8 * 32 + size_t(c) * 8 + i % 8] = p[c];
+  }
+  std::vector<unsigned> codes(n);
+  std::vector<WinVert> win(n);
+  finish_vertices(d, planes, soa.data(), vars.data(), K, n, codes.data(), win.data());
+  size_t inside = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const glm::vec4& p = pos[i];
+    const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+    const unsigned code = finite ? clip_code(planes, p) : kNotFinite;
+    ASSERT_EQ(codes[i], code) << "vertex " << i;
+    if (code) continue;
+    ++inside;
+    const WinVert v = to_window(d, p, &vars[i * K]);
+    auto bits = [](float f) { uint32_t b; std::memcpy(&b, &f, 4); return b; };
+    EXPECT_EQ(bits(win[i].x), bits(v.x)) << i;
+    EXPECT_EQ(bits(win[i].y), bits(v.y)) << i;
+    EXPECT_EQ(bits(win[i].z), bits(v.z)) << i;
+    EXPECT_EQ(bits(win[i].oow), bits(v.oow)) << i;
+    EXPECT_EQ(win[i].sx, v.sx) << i;
+    EXPECT_EQ(win[i].sy, v.sy) << i;
+    EXPECT_EQ(win[i].usable, v.usable) << i;
+    EXPECT_EQ(win[i].var, v.var) << i;
+  }
+  EXPECT_GT(inside, n / 3);
+  EXPECT_LT(inside, n);
 }
 
 TEST(Clip, UserPlanes) {
