@@ -10,6 +10,8 @@
 
 #if defined(__AVX2__)
 #include <immintrin.h>
+#elif defined(__SSE2__)
+#include <emmintrin.h>
 #endif
 
 #include "stages.hpp"
@@ -117,9 +119,20 @@ glm::vec4 blend(const BlendTarget& b, glm::vec4 s, glm::vec4 d, glm::vec4 k, boo
 bool streamable(const void* p, size_t stride, size_t bytes) {
   return ((reinterpret_cast<uintptr_t>(p) | stride | bytes) & 15) == 0;
 }
+// Without SSE2 (a portable build off x86) they are plain stores.
 void stream_row(std::byte* dst, const std::byte* src, size_t bytes) {
+#if defined(__SSE2__)
   for (size_t off = 0; off < bytes; off += 16)
     _mm_stream_si128(reinterpret_cast<__m128i*>(dst + off), _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + off)));
+#else
+  std::memcpy(dst, src, bytes);
+#endif
+}
+// Orders the streamed stores before what follows (the next phase may read them).
+void stream_fence() {
+#if defined(__SSE2__)
+  _mm_sfence();
+#endif
 }
 
 // Sets the texels [x0, x1) x [y0, y1) of an image with `bytes`-byte texels (a divisor of 64)
@@ -149,7 +162,7 @@ void fill_rect(std::byte* data, size_t row_bytes, size_t bytes, const uint8_t* k
       for (size_t off = 0; off < n; off += 64)
         stream_row(data + size_t(y) * row_bytes + size_t(x0) * bytes + off, reinterpret_cast<const std::byte*>(sb),
                    std::min<size_t>(64, n - off));
-    _mm_sfence();
+    stream_fence();
     return;
   }
   for (int y = y0; y < y1; ++y) {
@@ -265,7 +278,7 @@ void copy_rows(std::byte* dst, size_t dst_stride, const std::byte* src, size_t s
     return;
   }
   for (int y = 0; y < rows; ++y) stream_row(dst + size_t(y) * dst_stride, src + size_t(y) * src_stride, row_bytes);
-  _mm_sfence();
+  stream_fence();
 }
 
 void clear_rect(const TargetView& t, const ClearPrim& c, int x0, int y0, int x1, int y1, bool stream) {
