@@ -37,6 +37,8 @@ template <bool Textured, bool Instanced> struct ScenePhong {
   };
   template <class F> using Varyings = PhongVaryings<F, Textured, Instanced>;
   static constexpr uint32_t attributes = Instanced ? 0b11111 : 0b111;
+  // No derivatives, and no texture LOD unless textured: the pipeline may pack its lanes.
+  static constexpr bool lanes_independent = !Textured;
 
   template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
     if constexpr (Instanced) {

@@ -241,6 +241,81 @@ TEST(Order, OverlappingTinyTrianglesOfOneDrawBlendInOrder) {
   EXPECT_EQ(render(true, 2), separate);
 }
 
+namespace {
+
+// Colour from every fragment input: varyings, gl_FragCoord, gl_PrimitiveID, gl_FrontFacing.
+// With Packed the shader says its lanes are independent, so the raster phase packs the
+// covered pixels of several groups and triangles into one call.
+template <bool Packed> struct FragmentInputsShader : ColorShader {
+  static constexpr bool lanes_independent = Packed;
+  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+    const F id = to_float(f.primitive_id & IntOf<F>(7)) * F(1.0f / 7.0f);
+    const F fx = f.coord.x * F(0.37f) + f.coord.y * F(0.11f) + v.color.x;
+    f.color[0] = Vec4<F>(fx - floor(fx), mix(id, v.color.y, F(0.5f)),
+                         select(f.front_facing, v.color.z, F(1.0f) - v.color.z), f.coord.z * F(0.5f) + f.coord.w * F(0.5f));
+  }
+};
+
+}  // namespace
+
+// Packed shading (shader.hpp's lanes_independent) must give what shading by 4x2 groups
+// gives, bit for bit: overlapping small and larger triangles of both facings at random
+// depths across a tile edge, with and without the depth test (without it, the last
+// fragment on a pixel must win, so colour writes must keep their order), on 1 and 2 threads.
+TEST(Packed, IndependentLanesGiveWhatQuadsGive) {
+  const int W = 80, H = 40;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<TestVertex> v;
+  for (int t = 0; t < 900; ++t) {
+    const float cx = 48.0f + 30.0f * u(rng), cy = 2.0f + 36.0f * u(rng), size = t % 9 == 0 ? 14.0f : 4.0f;
+    const float col[4] = {u(rng), u(rng), u(rng), 1.0f};
+    for (int k = 0; k < 3; ++k) {
+      TestVertex a{};
+      const float w = 0.5f + 2.0f * u(rng);  // perspective: 1/w differs across the triangle
+      clip_from_window(cx + size * (u(rng) - 0.5f), cy + size * (u(rng) - 0.5f), 2.0f * u(rng) - 1.0f, w, W, H, a.pos);
+      std::copy_n(col, 4, a.color);
+      v.push_back(a);
+    }
+  }
+  auto render = [&](auto shader, bool depth, int threads, std::vector<uint8_t>& pixels, std::vector<float>& depths) {
+    Texture2D color(Format::RGBA8, W, H), z(Format::Depth32F, W, H);
+    Framebuffer fb(&color, &z);
+    Context ctx(threads);
+    ctx.bind_framebuffer(&fb);
+    ctx.clear({.color = {0.1f, 0.2f, 0.3f, 0.4f}, .depth = 1.0f});
+    RenderState st;
+    st.depth_test = depth;
+    Mesh m(v);
+    ctx.draw(shader, {}, m.layout, st, {.topology = Topology::Triangles, .count = m.count});
+    ctx.finish();
+    pixels.clear();
+    depths.clear();
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        const glm::vec4 c = color.fetch(0, x, y);
+        for (int k = 0; k < 4; ++k) pixels.push_back(uint8_t(std::lround(c[k] * 255.0f)));
+        depths.push_back(z.fetch(0, x, y).r);
+      }
+    return ctx.stats();
+  };
+  for (bool depth : {true, false}) {
+    std::vector<uint8_t> quads, packed;
+    std::vector<float> quads_z, packed_z;
+    const Stats a = render(FragmentInputsShader<false>{}, depth, 1, quads, quads_z);
+    for (int threads : {1, 2}) {
+      const Stats b = render(FragmentInputsShader<true>{}, depth, threads, packed, packed_z);
+      EXPECT_EQ(packed, quads) << "depth test " << depth << ", " << threads << " threads";
+      EXPECT_EQ(packed_z, quads_z);
+      EXPECT_EQ(b.fragments_shaded, a.fragments_shaded);
+      EXPECT_EQ(b.fragments_written, a.fragments_written);
+      EXPECT_EQ(b.fragments_rejected, a.fragments_rejected);
+    }
+    EXPECT_GT(a.fragments_written, 1200u);
+    if (depth) EXPECT_GT(a.fragments_rejected, 500u);
+  }
+}
+
 TEST(Setup, SnapsToEighthBitSubpixelsAndCullsZeroArea) {
   DrawRecord d;
   ColorShader s;

@@ -18,6 +18,11 @@
 //   static constexpr uint64_t noperspective = 0b...;  // components interpolated linearly in screen space
 //   static constexpr uint32_t attributes = 0b...;     // attribute locations the layout must enable
 //   static constexpr int outputs = 2;            // colour outputs written (MRT)
+//   static constexpr bool lanes_independent = true;  // fragment() uses no dFdx/dFdy/fwidth
+//                                                // and no implicit-LOD texture(): its lanes
+//                                                // need not be 2x2 quads, so the pipeline may
+//                                                // pack the covered pixels of several groups
+//                                                // and triangles into one call
 #pragma once
 
 #include <array>
@@ -69,6 +74,9 @@ template <class S> constexpr uint64_t shader_noperspective() {
 }
 template <class S> constexpr uint32_t shader_attributes() {
   if constexpr (requires { S::attributes; }) return S::attributes; else return 0;
+}
+template <class S> constexpr bool shader_lanes_independent() {
+  if constexpr (requires { S::lanes_independent; }) return S::lanes_independent; else return false;
 }
 template <class S> constexpr int shader_outputs() {
   if constexpr (requires { S::outputs; }) return S::outputs; else return 1;

@@ -80,6 +80,12 @@ template <int N> struct IntN {
   IntN() = default;
   constexpr IntN(V x) : v(x) {}
   IntN(int32_t s) : v(V{} + s) {}
+  static IntN load(const int32_t* p) {
+    IntN r;
+    std::memcpy(&r.v, p, sizeof r.v);
+    return r;
+  }
+  void store(int32_t* p) const { std::memcpy(p, &v, sizeof v); }
   int32_t operator[](int i) const { return v[i]; }
 #if defined(__clang__)
   int32_t& operator[](int i) { return reinterpret_cast<int32_t*>(&v)[i]; }  // clang: no references to vector elements

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 
 #include "tessel/gpu/detail/fast_ops.hpp"
@@ -74,24 +75,31 @@ template <class S> class Program final : public ProgramBase {
         pending_mask = 0;
       }
     };
+    auto flush_pending = [&] {
+      if (pending_mask) shade<Float8>(d, t, *pending_prim, *pending_prim, pending, pending, pending_mask, c);
+      pending_mask = 0;
+    };
     // A tile's triangles are a sparse walk through the frame's Prims (which fit no cache),
     // in no pattern the hardware prefetcher follows: each would wait on memory when its turn
     // came, so the one kAhead places on is requested before each (four lines: a Prim with
     // six varyings and edges is 208 bytes).
     constexpr int kAhead = 8;
-    auto prefetch = [](const Prim* p) {
-      const char* q = reinterpret_cast<const char*>(p);
-      __builtin_prefetch(q);
-      __builtin_prefetch(q + 64);
-      __builtin_prefetch(q + 128);
-      __builtin_prefetch(q + 192);
-    };
+    auto prefetch = [](const Prim* p) { prefetch_prim(p); };
+    [[maybe_unused]] const bool packed = kPacked && d.fast_color;
     for (int i = 0; i < n && i < kAhead; ++i) prefetch(prims[i]);
     for (int i = 0; i < n; ++i) {
       if (i + kAhead < n) prefetch(prims[i + kAhead]);
+      if constexpr (kPacked) {
+        if (packed && prims[i]->cover) {
+          // Triangles with a cover from here on are shaded packed (raster_packed).
+          flush_pending();
+          i = raster_packed(d, t, prims, i, n, x0, y0, x1, y1, c) - 1;
+          continue;
+        }
+      }
       raster_one(*prims[i], x0, y0, x1, y1, emit);
     }
-    if (pending_mask) shade<Float8>(d, t, *pending_prim, *pending_prim, pending, pending, pending_mask, c);
+    flush_pending();
     counters.fragments_shaded += c.fragments_shaded;
     counters.fragments_written += c.fragments_written;
     counters.fragments_rejected += c.fragments_rejected;
@@ -104,6 +112,176 @@ template <class S> class Program final : public ProgramBase {
   struct FragmentCounts {
     uint64_t fragments_shaded = 0, fragments_written = 0, fragments_rejected = 0;
   };
+  static void prefetch_prim(const Prim* p) {
+    const char* q = reinterpret_cast<const char*>(p);
+    __builtin_prefetch(q);
+    __builtin_prefetch(q + 64);
+    __builtin_prefetch(q + 128);
+    __builtin_prefetch(q + 192);
+  }
+
+  // Shaders whose lanes are independent (shader.hpp), with early depth, may be packed.
+  static constexpr bool kPacked = shader_lanes_independent<S>() && !shader_discards<S>() && !shader_writes_depth<S>();
+  // What a packed lane carries: the varyings, then the pixel centre x and y, window z, 1/w,
+  // the facing (mask bits) and the primitive id (integer bits).
+  static constexpr int kStaged = varying_count<S>() + 6;
+  struct Stage {
+    alignas(32) float v[kStaged][32];
+    int fill = 0;
+  };
+
+  // Packed shading (kPacked, and an unblended RGBA8 target: the order of colour writes is
+  // all that must be kept) for triangles with a cover, which are a few pixels each: each
+  // covered 4x2 group is depth-tested and its varyings interpolated as in shade(), then its
+  // passing lanes are appended to a stage, and the shader runs when sixteen lanes are
+  // staged, so small triangles do not shade empty lanes. Colours are written in staging
+  // order, which is submission order; depth is tested and written before any later group's
+  // test. Larger triangles, whose groups are mostly full, are shaded by group in raster():
+  // it shades its pending group before it calls this, and this shades every staged lane
+  // before it returns. Runs prims[i..) while they have a cover and returns the index of the
+  // first that has not (or n); prefetches kAhead places on, as raster() does.
+  __attribute__((noinline)) int raster_packed(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int i,
+                                              int n, int x0, int y0, int x1, int y1, FragmentCounts& c) const {
+    constexpr int K = varying_count<S>();
+    Stage st;
+    const bool tests = d.state.depth_test || d.state.stencil_test;
+    const Float8 dx8(vx::f32x8{0.5f, 1.5f, 0.5f, 1.5f, 2.5f, 3.5f, 2.5f, 3.5f});
+    const Float8 dy8(vx::f32x8{0.5f, 0.5f, 1.5f, 1.5f, 0.5f, 0.5f, 1.5f, 1.5f});
+    auto emit_packed = [&](const Prim& p, Pos g, unsigned mask) __attribute__((always_inline)) {
+      const Float8 cx = Float8(float(g.x)) + dx8, cy = Float8(float(g.y)) + dy8;
+      const Float8 fx = cx - Float8(p.xr), fy = cy - Float8(p.yr);
+      auto plane = [&](const float* q, int stride) {
+        return fma(Float8(q[2 * stride]), fy, fma(Float8(q[stride]), fx, Float8(q[0])));
+      };
+      const Float8 z = clamp(plane(p.z, 1), Float8(d.depth_min), Float8(d.depth_max));
+      if (tests) {
+        const unsigned covered = mask;
+        mask = test8(d, t, g, mask, z, p.front);
+        c.fragments_rejected += unsigned(__builtin_popcount(covered & ~mask));
+        if (!mask) return;
+      }
+      const Float8 oow = plane(p.oow, 1);
+      const Float8 w = Float8(1.0f) / oow;
+      const Int8 index = pack_index(mask);
+      const int at = st.fill;
+      const float* pl = p.planes();
+      for (int k = 0; k < K; ++k) {
+        Float8 v = plane(pl + k, K);
+        if (!(((flat | noperspective) >> k) & 1)) v = v * w;
+        pack(v, index).store(&st.v[k][at]);
+      }
+      pack(cx, index).store(&st.v[K][at]);
+      pack(cy, index).store(&st.v[K + 1][at]);
+      pack(z, index).store(&st.v[K + 2][at]);
+      pack(oow, index).store(&st.v[K + 3][at]);
+      float_from_bits(Int8(p.front ? -1 : 0)).store(&st.v[K + 4][at]);
+      float_from_bits(Int8(int32_t(p.prim_id))).store(&st.v[K + 5][at]);
+      const int count = __builtin_popcount(mask);
+      c.fragments_shaded += unsigned(count);
+      c.fragments_written += unsigned(count);
+      st.fill = at + count;
+      if (st.fill >= 16) {
+        shade_staged(t, st, 0xFFFF);
+        st.fill -= 16;
+        for (int v = 0; v < kStaged; ++v) Float8::load(&st.v[v][16]).store(&st.v[v][0]);
+      }
+    };
+    constexpr int kAhead = 8;
+    for (; i < n && prims[i]->cover; ++i) {
+      if (i + kAhead < n) prefetch_prim(prims[i + kAhead]);
+      raster_cover(*prims[i], x0, y0, x1, y1, emit_packed);
+    }
+    if (st.fill) shade_staged(t, st, (1u << st.fill) - 1);
+    return i;
+  }
+
+  // Lane indices that move the lanes set in `mask` to the front, in order.
+  static Int8 pack_index(unsigned mask) {
+    static constexpr auto table = [] {
+      std::array<std::array<uint8_t, 8>, 256> r{};
+      for (unsigned m = 0; m < 256; ++m) {
+        int n = 0;
+        for (int l = 0; l < 8; ++l)
+          if ((m >> l) & 1) r[m][size_t(n++)] = uint8_t(l);
+      }
+      return r;
+    }();
+    const auto& e = table[mask & 0xFF];
+    return Int8(vx::i32x8{e[0], e[1], e[2], e[3], e[4], e[5], e[6], e[7]});
+  }
+  static Float8 pack(Float8 v, Int8 index) {
+#if defined(__AVX2__)
+    return Float8((vx::f32x8)_mm256_permutevar8x32_ps((__m256)v.v, (__m256i)index.v));
+#else
+    Float8 r;
+    for (int l = 0; l < 8; ++l) r[l] = v[index[l]];
+    return r;
+#endif
+  }
+
+  // Runs the shader on the first sixteen staged lanes and writes the colours of the lanes
+  // in `mask` (an unblended RGBA8 attachment, DrawRecord::fast_color), in lane order.
+  __attribute__((flatten, noinline)) void shade_staged(const TargetView& t, const Stage& st, unsigned mask) const {
+    constexpr int K = varying_count<S>();
+    using F = Float16;
+    Varyings<F> vary;
+    if constexpr (K > 0) {
+      F lanes[K];
+      for (int k = 0; k < K; ++k) lanes[k] = F::load(st.v[k]);
+      std::memcpy(&vary, lanes, sizeof lanes);
+    }
+    Fragment<F> f;
+    const F cx = F::load(st.v[K]), cy = F::load(st.v[K + 1]);
+    f.coord = Vec4<F>(cx, cy, F::load(st.v[K + 2]), F::load(st.v[K + 3]));
+    const F front = F::load(st.v[K + 4]), id = F::load(st.v[K + 5]);
+    f.front_facing = Mask16(Mask8(bits_of(front.lo).v), Mask8(bits_of(front.hi).v));
+    f.primitive_id = Int16(bits_of(id.lo), bits_of(id.hi));
+    for (int i = 0; i < shader_outputs<S>(); ++i) f.color[size_t(i)] = Vec4<F>(F(0.0f));
+    f.depth = f.coord.z;
+    f.killed = MaskOf<F>(false);
+    shader_.fragment(uniforms_, vary, f);
+    const Vec4<F>& col = f.color[0];
+    alignas(32) int32_t px[16], xs[16], ys[16];
+    (to_unorm8(col.x.lo) | (to_unorm8(col.y.lo) << 8) | (to_unorm8(col.z.lo) << 16) | (to_unorm8(col.w.lo) << 24)).store(px);
+    (to_unorm8(col.x.hi) | (to_unorm8(col.y.hi) << 8) | (to_unorm8(col.z.hi) << 16) | (to_unorm8(col.w.hi) << 24)).store(px + 8);
+    to_int(cx.lo).store(xs);
+    to_int(cx.hi).store(xs + 8);
+    to_int(cy.lo).store(ys);
+    to_int(cy.hi).store(ys + 8);
+    const ColorTarget& ct = t.color[0];
+    for (unsigned m = mask; m; m &= m - 1) {
+      const int l = __builtin_ctz(m);
+      std::memcpy(ct.data + size_t(ys[l]) * ct.row_bytes + size_t(xs[l]) * 4, &px[l], 4);
+    }
+  }
+
+  // The lanes of the 4x2 group at (gx, gy) inside the bbox [minx, maxx] x [miny, maxy] (all
+  // of them, away from its border).
+  __attribute__((always_inline)) static unsigned bbox_mask(int gx, int gy, int minx, int miny, int maxx, int maxy) {
+    if (gx >= minx && gx + 3 <= maxx && gy >= miny && gy + 1 <= maxy) return 0xFF;
+    const Int8 lane_dx(vx::i32x8{0, 1, 0, 1, 2, 3, 2, 3}), lane_dy(vx::i32x8{0, 0, 1, 1, 0, 0, 1, 1});
+    const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
+    return ((px >= Int8(minx)) & (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy))).bits();
+  }
+
+  // The covered groups of a triangle with a cover (found at setup, Prim::cover) in the tile
+  // rectangle, as emit(p, group, lane mask): only the cut to the tile is left to do.
+  template <class Emit>
+  __attribute__((always_inline)) static void raster_cover(const Prim& p, int x0, int y0, int x1, int y1, Emit& emit) {
+    const int minx = std::max(p.minx, x0), maxx = std::min(p.maxx, x1 - 1);
+    const int miny = std::max(p.miny, y0), maxy = std::min(p.maxy, y1 - 1);
+    if (minx > maxx || miny > maxy) return;
+    const int gx0 = p.minx & ~3, gy0 = p.miny & ~1;
+    const bool whole = minx == p.minx && maxx == p.maxx && miny == p.miny && maxy == p.maxy;
+    for (uint64_t m = p.cover; m;) {
+      const int byte = __builtin_ctzll(m) >> 3;
+      const Pos g{gx0 + (byte & 1) * 4, gy0 + (byte >> 1) * 2};
+      unsigned gm = unsigned(m >> (8 * byte)) & 0xFF;
+      m &= ~(uint64_t(0xFF) << (8 * byte));
+      if (!whole) gm &= bbox_mask(g.x, g.y, minx, miny, maxx, maxy);
+      if (gm) emit(p, g, gm);
+    }
+  }
 
   // The coverage of one triangle in the tile rectangle, as emit(p, group, lane mask) per
   // covered 4x2 group.
@@ -113,26 +291,8 @@ template <class S> class Program final : public ProgramBase {
     const int miny = std::max(p.miny, y0), maxy = std::min(p.maxy, y1 - 1);
     if (minx > maxx || miny > maxy) return;
     const Int8 lane_dx(vx::i32x8{0, 1, 0, 1, 2, 3, 2, 3}), lane_dy(vx::i32x8{0, 0, 1, 1, 0, 0, 1, 1});
-    // The lanes of the 4x2 group at (gx, gy) inside the bbox (all of them, away from its border).
-    auto bbox_mask = [&](int gx, int gy) -> unsigned {
-      if (gx >= minx && gx + 3 <= maxx && gy >= miny && gy + 1 <= maxy) return 0xFF;
-      const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
-      return ((px >= Int8(minx)) & (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy))).bits();
-    };
-    // Coverage found at setup (Prim::cover): only the cut to this tile is left to do.
-    if (p.cover) {
-      const int gx0 = p.minx & ~3, gy0 = p.miny & ~1;
-      const bool whole = minx == p.minx && maxx == p.maxx && miny == p.miny && maxy == p.maxy;
-      for (uint64_t m = p.cover; m;) {
-        const int byte = __builtin_ctzll(m) >> 3;
-        const Pos g{gx0 + (byte & 1) * 4, gy0 + (byte >> 1) * 2};
-        unsigned gm = unsigned(m >> (8 * byte)) & 0xFF;
-        m &= ~(uint64_t(0xFF) << (8 * byte));
-        if (!whole) gm &= bbox_mask(g.x, g.y);
-        if (gm) emit(p, g, gm);
-      }
-      return;
-    }
+    auto bbox_mask = [&](int gx, int gy) { return Program::bbox_mask(gx, gy, minx, miny, maxx, maxy); };
+    if (p.cover) return raster_cover(p, x0, y0, x1, y1, emit);
     const EdgeEq* pe = p.edges(varying_count<S>());
     // Small triangles (most of a tessellated mesh): no block classification; the 4x2 groups
     // of the bbox are tested directly, in 32-bit lanes (small_edges).
