@@ -259,7 +259,7 @@ template <bool Packed> struct FragmentInputsShader : ColorShader {
 }  // namespace
 
 // Packed shading (shader.hpp's lanes_independent) must give what shading by 4x2 groups
-// gives, bit for bit: overlapping small and larger triangles of both facings at random
+// gives, bit for bit: overlapping tiny, small and large triangles of both facings at random
 // depths across a tile edge, with and without the depth test (without it, the last
 // fragment on a pixel must win, so colour writes must keep their order), on 1 and 2 threads.
 TEST(Packed, IndependentLanesGiveWhatQuadsGive) {
@@ -268,7 +268,7 @@ TEST(Packed, IndependentLanesGiveWhatQuadsGive) {
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   std::vector<TestVertex> v;
   for (int t = 0; t < 900; ++t) {
-    const float cx = 48.0f + 30.0f * u(rng), cy = 2.0f + 36.0f * u(rng), size = t % 9 == 0 ? 14.0f : 4.0f;
+    const float cx = 54.0f + 20.0f * u(rng), cy = 10.0f + 16.0f * u(rng), size = t % 9 == 0 ? 30.0f : t % 3 == 0 ? 11.0f : 4.0f;
     const float col[4] = {u(rng), u(rng), u(rng), 1.0f};
     for (int k = 0; k < 3; ++k) {
       TestVertex a{};

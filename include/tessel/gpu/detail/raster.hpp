@@ -90,8 +90,8 @@ template <class S> class Program final : public ProgramBase {
     for (int i = 0; i < n; ++i) {
       if (i + kAhead < n) prefetch(prims[i + kAhead]);
       if constexpr (kPacked) {
-        if (packed && prims[i]->cover) {
-          // Triangles with a cover from here on are shaded packed (raster_packed).
+        if (packed && packable(*prims[i])) {
+          // Small triangles from here on are shaded packed (raster_packed).
           flush_pending();
           i = raster_packed(d, t, prims, i, n, x0, y0, x1, y1, c) - 1;
           continue;
@@ -131,7 +131,7 @@ template <class S> class Program final : public ProgramBase {
   };
 
   // Packed shading (kPacked, and an unblended RGBA8 target: the order of colour writes is
-  // all that must be kept) for triangles with a cover, which are a few pixels each: each
+  // all that must be kept) for small triangles (packable), a few pixels each: each
   // covered 4x2 group is depth-tested and its varyings interpolated as in shade(), then its
   // passing lanes are appended to a stage, and the shader runs when sixteen lanes are
   // staged, so small triangles do not shade empty lanes. Colours are written in staging
@@ -187,13 +187,17 @@ template <class S> class Program final : public ProgramBase {
       }
     };
     constexpr int kAhead = 8;
-    for (; i < n && prims[i]->cover; ++i) {
+    for (; i < n && packable(*prims[i]); ++i) {
       if (i + kAhead < n) prefetch_prim(prims[i + kAhead]);
-      raster_cover(*prims[i], x0, y0, x1, y1, emit_packed);
+      raster_one(*prims[i], x0, y0, x1, y1, emit_packed);
     }
     if (st.fill) shade_staged(t, st, (1u << st.fill) - 1);
     return i;
   }
+
+  // Triangles shaded packed: those with a cover, and others whose bbox is at most 16 pixels
+  // a side (their groups are mostly partly covered too).
+  static bool packable(const Prim& p) { return p.cover || (p.maxx - p.minx < 16 && p.maxy - p.miny < 16); }
 
   // Lane indices that move the lanes set in `mask` to the front, in order.
   static Int8 pack_index(unsigned mask) {
