@@ -319,16 +319,25 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     hi = std::max(hi, ids[i]);
   }
   if (size_t(hi - lo) < 4 * total) {
-    // A compact range of ids (a mesh's chunk): a table indexed by id - lo.
+    // A compact range of ids (a mesh's chunk): a table indexed by id - lo. Without branches:
+    // whether an id is new is as good as random, and a mispredicted branch per new id cost
+    // more than the loop's other work.
     w.direct.assign(size_t(hi - lo) + 1, UINT32_MAX);
+    w.ids.resize(total);
+    uint32_t* table = w.direct.data();
+    uint32_t* unique = w.ids.data();
+    uint32_t count = 0;
     for (size_t i = 0; i < total; ++i) {
-      uint32_t& slot = w.direct[ids[i] - lo];
-      if (slot == UINT32_MAX) {
-        slot = uint32_t(w.ids.size());
-        w.ids.push_back(ids[i]);
-      }
+      const uint32_t id = ids[i];
+      const uint32_t seen = table[id - lo];
+      const bool fresh = seen == UINT32_MAX;
+      const uint32_t slot = fresh ? count : seen;
+      table[id - lo] = slot;
+      unique[count] = id;  // kept only when fresh: count moves on
+      count += fresh;
       ids[i] = slot;
     }
+    w.ids.resize(count);
   } else {
     // Scattered ids: a direct-mapped hash cache (a vertex may be shaded twice on a collision).
     const size_t cache_size = size_t(1) << kCacheBits;

@@ -5,6 +5,10 @@
 #include <cstring>
 #include <string>
 
+#if defined(__SSE4_1__)
+#include <immintrin.h>
+#endif
+
 #include "stages.hpp"
 
 namespace tessel::gpu {
@@ -152,13 +156,28 @@ inline void broadcast_store(const float v[4], Vec4<Float8>& out) {
 }
 
 // C floats per lane read straight from memory; the rest (0, 0, 0, 1).
+// Built in registers: a row written in parts to memory and read back whole would wait for
+// each part's store to retire (a failed store-to-load forward), for every lane.
+template <int C> inline f32x4 load_row(const std::byte* p) {
+#if defined(__SSE4_1__)
+  if constexpr (C == 4) return f32x4(_mm_loadu_ps(reinterpret_cast<const float*>(p)));
+  const __m128 one = _mm_set_ss(1.0f);
+  if constexpr (C == 1) return f32x4(_mm_insert_ps(_mm_load_ss(reinterpret_cast<const float*>(p)), one, 0x30));
+  const __m128 xy = _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p)));
+  if constexpr (C == 2) return f32x4(_mm_insert_ps(xy, one, 0x30));
+  const __m128 xyz = _mm_insert_ps(xy, _mm_load_ss(reinterpret_cast<const float*>(p) + 2), 0x20);
+  return f32x4(_mm_insert_ps(xyz, one, 0x30));
+#else
+  f32x4 r = {0.0f, 0.0f, 0.0f, 1.0f};
+  std::memcpy(&r, p, sizeof(float) * C);
+  return r;
+#endif
+}
+
 template <int C>
 inline void fetch_f32(const std::byte* base, size_t stride, const uint32_t (&ids)[kLanes], Vec4<Float8>& out) {
   f32x4 r[kLanes];
-  for (int l = 0; l < kLanes; ++l) {
-    r[l] = f32x4{0.0f, 0.0f, 0.0f, 1.0f};
-    std::memcpy(&r[l], base + size_t(ids[l]) * stride, sizeof(float) * C);
-  }
+  for (int l = 0; l < kLanes; ++l) r[l] = load_row<C>(base + size_t(ids[l]) * stride);
   transpose_store(r, out);
 }
 
