@@ -12,22 +12,38 @@
 namespace tessel::gpu::detail {
 
 // Coverage of a small triangle (small_edges) whose bbox lies in the 8x8 pixels from
-// (minx & ~3, miny & ~1), in Prim::cover's layout.
+// (minx & ~3, miny & ~1), in Prim::cover's layout. Without loops or branches on the bbox's
+// size (whose trip counts a branch predictor cannot know): the edges are tested on the four
+// groups of the window's first four rows, or on all eight when the bbox is taller, and the
+// result is cut to the bbox by two masks from tables.
 inline uint64_t small_coverage(const EdgeEq* e, int minx, int miny, int maxx, int maxy) {
+  // Bits of Prim::cover for pixel columns [lo, hi] of the window (all rows), and for rows.
+  static constexpr auto masks = [] {
+    struct Tables {
+      uint64_t col[4][8], row[2][8];
+    } t{};
+    const int dx[8] = {0, 1, 0, 1, 2, 3, 2, 3}, dy[8] = {0, 0, 1, 1, 0, 0, 1, 1};  // kLaneDx, kLaneDy
+    for (int g = 0; g < 8; ++g)
+      for (int l = 0; l < 8; ++l) {
+        const int x = (g & 1) * 4 + dx[l], y = (g >> 1) * 2 + dy[l];
+        const uint64_t bit = uint64_t(1) << (8 * g + l);
+        for (int lo = 0; lo < 4; ++lo)
+          for (int hi = 0; hi < 8; ++hi)
+            if (x >= lo && x <= hi) t.col[lo][hi] |= bit;
+        for (int lo = 0; lo < 2; ++lo)
+          for (int hi = 0; hi < 8; ++hi)
+            if (y >= lo && y <= hi) t.row[lo][hi] |= bit;
+      }
+    return t;
+  }();
   const int gx0 = minx & ~3, gy0 = miny & ~1;
   const SmallEdgeLanes edges(e, gx0, gy0);
-  const Int8 lane_dx(vx::i32x8{0, 1, 0, 1, 2, 3, 2, 3}), lane_dy(vx::i32x8{0, 0, 1, 1, 0, 0, 1, 1});
-  uint64_t cover = 0;
-  for (int gy = gy0; gy <= maxy; gy += 2) {
-    for (int gx = gx0; gx <= maxx; gx += 4) {
-      const int ox = gx - gx0, oy = gy - gy0;
-      const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
-      const unsigned in = edges.at(ox, oy) &
-                          ((px >= Int8(minx)) & (px <= Int8(maxx)) & (py >= Int8(miny)) & (py <= Int8(maxy))).bits();
-      cover |= uint64_t(in) << (8 * ((oy >> 1) * 2 + (ox >> 2)));
-    }
-  }
-  return cover;
+  uint64_t cover = uint64_t(edges.at(0, 0)) | (uint64_t(edges.at(4, 0)) << 8) | (uint64_t(edges.at(0, 2)) << 16) |
+                   (uint64_t(edges.at(4, 2)) << 24);
+  if (maxy >= gy0 + 4)
+    cover |= (uint64_t(edges.at(0, 4)) << 32) | (uint64_t(edges.at(4, 4)) << 40) | (uint64_t(edges.at(0, 6)) << 48) |
+             (uint64_t(edges.at(4, 6)) << 56);
+  return cover & masks.col[minx - gx0][maxx - gx0] & masks.row[miny - gy0][maxy - gy0];
 }
 
 // Plane (value at v0, d/dx, d/dy) through three values at the vertices, written `stride`

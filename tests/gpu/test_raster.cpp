@@ -5,6 +5,7 @@
 #include <random>
 
 #include "shaders.hpp"
+#include "setup_triangle.hpp"
 #include "stages.hpp"
 
 using namespace tessel::test;
@@ -314,6 +315,48 @@ TEST(Packed, IndependentLanesGiveWhatQuadsGive) {
     EXPECT_GT(a.fragments_written, 1200u);
     if (depth) EXPECT_GT(a.fragments_rejected, 500u);
   }
+}
+
+// Setup's cover of a small triangle (small_coverage) against the edge functions evaluated
+// pixel by pixel, for every bbox shape that fits the 8x8 window (one to eight rows, one to
+// eight columns, each alignment) and random edges.
+TEST(Setup, SmallCoverageIsTheEdgeTestAtEachPixelOfTheBbox) {
+  std::mt19937 rng(9);
+  std::uniform_int_distribution<int> coord(-12 * kSubpixelOne, 20 * kSubpixelOne);
+  int tested = 0, tall = 0;
+  for (int t = 0; t < 20000; ++t) {
+    int64_t X[3], Y[3];
+    for (int k = 0; k < 3; ++k) {
+      X[k] = coord(rng);
+      Y[k] = coord(rng);
+    }
+    if ((X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]) <= 0) std::swap(X[1], X[2]), std::swap(Y[1], Y[2]);
+    EdgeEq e[3];
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      const int64_t dx = X[j] - X[i], dy = Y[j] - Y[i];
+      e[i] = {dy * X[i] - dx * Y[i] + ((dy < 0 || (dy == 0 && dx > 0)) ? 1 : 0), -dy * kSubpixelOne, dx * kSubpixelOne};
+    }
+    if (!small_edges(e)) continue;
+    // Any bbox inside the window from an aligned origin.
+    const int gx0 = 4 * int(rng() % 3), gy0 = 2 * int(rng() % 5);
+    const int minx = gx0 + int(rng() % 4), miny = gy0 + int(rng() % 2);
+    const int maxx = minx + int(rng() % unsigned(gx0 + 8 - minx)), maxy = miny + int(rng() % unsigned(gy0 + 8 - miny));
+    const uint64_t cover = small_coverage(e, minx, miny, maxx, maxy);
+    for (int y = gy0; y < gy0 + 8; ++y)
+      for (int x = gx0; x < gx0 + 8; ++x) {
+        const int ox = x - gx0, oy = y - gy0;
+        const int lane = (ox & 1) + 2 * (oy & 1) + 4 * ((ox >> 1) & 1);
+        const int group = (oy >> 1) * 2 + (ox >> 2);
+        bool inside = x >= minx && x <= maxx && y >= miny && y <= maxy;
+        for (const EdgeEq& q : e) inside = inside && q.c + q.a * x + q.b * y > 0;
+        ASSERT_EQ(((cover >> (8 * group + lane)) & 1) != 0, inside) << "case " << t << " pixel " << x << "," << y;
+      }
+    ++tested;
+    if (maxy >= gy0 + 4) ++tall;
+  }
+  EXPECT_GT(tested, 5000);
+  EXPECT_GT(tall, 1000);
 }
 
 TEST(Setup, SnapsToEighthBitSubpixelsAndCullsZeroArea) {
