@@ -2,6 +2,8 @@
 // perspective-correct interpolation, flat shading, determinism across thread counts.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -95,6 +97,48 @@ TEST(Draw, IndexedMatchesArraysForEveryIndexType) {
   shifted.insert(shifted.begin(), wv(0, 0, 0, W, H));
   EXPECT_EQ(render(W, H, shifted, {.count = 6, .index_buffer = &b32, .base_vertex = 1}), arrays);
   EXPECT_GT(lit(arrays), 600u);
+}
+
+// The geometry phase finds a chunk's distinct vertices three ways: every id of a dense range
+// (unused ids in it are shaded too), a table over a wider range, a hash for scattered ids.
+// A grid mesh with `junk` NaN vertices after each row (never indexed: 4 keeps the mesh's
+// chunks dense, 40 makes them take the table, 400 shuffled the hash), in mesh order and in
+// shuffled triangle order, must give what the same triangles give unindexed.
+TEST(Draw, IndexedGridMatchesArraysWithUnusedNaNVertices) {
+  const int W = 64, H = 48, NX = 41, NY = 31;
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (int junk : {4, 40, 400}) {
+    for (bool shuffled : {false, true}) {
+      std::vector<TestVertex> v;
+      auto id = [&](int i, int j) { return uint32_t(j * (NX + junk) + i); };
+      for (int j = 0; j < NY; ++j) {
+        for (int i = 0; i < NX; ++i)
+          v.push_back(wv(-2.0f + 68.0f * i / (NX - 1) + 0.3f * u(rng), -2.0f + 52.0f * j / (NY - 1) + 0.3f * u(rng), 0,
+                         W, H, {u(rng), u(rng), u(rng), 1}));
+        for (int k = 0; k < junk; ++k) v.push_back(wv(NAN, NAN, NAN, W, H));
+      }
+      std::vector<std::array<uint32_t, 3>> tris;
+      for (int j = 0; j + 1 < NY; ++j)
+        for (int i = 0; i + 1 < NX; ++i) {
+          tris.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+          tris.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+      if (shuffled) std::shuffle(tris.begin(), tris.end(), rng);
+      std::vector<uint32_t> indices;
+      std::vector<TestVertex> expanded;
+      for (const auto& t : tris)
+        for (uint32_t k : t) {
+          indices.push_back(k);
+          expanded.push_back(v[k]);
+        }
+      const Buffer ib(indices.data(), indices.size() * 4);
+      const auto arrays = render(W, H, expanded, {.count = uint32_t(expanded.size())});
+      EXPECT_EQ(render(W, H, v, {.count = uint32_t(indices.size()), .index_buffer = &ib}), arrays)
+          << "junk " << junk << (shuffled ? ", shuffled" : "");
+      EXPECT_EQ(lit(arrays), size_t(W) * H);
+    }
+  }
 }
 
 TEST(Draw, StripsFansAndListsAgree) {
