@@ -16,7 +16,7 @@ namespace tessel::gpu::detail {
 // size (whose trip counts a branch predictor cannot know): the edges are tested on the four
 // groups of the window's first four rows, or on all eight when the bbox is taller, and the
 // result is cut to the bbox by two masks from tables.
-inline uint64_t small_coverage(const EdgeEq* e, int minx, int miny, int maxx, int maxy) {
+__attribute__((always_inline)) inline uint64_t small_coverage(const EdgeEq* e, int minx, int miny, int maxx, int maxy) {
   // Bits of Prim::cover for pixel columns [lo, hi] of the window (all rows), and for rows.
   static constexpr auto masks = [] {
     struct Tables {
@@ -38,11 +38,30 @@ inline uint64_t small_coverage(const EdgeEq* e, int minx, int miny, int maxx, in
   }();
   const int gx0 = minx & ~3, gy0 = miny & ~1;
   const SmallEdgeLanes edges(e, gx0, gy0);
-  uint64_t cover = uint64_t(edges.at(0, 0)) | (uint64_t(edges.at(4, 0)) << 8) | (uint64_t(edges.at(0, 2)) << 16) |
-                   (uint64_t(edges.at(4, 2)) << 24);
-  if (maxy >= gy0 + 4)
-    cover |= (uint64_t(edges.at(0, 4)) << 32) | (uint64_t(edges.at(4, 4)) << 40) | (uint64_t(edges.at(0, 6)) << 48) |
-             (uint64_t(edges.at(4, 6)) << 56);
+  // E - 1 for the groups at columns 0 and 4 of a row pair, stepped down the rows: a pixel is
+  // inside when E > 0 for all three edges, that is when the sign bits of the three E - 1 are
+  // all clear.
+  Int8 left[3], right[3], down[3];
+  for (int i = 0; i < 3; ++i) {
+    left[i] = edges.base[i] - Int8(1);
+    right[i] = left[i] + Int8(4 * edges.sa[i]);
+    down[i] = Int8(2 * edges.sb[i]);
+  }
+  auto row = [&](int shift) {
+    const unsigned l = ((left[0] | left[1] | left[2]) >= Int8(0)).bits();
+    const unsigned r = ((right[0] | right[1] | right[2]) >= Int8(0)).bits();
+    for (int i = 0; i < 3; ++i) {
+      left[i] = left[i] + down[i];
+      right[i] = right[i] + down[i];
+    }
+    return (uint64_t(l) | uint64_t(r) << 8) << shift;
+  };
+  uint64_t cover = row(0);
+  cover |= row(16);
+  if (maxy >= gy0 + 4) {
+    cover |= row(32);
+    cover |= row(48);
+  }
   return cover & masks.col[minx - gx0][maxx - gx0] & masks.row[miny - gy0][maxy - gy0];
 }
 
