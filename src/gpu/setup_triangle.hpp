@@ -47,7 +47,7 @@ __attribute__((always_inline)) inline uint64_t small_coverage(const EdgeEq* e, i
     right[i] = left[i] + Int8(4 * edges.sa[i]);
     down[i] = Int8(2 * edges.sb[i]);
   }
-  auto row = [&](int shift) {
+  auto row = [&](int shift) __attribute__((always_inline)) {
     const unsigned l = ((left[0] | left[1] | left[2]) >= Int8(0)).bits();
     const unsigned r = ((right[0] | right[1] | right[2]) >= Int8(0)).bits();
     for (int i = 0; i < 3; ++i) {
