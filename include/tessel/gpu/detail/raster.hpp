@@ -122,8 +122,9 @@ template <class S> class Program final : public ProgramBase {
 
   // Shaders whose lanes are independent (shader.hpp), with early depth, may be packed.
   static constexpr bool kPacked = shader_lanes_independent<S>() && !shader_discards<S>() && !shader_writes_depth<S>();
-  // What a packed lane carries: the varyings, then the pixel centre x and y, window z, 1/w,
-  // the facing (mask bits) and the primitive id (integer bits).
+  // What a packed lane carries: the varyings (value/w for perspective-correct ones), then the
+  // pixel centre x and y, window z, 1/w, the facing (mask bits) and the primitive id (integer
+  // bits).
   static constexpr int kStaged = varying_count<S>() + 6;
   struct Stage {
     alignas(32) float v[kStaged][32];
@@ -161,15 +162,11 @@ template <class S> class Program final : public ProgramBase {
         if (!mask) return;
       }
       const Float8 oow = plane(p.oow, 1);
-      const Float8 w = Float8(1.0f) / oow;
+      // Staged as value/w: the division by 1/w is done on full lanes in shade_staged.
       const Int8 index = pack_index(mask);
       const int at = st.fill;
       const float* pl = p.planes();
-      for (int k = 0; k < K; ++k) {
-        Float8 v = plane(pl + k, K);
-        if (!(((flat | noperspective) >> k) & 1)) v = v * w;
-        pack(v, index).store(&st.v[k][at]);
-      }
+      for (int k = 0; k < K; ++k) pack(plane(pl + k, K), index).store(&st.v[k][at]);
       pack(cx, index).store(&st.v[K][at]);
       pack(cy, index).store(&st.v[K + 1][at]);
       pack(z, index).store(&st.v[K + 2][at]);
@@ -229,14 +226,20 @@ template <class S> class Program final : public ProgramBase {
     constexpr int K = varying_count<S>();
     using F = Float16;
     Varyings<F> vary;
+    const F oow = F::load(st.v[K + 3]);
     if constexpr (K > 0) {
+      constexpr uint64_t linear = shader_flat<S>() | shader_noperspective<S>();
+      const F w = F(1.0f) / oow;
       F lanes[K];
-      for (int k = 0; k < K; ++k) lanes[k] = F::load(st.v[k]);
+      for (int k = 0; k < K; ++k) {
+        lanes[k] = F::load(st.v[k]);
+        if (!((linear >> k) & 1)) lanes[k] = lanes[k] * w;
+      }
       std::memcpy(&vary, lanes, sizeof lanes);
     }
     Fragment<F> f;
     const F cx = F::load(st.v[K]), cy = F::load(st.v[K + 1]);
-    f.coord = Vec4<F>(cx, cy, F::load(st.v[K + 2]), F::load(st.v[K + 3]));
+    f.coord = Vec4<F>(cx, cy, F::load(st.v[K + 2]), oow);
     const F front = F::load(st.v[K + 4]), id = F::load(st.v[K + 5]);
     f.front_facing = Mask16(Mask8(bits_of(front.lo).v), Mask8(bits_of(front.hi).v));
     f.primitive_id = Int16(bits_of(id.lo), bits_of(id.hi));
