@@ -386,16 +386,25 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
   const bool fill = mode_front == PolygonMode::Fill && mode_back == PolygonMode::Fill;
   Prim* out[2];
   const bool filled_triangles = ps == 3 && fill;
+  // Read through locals in the loop: stores into Prims could alias the vectors' and the
+  // DrawRecord's fields as far as the compiler knows, so it would load them again each time.
+  const SetupConstants sc(d);
+  const uint32_t* const slots = w.prim_slots.data();
+  const unsigned* const codes = w.codes.data();
+  const WinVert* const win = w.win.data();
+  const float* const vars = w.vars.data();
+  const bool offset_fill = d.state.offset_fill;
+  uint64_t culled_count = 0;
+  w.counters.primitives_in += nprims;
   for (uint32_t p = 0; p < nprims; ++p) {
     const uint32_t prim_id = ch.begin + p;
-    const uint32_t* s = &w.prim_slots[size_t(p) * ps];
-    ++w.counters.primitives_in;
-    if (filled_triangles && (w.codes[s[0]] | w.codes[s[1]] | w.codes[s[2]]) == 0) {
+    const uint32_t* s = slots + size_t(p) * ps;
+    if (filled_triangles && (codes[s[0]] | codes[s[1]] | codes[s[2]]) == 0) {
       // The common case: a filled triangle inside every plane, set up here without a call.
       bool culled = false;
-      Prim* pr = setup_triangle_inline(d, w.win[s[0]], w.win[s[1]], w.win[s[2]], &w.vars[size_t(s[2]) * K], prim_id,
-                                       Facing::FromArea, d.state.offset_fill, w.arena, w.counters, &culled);
-      if (culled) ++w.counters.primitives_culled;
+      Prim* pr = setup_triangle_inline(d, sc, win[s[0]], win[s[1]], win[s[2]], vars + size_t(s[2]) * K, prim_id,
+                                       Facing::FromArea, offset_fill, w.arena, w.counters, &culled);
+      culled_count += culled;
       if (pr) bin(w, chunk_index, &d, pr);
       continue;
     }
@@ -508,6 +517,7 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
       for (int j = 0; j < n; ++j) bin(w, chunk_index, &d, out[j]);
     }
   }
+  w.counters.primitives_culled += culled_count;
 }
 
 // Whether a clear rewrites every byte of the tile rectangle in every attachment, so the

@@ -97,7 +97,8 @@ void finish_vertices(const DrawRecord& d, const ClipPlanes& planes, const float*
 Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2,
                      const float* flat_src, uint32_t prim_id, Facing facing, bool apply_offset,
                      Arena& arena, Counters& c, bool* culled) {
-  return setup_triangle_inline(d, v0, v1, v2, flat_src, prim_id, facing, apply_offset, arena, c, culled);
+  return setup_triangle_inline(d, SetupConstants(d), v0, v1, v2, flat_src, prim_id, facing, apply_offset, arena, c,
+                               culled);
 }
 
 int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const float* flat_src,

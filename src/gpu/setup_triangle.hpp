@@ -77,12 +77,33 @@ struct PlaneSolver {
   }
 };
 
+// What setup reads of a draw, taken out once per chunk: kept in registers through the loop
+// over the chunk's triangles, where the DrawRecord's fields would be loaded again after each
+// store into a Prim (which the compiler cannot tell from them).
+struct SetupConstants {
+  bool cull_ccw, cull_cw;   // culled when the snapped area is positive / negative (Facing::FromArea)
+  bool ccw_front;           // front-facing when the area is positive
+  int area_x0, area_y0, area_x1, area_y1;
+  int varyings;
+  uint64_t flat, linear;    // components from the provoking vertex; flat or noperspective
+  explicit SetupConstants(const DrawRecord& d)
+      : ccw_front(d.state.front_face == FrontFace::CCW),
+        area_x0(d.area_x0), area_y0(d.area_y0), area_x1(d.area_x1), area_y1(d.area_y1),
+        varyings(d.program->varyings), flat(d.program->flat), linear(d.program->flat | d.program->noperspective) {
+    const CullMode cm = d.state.cull;
+    const bool cull_front = cm == CullMode::Front || cm == CullMode::FrontAndBack;
+    const bool cull_back = cm == CullMode::Back || cm == CullMode::FrontAndBack;
+    cull_ccw = ccw_front ? cull_front : cull_back;
+    cull_cw = ccw_front ? cull_back : cull_front;
+  }
+};
+
 // setup_triangle (stages.hpp), inline for the geometry phase's loop over a chunk's triangles.
-__attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawRecord& d, const WinVert& v0,
-                                                                  const WinVert& v1, const WinVert& v2,
-                                                                  const float* flat_src, uint32_t prim_id,
-                                                                  Facing facing, bool apply_offset, Arena& arena,
-                                                                  Counters& c, bool* culled) {
+__attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawRecord& d, const SetupConstants& sc,
+                                                                  const WinVert& v0, const WinVert& v1,
+                                                                  const WinVert& v2, const float* flat_src,
+                                                                  uint32_t prim_id, Facing facing, bool apply_offset,
+                                                                  Arena& arena, Counters& c, bool* culled) {
   if (culled) *culled = false;
   // Clipping keeps positions finite and inside the guard band; a vertex that still is not
   // (w rounded to 0, overflow in the interpolation) drops the triangle.
@@ -95,10 +116,8 @@ __attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawReco
   bool front;
   if (facing == Facing::FromArea) {
     const bool ccw = area > 0;
-    front = (d.state.front_face == FrontFace::CCW) == ccw;
-    const CullMode cm = d.state.cull;
-    if (cm == CullMode::FrontAndBack || (cm == CullMode::Front && front) ||
-        (cm == CullMode::Back && !front)) {
+    front = sc.ccw_front == ccw;
+    if (ccw ? sc.cull_ccw : sc.cull_cw) {
       if (culled) *culled = true;
       return nullptr;
     }
@@ -119,10 +138,10 @@ __attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawReco
   int miny = int(minY >> kSubpixelBits), maxy = int((maxY - 1) >> kSubpixelBits);
   if (minX & (kSubpixelOne - 1)) ++minx;  // first lattice point at or after min
   if (minY & (kSubpixelOne - 1)) ++miny;
-  minx = std::max(minx, d.area_x0);
-  miny = std::max(miny, d.area_y0);
-  maxx = std::min(maxx, d.area_x1 - 1);
-  maxy = std::min(maxy, d.area_y1 - 1);
+  minx = std::max(minx, sc.area_x0);
+  miny = std::max(miny, sc.area_y0);
+  maxx = std::min(maxx, sc.area_x1 - 1);
+  maxy = std::min(maxy, sc.area_y1 - 1);
   if (minx > maxx || miny > maxy) return nullptr;
 
   EdgeEq e[3];
@@ -145,7 +164,7 @@ __attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawReco
     if (!cover) return nullptr;
   }
 
-  const int K = d.program->varyings;
+  const int K = sc.varyings;
   auto* p = static_cast<Prim*>(arena.allocate(Prim::bytes(K, cover == 0)));
   // The frame's Prims do not fit in any cache: the lines a few Prims ahead are requested
   // now, so that their first stores do not wait on memory.
@@ -178,8 +197,7 @@ __attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawReco
   // Varying planes (structure of arrays: values at the anchor, then d/dx, then d/dy).
   // Perspective-correct components are interpolated as value/w.
   float* pl = p->planes();
-  const uint64_t flat = d.program->flat, noper = d.program->noperspective;
-  const uint64_t linear = flat | noper;
+  const uint64_t flat = sc.flat, linear = sc.linear;
   int k = 0;
   // Four components at a time where all four are perspective-correct: PlaneSolver's
   // operations in float and double vectors, loaded straight from the vertices' varyings.
