@@ -405,7 +405,12 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
       Prim* pr = setup_triangle_inline(d, sc, win[s[0]], win[s[1]], win[s[2]], vars + size_t(s[2]) * K, prim_id,
                                        Facing::FromArea, offset_fill, w.arena, w.counters, &culled);
       culled_count += culled;
-      if (pr) bin(w, chunk_index, &d, pr);
+      if (!pr) continue;
+      const int tx = pr->minx >> kTileShift, ty = pr->miny >> kTileShift;
+      if (tx == pr->maxx >> kTileShift && ty == pr->maxy >> kTileShift)  // one tile: most small triangles
+        w.bins[size_t(ty) * tiles_x + tx].push_back({chunk_index, pr, &d});
+      else
+        bin(w, chunk_index, &d, pr);
       continue;
     }
     unsigned any_code = 0;
