@@ -842,6 +842,56 @@ TEST(Wrap, LegacyClamp) {
 // give the bits of the two halves sampled as eight lanes each, whichever way each call goes:
 // all four quads between the same two levels (the sixteen-lane path), quads on different
 // levels, magnification, beyond the last level, NaN coordinates (the eight-lane fallbacks).
+#if defined(__AVX2__)
+// The eight-lane fixed-point bilinear filter reads a lane's two texels of a row as one 64-bit
+// load when they are side by side; it must give the bits of reading them one by one, on a
+// power-of-two texture with REPEAT (pairs that wrap) and a non-power-of-two one with
+// CLAMP_TO_EDGE (pairs clamped at the edges), coordinates over several repeats.
+TEST(Sampling, BilinearTexelPairsGiveTheBitsOfSingleTexels) {
+  std::mt19937 rng(12);
+  int pairs = 0, calls = 0;
+  for (int wrap = 0; wrap < 2; ++wrap) {
+    const int W = wrap ? 37 : 32, H = wrap ? 19 : 16;
+    Texture2D t(Format::RGBA8, W, H, 1);
+    std::vector<uint8_t> px(size_t(W) * H * 4);
+    for (auto& p : px) p = uint8_t(rng());
+    t.upload_rgba8(0, px.data(), px.size());
+    const Wrap mode = wrap ? Wrap::ClampToEdge : Wrap::Repeat;
+    const detail::LevelRef L = detail::level_ref(t, 0);
+    // Spread coordinates, or a row of neighbours (most lanes then have pairs side by side).
+    std::uniform_real_distribution<float> pos(-2.0f, 3.0f), near(0.0f, 0.3f);
+    for (int iter = 0; iter < 4000; ++iter, ++calls) {
+      Float8 s, u;
+      const float s0 = pos(rng), u0 = pos(rng);
+      for (int l = 0; l < 8; ++l) {
+        s[l] = iter % 2 ? pos(rng) : s0 + near(rng);
+        u[l] = iter % 2 ? pos(rng) : u0 + near(rng);
+      }
+      s = detail::sane8_fixed(s);
+      u = detail::sane8_fixed(u);
+      const Vec4<Float8> a = detail::decode_rgba16(detail::bilinear_rgba16_sane<true>(L, mode, mode, s, u));
+      const Vec4<Float8> b = detail::decode_rgba16(detail::bilinear_rgba16_sane<false>(L, mode, mode, s, u));
+      for (int l = 0; l < 8; ++l) {
+        ASSERT_EQ(fbits(a.x[l]), fbits(b.x[l])) << "wrap " << wrap << " iter " << iter << " lane " << l;
+        ASSERT_EQ(fbits(a.y[l]), fbits(b.y[l])) << l;
+        ASSERT_EQ(fbits(a.z[l]), fbits(b.z[l])) << l;
+        ASSERT_EQ(fbits(a.w[l]), fbits(b.w[l])) << l;
+      }
+      bool side_by_side = true;
+      for (int l = 0; l < 8; ++l) {
+        const int i0 = int(std::floor(s[l] * float(W) - 0.5f));
+        const int x0 = wrap ? std::clamp(i0, 0, W - 1) : (i0 & (W - 1));
+        const int x1 = wrap ? std::clamp(i0 + 1, 0, W - 1) : ((i0 + 1) & (W - 1));
+        side_by_side = side_by_side && x1 == x0 + 1;
+      }
+      pairs += side_by_side;
+    }
+  }
+  EXPECT_GT(pairs, 500);  // both ways of reading were taken
+  EXPECT_LT(pairs, calls - 500);
+}
+#endif
+
 TEST(Sampling, SixteenLanesGiveTheBitsOfTwoHalvesOfEight) {
   Texture2D t(Format::RGBA8, 256, 128, 0);
   std::vector<uint8_t> px(size_t(256) * 128 * 4);

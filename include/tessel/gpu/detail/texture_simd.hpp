@@ -88,6 +88,20 @@ struct Rgba16 {
   __m256i even, odd;  // per lane: R | B << 16 and G | A << 16, values 0..255
 };
 
+// The texels at index and index + 1 of each lane (32-bit texels from base), as two 64-bit
+// gathers of four lanes each: lanes 0, 1, 4, 5 and 2, 3, 6, 7, so that one shuffle per 128-bit
+// half puts the first and the second texels back in lane order.
+TESSEL_ALWAYS_INLINE void gather_pairs(const std::byte* base, Int8 index, Int8& first, Int8& second) {
+  alignas(32) int32_t at[8];
+  index.store(at);
+  auto pair = [&](int l) { return _mm_loadl_epi64(reinterpret_cast<const __m128i*>(base + size_t(uint32_t(at[l])) * 4)); };
+  auto two = [&](int l0, int l1) { return _mm_unpacklo_epi64(pair(l0), pair(l1)); };
+  const __m256 a = _mm256_castsi256_ps(_mm256_set_m128i(two(4, 5), two(0, 1)));
+  const __m256 b = _mm256_castsi256_ps(_mm256_set_m128i(two(6, 7), two(2, 3)));
+  first = Int8((vx::i32x8)_mm256_castps_si256(_mm256_shuffle_ps(a, b, 0x88)));
+  second = Int8((vx::i32x8)_mm256_castps_si256(_mm256_shuffle_ps(a, b, 0xDD)));
+}
+
 // A lerp weight w (0..256) as lerp16 takes it: -128 w, which fits in 16 bits for all of them.
 TESSEL_ALWAYS_INLINE int16_t lerp_weight(int w) { return int16_t(-(w << 7)); }
 // The weight of each lane (0..256) in both 16-bit halves of the lane, as lerp16 takes it.
@@ -129,7 +143,9 @@ TESSEL_ALWAYS_INLINE Vec4<Float8> decode_rgba16(const Rgba16& c) {
   return {to_float(e & low) * k, to_float(o & low) * k, to_float(e >> 16) * k, to_float(o >> 16) * k};
 }
 
-// s and t have been through sane8_fixed.
+// s and t have been through sane8_fixed. Pairs: texels side by side in a row are read
+// together (false: one by one, as a test compares).
+template <bool Pairs = true>
 TESSEL_ALWAYS_INLINE Rgba16 bilinear_rgba16_sane(const LevelRef& L, Wrap ws, Wrap wt, Float8 s, Float8 t) {
   const Float8 u = s * Float8(float(L.w)) - Float8(0.5f);
   const Float8 v = t * Float8(float(L.h)) - Float8(0.5f);
@@ -146,6 +162,14 @@ TESSEL_ALWAYS_INLINE Rgba16 bilinear_rgba16_sane(const LevelRef& L, Wrap ws, Wra
   } else {
     y0 = y0 * Int8(L.w);
     y1 = y1 * Int8(L.w);
+  }
+  if (Pairs && ((x1 - x0) == Int8(1)).bits() == 0xFF) {
+    // Each lane's two texels of a row are side by side (no wrap or clamp between them): one
+    // 64-bit element each, half the elements of gathering them one by one.
+    Int8 a00, a10, a01, a11;
+    gather_pairs(L.data, y0 + x0, a00, a10);
+    gather_pairs(L.data, y1 + x0, a01, a11);
+    return lerp16(lerp16(split(a00), split(a10), wa), lerp16(split(a01), split(a11), wa), wb);
   }
   const Rgba16 t00 = split(gather_u32(L.data, y0 + x0)), t10 = split(gather_u32(L.data, y0 + x1));
   const Rgba16 t01 = split(gather_u32(L.data, y1 + x0)), t11 = split(gather_u32(L.data, y1 + x1));
