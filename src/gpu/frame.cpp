@@ -240,11 +240,20 @@ struct Context::Frame {
 
   void process_chunk(Worker& w, uint32_t chunk_index);
   void process_draw_chunk(Worker& w, uint32_t chunk_index, const Chunk& ch, const DrawRecord& d);
-  void bin(Worker& w, uint32_t chunk, const DrawRecord* d, const Prim* p);
+  // Bins a Prim into the tiles it touches: inline for one tile (most small triangles),
+  // bin_tiles for more.
+  void bin(Worker& w, uint32_t chunk, const DrawRecord* d, const Prim* p) {
+    const int tx = p->minx >> kTileShift, ty = p->miny >> kTileShift;
+    if (tx == p->maxx >> kTileShift && ty == p->maxy >> kTileShift)
+      w.bins[size_t(ty) * tiles_x + tx].push_back({chunk, p, d});
+    else
+      bin_tiles(w, chunk, d, p);
+  }
+  void bin_tiles(Worker& w, uint32_t chunk, const DrawRecord* d, const Prim* p);
   void raster_tile(Worker& w, int tile);
 };
 
-void Context::Frame::bin(Worker& w, uint32_t chunk, const DrawRecord* d, const Prim* p) {
+void Context::Frame::bin_tiles(Worker& w, uint32_t chunk, const DrawRecord* d, const Prim* p) {
   const int tx0 = p->minx >> kTileShift, tx1 = p->maxx >> kTileShift;
   const int ty0 = p->miny >> kTileShift, ty1 = p->maxy >> kTileShift;
   for (int ty = ty0; ty <= ty1; ++ty) {
@@ -328,10 +337,10 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     for (size_t i = 0; i < range; ++i) w.ids[i] = lo + uint32_t(i);
     for (size_t i = 0; i < total; ++i) ids[i] -= lo;
   } else if (range <= 4 * total) {
-    // A compact range of ids: a table indexed by id - lo. Without branches:
-    // whether an id is new is as good as random, and a mispredicted branch per new id cost
-    // more than the loop's other work.
-    w.direct.assign(size_t(hi - lo) + 1, UINT32_MAX);
+    // A compact range of ids: a table indexed by id - lo, without branches (whether an id
+    // is new is as good as random, and a mispredicted branch per new id cost more than the
+    // loop's other work).
+    w.direct.assign(range, UINT32_MAX);
     w.ids.resize(total);
     uint32_t* table = w.direct.data();
     uint32_t* unique = w.ids.data();
@@ -405,12 +414,7 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
       Prim* pr = setup_triangle_inline(d, sc, win[s[0]], win[s[1]], win[s[2]], vars + size_t(s[2]) * K, prim_id,
                                        Facing::FromArea, offset_fill, w.arena, w.counters, &culled);
       culled_count += culled;
-      if (!pr) continue;
-      const int tx = pr->minx >> kTileShift, ty = pr->miny >> kTileShift;
-      if (tx == pr->maxx >> kTileShift && ty == pr->maxy >> kTileShift)  // one tile: most small triangles
-        w.bins[size_t(ty) * tiles_x + tx].push_back({chunk_index, pr, &d});
-      else
-        bin(w, chunk_index, &d, pr);
+      if (pr) bin(w, chunk_index, &d, pr);
       continue;
     }
     unsigned any_code = 0;

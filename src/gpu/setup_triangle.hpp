@@ -22,10 +22,9 @@ __attribute__((always_inline)) inline uint64_t small_coverage(const EdgeEq* e, i
     struct Tables {
       uint64_t col[4][8], row[2][8];
     } t{};
-    const int dx[8] = {0, 1, 0, 1, 2, 3, 2, 3}, dy[8] = {0, 0, 1, 1, 0, 0, 1, 1};  // kLaneDx, kLaneDy
     for (int g = 0; g < 8; ++g)
       for (int l = 0; l < 8; ++l) {
-        const int x = (g & 1) * 4 + dx[l], y = (g >> 1) * 2 + dy[l];
+        const int x = (g & 1) * 4 + kLaneDx[l], y = (g >> 1) * 2 + kLaneDy[l];
         const uint64_t bit = uint64_t(1) << (8 * g + l);
         for (int lo = 0; lo < 4; ++lo)
           for (int hi = 0; hi < 8; ++hi)

@@ -79,16 +79,10 @@ template <class S> class Program final : public ProgramBase {
       if (pending_mask) shade<Float8>(d, t, *pending_prim, *pending_prim, pending, pending, pending_mask, c);
       pending_mask = 0;
     };
-    // A tile's triangles are a sparse walk through the frame's Prims (which fit no cache),
-    // in no pattern the hardware prefetcher follows: each would wait on memory when its turn
-    // came, so the one kAhead places on is requested before each (four lines: a Prim with
-    // six varyings and edges is 208 bytes).
-    constexpr int kAhead = 8;
-    auto prefetch = [](const Prim* p) { prefetch_prim(p); };
     [[maybe_unused]] const bool packed = kPacked && d.fast_color;
-    for (int i = 0; i < n && i < kAhead; ++i) prefetch(prims[i]);
+    for (int i = 0; i < n && i < kAhead; ++i) prefetch_prim(prims[i]);
     for (int i = 0; i < n; ++i) {
-      if (i + kAhead < n) prefetch(prims[i + kAhead]);
+      if (i + kAhead < n) prefetch_prim(prims[i + kAhead]);
       if constexpr (kPacked) {
         if (packed && packable(*prims[i])) {
           // Small triangles from here on are shaded packed (raster_packed).
@@ -112,6 +106,11 @@ template <class S> class Program final : public ProgramBase {
   struct FragmentCounts {
     uint64_t fragments_shaded = 0, fragments_written = 0, fragments_rejected = 0;
   };
+  // A tile's triangles are a sparse walk through the frame's Prims (which fit no cache), in
+  // no pattern the hardware prefetcher follows: each would wait on memory when its turn came,
+  // so the one kAhead places on is requested before each (four lines: a Prim with six
+  // varyings and edges is 208 bytes).
+  static constexpr int kAhead = 8;
   static void prefetch_prim(const Prim* p) {
     const char* q = reinterpret_cast<const char*>(p);
     __builtin_prefetch(q);
@@ -119,6 +118,10 @@ template <class S> class Program final : public ProgramBase {
     __builtin_prefetch(q + 128);
     __builtin_prefetch(q + 192);
   }
+
+  // Pixel centres of a 4x2 group's lanes, from its corner.
+  static constexpr Float8 kCentreX{vx::f32x8{0.5f, 1.5f, 0.5f, 1.5f, 2.5f, 3.5f, 2.5f, 3.5f}};
+  static constexpr Float8 kCentreY{vx::f32x8{0.5f, 0.5f, 1.5f, 1.5f, 0.5f, 0.5f, 1.5f, 1.5f}};
 
   // Shaders whose lanes are independent (shader.hpp), with early depth, may be packed.
   static constexpr bool kPacked = shader_lanes_independent<S>() && !shader_discards<S>() && !shader_writes_depth<S>();
@@ -139,17 +142,15 @@ template <class S> class Program final : public ProgramBase {
   // order, which is submission order; depth is tested and written before any later group's
   // test. Larger triangles, whose groups are mostly full, are shaded by group in raster():
   // it shades its pending group before it calls this, and this shades every staged lane
-  // before it returns. Runs prims[i..) while they have a cover and returns the index of the
-  // first that has not (or n); prefetches kAhead places on, as raster() does.
+  // before it returns. Runs prims[i..) while they are packable and returns the index of the
+  // first that is not (or n); prefetches kAhead places on, as raster() does.
   __attribute__((noinline)) int raster_packed(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int i,
                                               int n, int x0, int y0, int x1, int y1, FragmentCounts& c) const {
     constexpr int K = varying_count<S>();
     Stage st;
     const bool tests = d.state.depth_test || d.state.stencil_test;
-    const Float8 dx8(vx::f32x8{0.5f, 1.5f, 0.5f, 1.5f, 2.5f, 3.5f, 2.5f, 3.5f});
-    const Float8 dy8(vx::f32x8{0.5f, 0.5f, 1.5f, 1.5f, 0.5f, 0.5f, 1.5f, 1.5f});
     auto emit_packed = [&](const Prim& p, Pos g, unsigned mask) __attribute__((always_inline)) {
-      const Float8 cx = Float8(float(g.x)) + dx8, cy = Float8(float(g.y)) + dy8;
+      const Float8 cx = Float8(float(g.x)) + kCentreX, cy = Float8(float(g.y)) + kCentreY;
       const Float8 fx = cx - Float8(p.xr), fy = cy - Float8(p.yr);
       auto plane = [&](const float* q, int stride) {
         return fma(Float8(q[2 * stride]), fy, fma(Float8(q[stride]), fx, Float8(q[0])));
@@ -183,7 +184,6 @@ template <class S> class Program final : public ProgramBase {
         for (int v = 0; v < kStaged; ++v) Float8::load(&st.v[v][16]).store(&st.v[v][0]);
       }
     };
-    constexpr int kAhead = 8;
     for (; i < n && packable(*prims[i]); ++i) {
       if (i + kAhead < n) prefetch_prim(prims[i + kAhead]);
       raster_one(*prims[i], x0, y0, x1, y1, emit_packed);
@@ -420,16 +420,13 @@ template <class S> class Program final : public ProgramBase {
     constexpr int K = varying_count<S>();
     constexpr int N = lane_width<F>;
     constexpr int outputs = shader_outputs<S>();
-    // Pixel centres of the lanes.
-    const Float8 dx8(vx::f32x8{0.5f, 1.5f, 0.5f, 1.5f, 2.5f, 3.5f, 2.5f, 3.5f});
-    const Float8 dy8(vx::f32x8{0.5f, 0.5f, 1.5f, 1.5f, 0.5f, 0.5f, 1.5f, 1.5f});
     F cx, cy;
     if constexpr (N == 8) {
-      cx = Float8(float(a.x)) + dx8;
-      cy = Float8(float(a.y)) + dy8;
+      cx = Float8(float(a.x)) + kCentreX;
+      cy = Float8(float(a.y)) + kCentreY;
     } else {
-      cx = join(Float8(float(a.x)) + dx8, Float8(float(b.x)) + dx8);
-      cy = join(Float8(float(a.y)) + dy8, Float8(float(b.y)) + dy8);
+      cx = join(Float8(float(a.x)) + kCentreX, Float8(float(b.x)) + kCentreX);
+      cy = join(Float8(float(a.y)) + kCentreY, Float8(float(b.y)) + kCentreY);
     }
     // A plane (value, d/dx, d/dy, `stride` floats apart) of each half's triangle at the lanes.
     auto plane = [&](const float* qa, const float* qb, int stride, F fx, F fy) {
