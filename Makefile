@@ -17,7 +17,9 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-run: build
+# Builds only the tessel command: a newcomer waits for the first picture, not for the tests.
+run: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target tessel
 	@mkdir -p out
 	@$(BUILD)/apps/tessel render --size 1280x720 -o out/demo.png --stats
 
