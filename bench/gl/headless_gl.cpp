@@ -30,6 +30,19 @@ std::string hex(uint32_t v) {
   return buf;
 }
 
+const char* gl_error_name(uint32_t e) {
+  switch (e) {
+    case 0x0500: return "GL_INVALID_ENUM";
+    case 0x0501: return "GL_INVALID_VALUE";
+    case 0x0502: return "GL_INVALID_OPERATION";
+    case 0x0506: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case 0x0505: return "GL_OUT_OF_MEMORY";
+    case 0x0503: return "GL_STACK_OVERFLOW";
+    case 0x0504: return "GL_STACK_UNDERFLOW";
+    default: return "unknown GL error";
+  }
+}
+
 namespace {
 
 const char* egl_error_name(EGLint e) {

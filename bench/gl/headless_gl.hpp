@@ -64,6 +64,8 @@ class HeadlessContext {
 // (the shader is deleted first).
 // A GL or EGL enum or error code as "0x0500".
 std::string hex(uint32_t v);
+// The name of a glGetError code ("GL_INVALID_ENUM"), or "unknown GL error".
+const char* gl_error_name(uint32_t e);
 
 unsigned int compile_shader(unsigned int type, const std::string& src);
 // glCreateProgram, attaches vs and fs, links. The shaders stay the caller's. Throws

@@ -19,20 +19,9 @@
 namespace tessel::reference {
 namespace {
 
+using tessel::gl::gl_error_name;
 using tessel::gl::hex;
 
-const char* gl_error_name(GLenum e) {
-  switch (e) {
-    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
-    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
-    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
-    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
-    case GL_STACK_OVERFLOW: return "GL_STACK_OVERFLOW";
-    case GL_STACK_UNDERFLOW: return "GL_STACK_UNDERFLOW";
-    default: return "unknown GL error";
-  }
-}
 
 void check_gl(const char* what) {
   GLenum first = glGetError();
