@@ -22,6 +22,7 @@
 #include "tessel/gpu/detail/pipeline.hpp"
 #include "tessel/gpu/detail/raster.hpp"
 #include "tessel/gpu/framebuffer.hpp"
+#include "tessel/gpu/runtime_shader.hpp"
 #include "tessel/gpu/shader.hpp"
 #include "tessel/gpu/state.hpp"
 
@@ -86,6 +87,12 @@ class Context final : public PendingWork {
     submit(std::make_unique<detail::Program<S>>(shader, uniforms), layout, state, call,
            detail::shader_attributes<S>());
   }
+
+  // Queues a draw of a shader known only at run time (a GLSL program, runtime_shader.hpp).
+  // The draw keeps `shader` until it has run. Throws Error as the draw above does, and for a
+  // null shader or a shape the pipeline cannot take (too many varyings or outputs).
+  void draw(std::shared_ptr<const RuntimeShader> shader, const VertexLayout& layout, const RenderState& state,
+            const DrawCall& call);
 
   // Runs everything queued; afterwards the attachments hold the results.
   void flush() override;

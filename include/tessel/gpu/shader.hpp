@@ -78,6 +78,11 @@ template <class S> constexpr uint32_t shader_attributes() {
 template <class S> constexpr bool shader_lanes_independent() {
   if constexpr (requires { S::lanes_independent; }) return S::lanes_independent; else return false;
 }
+// A bridge to a shader known only at run time (runtime_shader.hpp): its flat components are
+// copied bit for bit, and its number of outputs is ProgramBase::outputs.
+template <class S> constexpr bool shader_runtime() {
+  if constexpr (requires { S::runtime; }) return S::runtime; else return false;
+}
 template <class S> constexpr int shader_outputs() {
   if constexpr (requires { S::outputs; }) return S::outputs; else return 1;
 }

@@ -167,7 +167,17 @@ template <class S> class Program final : public ProgramBase {
       const Int8 index = pack_index(mask);
       const int at = st.fill;
       const float* pl = p.planes();
-      for (int k = 0; k < K; ++k) pack(plane(pl + k, K), index).store(&st.v[k][at]);
+      for (int k = 0; k < K; ++k) {
+        // A run-time shader's flat components (integers among them) keep their bits: through
+        // the plane, -0 would become +0 and a signalling NaN pattern would be quieted.
+        if constexpr (shader_runtime<S>()) {
+          if ((flat >> k) & 1) {
+            Float8(pl[k]).store(&st.v[k][at]);
+            continue;
+          }
+        }
+        pack(plane(pl + k, K), index).store(&st.v[k][at]);
+      }
       pack(cx, index).store(&st.v[K][at]);
       pack(cy, index).store(&st.v[K + 1][at]);
       pack(z, index).store(&st.v[K + 2][at]);
@@ -228,7 +238,7 @@ template <class S> class Program final : public ProgramBase {
     Varyings<F> vary;
     const F oow = F::load(st.v[K + 3]);
     if constexpr (K > 0) {
-      constexpr uint64_t linear = shader_flat<S>() | shader_noperspective<S>();
+      const uint64_t linear = shader_runtime<S>() ? flat | noperspective : shader_flat<S>() | shader_noperspective<S>();
       const F w = F(1.0f) / oow;
       F lanes[K];
       for (int k = 0; k < K; ++k) {
@@ -419,7 +429,8 @@ template <class S> class Program final : public ProgramBase {
                                                                   Pos a, Pos b, unsigned mask, FragmentCounts& c) const {
     constexpr int K = varying_count<S>();
     constexpr int N = lane_width<F>;
-    constexpr int outputs = shader_outputs<S>();
+    constexpr int max_outputs = shader_outputs<S>();
+    const int outputs = shader_runtime<S>() ? std::min(max_outputs, ProgramBase::outputs) : max_outputs;
     F cx, cy;
     if constexpr (N == 8) {
       cx = Float8(float(a.x)) + kCentreX;
@@ -450,8 +461,13 @@ template <class S> class Program final : public ProgramBase {
       F lanes[K];
       const float *pla = pa.planes(), *plb = pb.planes();
       for (int k = 0; k < K; ++k) {
-        F v = plane(pla + k, plb + k, K, fx, fy);
-        if (!(((flat | noperspective) >> k) & 1)) v = v * w;
+        F v;
+        if (shader_runtime<S>() && ((flat >> k) & 1)) {
+          v = halves<F>(pla[k], plb[k]);  // bit for bit (see raster_packed)
+        } else {
+          v = plane(pla + k, plb + k, K, fx, fy);
+          if (!(((flat | noperspective) >> k) & 1)) v = v * w;
+        }
         lanes[k] = v;
       }
       std::memcpy(&vary, lanes, sizeof lanes);
@@ -476,7 +492,7 @@ template <class S> class Program final : public ProgramBase {
     if constexpr (N == 8) {
       write8(d, t, a, mask, f.color.data(), outputs);
     } else {
-      Vec4<Float8> half[outputs];
+      Vec4<Float8> half[max_outputs];
       if (mask & 0xFF) {
         for (int i = 0; i < outputs; ++i) half[i] = lo_half(f.color[size_t(i)]);
         write8(d, t, a, mask & 0xFF, half, outputs);

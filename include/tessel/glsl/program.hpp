@@ -1,0 +1,119 @@
+// GLSL shaders given as text, compiled at run time, and drawn by the gpu pipeline.
+//
+//   auto vs = glsl::Shader::compile(glsl::Stage::Vertex, vertex_source);
+//   auto fs = glsl::Shader::compile(glsl::Stage::Fragment, fragment_source);
+//   if (!vs->ok()) std::cerr << vs->info_log();
+//   auto prog = glsl::Program::link(*vs, *fs);
+//   if (!prog->ok()) std::cerr << prog->info_log();
+//   prog->set_uniform(prog->uniform_location("MVP"), glm::value_ptr(mvp), 16);
+//   layout.attribs[prog->attribute_location("vtxPos")] = {...};
+//   prog->draw(ctx, layout, state, {.topology = gpu::Topology::Triangles, .count = n}, units);
+//
+// Compiling and linking never throw: errors are reported in info logs, in GL's form
+// ("0:12: error: ..."). GLSL 1.10 to 3.30 are accepted, with the compatibility built-ins
+// (gl_Vertex, gl_ModelViewMatrix, ...) as attributes and uniforms of those names.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tessel/gpu/context.hpp"
+#include "tessel/gpu/texture.hpp"
+
+namespace tessel::glsl {
+
+enum class Stage : uint8_t { Vertex, Fragment };
+
+class Shader {
+ public:
+  // Compiles `source` (its #version line says which GLSL; none means 1.10). Never throws.
+  static std::shared_ptr<Shader> compile(Stage stage, std::string source);
+  Stage stage() const { return stage_; }
+  bool ok() const { return ok_; }
+  const std::string& info_log() const { return log_; }
+  const std::string& source() const { return source_; }
+
+ private:
+  Stage stage_ = Stage::Vertex;
+  bool ok_ = false;
+  std::string source_, log_;
+};
+
+// An active attribute, uniform or fragment output, as GL reports it.
+struct Variable {
+  std::string name;      // uniforms of arrays end in "[0]", as glGetActiveUniform gives them
+  uint32_t type = 0;     // GL type enum (GL_FLOAT_VEC3, GL_SAMPLER_2D, ...)
+  int size = 1;          // array elements
+  int location = -1;
+};
+
+// Locations chosen by the application before linking (glBindAttribLocation,
+// glBindFragDataLocation); layout(location) qualifiers take precedence.
+struct LinkOptions {
+  std::map<std::string, int> attribute_locations;
+  std::map<std::string, int> frag_data_locations;
+};
+
+// A texture unit as the program's samplers see it.
+struct TextureBinding {
+  const gpu::Texture2D* texture_2d = nullptr;
+  const gpu::TextureCube* texture_cube = nullptr;
+  gpu::SamplerState sampler;
+};
+
+// Fixed attribute locations of the compatibility attributes (as NVIDIA aliases them).
+inline constexpr int kLocationVertex = 0, kLocationNormal = 2, kLocationColor = 3, kLocationSecondaryColor = 4,
+                     kLocationFogCoord = 5, kLocationMultiTexCoord0 = 8;
+
+class Program {
+ public:
+  // Links a vertex and a fragment shader. Never throws; a program that failed to link has
+  // ok() false and says why in info_log().
+  static std::shared_ptr<Program> link(const Shader& vertex, const Shader& fragment, const LinkOptions& options = {});
+  ~Program();
+
+  bool ok() const;
+  const std::string& info_log() const;
+
+  const std::vector<Variable>& attributes() const;  // active, user-declared
+  const std::vector<Variable>& uniforms() const;    // active, user-declared (gl_ state excluded)
+  const std::vector<Variable>& outputs() const;     // fragment outputs
+  int attribute_location(std::string_view name) const;  // -1 when not an active attribute
+  // The location of a uniform, array element or struct member ("m", "k[2]", "l[1].pos"),
+  // or -1. Compatibility state has locations too ("gl_ModelViewMatrix").
+  int uniform_location(std::string_view name) const;
+  int frag_data_location(std::string_view name) const;
+
+  // Sets count elements from `location` (GL's glUniform*v): `data` holds the components of
+  // each element (matrices column by column). The base type must match the uniform's (float,
+  // int, uint; bools take any and store "not zero"; samplers take int units). Returns false,
+  // changing nothing, where GL would give GL_INVALID_OPERATION (no such location, a type or
+  // size mismatch); location -1 is ignored and gives true, as in GL.
+  bool set_uniform(int location, const float* data, int components, int count = 1);
+  bool set_uniform(int location, const int32_t* data, int components, int count = 1);
+  bool set_uniform(int location, const uint32_t* data, int components, int count = 1);
+  // Reads one element's components (glGetUniform*), as floats or as raw 32-bit words.
+  bool get_uniform(int location, float* out) const;
+  bool get_uniform_words(int location, uint32_t* out) const;
+
+  // The pipeline's view of this program with its current uniforms and the given texture
+  // units: what gpu::Context::draw takes. Valid after the program changes or goes.
+  std::shared_ptr<const gpu::RuntimeShader> bind(std::span<const TextureBinding> units = {}) const;
+  // Queues a draw (bind() and gpu::Context::draw). Throws gpu::Error as draw does, and for a
+  // program that did not link.
+  void draw(gpu::Context& ctx, const gpu::VertexLayout& layout, const gpu::RenderState& state, const gpu::DrawCall& call,
+            std::span<const TextureBinding> units = {}) const;
+
+  struct Impl;
+
+ private:
+  Program();
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tessel::glsl

@@ -1,0 +1,491 @@
+// The IR interpreter (interp.hpp). Structured control flow under execution masks, as
+// ir.hpp describes: `live` is the set of lanes that run a node.
+#include "interp.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace tessel::glsl {
+namespace {
+
+using ir::Inst;
+using ir::Op;
+constexpr int L = ir::kLanes;
+
+struct Masks {
+  uint32_t ret = 0, brk = 0, cont = 0, kill = 0;
+};
+
+inline float f(uint32_t u) { return std::bit_cast<float>(u); }
+inline uint32_t u(float x) { return std::bit_cast<uint32_t>(x); }
+inline int32_t s(uint32_t x) { return int32_t(x); }
+inline uint32_t b(bool x) { return x ? ~0u : 0u; }
+
+uint32_t mask_of(const LaneReg& r) {
+  uint32_t m = 0;
+  for (int l = 0; l < L; ++l) m |= (r.u[l] >> 31) << l;
+  return m;
+}
+
+// Integer division with every case defined, as llvmpipe defines it: a divisor of 0 is taken
+// as -1 (all bits set), and an unsigned quotient or remainder by 0 is all bits set.
+int32_t idiv(int32_t a, int32_t d) {
+  if (d == 0) d = -1;
+  if (d == -1) return int32_t(0u - uint32_t(a));
+  return a / d;
+}
+uint32_t udiv(uint32_t a, uint32_t d) { return d == 0 ? ~0u : a / d; }
+uint32_t umod(uint32_t a, uint32_t d) { return d == 0 ? ~0u : a % d; }
+
+// Float to integer as x86's cvttps2dq: NaN and out-of-range values give INT_MIN.
+int32_t f2i(float x) {
+  if (!(x > -2147483904.0f && x < 2147483648.0f)) return std::numeric_limits<int32_t>::min();
+  return int32_t(x);
+}
+uint32_t f2u(float x) {
+  if (!(x > -1.0f)) return 0;
+  if (x >= 4294967296.0f) return ~0u;
+  return uint32_t(x);
+}
+
+int find_msb_u(uint32_t x) { return x == 0 ? -1 : 31 - std::countl_zero(x); }
+int find_msb_i(int32_t x) { return find_msb_u(uint32_t(x < 0 ? ~x : x)); }
+uint32_t bit_reverse(uint32_t x) {
+  uint32_t r = 0;
+  for (int i = 0; i < 32; ++i) r |= ((x >> i) & 1u) << (31 - i);
+  return r;
+}
+uint32_t field_mask(uint32_t bits) { return bits >= 32 ? ~0u : ((1u << bits) - 1u); }
+
+uint32_t pack_half(float a, float c) {
+  const _Float16 x = _Float16(a), y = _Float16(c);
+  uint16_t bx, by;
+  std::memcpy(&bx, &x, 2);
+  std::memcpy(&by, &y, 2);
+  return uint32_t(bx) | (uint32_t(by) << 16);
+}
+float unpack_half(uint32_t h) {
+  const uint16_t v = uint16_t(h);
+  _Float16 x;
+  std::memcpy(&x, &v, 2);
+  return float(x);
+}
+
+float fsign(float x) { return x > 0.0f ? 1.0f : x < 0.0f ? -1.0f : 0.0f; }
+float ffract(float x) { return x - std::floor(x); }
+float fmod_glsl(float x, float y) { return x - y * std::floor(x / y); }
+
+class Runner {
+ public:
+  Runner(const ir::Stage& st, LaneReg* r, const RunInputs& in) : st_(st), r_(r), in_(in) {}
+
+  void block(const ir::Block& bl, uint32_t mask) {
+    for (const ir::Node& n : bl) {
+      const uint32_t live = mask & ~(m_.ret | m_.brk | m_.cont | m_.kill);
+      if (!live) return;
+      switch (n.kind) {
+        case ir::Node::Kind::Code: code(n.code, live); break;
+        case ir::Node::Kind::If: {
+          const uint32_t c = mask_of(r_[n.cond]) & live;
+          if (c) block(n.a, c);
+          const uint32_t e = live & ~c;
+          if (e && !n.b.empty()) block(n.b, e);
+          break;
+        }
+        case ir::Node::Kind::Loop: {
+          const uint32_t brk = m_.brk, cont = m_.cont;
+          m_.brk = 0;
+          for (int it = 0; it < ir::kMaxLoopIterations; ++it) {
+            m_.cont = 0;
+            uint32_t lm = live & ~(m_.ret | m_.brk | m_.kill);
+            if (!lm) break;
+            block(n.a, lm);
+            m_.cont = 0;
+            lm = live & ~(m_.ret | m_.brk | m_.kill);
+            if (!lm) break;
+            block(n.b, lm);
+          }
+          m_.brk = brk;
+          m_.cont = cont;
+          break;
+        }
+        case ir::Node::Kind::Break: m_.brk |= live; break;
+        case ir::Node::Kind::Continue: m_.cont |= live; break;
+        case ir::Node::Kind::Return: m_.ret |= live; break;
+        case ir::Node::Kind::Discard: m_.kill |= live; break;
+        case ir::Node::Kind::Function: {
+          const uint32_t ret = m_.ret;
+          block(n.a, live);
+          m_.ret = ret;
+          break;
+        }
+        case ir::Node::Kind::Switch: {
+          const uint32_t brk = m_.brk;
+          m_.brk = 0;
+          block(n.a, live);
+          m_.brk = brk;
+          break;
+        }
+      }
+    }
+  }
+
+  uint32_t killed() const { return m_.kill; }
+
+ private:
+  const ir::Stage& st_;
+  LaneReg* r_;
+  const RunInputs& in_;
+  Masks m_;
+
+  template <class Fn> void each(uint32_t* d, Fn&& fn) {
+    for (int l = 0; l < L; ++l) d[l] = fn(l);
+  }
+
+  void code(const std::vector<Inst>& code, uint32_t live) {
+    for (const Inst& i : code) {
+      uint32_t* d = r_[i.dst].u;
+      const uint32_t* a = r_[i.a].u;
+      const uint32_t* bb = r_[i.b].u;
+      const uint32_t* c = r_[i.c].u;
+      uint32_t t[L];
+      switch (i.op) {
+        case Op::Const: each(d, [&](int) { return i.imm; }); break;
+        case Op::Mov: std::memcpy(t, a, sizeof t); std::memcpy(d, t, sizeof t); break;
+        case Op::Store:
+          for (int l = 0; l < L; ++l)
+            if ((live >> l) & 1) d[l] = a[l];
+          break;
+        case Op::Uniform: each(d, [&](int) { return uniform(i.imm); }); break;
+        case Op::UniformIndexed: each(t, [&](int l) { return uniform(i.imm + a[l]); }); std::memcpy(d, t, sizeof t); break;
+        case Op::LoadIndexed:
+          // b + a[l] stays within the variable (i.imm is its last register).
+          each(t, [&](int l) { return r_[std::min<uint64_t>(uint64_t(i.b) + a[l], i.imm)].u[l]; });
+          std::memcpy(d, t, sizeof t);
+          break;
+        case Op::StoreIndexed:
+          for (int l = 0; l < L; ++l)
+            if ((live >> l) & 1) r_[std::min<uint64_t>(uint64_t(i.dst) + a[l], i.imm)].u[l] = bb[l];
+          break;
+        case Op::Select: each(t, [&](int l) { return (a[l] >> 31) ? bb[l] : c[l]; }); std::memcpy(d, t, sizeof t); break;
+
+#define F1(OP, EXPR) \
+  case Op::OP: each(t, [&](int l) { const float x = f(a[l]); (void)x; return u(EXPR); }); std::memcpy(d, t, sizeof t); break;
+#define F2(OP, EXPR) \
+  case Op::OP: each(t, [&](int l) { const float x = f(a[l]), y = f(bb[l]); return u(EXPR); }); std::memcpy(d, t, sizeof t); break;
+#define FC(OP, EXPR) \
+  case Op::OP: each(t, [&](int l) { const float x = f(a[l]), y = f(bb[l]); (void)y; return b(EXPR); }); std::memcpy(d, t, sizeof t); break;
+#define I2(OP, EXPR) \
+  case Op::OP: each(t, [&](int l) { const uint32_t x = a[l], y = bb[l]; (void)y; return uint32_t(EXPR); }); std::memcpy(d, t, sizeof t); break;
+
+        F2(FAdd, x + y)
+        F2(FSub, x - y)
+        F2(FMul, x * y)
+        F2(FDiv, x / y)
+        F1(FNeg, -x)
+        F1(FAbs, std::fabs(x))
+        F1(FSign, fsign(x))
+        F2(FMin, y < x ? y : x)
+        F2(FMax, x < y ? y : x)
+        case Op::FFma:
+          each(t, [&](int l) { return u(std::fma(f(a[l]), f(bb[l]), f(c[l]))); });
+          std::memcpy(d, t, sizeof t);
+          break;
+        F1(FFloor, std::floor(x))
+        F1(FCeil, std::ceil(x))
+        F1(FTrunc, std::trunc(x))
+        F1(FRound, std::round(x))
+        F1(FRoundEven, std::nearbyint(x))
+        F1(FFract, ffract(x))
+        F2(FMod, fmod_glsl(x, y))
+        F1(FSqrt, std::sqrt(x))
+        F1(FRsq, 1.0f / std::sqrt(x))
+        F1(FSin, std::sin(x))
+        F1(FCos, std::cos(x))
+        F1(FTan, std::tan(x))
+        F1(FAsin, std::asin(x))
+        F1(FAcos, std::acos(x))
+        F1(FAtan, std::atan(x))
+        F2(FAtan2, std::atan2(x, y))
+        F1(FSinh, std::sinh(x))
+        F1(FCosh, std::cosh(x))
+        F1(FTanh, std::tanh(x))
+        F1(FAsinh, std::asinh(x))
+        F1(FAcosh, std::acosh(x))
+        F1(FAtanh, std::atanh(x))
+        F2(FPow, std::pow(x, y))
+        F1(FExp, std::exp(x))
+        F1(FLog, std::log(x))
+        F1(FExp2, std::exp2(x))
+        F1(FLog2, std::log2(x))
+        case Op::FLdexp:
+          each(t, [&](int l) { return u(std::ldexp(f(a[l]), std::clamp(s(bb[l]), -1000, 1000))); });
+          std::memcpy(d, t, sizeof t);
+          break;
+        case Op::FFrexpMant:
+          each(t, [&](int l) { int e; return u(std::isfinite(f(a[l])) ? std::frexp(f(a[l]), &e) : f(a[l])); });
+          std::memcpy(d, t, sizeof t);
+          break;
+        case Op::FFrexpExp:
+          each(t, [&](int l) { int e = 0; if (std::isfinite(f(a[l]))) std::frexp(f(a[l]), &e); return uint32_t(e); });
+          std::memcpy(d, t, sizeof t);
+          break;
+        FC(FLt, x < y)
+        FC(FLe, x <= y)
+        FC(FGt, x > y)
+        FC(FGe, x >= y)
+        FC(FEq, x == y)
+        FC(FNe, x != y)
+        FC(FIsNan, std::isnan(x))
+        FC(FIsInf, std::isinf(x))
+
+        I2(IAdd, x + y)
+        I2(ISub, x - y)
+        I2(IMul, x * y)
+        I2(IDiv, idiv(s(x), s(y)))
+        I2(UDiv, udiv(x, y))
+        // GLSL leaves % undefined for negative operands; Mesa takes the remainder of the bits
+        // as unsigned, and so does Tessel.
+        I2(IMod, umod(x, y))
+        I2(UMod, umod(x, y))
+        I2(INeg, 0u - x)
+        I2(IAbs, s(x) < 0 ? 0u - x : x)
+        I2(ISign, s(x) > 0 ? 1 : s(x) < 0 ? -1 : 0)
+        I2(IMin, std::min(s(x), s(y)))
+        I2(IMax, std::max(s(x), s(y)))
+        I2(UMin, std::min(x, y))
+        I2(UMax, std::max(x, y))
+        I2(And, x & y)
+        I2(Or, x | y)
+        I2(Xor, x ^ y)
+        I2(Not, ~x)
+        // Shift counts use their low five bits, as NIR defines the shifts.
+        I2(Shl, x << (y & 31))
+        I2(ShrA, s(x) >> (y & 31))
+        I2(ShrL, x >> (y & 31))
+        I2(ILt, b(s(x) < s(y)))
+        I2(ILe, b(s(x) <= s(y)))
+        I2(IGt, b(s(x) > s(y)))
+        I2(IGe, b(s(x) >= s(y)))
+        I2(ULt, b(x < y))
+        I2(ULe, b(x <= y))
+        I2(UGt, b(x > y))
+        I2(UGe, b(x >= y))
+        I2(IEq, b(x == y))
+        I2(INe, b(x != y))
+        I2(BitCount, std::popcount(x))
+        I2(FindLSB, x == 0 ? -1 : std::countr_zero(x))
+        I2(IFindMSB, find_msb_i(s(x)))
+        I2(UFindMSB, find_msb_u(x))
+        I2(BitReverse, bit_reverse(x))
+        case Op::IBitExtract:
+        case Op::UBitExtract:
+          each(t, [&](int l) {
+            const uint32_t off = std::min(bb[l], 32u), bits = std::min(c[l], 32u - off);
+            if (bits == 0) return 0u;
+            uint32_t v = (a[l] >> (off & 31)) & field_mask(bits);
+            if (off >= 32) v = 0;
+            if (i.op == Op::IBitExtract && bits < 32 && ((v >> (bits - 1)) & 1)) v |= ~field_mask(bits);
+            return v;
+          });
+          std::memcpy(d, t, sizeof t);
+          break;
+        case Op::BitInsert: {
+          const uint32_t* e = r_[i.d].u;
+          each(t, [&](int l) {
+            const uint32_t off = std::min(c[l], 32u), bits = std::min(e[l], 32u - off);
+            if (bits == 0 || off >= 32) return a[l];
+            const uint32_t m = field_mask(bits) << off;
+            return (a[l] & ~m) | ((bb[l] << off) & m);
+          });
+          std::memcpy(d, t, sizeof t);
+          break;
+        }
+        I2(UAddCarry, (x + y) < x ? 1u : 0u)
+        I2(USubBorrow, x < y ? 1u : 0u)
+        I2(UMulHi, uint32_t((uint64_t(x) * y) >> 32))
+        I2(IMulHi, uint32_t((int64_t(s(x)) * s(y)) >> 32))
+        case Op::I2F: each(t, [&](int l) { return u(float(s(a[l]))); }); std::memcpy(d, t, sizeof t); break;
+        case Op::U2F: each(t, [&](int l) { return u(float(a[l])); }); std::memcpy(d, t, sizeof t); break;
+        case Op::F2I: each(t, [&](int l) { return uint32_t(f2i(f(a[l]))); }); std::memcpy(d, t, sizeof t); break;
+        case Op::F2U: each(t, [&](int l) { return f2u(f(a[l])); }); std::memcpy(d, t, sizeof t); break;
+        case Op::PackHalf: each(t, [&](int l) { return pack_half(f(a[l]), f(bb[l])); }); std::memcpy(d, t, sizeof t); break;
+        case Op::UnpackHalfLo: each(t, [&](int l) { return u(unpack_half(a[l])); }); std::memcpy(d, t, sizeof t); break;
+        case Op::UnpackHalfHi: each(t, [&](int l) { return u(unpack_half(a[l] >> 16)); }); std::memcpy(d, t, sizeof t); break;
+        // Inside each 2x2 quad (lanes 4q..4q+3: (0,0) (1,0) (0,1) (1,1)), as llvmpipe takes them.
+        case Op::Ddx: each(t, [&](int l) { return u(f(a[l | 1]) - f(a[l & ~1])); }); std::memcpy(d, t, sizeof t); break;
+        case Op::Ddy: each(t, [&](int l) { return u(f(a[l | 2]) - f(a[l & ~2])); }); std::memcpy(d, t, sizeof t); break;
+        case Op::Texture: texture(st_.textures[i.imm]); break;
+#undef F1
+#undef F2
+#undef FC
+#undef I2
+      }
+    }
+  }
+
+  uint32_t uniform(uint64_t w) const {
+    if (in_.uniform_words == 0) return 0;
+    return in_.uniforms[std::min<uint64_t>(w, in_.uniform_words - 1)];
+  }
+
+  const TextureUnit* unit_of(const ir::TexOp& t) const {
+    const int32_t unit = s(uniform(uint32_t(t.sampler)));
+    if (unit < 0 || unit >= in_.unit_count) return nullptr;
+    return &in_.units[unit];
+  }
+
+  float lane(ir::Reg r, int l) const { return r == ir::TexOp::kNone ? 0.0f : f(r_[r].u[l]); }
+  int32_t ilane(ir::Reg r, int l) const { return r == ir::TexOp::kNone ? 0 : s(r_[r].u[l]); }
+
+  void put(const ir::TexOp& t, int l, const glm::vec4& v) {
+    for (int k = 0; k < 4; ++k) {
+      if (t.dst[k] == ir::TexOp::kNone) continue;
+      r_[t.dst[k]].u[l] = t.result == 0 ? u(v[k]) : uint32_t(t.result == 1 ? f2i(v[k]) : f2u(v[k]));
+    }
+  }
+
+  void texture(const ir::TexOp& t) {
+    const TextureUnit* unit = unit_of(t);
+    const gpu::Texture2D* tex2 = unit ? unit->texture_2d : nullptr;
+    const gpu::TextureCube* cube = unit ? unit->texture_cube : nullptr;
+    const glm::vec4 missing(0.0f, 0.0f, 0.0f, 1.0f);
+    if (t.kind == ir::TexKind::Size) {
+      for (int l = 0; l < L; ++l) {
+        const int level = ilane(t.lod, l);
+        glm::ivec2 sz(0);
+        if (t.dim == ir::SamplerDim::Cube) {
+          if (cube && level >= 0 && level < cube->levels()) sz = glm::ivec2(cube->face(0).width(level), cube->face(0).height(level));
+        } else if (tex2 && level >= 0 && level < tex2->levels()) {
+          sz = glm::ivec2(tex2->width(level), tex2->height(level));
+        }
+        if (t.dst[0] != ir::TexOp::kNone) r_[t.dst[0]].u[l] = uint32_t(sz.x);
+        if (t.dst[1] != ir::TexOp::kNone) r_[t.dst[1]].u[l] = uint32_t(sz.y);
+      }
+      return;
+    }
+    if (t.kind == ir::TexKind::Fetch) {
+      for (int l = 0; l < L; ++l) {
+        const int x = ilane(t.coord[0], l) + t.offset[0] + ilane(t.offset_reg[0], l);
+        const int y = t.dim == ir::SamplerDim::D1 ? 0 : ilane(t.coord[1], l) + t.offset[1] + ilane(t.offset_reg[1], l);
+        put(t, l, gpu::detail::texel_fetch(tex2, x, y, ilane(t.lod, l)));
+      }
+      return;
+    }
+    if (t.dim == ir::SamplerDim::Cube) {
+      if (!cube) {
+        for (int l = 0; l < L; ++l) put(t, l, missing);
+        return;
+      }
+      gpu::SamplerCube sc{cube, unit->sampler};
+      if (in_.fragment && !t.has_lod && !t.has_grad) {
+        gpu::Vec3<gpu::Float16> dir;
+        for (int l = 0; l < L; ++l) {
+          dir.x[l] = lane(t.coord[0], l);
+          dir.y[l] = lane(t.coord[1], l);
+          dir.z[l] = lane(t.coord[2], l);
+        }
+        if (t.has_bias) sc.state.lod_bias += lane(t.lod, 0);
+        const gpu::Vec4<gpu::Float16> r = gpu::texture(sc, dir);
+        for (int l = 0; l < L; ++l) put(t, l, glm::vec4(r.x[l], r.y[l], r.z[l], r.w[l]));
+      } else {
+        for (int l = 0; l < L; ++l) {
+          const float lod = t.has_lod ? lane(t.lod, l) : 0.0f;
+          put(t, l, gpu::detail::sample_cube(sc, lane(t.coord[0], l), lane(t.coord[1], l), lane(t.coord[2], l), lod));
+        }
+      }
+      return;
+    }
+    // 1D, 2D and rectangle textures (a 1D texture is a 2D texture one texel high).
+    if (!tex2) {
+      for (int l = 0; l < L; ++l) put(t, l, t.shadow ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : missing);
+      return;
+    }
+    alignas(64) float uu[L], vv[L], ref[L];
+    const bool d1 = t.dim == ir::SamplerDim::D1;
+    const float w0 = float(tex2->width()), h0 = float(tex2->height());
+    for (int l = 0; l < L; ++l) {
+      float x = lane(t.coord[0], l), y = d1 ? 0.5f : lane(t.coord[1], l);
+      float r = 0.0f;
+      if (t.shadow) r = lane(t.coord[2], l);  // (s, t, ref) for 2D; (s, unused, ref) for 1D
+      if (t.proj) {
+        const float q = lane(t.coord[t.coords - 1], l);
+        x /= q;
+        if (!d1) y /= q;
+        r /= q;
+      }
+      if (t.dim == ir::SamplerDim::Rect) {
+        x /= w0;
+        y /= h0;
+      }
+      x += float(t.offset[0]) / w0;
+      if (!d1) y += float(t.offset[1]) / h0;
+      uu[l] = x;
+      vv[l] = y;
+      ref[l] = r;
+    }
+    const bool implicit = !t.has_lod && !t.has_grad;
+    if (t.shadow) {
+      gpu::Sampler2DShadow ss{tex2, unit->sampler};
+      ss.state.compare = true;
+      for (int l = 0; l < L; ++l) {
+        float lod = t.has_lod ? lane(t.lod, l) : 0.0f;
+        if (implicit && in_.fragment) {
+          const int q = l & ~3;
+          lod = gpu::detail::lod_from_derivatives(uu[q | 1] - uu[q], vv[q | 1] - vv[q], uu[q | 2] - uu[q], vv[q | 2] - vv[q],
+                                                  tex2->width(), tex2->height());
+          if (t.has_bias) lod += lane(t.lod, l);
+        }
+        const float v = gpu::detail::sample_2d_compare(ss, uu[l], vv[l], ref[l], lod);
+        put(t, l, glm::vec4(v, v, v, 1.0f));
+      }
+      return;
+    }
+    gpu::Sampler2D s2{tex2, unit->sampler};
+    if (implicit && in_.fragment && !t.has_bias) {
+      const gpu::Vec4<gpu::Float16> r = gpu::texture(s2, gpu::Vec2<gpu::Float16>(gpu::Float16::load(uu), gpu::Float16::load(vv)));
+      for (int l = 0; l < L; ++l) put(t, l, glm::vec4(r.x[l], r.y[l], r.z[l], r.w[l]));
+      return;
+    }
+    for (int l = 0; l < L; ++l) {
+      float lod;
+      if (t.has_lod) {
+        lod = lane(t.lod, l);
+      } else if (t.has_grad) {
+        float dx0 = lane(t.dx[0], l), dx1 = d1 ? 0.0f : lane(t.dx[1], l);
+        float dy0 = lane(t.dy[0], l), dy1 = d1 ? 0.0f : lane(t.dy[1], l);
+        if (t.dim == ir::SamplerDim::Rect) {
+          dx0 /= w0, dy0 /= w0, dx1 /= h0, dy1 /= h0;
+        }
+        lod = gpu::detail::lod_from_derivatives(dx0, dx1, dy0, dy1, tex2->width(), tex2->height());
+      } else if (in_.fragment) {
+        const int q = l & ~3;
+        lod = gpu::detail::lod_from_derivatives(uu[q | 1] - uu[q], vv[q | 1] - vv[q], uu[q | 2] - uu[q], vv[q | 2] - vv[q],
+                                                tex2->width(), tex2->height());
+      } else {
+        lod = 0.0f;
+      }
+      if (t.has_bias) lod += lane(t.lod, l);
+      put(t, l, gpu::detail::sample_2d(s2, uu[l], vv[l], lod));
+    }
+  }
+};
+
+}  // namespace
+
+uint32_t run_stage(const ir::Stage& stage, LaneReg* regs, uint32_t mask, const RunInputs& in) {
+  for (const auto& [r, bits] : stage.constants) std::fill(regs[r].u, regs[r].u + ir::kLanes, bits);
+  for (const auto& [r, w] : stage.uniforms) {
+    const uint32_t v = in.uniform_words ? in.uniforms[std::min(w, in.uniform_words - 1)] : 0;
+    std::fill(regs[r].u, regs[r].u + ir::kLanes, v);
+  }
+  for (const auto& [r, n] : stage.variables) std::memset(regs + r, 0, sizeof(LaneReg) * n);
+  Runner run(stage, regs, in);
+  run.block(stage.body, mask);
+  return run.killed();
+}
+
+}  // namespace tessel::glsl

@@ -1,0 +1,1557 @@
+// GLSL (glslang's linked AST) to Tessel's IR: every value is split into its scalar
+// components, functions are inlined, control flow stays structured (ir.hpp).
+//
+// Places: a variable is a run of consecutive registers; a uniform is a run of words in the
+// program's uniform layout. An access chain (a[i].b.xy) becomes a place: the variable, the
+// offsets of the components it names and, for a dynamic index, a register with a clamped
+// offset added to them at run time, so that an index out of range reads or writes an
+// element of the same array and never anything else.
+#include "lower.hpp"
+
+#include <glslang/Include/intermediate.h>
+#include <glslang/MachineIndependent/localintermediate.h>
+
+#include <bit>
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "gl_types.hpp"
+
+namespace tessel::glsl {
+namespace {
+
+using glslang::TIntermAggregate;
+using glslang::TIntermBinary;
+using glslang::TIntermBranch;
+using glslang::TIntermConstantUnion;
+using glslang::TIntermLoop;
+
+using glslang::TIntermSelection;
+using glslang::TIntermSequence;
+using glslang::TIntermSwitch;
+using glslang::TIntermSymbol;
+using glslang::TIntermTyped;
+using glslang::TIntermUnary;
+using glslang::TType;
+using ir::Inst;
+using ir::Op;
+using ir::Reg;
+using Node = ir::Node;
+using Kind = ir::Node::Kind;
+
+constexpr Reg kNone = ~0u;
+
+struct LowerError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void fail(const TIntermNode* n, const std::string& what) {
+  std::string where = "0:?";
+  if (n) where = "0:" + std::to_string(n->getLoc().line);
+  throw LowerError(where + ": error: " + what);
+}
+
+Base base_of(const TType& t, const TIntermNode* where) {
+  switch (t.getBasicType()) {
+    case glslang::EbtFloat: return Base::Float;
+    case glslang::EbtInt: return Base::Int;
+    case glslang::EbtUint: return Base::Uint;
+    case glslang::EbtBool: return Base::Bool;
+    case glslang::EbtSampler: return Base::Int;
+    case glslang::EbtDouble: fail(where, "double precision is not supported");
+    default: fail(where, "type '" + std::string(t.getBasicTypeString().c_str()) + "' is not supported");
+  }
+}
+
+int array_length(const TType& t) {
+  int n = t.getOuterArraySize();
+  if (n <= 0) n = t.getImplicitArraySize();
+  return n > 0 ? n : 1;
+}
+
+// Components of a value of type t.
+int count(const TType& t) {
+  if (t.isArray()) {
+    TType e(t, 0);
+    return array_length(t) * count(e);
+  }
+  if (t.isStruct()) {
+    int n = 0;
+    for (const auto& m : *t.getStruct()) n += count(*m.type);
+    return n;
+  }
+  if (t.isMatrix()) return t.getMatrixCols() * t.getMatrixRows();
+  return std::max(1, t.getVectorSize());
+}
+
+void component_bases(const TType& t, std::vector<Base>& out, const TIntermNode* where) {
+  if (t.isArray()) {
+    TType e(t, 0);
+    for (int i = 0; i < array_length(t); ++i) component_bases(e, out, where);
+  } else if (t.isStruct()) {
+    for (const auto& m : *t.getStruct()) component_bases(*m.type, out, where);
+  } else {
+    const Base b = base_of(t, where);
+    for (int i = 0; i < count(t); ++i) out.push_back(b);
+  }
+}
+
+uint32_t fbits(float f) { return std::bit_cast<uint32_t>(f); }
+
+using Val = std::vector<Reg>;
+
+struct Place {
+  enum class Where : uint8_t { Regs, Uniform } where = Where::Regs;
+  Reg base = 0;  // first register or uniform word of the variable
+  uint32_t size = 0;
+  Reg dyn = kNone;  // register with a component offset added at run time
+  std::vector<uint32_t> comps;
+  bool sampler = false;
+};
+
+class Lowerer {
+ public:
+  Lowerer(const glslang::TIntermediate& in, int stage, UniformLayout& u) : in_(in), stage_(stage), uniforms_(u) {}
+
+  LoweredStage run() {
+    TIntermNode* root = in_.getTreeRoot();
+    if (!root || !root->getAsAggregate()) fail(nullptr, "the shader has no code");
+    // Functions by mangled name; global initializers in order; the linker objects declare
+    // the interface.
+    std::vector<TIntermNode*> globals;
+    TIntermAggregate* main_fn = nullptr;
+    for (TIntermNode* n : root->getAsAggregate()->getSequence()) {
+      TIntermAggregate* a = n->getAsAggregate();
+      if (a && a->getOp() == glslang::EOpFunction) {
+        functions_[std::string(a->getName().c_str())] = a;
+        if (std::string(a->getName().c_str()) == "main(") main_fn = a;
+      } else if (a && a->getOp() == glslang::EOpLinkerObjects) {
+        // Declared interface variables; only those the code uses become inputs, outputs
+        // and uniforms (GL's active ones).
+        for (TIntermNode* o : a->getSequence())
+          if (TIntermSymbol* s = o->getAsSymbolNode())
+            if (s->getType().getQualifier().storage == glslang::EvqVaryingOut) out_.declared_outputs.insert(name_of(s));
+      } else {
+        globals.push_back(n);
+      }
+    }
+    if (!main_fn) fail(nullptr, "missing main()");
+    Node fn;
+    fn.kind = Kind::Function;
+    blocks_.push_back(&fn.a);
+    scopes_.emplace_back();
+    for (TIntermNode* g : globals) statement(g);
+    const TIntermSequence& seq = main_fn->getSequence();
+    if (seq.size() >= 2 && seq[1]) statement(seq[1]);
+    scopes_.pop_back();
+    blocks_.pop_back();
+    out_.ir.body.push_back(std::move(fn));
+    out_.ir.registers = next_;
+    return std::move(out_);
+  }
+
+ private:
+  const glslang::TIntermediate& in_;
+  int stage_;
+  UniformLayout& uniforms_;
+  LoweredStage out_;
+  Reg next_ = 0;
+  std::vector<ir::Block*> blocks_;  // where code goes; back() is the current block
+  std::unordered_map<std::string, TIntermAggregate*> functions_;
+  std::unordered_map<long long, Place> globals_;
+  std::vector<std::unordered_map<long long, Place>> scopes_;  // per inlined function
+  std::unordered_map<uint32_t, Reg> consts_;
+  std::unordered_map<uint32_t, Reg> uniform_regs_;
+  struct Frame {
+    Val ret;
+  };
+  std::vector<Frame> frames_;
+  int inline_depth_ = 0;
+
+  // --- emission -------------------------------------------------------------------------
+  Reg fresh(int n = 1) {
+    const Reg r = next_;
+    next_ += Reg(n);
+    if (next_ > (1u << 20)) fail(nullptr, "the shader is too large");
+    return r;
+  }
+  std::vector<Inst>& code() {
+    ir::Block& b = *blocks_.back();
+    if (b.empty() || b.back().kind != Kind::Code) b.push_back(Node{});
+    return b.back().code;
+  }
+  Reg emit(Op op, Reg a = 0, Reg b = 0, Reg c = 0, uint32_t imm = 0) {
+    const Reg d = fresh();
+    code().push_back(Inst{op, d, a, b, c, 0, imm});
+    return d;
+  }
+  void emit_to(Op op, Reg dst, Reg a, Reg b = 0, Reg c = 0, uint32_t imm = 0) {
+    code().push_back(Inst{op, dst, a, b, c, 0, imm});
+  }
+  Reg konst(uint32_t bits) {
+    auto it = consts_.find(bits);
+    if (it != consts_.end()) return it->second;
+    const Reg r = fresh();
+    out_.ir.constants.push_back({r, bits});
+    consts_[bits] = r;
+    return r;
+  }
+  Reg fconst(float f) { return konst(fbits(f)); }
+  Reg iconst(int32_t i) { return konst(uint32_t(i)); }
+  Reg uniform_word(uint32_t w) {
+    auto it = uniform_regs_.find(w);
+    if (it != uniform_regs_.end()) return it->second;
+    const Reg r = fresh();
+    out_.ir.uniforms.push_back({r, w});
+    uniform_regs_[w] = r;
+    return r;
+  }
+
+  // --- declarations ---------------------------------------------------------------------
+  Place var_place(Reg base, int n) {
+    Place p;
+    p.base = base;
+    p.size = uint32_t(n);
+    for (int i = 0; i < n; ++i) p.comps.push_back(uint32_t(i));
+    return p;
+  }
+
+  static std::string name_of(const TIntermSymbol* s) { return std::string(s->getName().c_str()); }
+
+  // Adds the default-block slots of a uniform of type t named `name` from word w.
+  void add_uniform_slots(const TType& t, const std::string& name, uint32_t& w, bool builtin, const TIntermNode* where) {
+    if (t.isStruct()) {
+      const int n = t.isArray() ? array_length(t) : 1;
+      for (int i = 0; i < n; ++i) {
+        const std::string el = t.isArray() ? name + "[" + std::to_string(i) + "]" : name;
+        for (const auto& m : *t.getStruct())
+          add_uniform_slots(*m.type, el + "." + std::string(m.type->getFieldName().c_str()), w, builtin, where);
+      }
+      return;
+    }
+    UniformSlot s;
+    s.name = name;
+    s.builtin = builtin;
+    TType e = t.isArray() ? TType(t, 0) : TType();
+    const TType& el = t.isArray() ? e : t;
+    s.array_size = t.isArray() ? array_length(t) : 1;
+    s.components = count(el);
+    s.gl_type = gl_type_of(el);
+    s.word = w;
+    if (el.getBasicType() == glslang::EbtSampler) {
+      s.sampler = true;
+      const auto& smp = el.getSampler();
+      s.shadow = smp.isShadow();
+      s.array = smp.isArrayed();
+      switch (smp.dim) {
+        case glslang::Esd1D: s.dim = ir::SamplerDim::D1; break;
+        case glslang::Esd2D: s.dim = ir::SamplerDim::D2; break;
+        case glslang::Esd3D: s.dim = ir::SamplerDim::D3; break;
+        case glslang::EsdCube: s.dim = ir::SamplerDim::Cube; break;
+        case glslang::EsdRect: s.dim = ir::SamplerDim::Rect; break;
+        case glslang::EsdBuffer: s.dim = ir::SamplerDim::Buffer; break;
+        default: fail(where, "sampler type not supported");
+      }
+      s.base = Base::Int;
+    } else {
+      s.base = base_of(el, where);
+    }
+    w += uint32_t(s.array_size * s.components);
+    uniforms_.slots.push_back(s);
+  }
+
+  Place uniform_place(const TIntermSymbol* s) {
+    const std::string name = name_of(s);
+    const TType& t = s->getType();
+    if (t.getBasicType() == glslang::EbtBlock) fail(s, "uniform blocks are not supported yet ('" + name + "')");
+    auto it = uniforms_.by_name.find(name);
+    if (it == uniforms_.by_name.end()) {
+      uint32_t w = uniforms_.words;
+      uniforms_.by_name[name] = uniforms_.slots.size();
+      add_uniform_slots(t, name, w, name.rfind("gl_", 0) == 0, s);
+      uniforms_.words = w;
+      it = uniforms_.by_name.find(name);
+    }
+    const UniformSlot& first = uniforms_.slots[it->second];
+    Place p;
+    p.where = Place::Where::Uniform;
+    p.base = first.word;
+    const int n = count(t);
+    p.size = uint32_t(n);
+    for (int i = 0; i < n; ++i) p.comps.push_back(uint32_t(i));
+    p.sampler = t.getBasicType() == glslang::EbtSampler;
+    // Mark every slot of this variable active.
+    for (size_t i = it->second; i < uniforms_.slots.size() && uniforms_.slots[i].word < first.word + uint32_t(n); ++i)
+      uniforms_.slots[i].active = true;
+    return p;
+  }
+
+  Interface& interface_for(const TIntermSymbol* s, bool output) {
+    auto& list = output ? out_.outputs : out_.inputs;
+    const std::string name = name_of(s);
+    for (auto& i : list)
+      if (i.name == name) return i;
+    const TType& t = s->getType();
+    if (t.getBasicType() == glslang::EbtBlock && !t.isArray()) {
+      // An interface block (gl_PerVertex, for gl_Position in GLSL 1.50 and later): its
+      // members are interface variables of their own, in consecutive registers.
+      const int total = count(t);
+      const Reg base = fresh(total);
+      int off = 0;
+      for (const auto& m : *t.getStruct()) {
+        const TType& mt = *m.type;
+        Interface f;
+        f.name = std::string(mt.getFieldName().c_str());
+        f.components = count(mt);
+        f.array_size = mt.isArray() ? array_length(mt) : 0;
+        TType e = mt.isArray() ? TType(mt, 0) : TType();
+        const TType& el = mt.isArray() ? e : mt;
+        f.gl_type = gl_type_of(el);
+        f.base = base_of(el, s);
+        f.builtin = f.name.rfind("gl_", 0) == 0;
+        f.reg = base + Reg(off);
+        off += f.components;
+        list.push_back(f);
+      }
+      Interface whole;
+      whole.name = name;
+      whole.reg = base;
+      whole.components = total;
+      whole.builtin = true;
+      whole.block = true;
+      list.push_back(whole);
+      return list.back();
+    }
+    Interface f;
+    f.name = name;
+    f.components = count(t);
+    f.array_size = t.isArray() ? array_length(t) : 0;
+    TType e = t.isArray() ? TType(t, 0) : TType();
+    const TType& el = t.isArray() ? e : t;
+    if (!el.isStruct()) {
+      f.gl_type = gl_type_of(el);
+      f.base = base_of(el, s);
+    } else {
+      fail(s, "struct inputs and outputs are not supported yet ('" + name + "')");
+    }
+    const auto& q = t.getQualifier();
+    if (q.hasLocation()) f.location = int(q.layoutLocation);
+    f.flat = q.flat;
+    f.noperspective = q.nopersp;
+    f.builtin = name.rfind("gl_", 0) == 0;
+    f.reg = fresh(f.components);
+    list.push_back(f);
+    return list.back();
+  }
+
+  Place lookup(const TIntermSymbol* s) {
+    const long long id = s->getId();
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+      auto f = it->find(id);
+      if (f != it->end()) return f->second;
+    }
+    auto g = globals_.find(id);
+    if (g != globals_.end()) return g->second;
+    const TType& t = s->getType();
+    const auto storage = t.getQualifier().storage;
+    Place p;
+    switch (storage) {
+      case glslang::EvqUniform:
+        p = uniform_place(s);
+        globals_[id] = p;
+        return p;
+      case glslang::EvqBuffer: fail(s, "buffer blocks are not supported");
+      case glslang::EvqConst: {
+        // A constant that glslang did not fold (a const array indexed at run time).
+        const int n = count(t);
+        const glslang::TConstUnionArray& c = s->getConstArray();
+        if (c.size() < n) fail(s, "constant '" + name_of(s) + "' has no value");
+        std::vector<Base> bases;
+        component_bases(t, bases, s);
+        const Reg r = fresh(n);
+        for (int i = 0; i < n; ++i) out_.ir.constants.push_back({r + Reg(i), const_bits(c[i], bases[size_t(i)])});
+        p = var_place(r, n);
+        globals_[id] = p;
+        return p;
+      }
+      case glslang::EvqVaryingIn:
+      case glslang::EvqVertexId:
+      case glslang::EvqInstanceId:
+      case glslang::EvqFace:
+      case glslang::EvqFragCoord:
+      case glslang::EvqPointCoord: {
+        Interface& f = interface_for(s, false);
+        f.read = true;
+        p = var_place(f.reg, f.components);
+        globals_[id] = p;
+        return p;
+      }
+      case glslang::EvqVaryingOut:
+      case glslang::EvqPosition:
+      case glslang::EvqPointSize:
+      case glslang::EvqClipVertex:
+      case glslang::EvqFragColor:
+      case glslang::EvqFragDepth: {
+        Interface& f = interface_for(s, true);
+        f.written = true;
+        if (storage == glslang::EvqFragDepth) out_.ir.writes_depth = true;
+        p = var_place(f.reg, f.components);
+        out_.ir.variables.push_back({f.reg, uint32_t(f.components)});
+        globals_[id] = p;
+        return p;
+      }
+      case glslang::EvqGlobal: {
+        const int n = count(t);
+        p = var_place(fresh(n), n);
+        out_.ir.variables.push_back({p.base, uint32_t(n)});
+        globals_[id] = p;
+        return p;
+      }
+      default: break;
+    }
+    // A local variable (or parameter) of the current inlined function.
+    const int n = count(t);
+    if (t.getBasicType() == glslang::EbtSampler) fail(s, "sampler variables must be uniforms or parameters");
+    p = var_place(fresh(n), n);
+    out_.ir.variables.push_back({p.base, uint32_t(n)});
+    scopes_.back()[id] = p;
+    return p;
+  }
+
+  static uint32_t const_bits(const glslang::TConstUnion& c, Base want) {
+    double d = 0;
+    int64_t i = 0;
+    bool b = false;
+    switch (c.getType()) {
+      case glslang::EbtFloat:
+      case glslang::EbtDouble: d = c.getDConst(); i = int64_t(d); b = d != 0; break;
+      case glslang::EbtInt: i = c.getIConst(); d = double(i); b = i != 0; break;
+      case glslang::EbtUint: i = c.getUConst(); d = double(c.getUConst()); b = i != 0; break;
+      case glslang::EbtBool: b = c.getBConst(); i = b; d = b; break;
+      default: break;
+    }
+    switch (want) {
+      case Base::Float: return fbits(float(d));
+      case Base::Int:
+      case Base::Uint: return uint32_t(i);
+      case Base::Bool: return b ? ~0u : 0u;
+    }
+    return 0;
+  }
+
+  // --- places and values ------------------------------------------------------------------
+  Val read(const Place& p) {
+    Val v;
+    v.reserve(p.comps.size());
+    for (uint32_t c : p.comps) {
+      if (p.where == Place::Where::Regs) {
+        if (p.dyn == kNone) v.push_back(p.base + c);
+        else v.push_back(emit(Op::LoadIndexed, p.dyn, p.base + c, 0, p.base + p.size - 1));
+      } else {
+        if (p.dyn == kNone) v.push_back(uniform_word(p.base + c));
+        else v.push_back(emit(Op::UniformIndexed, p.dyn, 0, 0, p.base + c));
+      }
+    }
+    return v;
+  }
+
+  void write(const Place& p, Val v, const TIntermNode* where) {
+    if (p.where != Place::Where::Regs) fail(where, "l-value is not writable");
+    if (v.size() != p.comps.size()) fail(where, "internal: assignment of mismatched size");
+    // A value that reads registers of the place itself (v = v.yx) is copied first.
+    if (p.dyn == kNone) {
+      for (Reg& r : v) {
+        if (r >= p.base && r < p.base + p.size) r = emit(Op::Mov, r);
+      }
+      for (size_t i = 0; i < v.size(); ++i) emit_to(Op::Store, p.base + p.comps[i], v[i]);
+    } else {
+      for (Reg& r : v) {
+        if (r >= p.base && r < p.base + p.size) r = emit(Op::Mov, r);
+      }
+      for (size_t i = 0; i < v.size(); ++i) emit_to(Op::StoreIndexed, p.base + p.comps[i], p.dyn, v[i], 0, p.base + p.size - 1);
+    }
+  }
+
+  Place place(TIntermTyped* n) {
+    if (TIntermSymbol* s = n->getAsSymbolNode()) return lookup(s);
+    if (TIntermBinary* b = n->getAsBinaryNode()) {
+      const auto op = b->getOp();
+      if (op == glslang::EOpIndexDirect || op == glslang::EOpIndexIndirect || op == glslang::EOpIndexDirectStruct ||
+          op == glslang::EOpVectorSwizzle) {
+        Place p = place(b->getLeft());
+        const TType& lt = b->getLeft()->getType();
+        if (op == glslang::EOpVectorSwizzle) {
+          std::vector<uint32_t> c;
+          for (TIntermNode* s : b->getRight()->getAsAggregate()->getSequence()) {
+            const int i = s->getAsConstantUnion()->getConstArray()[0].getIConst();
+            c.push_back(p.comps.at(size_t(i)));
+          }
+          p.comps = c;
+          return p;
+        }
+        if (op == glslang::EOpIndexDirectStruct) {
+          const int k = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
+          int off = 0;
+          const auto& members = *lt.getStruct();
+          for (int i = 0; i < k; ++i) off += count(*members[size_t(i)].type);
+          const int n = count(*members[size_t(k)].type);
+          p.comps = std::vector<uint32_t>(p.comps.begin() + off, p.comps.begin() + off + n);
+          p.sampler = members[size_t(k)].type->getBasicType() == glslang::EbtSampler;
+          return p;
+        }
+        // Element i of an array, column i of a matrix, component i of a vector.
+        int elems = 0, esize = 0;
+        if (lt.isArray()) {
+          elems = array_length(lt);
+          esize = count(TType(lt, 0));
+        } else if (lt.isMatrix()) {
+          elems = lt.getMatrixCols();
+          esize = lt.getMatrixRows();
+        } else {
+          elems = lt.getVectorSize();
+          esize = 1;
+        }
+        if (op == glslang::EOpIndexDirect) {
+          int i = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
+          i = std::clamp(i, 0, elems - 1);
+          p.comps = std::vector<uint32_t>(p.comps.begin() + i * esize, p.comps.begin() + (i + 1) * esize);
+          return p;
+        }
+        const Val idx = value(b->getRight());
+        if (p.sampler) fail(b, "arrays of samplers can only be indexed with constant expressions");
+        // The stride between elements must be the same for all of them (it is for whole
+        // variables; a swizzled vector indexed at run time is read through selects).
+        int stride = esize;
+        if (elems > 1) stride = int(p.comps[size_t(esize)]) - int(p.comps[0]);
+        bool uniform_stride = true;
+        for (int e = 0; e < elems && uniform_stride; ++e)
+          for (int c = 0; c < esize; ++c)
+            if (int(p.comps[size_t(e * esize + c)]) != int(p.comps[size_t(c)]) + e * stride) uniform_stride = false;
+        if (!uniform_stride) fail(b, "run-time index into a swizzle is not supported");
+        Reg i = emit(Op::IMax, idx[0], iconst(0));
+        i = emit(Op::IMin, i, iconst(elems - 1));
+        Reg off = stride == 1 ? i : emit(Op::IMul, i, iconst(stride));
+        p.dyn = p.dyn == kNone ? off : emit(Op::IAdd, p.dyn, off);
+        p.comps = std::vector<uint32_t>(p.comps.begin(), p.comps.begin() + esize);
+        return p;
+      }
+    }
+    fail(n, "expression is not an l-value");
+  }
+
+  static bool is_access_chain(TIntermTyped* n) {
+    if (n->getAsSymbolNode()) return true;
+    if (TIntermBinary* b = n->getAsBinaryNode()) {
+      const auto op = b->getOp();
+      if (op == glslang::EOpIndexDirect || op == glslang::EOpIndexDirectStruct || op == glslang::EOpVectorSwizzle)
+        return is_access_chain(b->getLeft());
+      if (op == glslang::EOpIndexIndirect) return is_access_chain(b->getLeft());
+    }
+    return false;
+  }
+
+  // Whether evaluating n may have an effect besides its value (then it cannot be evaluated
+  // for lanes that do not take its branch).
+  static bool has_effects(TIntermNode* n) {
+    if (!n) return false;
+    if (TIntermBinary* b = n->getAsBinaryNode()) {
+      const auto op = b->getOp();
+      if (op >= glslang::EOpAssign && op <= glslang::EOpRightShiftAssign) return true;
+      return has_effects(b->getLeft()) || has_effects(b->getRight());
+    }
+    if (TIntermUnary* u = n->getAsUnaryNode()) {
+      const auto op = u->getOp();
+      if (op == glslang::EOpPostIncrement || op == glslang::EOpPostDecrement || op == glslang::EOpPreIncrement ||
+          op == glslang::EOpPreDecrement)
+        return true;
+      return has_effects(u->getOperand());
+    }
+    if (TIntermAggregate* a = n->getAsAggregate()) {
+      if (a->getOp() == glslang::EOpFunctionCall) return true;
+      for (TIntermNode* c : a->getSequence())
+        if (has_effects(c)) return true;
+      return false;
+    }
+    if (TIntermSelection* s = n->getAsSelectionNode())
+      return has_effects(s->getCondition()) || has_effects(s->getTrueBlock()) || has_effects(s->getFalseBlock());
+    return false;
+  }
+
+  Val constant(TIntermConstantUnion* c) {
+    const TType& t = c->getType();
+    std::vector<Base> bases;
+    component_bases(t, bases, c);
+    const auto& arr = c->getConstArray();
+    Val v;
+    for (size_t i = 0; i < bases.size(); ++i) v.push_back(konst(const_bits(arr[int(i)], bases[i])));
+    return v;
+  }
+
+  // --- conversions --------------------------------------------------------------------
+  Reg convert(Reg r, Base from, Base to) {
+    if (from == to) return r;
+    if ((from == Base::Int && to == Base::Uint) || (from == Base::Uint && to == Base::Int)) return r;
+    switch (to) {
+      case Base::Float:
+        if (from == Base::Int) return emit(Op::I2F, r);
+        if (from == Base::Uint) return emit(Op::U2F, r);
+        return emit(Op::And, r, fconst(1.0f));  // bool
+      case Base::Int:
+      case Base::Uint:
+        if (from == Base::Float) return emit(to == Base::Int ? Op::F2I : Op::F2U, r);
+        return emit(Op::And, r, iconst(1));  // bool
+      case Base::Bool:
+        if (from == Base::Float) return emit(Op::FNe, r, fconst(0.0f));
+        return emit(Op::INe, r, iconst(0));
+    }
+    return r;
+  }
+
+  // --- expressions ----------------------------------------------------------------------
+  Val value(TIntermTyped* n) {
+    if (TIntermConstantUnion* c = n->getAsConstantUnion()) return constant(c);
+    if (TIntermSymbol* s = n->getAsSymbolNode()) {
+      if (s->getType().getQualifier().storage == glslang::EvqConst && s->getConstArray().size() > 0 &&
+          !s->getType().isArray())
+        return constant_of_symbol(s);
+      return read(lookup(s));
+    }
+    if (TIntermBinary* b = n->getAsBinaryNode()) return binary(b);
+    if (TIntermUnary* u = n->getAsUnaryNode()) return unary(u);
+    if (TIntermAggregate* a = n->getAsAggregate()) return aggregate(a);
+    if (TIntermSelection* s = n->getAsSelectionNode()) return select(s);
+    fail(n, "expression not supported");
+  }
+
+  Val constant_of_symbol(TIntermSymbol* s) {
+    std::vector<Base> bases;
+    component_bases(s->getType(), bases, s);
+    Val v;
+    for (size_t i = 0; i < bases.size(); ++i) v.push_back(konst(const_bits(s->getConstArray()[int(i)], bases[i])));
+    return v;
+  }
+
+  static Base base_or_float(const TType& t) {
+    switch (t.getBasicType()) {
+      case glslang::EbtInt: return Base::Int;
+      case glslang::EbtUint: return Base::Uint;
+      case glslang::EbtBool: return Base::Bool;
+      default: return Base::Float;
+    }
+  }
+
+  // Repeats a scalar to n components.
+  static Val widen(const Val& v, size_t n) {
+    if (v.size() == n) return v;
+    if (v.size() == 1) return Val(n, v[0]);
+    return v;
+  }
+
+  Val componentwise(Op op, const Val& a, const Val& b, size_t n) {
+    const Val x = widen(a, n), y = widen(b, n);
+    Val r;
+    for (size_t i = 0; i < n; ++i) r.push_back(emit(op, x.at(i), y.at(i)));
+    return r;
+  }
+
+  Op arith_op(glslang::TOperator op, Base b, TIntermNode* where) {
+    const bool f = b == Base::Float, u = b == Base::Uint;
+    switch (op) {
+      case glslang::EOpAdd: case glslang::EOpAddAssign: return f ? Op::FAdd : Op::IAdd;
+      case glslang::EOpSub: case glslang::EOpSubAssign: return f ? Op::FSub : Op::ISub;
+      case glslang::EOpMul: case glslang::EOpMulAssign: case glslang::EOpVectorTimesScalar:
+      case glslang::EOpVectorTimesScalarAssign: case glslang::EOpMatrixTimesScalar:
+      case glslang::EOpMatrixTimesScalarAssign:
+        return f ? Op::FMul : Op::IMul;
+      case glslang::EOpDiv: case glslang::EOpDivAssign: return f ? Op::FDiv : u ? Op::UDiv : Op::IDiv;
+      case glslang::EOpMod: case glslang::EOpModAssign: return f ? Op::FMod : u ? Op::UMod : Op::IMod;
+      case glslang::EOpAnd: case glslang::EOpAndAssign: return Op::And;
+      case glslang::EOpInclusiveOr: case glslang::EOpInclusiveOrAssign: return Op::Or;
+      case glslang::EOpExclusiveOr: case glslang::EOpExclusiveOrAssign: return Op::Xor;
+      case glslang::EOpLeftShift: case glslang::EOpLeftShiftAssign: return Op::Shl;
+      case glslang::EOpRightShift: case glslang::EOpRightShiftAssign: return u ? Op::ShrL : Op::ShrA;
+      default: fail(where, "operator not supported");
+    }
+  }
+
+  // a (cols_a x rows) times b; column-major components.
+  Val mat_mul(const Val& a, int a_cols, int a_rows, const Val& b, int b_cols) {
+    Val r;
+    for (int c = 0; c < b_cols; ++c) {
+      for (int row = 0; row < a_rows; ++row) {
+        Reg acc = emit(Op::FMul, a[size_t(row)], b[size_t(c * a_cols)]);
+        for (int k = 1; k < a_cols; ++k) acc = mad(a[size_t(k * a_rows + row)], b[size_t(c * a_cols + k)], acc);
+        r.push_back(acc);
+      }
+    }
+    return r;
+  }
+
+  Val arithmetic(glslang::TOperator op, const TType& rt, TIntermTyped* l, const Val& a, TIntermTyped* r, const Val& b,
+                 TIntermNode* where) {
+    const TType& lt = l->getType();
+    const TType& tt = r->getType();
+    switch (op) {
+      case glslang::EOpMatrixTimesMatrix:
+      case glslang::EOpMatrixTimesMatrixAssign:
+        return mat_mul(a, lt.getMatrixCols(), lt.getMatrixRows(), b, tt.getMatrixCols());
+      case glslang::EOpMatrixTimesVector:
+        return mat_mul(a, lt.getMatrixCols(), lt.getMatrixRows(), b, 1);
+      case glslang::EOpVectorTimesMatrix:
+      case glslang::EOpVectorTimesMatrixAssign: {
+        // v * M: component c is dot(v, column c).
+        const int rows = tt.getMatrixRows(), cols = tt.getMatrixCols();
+        Val out;
+        for (int c = 0; c < cols; ++c) {
+          Reg acc = emit(Op::FMul, a[0], b[size_t(c * rows)]);
+          for (int k = 1; k < rows; ++k) acc = mad(a[size_t(k)], b[size_t(c * rows + k)], acc);
+          out.push_back(acc);
+        }
+        return out;
+      }
+      default: break;
+    }
+    const Base base = base_or_float(lt.getBasicType() == glslang::EbtBool ? tt : lt);
+    const size_t n = size_t(count(rt));
+    if (op == glslang::EOpLeftShift || op == glslang::EOpRightShift || op == glslang::EOpLeftShiftAssign ||
+        op == glslang::EOpRightShiftAssign) {
+      const Base lb = base_or_float(lt);
+      return componentwise(arith_op(op, lb, where), a, b, n);
+    }
+    return componentwise(arith_op(op, base, where), a, b, n);
+  }
+
+  Val compare_all(bool equal, const TType& t, const Val& a, const Val& b, TIntermNode* where) {
+    std::vector<Base> bases;
+    component_bases(t, bases, where);
+    Reg acc = kNone;
+    for (size_t i = 0; i < a.size(); ++i) {
+      const Reg e = emit(bases[i] == Base::Float ? Op::FEq : Op::IEq, a[i], b[i]);
+      acc = acc == kNone ? e : emit(Op::And, acc, e);
+    }
+    if (equal) return {acc};
+    return {emit(Op::Not, acc)};
+  }
+
+  Val binary(TIntermBinary* b) {
+    const auto op = b->getOp();
+    switch (op) {
+      case glslang::EOpIndexDirect:
+      case glslang::EOpIndexIndirect:
+      case glslang::EOpIndexDirectStruct:
+      case glslang::EOpVectorSwizzle:
+        if (is_access_chain(b)) return read(place(b));
+        return rvalue_access(b);
+      case glslang::EOpAssign: {
+        Val v = value(b->getRight());
+        const Place p = place(b->getLeft());
+        write(p, v, b);
+        return read(p);
+      }
+      case glslang::EOpAddAssign: case glslang::EOpSubAssign: case glslang::EOpMulAssign: case glslang::EOpDivAssign:
+      case glslang::EOpModAssign: case glslang::EOpAndAssign: case glslang::EOpInclusiveOrAssign:
+      case glslang::EOpExclusiveOrAssign: case glslang::EOpLeftShiftAssign: case glslang::EOpRightShiftAssign:
+      case glslang::EOpVectorTimesMatrixAssign: case glslang::EOpVectorTimesScalarAssign:
+      case glslang::EOpMatrixTimesScalarAssign: case glslang::EOpMatrixTimesMatrixAssign: {
+        const Place p = place(b->getLeft());
+        const Val cur = read(p);
+        const Val rhs = value(b->getRight());
+        Val v = arithmetic(op, b->getLeft()->getType(), b->getLeft(), cur, b->getRight(), rhs, b);
+        write(p, v, b);
+        return read(p);
+      }
+      case glslang::EOpLogicalAnd:
+      case glslang::EOpLogicalOr: {
+        const Val a = value(b->getLeft());
+        if (!has_effects(b->getRight())) {
+          const Val c = value(b->getRight());
+          return {emit(op == glslang::EOpLogicalAnd ? Op::And : Op::Or, a[0], c[0])};
+        }
+        // Short circuit: the right side runs only in the lanes that need it.
+        const Reg t = fresh();
+        out_.ir.variables.push_back({t, 1});
+        emit_to(Op::Store, t, a[0]);
+        Node n;
+        n.kind = Kind::If;
+        n.cond = op == glslang::EOpLogicalAnd ? a[0] : emit(Op::Not, a[0]);
+        blocks_.push_back(&n.a);
+        const Val c = value(b->getRight());
+        emit_to(Op::Store, t, c[0]);
+        blocks_.pop_back();
+        blocks_.back()->push_back(std::move(n));
+        return {emit(Op::Mov, t)};
+      }
+      case glslang::EOpLogicalXor: {
+        const Val a = value(b->getLeft()), c = value(b->getRight());
+        return {emit(Op::Xor, a[0], c[0])};
+      }
+      case glslang::EOpComma: {
+        (void)value(b->getLeft());
+        return value(b->getRight());
+      }
+      default: break;
+    }
+    const Val a = value(b->getLeft());
+    const Val c = value(b->getRight());
+    const TType& lt = b->getLeft()->getType();
+    switch (op) {
+      case glslang::EOpEqual: return compare_all(true, lt, a, c, b);
+      case glslang::EOpNotEqual: return compare_all(false, lt, a, c, b);
+      case glslang::EOpVectorEqual:
+      case glslang::EOpVectorNotEqual:
+      case glslang::EOpLessThan:
+      case glslang::EOpGreaterThan:
+      case glslang::EOpLessThanEqual:
+      case glslang::EOpGreaterThanEqual: {
+        const Base base = base_or_float(lt);
+        Op o;
+        const bool f = base == Base::Float, u = base == Base::Uint;
+        switch (op) {
+          case glslang::EOpVectorEqual: o = f ? Op::FEq : Op::IEq; break;
+          case glslang::EOpVectorNotEqual: o = f ? Op::FNe : Op::INe; break;
+          case glslang::EOpLessThan: o = f ? Op::FLt : u ? Op::ULt : Op::ILt; break;
+          case glslang::EOpGreaterThan: o = f ? Op::FGt : u ? Op::UGt : Op::IGt; break;
+          case glslang::EOpLessThanEqual: o = f ? Op::FLe : u ? Op::ULe : Op::ILe; break;
+          default: o = f ? Op::FGe : u ? Op::UGe : Op::IGe; break;
+        }
+        return componentwise(o, a, c, std::max(a.size(), c.size()));
+      }
+      default: return arithmetic(op, b->getType(), b->getLeft(), a, b->getRight(), c, b);
+    }
+  }
+
+  // An index or swizzle of a value that is not a variable (a call's result, a constructor).
+  Val rvalue_access(TIntermBinary* b) {
+    const auto op = b->getOp();
+    const Val v = value(b->getLeft());
+    const TType& lt = b->getLeft()->getType();
+    if (op == glslang::EOpVectorSwizzle) {
+      Val r;
+      for (TIntermNode* s : b->getRight()->getAsAggregate()->getSequence())
+        r.push_back(v.at(size_t(s->getAsConstantUnion()->getConstArray()[0].getIConst())));
+      return r;
+    }
+    if (op == glslang::EOpIndexDirectStruct) {
+      const int k = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
+      int off = 0;
+      const auto& members = *lt.getStruct();
+      for (int i = 0; i < k; ++i) off += count(*members[size_t(i)].type);
+      const int n = count(*members[size_t(k)].type);
+      return Val(v.begin() + off, v.begin() + off + n);
+    }
+    int elems, esize;
+    if (lt.isArray()) {
+      elems = array_length(lt);
+      esize = count(TType(lt, 0));
+    } else if (lt.isMatrix()) {
+      elems = lt.getMatrixCols();
+      esize = lt.getMatrixRows();
+    } else {
+      elems = lt.getVectorSize();
+      esize = 1;
+    }
+    if (op == glslang::EOpIndexDirect) {
+      const int i = std::clamp(b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst(), 0, elems - 1);
+      return Val(v.begin() + i * esize, v.begin() + (i + 1) * esize);
+    }
+    // Run-time index: a chain of selects over the elements.
+    const Val idx = value(b->getRight());
+    Val r(v.begin(), v.begin() + esize);
+    for (int e = 1; e < elems; ++e) {
+      const Reg m = emit(Op::IEq, idx[0], iconst(e));
+      for (int c = 0; c < esize; ++c) r[size_t(c)] = emit(Op::Select, m, v[size_t(e * esize + c)], r[size_t(c)]);
+    }
+    return r;
+  }
+
+  Val unary(TIntermUnary* u) {
+    const auto op = u->getOp();
+    TIntermTyped* x = u->getOperand();
+    const TType& xt = x->getType();
+    const Base xb = base_or_float(xt);
+    switch (op) {
+      case glslang::EOpPostIncrement:
+      case glslang::EOpPostDecrement:
+      case glslang::EOpPreIncrement:
+      case glslang::EOpPreDecrement: {
+        const Place p = place(x);
+        Val old = read(p);
+        for (Reg& r : old) r = emit(Op::Mov, r);
+        const bool inc = op == glslang::EOpPostIncrement || op == glslang::EOpPreIncrement;
+        const Reg one = xb == Base::Float ? fconst(1.0f) : iconst(1);
+        Val nv;
+        for (Reg r : old) nv.push_back(emit(xb == Base::Float ? (inc ? Op::FAdd : Op::FSub) : (inc ? Op::IAdd : Op::ISub), r, one));
+        write(p, nv, u);
+        if (op == glslang::EOpPostIncrement || op == glslang::EOpPostDecrement) return old;
+        return read(p);
+      }
+      default: break;
+    }
+    const Val a = value(x);
+    auto each = [&](Op o) {
+      Val r;
+      for (Reg c : a) r.push_back(emit(o, c));
+      return r;
+    };
+    auto each_f = [&](auto&& f) {
+      Val r;
+      for (Reg c : a) r.push_back(f(c));
+      return r;
+    };
+    const Base rb = base_or_float(u->getType());
+    switch (op) {
+      case glslang::EOpNegative: return each(xb == Base::Float ? Op::FNeg : Op::INeg);
+      case glslang::EOpLogicalNot:
+      case glslang::EOpVectorLogicalNot:
+      case glslang::EOpBitwiseNot: return each(Op::Not);
+      case glslang::EOpCopyObject: return a;
+      case glslang::EOpRadians: return each_f([&](Reg c) { return emit(Op::FMul, c, fconst(0.017453292519943295f)); });
+      case glslang::EOpDegrees: return each_f([&](Reg c) { return emit(Op::FMul, c, fconst(57.29577951308232f)); });
+      case glslang::EOpSin: return each(Op::FSin);
+      case glslang::EOpCos: return each(Op::FCos);
+      case glslang::EOpTan: return each(Op::FTan);
+      case glslang::EOpAsin: return each(Op::FAsin);
+      case glslang::EOpAcos: return each(Op::FAcos);
+      case glslang::EOpAtan: return each(Op::FAtan);
+      case glslang::EOpSinh: return each(Op::FSinh);
+      case glslang::EOpCosh: return each(Op::FCosh);
+      case glslang::EOpTanh: return each(Op::FTanh);
+      case glslang::EOpAsinh: return each(Op::FAsinh);
+      case glslang::EOpAcosh: return each(Op::FAcosh);
+      case glslang::EOpAtanh: return each(Op::FAtanh);
+      case glslang::EOpExp: return each(Op::FExp);
+      case glslang::EOpLog: return each(Op::FLog);
+      case glslang::EOpExp2: return each(Op::FExp2);
+      case glslang::EOpLog2: return each(Op::FLog2);
+      case glslang::EOpSqrt: return each(Op::FSqrt);
+      case glslang::EOpInverseSqrt: return each(Op::FRsq);
+      case glslang::EOpAbs: return each(xb == Base::Float ? Op::FAbs : Op::IAbs);
+      case glslang::EOpSign: return each(xb == Base::Float ? Op::FSign : Op::ISign);
+      case glslang::EOpFloor: return each(Op::FFloor);
+      case glslang::EOpTrunc: return each(Op::FTrunc);
+      case glslang::EOpRound: return each(Op::FRoundEven);  // GLSL leaves .5 to the implementation; Mesa rounds to even
+      case glslang::EOpRoundEven: return each(Op::FRoundEven);
+      case glslang::EOpCeil: return each(Op::FCeil);
+      case glslang::EOpFract: return each(Op::FFract);
+      case glslang::EOpIsNan: return each(Op::FIsNan);
+      case glslang::EOpIsInf: return each(Op::FIsInf);
+      case glslang::EOpFloatBitsToInt:
+      case glslang::EOpFloatBitsToUint:
+      case glslang::EOpIntBitsToFloat:
+      case glslang::EOpUintBitsToFloat: return a;
+      case glslang::EOpBitFieldReverse: return each(Op::BitReverse);
+      case glslang::EOpBitCount: return each(Op::BitCount);
+      case glslang::EOpFindLSB: return each(Op::FindLSB);
+      case glslang::EOpFindMSB: return each(xb == Base::Uint ? Op::UFindMSB : Op::IFindMSB);
+      case glslang::EOpLength: return {length(a)};
+      case glslang::EOpNormalize: {
+        const Reg inv = emit(Op::FRsq, dot(a, a));
+        return each_f([&](Reg c) { return emit(Op::FMul, c, inv); });
+      }
+      case glslang::EOpAny:
+      case glslang::EOpAll: {
+        Reg acc = a[0];
+        for (size_t i = 1; i < a.size(); ++i) acc = emit(op == glslang::EOpAny ? Op::Or : Op::And, acc, a[i]);
+        return {acc};
+      }
+      case glslang::EOpTranspose: {
+        const int cols = xt.getMatrixCols(), rows = xt.getMatrixRows();
+        Val r;
+        for (int c = 0; c < rows; ++c)
+          for (int k = 0; k < cols; ++k) r.push_back(a[size_t(k * rows + c)]);
+        return r;
+      }
+      case glslang::EOpDeterminant: return {determinant(a, xt.getMatrixCols())};
+      case glslang::EOpMatrixInverse: return inverse(a, xt.getMatrixCols());
+      case glslang::EOpDPdx: case glslang::EOpDPdxFine: case glslang::EOpDPdxCoarse:
+        out_.ir.uses_derivatives = true;
+        return each(Op::Ddx);
+      case glslang::EOpDPdy: case glslang::EOpDPdyFine: case glslang::EOpDPdyCoarse:
+        out_.ir.uses_derivatives = true;
+        return each(Op::Ddy);
+      case glslang::EOpFwidth: case glslang::EOpFwidthFine: case glslang::EOpFwidthCoarse:
+        out_.ir.uses_derivatives = true;
+        return each_f([&](Reg c) {
+          return emit(Op::FAdd, emit(Op::FAbs, emit(Op::Ddx, c)), emit(Op::FAbs, emit(Op::Ddy, c)));
+        });
+      case glslang::EOpPackHalf2x16: return {emit(Op::PackHalf, a[0], a[1])};
+      case glslang::EOpUnpackHalf2x16: return {emit(Op::UnpackHalfLo, a[0]), emit(Op::UnpackHalfHi, a[0])};
+      case glslang::EOpNoise: {
+        Val r(size_t(count(u->getType())), fconst(0.0f));
+        return r;
+      }
+      default: break;
+    }
+    // Conversions: glslang names them EOpConv<From>To<To>.
+    if (op >= glslang::EOpConvInt8ToBool && op <= glslang::EOpConvDoubleToFloat) {
+      Val r;
+      for (Reg c : a) r.push_back(convert(c, xb, rb));
+      return r;
+    }
+    fail(u, "operator '" + std::to_string(int(op)) + "' is not supported");
+  }
+
+  // a * b + c with two roundings: llvmpipe does not fuse GLSL's products and sums (only
+  // fma() is fused), and matching its results bit for bit matters more than the ulp saved.
+  Reg mad(Reg a, Reg b, Reg c) { return emit(Op::FAdd, c, emit(Op::FMul, a, b)); }
+  Reg dot(const Val& a, const Val& b) {
+    Reg acc = emit(Op::FMul, a[0], b[0]);
+    for (size_t i = 1; i < a.size(); ++i) acc = mad(a[i], b[i], acc);
+    return acc;
+  }
+  Reg length(const Val& a) {
+    if (a.size() == 1) return emit(Op::FAbs, a[0]);
+    return emit(Op::FSqrt, dot(a, a));
+  }
+  Reg det2(Reg a, Reg b, Reg c, Reg d) { return emit(Op::FSub, emit(Op::FMul, a, d), emit(Op::FMul, b, c)); }
+  // m[c][r] = v[c * n + r]
+  Reg determinant(const Val& m, int n) {
+    auto at = [&](int c, int r) { return m[size_t(c * n + r)]; };
+    if (n == 2) return det2(at(0, 0), at(1, 0), at(0, 1), at(1, 1));
+    if (n == 3) {
+      Reg r = emit(Op::FMul, at(0, 0), det2(at(1, 1), at(2, 1), at(1, 2), at(2, 2)));
+      r = emit(Op::FSub, r, emit(Op::FMul, at(1, 0), det2(at(0, 1), at(2, 1), at(0, 2), at(2, 2))));
+      return emit(Op::FAdd, r, emit(Op::FMul, at(2, 0), det2(at(0, 1), at(1, 1), at(0, 2), at(1, 2))));
+    }
+    // 4x4 by cofactors of the first column.
+    Reg acc = kNone;
+    for (int r = 0; r < 4; ++r) {
+      Val sub;
+      for (int c = 1; c < 4; ++c)
+        for (int rr = 0; rr < 4; ++rr)
+          if (rr != r) sub.push_back(at(c, rr));
+      Reg t = emit(Op::FMul, at(0, r), determinant(sub, 3));
+      if (acc == kNone) acc = t;
+      else acc = emit((r & 1) ? Op::FSub : Op::FAdd, acc, t);
+    }
+    return acc;
+  }
+  Val inverse(const Val& m, int n) {
+    auto at = [&](int c, int r) { return m[size_t(c * n + r)]; };
+    const Reg inv_det = emit(Op::FDiv, fconst(1.0f), determinant(m, n));
+    Val r(size_t(n * n));
+    for (int c = 0; c < n; ++c) {
+      for (int row = 0; row < n; ++row) {
+        // inverse[c][row] = cofactor(row, c) / det  (the adjugate is the transposed cofactors)
+        Val sub;
+        for (int cc = 0; cc < n; ++cc) {
+          if (cc == row) continue;
+          for (int rr = 0; rr < n; ++rr)
+            if (rr != c) sub.push_back(at(cc, rr));
+        }
+        Reg minor = n == 2 ? sub[0] : determinant(sub, n - 1);
+        if ((row + c) & 1) minor = emit(Op::FNeg, minor);
+        r[size_t(c * n + row)] = emit(Op::FMul, minor, inv_det);
+      }
+    }
+    return r;
+  }
+
+  Val select(TIntermSelection* s) {
+    // A ?: expression (a selection statement has void type and is handled by statement()).
+    const Val c = value(s->getCondition());
+    TIntermTyped* t = s->getTrueBlock()->getAsTyped();
+    TIntermTyped* f = s->getFalseBlock()->getAsTyped();
+    if (!has_effects(t) && !has_effects(f)) {
+      const Val a = value(t), b = value(f);
+      Val r;
+      for (size_t i = 0; i < a.size(); ++i) r.push_back(a[i] == b[i] ? a[i] : emit(Op::Select, c[0], a[i], b[i]));
+      return r;
+    }
+    const int n = count(s->getType());
+    const Reg tmp = fresh(n);
+    out_.ir.variables.push_back({tmp, uint32_t(n)});
+    const Place p = var_place(tmp, n);
+    Node node;
+    node.kind = Kind::If;
+    node.cond = c[0];
+    blocks_.push_back(&node.a);
+    write(p, value(t), s);
+    blocks_.pop_back();
+    blocks_.push_back(&node.b);
+    write(p, value(f), s);
+    blocks_.pop_back();
+    blocks_.back()->push_back(std::move(node));
+    Val r;
+    for (int i = 0; i < n; ++i) r.push_back(emit(Op::Mov, tmp + Reg(i)));
+    return r;
+  }
+
+  // --- aggregates: constructors, calls, built-in functions ------------------------------
+  Val construct(TIntermAggregate* a) {
+    const TType& t = a->getType();
+    const TIntermSequence& args = a->getSequence();
+    const int n = count(t);
+    if (t.isArray() || t.isStruct()) {
+      Val r;
+      std::vector<Base> want;
+      component_bases(t, want, a);
+      for (TIntermNode* arg : args) {
+        TIntermTyped* x = arg->getAsTyped();
+        const Val v = value(x);
+        std::vector<Base> have;
+        component_bases(x->getType(), have, a);
+        for (size_t i = 0; i < v.size(); ++i) {
+          const size_t k = r.size();
+          r.push_back(k < want.size() ? convert(v[i], have[i], want[k]) : v[i]);
+        }
+      }
+      r.resize(size_t(n), fconst(0.0f));
+      return r;
+    }
+    const Base want = base_or_float(t);
+    // Arguments flattened, converted to the constructed type's base.
+    std::vector<Val> vals;
+    std::vector<const TType*> types;
+    Val flat;
+    for (TIntermNode* arg : args) {
+      TIntermTyped* x = arg->getAsTyped();
+      Val v = value(x);
+      const Base have = base_or_float(x->getType());
+      for (Reg& r : v) r = convert(r, have, want);
+      vals.push_back(v);
+      types.push_back(&x->getType());
+      flat.insert(flat.end(), v.begin(), v.end());
+    }
+    if (t.isMatrix()) {
+      const int cols = t.getMatrixCols(), rows = t.getMatrixRows();
+      const Reg zero = fconst(0.0f), one = fconst(1.0f);
+      if (args.size() == 1 && types[0]->isScalar()) {
+        Val r;
+        for (int c = 0; c < cols; ++c)
+          for (int row = 0; row < rows; ++row) r.push_back(c == row ? flat[0] : zero);
+        return r;
+      }
+      if (args.size() == 1 && types[0]->isMatrix()) {
+        const int sc = types[0]->getMatrixCols(), sr = types[0]->getMatrixRows();
+        Val r;
+        for (int c = 0; c < cols; ++c)
+          for (int row = 0; row < rows; ++row)
+            r.push_back(c < sc && row < sr ? flat[size_t(c * sr + row)] : (c == row ? one : zero));
+        return r;
+      }
+      flat.resize(size_t(n), zero);
+      return flat;
+    }
+    if (flat.size() == 1 && n > 1) return Val(size_t(n), flat[0]);
+    flat.resize(size_t(n));
+    return flat;
+  }
+
+  Val call(TIntermAggregate* a) {
+    auto it = functions_.find(std::string(a->getName().c_str()));
+    if (it == functions_.end() || it->second->getSequence().size() < 2)
+      fail(a, "function '" + std::string(a->getName().c_str()) + "' has no body");
+    if (inline_depth_ > 64) fail(a, "recursion or functions nested too deep");
+    TIntermAggregate* fn = it->second;
+    const TIntermSequence& params = fn->getSequence()[0]->getAsAggregate()->getSequence();
+    const TIntermSequence& args = a->getSequence();
+    // Arguments are evaluated in the caller's scope, before the callee's scope opens.
+    struct Arg {
+      Val in;
+      Place out;
+      bool has_out = false;
+      bool sampler = false;
+      Place sampler_place;
+    };
+    std::vector<Arg> vals(args.size());
+    for (size_t i = 0; i < args.size() && i < params.size(); ++i) {
+      TIntermTyped* x = args[i]->getAsTyped();
+      const auto q = params[i]->getAsSymbolNode()->getType().getQualifier().storage;
+      if (x->getType().getBasicType() == glslang::EbtSampler) {
+        vals[i].sampler = true;
+        vals[i].sampler_place = place(x);
+        continue;
+      }
+      if (q == glslang::EvqOut || q == glslang::EvqInOut) {
+        vals[i].out = place(x);
+        vals[i].has_out = true;
+        if (q == glslang::EvqInOut) vals[i].in = read(vals[i].out);
+      } else {
+        vals[i].in = value(x);
+      }
+    }
+    ++inline_depth_;
+    Node node;
+    node.kind = Kind::Function;
+    blocks_.push_back(&node.a);
+    scopes_.emplace_back();
+    std::vector<Place> param_places(params.size());
+    for (size_t i = 0; i < params.size() && i < args.size(); ++i) {
+      TIntermSymbol* ps = params[i]->getAsSymbolNode();
+      if (vals[i].sampler) {
+        scopes_.back()[ps->getId()] = vals[i].sampler_place;
+        continue;
+      }
+      const Place p = lookup(ps);  // a fresh variable in this scope
+      param_places[i] = p;
+      if (!vals[i].in.empty()) write(p, vals[i].in, a);
+    }
+    Frame fr;
+    const int rn = fn->getType().getBasicType() == glslang::EbtVoid ? 0 : count(fn->getType());
+    if (rn > 0) {
+      const Reg r = fresh(rn);
+      out_.ir.variables.push_back({r, uint32_t(rn)});
+      for (int i = 0; i < rn; ++i) fr.ret.push_back(r + Reg(i));
+    }
+    frames_.push_back(fr);
+    statement(fn->getSequence()[1]);
+    frames_.pop_back();
+    scopes_.pop_back();
+    blocks_.pop_back();
+    --inline_depth_;
+    blocks_.back()->push_back(std::move(node));
+    // out and inout parameters are copied back under the caller's mask.
+    for (size_t i = 0; i < args.size() && i < params.size(); ++i)
+      if (vals[i].has_out) write(vals[i].out, read(param_places[i]), a);
+    Val r;
+    for (Reg x : fr.ret) r.push_back(emit(Op::Mov, x));
+    return r;
+  }
+
+  Val aggregate(TIntermAggregate* a) {
+    const auto op = a->getOp();
+    if (op == glslang::EOpFunctionCall) return call(a);
+    if (op == glslang::EOpSequence || op == glslang::EOpComma) {
+      Val last;
+      for (TIntermNode* n : a->getSequence()) {
+        if (TIntermTyped* t = n->getAsTyped()) last = value(t);
+        else statement(n);
+      }
+      return last;
+    }
+    if (op > glslang::EOpConstructGuardStart && op < glslang::EOpConstructGuardEnd) return construct(a);
+    if (op > glslang::EOpSamplingGuardBegin && op < glslang::EOpSamplingGuardEnd) return texture(a);
+    if (op == glslang::EOpTextureQuerySize || op == glslang::EOpTextureQueryLevels) return texture(a);
+    const TIntermSequence& s = a->getSequence();
+    std::vector<Val> v;
+    std::vector<TIntermTyped*> x;
+    // modf/frexp write through their last argument.
+    const bool last_out = op == glslang::EOpModf || op == glslang::EOpFrexp || op == glslang::EOpAddCarry ||
+                          op == glslang::EOpSubBorrow || op == glslang::EOpUMulExtended || op == glslang::EOpIMulExtended;
+    for (size_t i = 0; i < s.size(); ++i) {
+      x.push_back(s[i]->getAsTyped());
+      if (last_out && i + 1 == s.size()) v.emplace_back();
+      else v.push_back(value(x.back()));
+    }
+    const size_t n = size_t(count(a->getType()));
+    const Base b = s.empty() ? Base::Float : base_or_float(x[0]->getType());
+    auto per = [&](auto&& f) {
+      Val r;
+      for (size_t i = 0; i < n; ++i) r.push_back(f(i));
+      return r;
+    };
+    auto arg = [&](int k, size_t i) { return widen(v[size_t(k)], n).at(i); };
+    switch (op) {
+      case glslang::EOpPow: return per([&](size_t i) { return emit(Op::FPow, arg(0, i), arg(1, i)); });
+      case glslang::EOpAtan: return per([&](size_t i) { return emit(Op::FAtan2, arg(0, i), arg(1, i)); });
+      case glslang::EOpMod: return per([&](size_t i) { return emit(Op::FMod, arg(0, i), arg(1, i)); });
+      case glslang::EOpMin:
+        return per([&](size_t i) {
+          return emit(b == Base::Float ? Op::FMin : b == Base::Uint ? Op::UMin : Op::IMin, arg(0, i), arg(1, i));
+        });
+      case glslang::EOpMax:
+        return per([&](size_t i) {
+          return emit(b == Base::Float ? Op::FMax : b == Base::Uint ? Op::UMax : Op::IMax, arg(0, i), arg(1, i));
+        });
+      case glslang::EOpClamp:
+        return per([&](size_t i) {
+          const Op mx = b == Base::Float ? Op::FMax : b == Base::Uint ? Op::UMax : Op::IMax;
+          const Op mn = b == Base::Float ? Op::FMin : b == Base::Uint ? Op::UMin : Op::IMin;
+          return emit(mn, emit(mx, arg(0, i), arg(1, i)), arg(2, i));
+        });
+      case glslang::EOpMix: {
+        if (base_or_float(x[2]->getType()) == Base::Bool)
+          return per([&](size_t i) { return emit(Op::Select, arg(2, i), arg(1, i), arg(0, i)); });
+        // x + a * (y - x), rounded after each step, as llvmpipe computes it
+        return per([&](size_t i) { return mad(arg(2, i), emit(Op::FSub, arg(1, i), arg(0, i)), arg(0, i)); });
+      }
+      case glslang::EOpStep:
+        return per([&](size_t i) {
+          return emit(Op::And, emit(Op::FGe, arg(1, i), arg(0, i)), fconst(1.0f));
+        });
+      case glslang::EOpSmoothStep:
+        return per([&](size_t i) {
+          Reg t = emit(Op::FDiv, emit(Op::FSub, arg(2, i), arg(0, i)), emit(Op::FSub, arg(1, i), arg(0, i)));
+          t = emit(Op::FMin, emit(Op::FMax, t, fconst(0.0f)), fconst(1.0f));
+          const Reg k = emit(Op::FSub, fconst(3.0f), emit(Op::FMul, fconst(2.0f), t));
+          return emit(Op::FMul, emit(Op::FMul, t, t), k);
+        });
+      case glslang::EOpFma: return per([&](size_t i) { return emit(Op::FFma, arg(0, i), arg(1, i), arg(2, i)); });
+      case glslang::EOpLdexp: return per([&](size_t i) { return emit(Op::FLdexp, arg(0, i), arg(1, i)); });
+      case glslang::EOpModf: {
+        const Place p = place(x[1]);
+        Val whole, fr;
+        for (size_t i = 0; i < n; ++i) {
+          const Reg w = emit(Op::FTrunc, arg(0, i));
+          whole.push_back(w);
+          fr.push_back(emit(Op::FSub, arg(0, i), w));
+        }
+        write(p, whole, a);
+        return fr;
+      }
+      case glslang::EOpFrexp: {
+        const Place p = place(x[1]);
+        Val e, m;
+        for (size_t i = 0; i < n; ++i) {
+          e.push_back(emit(Op::FFrexpExp, arg(0, i)));
+          m.push_back(emit(Op::FFrexpMant, arg(0, i)));
+        }
+        write(p, e, a);
+        return m;
+      }
+      case glslang::EOpDistance: {
+        Val d;
+        for (size_t i = 0; i < v[0].size(); ++i) d.push_back(emit(Op::FSub, v[0][i], v[1][i]));
+        return {length(d)};
+      }
+      case glslang::EOpDot: return {v[0].size() == 1 ? emit(Op::FMul, v[0][0], v[1][0]) : dot(v[0], v[1])};
+      case glslang::EOpCross: {
+        const Val& p = v[0];
+        const Val& q = v[1];
+        return {emit(Op::FSub, emit(Op::FMul, p[1], q[2]), emit(Op::FMul, q[1], p[2])),
+                emit(Op::FSub, emit(Op::FMul, p[2], q[0]), emit(Op::FMul, q[2], p[0])),
+                emit(Op::FSub, emit(Op::FMul, p[0], q[1]), emit(Op::FMul, q[0], p[1]))};
+      }
+      case glslang::EOpFaceForward: {
+        // dot(Nref, I) < 0 ? N : -N
+        const Reg d = v[2].size() == 1 ? emit(Op::FMul, v[2][0], v[1][0]) : dot(v[2], v[1]);
+        const Reg m = emit(Op::FLt, d, fconst(0.0f));
+        return per([&](size_t i) { return emit(Op::Select, m, v[0][i], emit(Op::FNeg, v[0][i])); });
+      }
+      case glslang::EOpReflect: {
+        // I - 2 dot(N, I) N
+        const Reg d = v[1].size() == 1 ? emit(Op::FMul, v[1][0], v[0][0]) : dot(v[1], v[0]);
+        const Reg d2 = emit(Op::FMul, d, fconst(2.0f));
+        return per([&](size_t i) { return emit(Op::FSub, v[0][i], emit(Op::FMul, d2, v[1][i])); });
+      }
+      case glslang::EOpRefract: {
+        // k = 1 - eta^2 (1 - dot(N,I)^2); k < 0 ? 0 : eta I - (eta dot(N,I) + sqrt(k)) N
+        const Reg eta = v[2][0];
+        const Reg d = v[1].size() == 1 ? emit(Op::FMul, v[1][0], v[0][0]) : dot(v[1], v[0]);
+        const Reg k = emit(Op::FSub, fconst(1.0f),
+                           emit(Op::FMul, emit(Op::FMul, eta, eta), emit(Op::FSub, fconst(1.0f), emit(Op::FMul, d, d))));
+        const Reg neg = emit(Op::FLt, k, fconst(0.0f));
+        const Reg s = emit(Op::FAdd, emit(Op::FMul, eta, d), emit(Op::FSqrt, k));
+        return per([&](size_t i) {
+          const Reg r = emit(Op::FSub, emit(Op::FMul, eta, v[0][i]), emit(Op::FMul, s, v[1][i]));
+          return emit(Op::Select, neg, fconst(0.0f), r);
+        });
+      }
+      case glslang::EOpOuterProduct: {
+        Val r;
+        for (size_t c = 0; c < v[1].size(); ++c)
+          for (size_t row = 0; row < v[0].size(); ++row) r.push_back(emit(Op::FMul, v[0][row], v[1][c]));
+        return r;
+      }
+      case glslang::EOpMul:  // matrixCompMult
+        return per([&](size_t i) { return emit(Op::FMul, arg(0, i), arg(1, i)); });
+      case glslang::EOpLessThan: case glslang::EOpGreaterThan: case glslang::EOpLessThanEqual:
+      case glslang::EOpGreaterThanEqual: case glslang::EOpVectorEqual: case glslang::EOpVectorNotEqual: {
+        const bool f = b == Base::Float, u = b == Base::Uint;
+        Op o;
+        switch (op) {
+          case glslang::EOpVectorEqual: o = f ? Op::FEq : Op::IEq; break;
+          case glslang::EOpVectorNotEqual: o = f ? Op::FNe : Op::INe; break;
+          case glslang::EOpLessThan: o = f ? Op::FLt : u ? Op::ULt : Op::ILt; break;
+          case glslang::EOpGreaterThan: o = f ? Op::FGt : u ? Op::UGt : Op::IGt; break;
+          case glslang::EOpLessThanEqual: o = f ? Op::FLe : u ? Op::ULe : Op::ILe; break;
+          default: o = f ? Op::FGe : u ? Op::UGe : Op::IGe; break;
+        }
+        return per([&](size_t i) { return emit(o, arg(0, i), arg(1, i)); });
+      }
+      case glslang::EOpBitfieldExtract:
+        return per([&](size_t i) {
+          return emit(b == Base::Uint ? Op::UBitExtract : Op::IBitExtract, arg(0, i), v[1][0], v[2][0]);
+        });
+      case glslang::EOpBitfieldInsert:
+        return per([&](size_t i) {
+          const Reg r = fresh();
+          code().push_back(Inst{Op::BitInsert, r, arg(0, i), arg(1, i), v[2][0], v[3][0], 0});
+          return r;
+        });
+      case glslang::EOpAddCarry:
+      case glslang::EOpSubBorrow: {
+        const Place p = place(x[2]);
+        Val carry, r;
+        for (size_t i = 0; i < n; ++i) {
+          r.push_back(emit(op == glslang::EOpAddCarry ? Op::IAdd : Op::ISub, arg(0, i), arg(1, i)));
+          carry.push_back(emit(op == glslang::EOpAddCarry ? Op::UAddCarry : Op::USubBorrow, arg(0, i), arg(1, i)));
+        }
+        write(p, carry, a);
+        return r;
+      }
+      case glslang::EOpUMulExtended:
+      case glslang::EOpIMulExtended: {
+        const Place hi = place(x[2]);
+        const Place lo = place(x[3]);
+        (void)lo;
+        fail(a, "umulExtended/imulExtended are not supported");
+      }
+      case glslang::EOpFtransform: {
+        fail(a, "ftransform() is not supported yet");
+      }
+      default: break;
+    }
+    fail(a, "built-in function '" + std::string(a->getName().c_str()) + "' (" + std::to_string(int(op)) +
+                ") is not supported");
+  }
+
+  // --- textures -------------------------------------------------------------------------
+  Val texture(TIntermAggregate* a);
+
+  // --- statements -----------------------------------------------------------------------
+  void statement(TIntermNode* n) {
+    if (!n) return;
+    if (TIntermAggregate* a = n->getAsAggregate()) {
+      if (a->getOp() == glslang::EOpSequence || a->getOp() == glslang::EOpScope) {
+        for (TIntermNode* c : a->getSequence()) statement(c);
+        return;
+      }
+    }
+    if (TIntermSelection* s = n->getAsSelectionNode()) {
+      if (s->getType().getBasicType() == glslang::EbtVoid) {
+        const Val c = value(s->getCondition());
+        Node node;
+        node.kind = Kind::If;
+        node.cond = c[0];
+        blocks_.push_back(&node.a);
+        statement(s->getTrueBlock());
+        blocks_.pop_back();
+        blocks_.push_back(&node.b);
+        statement(s->getFalseBlock());
+        blocks_.pop_back();
+        blocks_.back()->push_back(std::move(node));
+        return;
+      }
+    }
+    if (TIntermLoop* l = n->getAsLoopNode()) {
+      Node node;
+      node.kind = Kind::Loop;
+      auto break_unless = [&](TIntermTyped* test) {
+        const Val c = value(test);
+        Node brk;
+        brk.kind = Kind::If;
+        brk.cond = emit(Op::Not, c[0]);
+        Node b;
+        b.kind = Kind::Break;
+        brk.a.push_back(std::move(b));
+        blocks_.back()->push_back(std::move(brk));
+      };
+      blocks_.push_back(&node.a);
+      if (l->testFirst() && l->getTest()) break_unless(l->getTest());
+      statement(l->getBody());
+      blocks_.pop_back();
+      blocks_.push_back(&node.b);
+      if (l->getTerminal()) (void)value(l->getTerminal());
+      if (!l->testFirst() && l->getTest()) break_unless(l->getTest());
+      blocks_.pop_back();
+      blocks_.back()->push_back(std::move(node));
+      return;
+    }
+    if (TIntermBranch* b = n->getAsBranchNode()) {
+      Node node;
+      switch (b->getFlowOp()) {
+        case glslang::EOpKill:
+        case glslang::EOpTerminateInvocation:
+        case glslang::EOpDemote:
+          node.kind = Kind::Discard;
+          out_.ir.discards = true;
+          break;
+        case glslang::EOpBreak: node.kind = Kind::Break; break;
+        case glslang::EOpContinue: node.kind = Kind::Continue; break;
+        case glslang::EOpReturn:
+          if (b->getExpression() && !frames_.empty() && !frames_.back().ret.empty()) {
+            const Val v = value(b->getExpression());
+            write(var_place(frames_.back().ret[0], int(frames_.back().ret.size())), v, b);
+          }
+          node.kind = Kind::Return;
+          break;
+        default: fail(b, "statement not supported");
+      }
+      blocks_.back()->push_back(std::move(node));
+      return;
+    }
+    if (TIntermSwitch* sw = n->getAsSwitchNode()) {
+      switch_statement(sw);
+      return;
+    }
+    if (TIntermTyped* t = n->getAsTyped()) {
+      (void)value(t);
+      return;
+    }
+    if (TIntermAggregate* a = n->getAsAggregate()) {
+      for (TIntermNode* c : a->getSequence()) statement(c);
+      return;
+    }
+  }
+
+  // switch: the lanes whose selector matched a label so far (`taken`) run the statements
+  // after it, falling through as C does; `default` takes the lanes that match no label.
+  void switch_statement(TIntermSwitch* sw) {
+    const Val sel = value(sw->getCondition()->getAsTyped());
+    const TIntermSequence& body = sw->getBody()->getSequence();
+    Reg none_match = kNone;
+    for (TIntermNode* c : body) {
+      TIntermBranch* b = c->getAsBranchNode();
+      if (b && b->getFlowOp() == glslang::EOpCase) {
+        const Val v = value(b->getExpression());
+        const Reg m = emit(Op::IEq, sel[0], v[0]);
+        none_match = none_match == kNone ? emit(Op::Not, m) : emit(Op::And, none_match, emit(Op::Not, m));
+      }
+    }
+    if (none_match == kNone) none_match = iconst(-1);
+    const Reg taken = fresh();
+    out_.ir.variables.push_back({taken, 1});
+    emit_to(Op::Store, taken, iconst(0));
+    Node node;
+    node.kind = Kind::Switch;
+    blocks_.push_back(&node.a);
+    ir::Block* run = nullptr;
+    Node* current_if = nullptr;
+    (void)current_if;
+    std::vector<TIntermNode*> pending;
+    auto flush = [&]() {
+      if (pending.empty()) return;
+      Node ifn;
+      ifn.kind = Kind::If;
+      ifn.cond = emit(Op::Mov, taken);
+      blocks_.push_back(&ifn.a);
+      for (TIntermNode* s : pending) statement(s);
+      blocks_.pop_back();
+      blocks_.back()->push_back(std::move(ifn));
+      pending.clear();
+    };
+    (void)run;
+    for (TIntermNode* c : body) {
+      TIntermBranch* b = c->getAsBranchNode();
+      if (b && (b->getFlowOp() == glslang::EOpCase || b->getFlowOp() == glslang::EOpDefault)) {
+        flush();
+        Reg m;
+        if (b->getFlowOp() == glslang::EOpCase) m = emit(Op::IEq, sel[0], value(b->getExpression())[0]);
+        else m = none_match;
+        emit_to(Op::Store, taken, emit(Op::Or, taken, m));
+        continue;
+      }
+      pending.push_back(c);
+    }
+    flush();
+    blocks_.pop_back();
+    blocks_.back()->push_back(std::move(node));
+  }
+
+};
+
+#include "lower_texture.inc"
+
+}  // namespace
+
+LoweredStage lower_stage(const glslang::TIntermediate& stage, int which, UniformLayout& uniforms) {
+  Lowerer l(stage, which, uniforms);
+  return l.run();
+}
+
+}  // namespace tessel::glsl

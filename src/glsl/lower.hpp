@@ -1,0 +1,67 @@
+// Lowering of one linked glslang stage (its AST) to Tessel's IR (ir.hpp).
+#pragma once
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ir.hpp"
+
+namespace glslang {
+class TIntermediate;
+}
+
+namespace tessel::glsl {
+
+enum class Base : uint8_t { Float, Int, Uint, Bool };
+
+// A uniform of the default block as the lowering laid it out: components (32-bit words)
+// from `word`, in GLSL order (arrays element by element, matrices column by column).
+struct UniformSlot {
+  std::string name;  // as GL names it: "m", "lights[0].pos" (arrays of structs are expanded)
+  uint32_t gl_type = 0;
+  int array_size = 1;  // elements (1 for a non-array)
+  int components = 1;  // per element
+  uint32_t word = 0;
+  Base base = Base::Float;
+  bool sampler = false;
+  ir::SamplerDim dim = ir::SamplerDim::D2;
+  bool shadow = false, array = false;
+  bool builtin = false;  // gl_ModelViewMatrix and the other compatibility state
+  bool active = false;   // read by some stage
+};
+
+// A stage input or output: its registers (consecutive), with what the link needs to know.
+struct Interface {
+  std::string name;
+  ir::Reg reg = 0;
+  int components = 0;  // all of it (arrays included)
+  int array_size = 0;  // 0: not an array
+  uint32_t gl_type = 0;
+  Base base = Base::Float;
+  int location = -1;   // layout(location), or -1
+  bool flat = false, noperspective = false;
+  bool builtin = false;  // gl_Position, gl_FragCoord, gl_Vertex, ...
+  bool read = false, written = false;
+  bool block = false;  // a whole interface block (its members are listed too)
+};
+
+struct LoweredStage {
+  ir::Stage ir;
+  std::vector<Interface> inputs, outputs;
+  std::set<std::string> declared_outputs;  // declared, whether or not written
+};
+
+// Uniforms are shared between the stages of a program: both stages lower into one layout.
+struct UniformLayout {
+  std::vector<UniformSlot> slots;
+  uint32_t words = 0;
+  std::map<std::string, size_t> by_name;  // top-level variable name -> first slot
+};
+
+// Lowers `stage` (0 vertex, 1 fragment). Throws std::runtime_error with a message for
+// what it cannot lower (named with the source line).
+LoweredStage lower_stage(const glslang::TIntermediate& stage, int which, UniformLayout& uniforms);
+
+}  // namespace tessel::glsl

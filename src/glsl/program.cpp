@@ -1,0 +1,559 @@
+// GLSL programs: compiling with glslang, linking (GL's location rules), uniform storage, and
+// the pipeline's view of a program (gpu::RuntimeShader).
+//
+// A shader travels: source -> glslang (preprocess, parse, type-check, link both stages) ->
+// glslang's AST -> lower.cpp (Tessel's IR, scalar components, functions inlined) -> the
+// interpreter (interp.cpp), sixteen lanes at a time, called by the pipeline through
+// gpu::RuntimeShader.
+#include "tessel/glsl/program.hpp"
+
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstring>
+#include <mutex>
+#include <set>
+
+#include "interp.hpp"
+#include "lower.hpp"
+
+namespace tessel::glsl {
+namespace {
+
+// glslang keeps process-wide tables (its built-in symbol tables): set up once, and used by
+// one thread at a time.
+std::mutex& glslang_mutex() {
+  static std::mutex m;
+  return m;
+}
+void init_glslang() {
+  static std::once_flag once;
+  std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+EShLanguage language(Stage s) { return s == Stage::Vertex ? EShLangVertex : EShLangFragment; }
+
+// Parses one stage; the shader object must outlive any program that links it.
+bool parse(glslang::TShader& sh, const std::string& source, std::string& log) {
+  const char* text = source.c_str();
+  const int length = int(std::min<size_t>(source.size(), size_t(INT32_MAX)));
+  sh.setStringsWithLengths(&text, &length, 1);
+  const bool ok = sh.parse(GetDefaultResources(), 110, ENoProfile, false, false, EShMsgDefault);
+  log = sh.getInfoLog();
+  return ok;
+}
+
+struct Copy {
+  ir::Reg reg;
+  uint32_t offset;  // bytes into VertexLanes / FragmentLanes
+};
+
+}  // namespace
+
+// --- Shader ---------------------------------------------------------------------------------
+
+std::shared_ptr<Shader> Shader::compile(Stage stage, std::string source) {
+  auto s = std::make_shared<Shader>();
+  s->stage_ = stage;
+  s->source_ = std::move(source);
+  init_glslang();
+  std::lock_guard lock(glslang_mutex());
+  try {
+    glslang::TShader sh(language(stage));
+    s->ok_ = parse(sh, s->source_, s->log_);
+  } catch (const std::exception& e) {
+    s->ok_ = false;
+    s->log_ = std::string("0:0: error: ") + e.what() + "\n";
+  }
+  return s;
+}
+
+// --- Program --------------------------------------------------------------------------------
+
+struct Linked {
+  ir::Stage vs, fs;
+  std::vector<Copy> vs_in;                    // attribute rows, vertex and instance ids
+  std::vector<Copy> vs_out;                   // position and varyings
+  std::vector<Copy> fs_in;                    // varyings, coord, primitive id
+  std::vector<ir::Reg> fs_front_facing;       // registers that get gl_FrontFacing
+  std::vector<std::pair<ir::Reg, int>> fs_out;  // register, byte offset (colour or depth rows)
+  std::vector<ir::Reg> frag_color;            // gl_FragColor's four registers (written to every output)
+  gpu::RuntimeShape shape;
+};
+
+struct Program::Impl {
+  bool ok = false;
+  std::string log;
+  std::shared_ptr<Linked> linked;
+  UniformLayout layout;
+  std::vector<uint32_t> values;  // uniform words
+  std::vector<Variable> attributes, uniforms, outputs;
+  struct Location {
+    size_t slot;
+    int element;
+  };
+  std::vector<Location> locations;
+  std::map<std::string, int, std::less<>> uniform_names;  // slot name (and name[0]) -> location
+};
+
+namespace {
+
+class Bound final : public gpu::RuntimeShader {
+ public:
+  Bound(std::shared_ptr<const Linked> l, std::vector<uint32_t> u, std::vector<TextureUnit> t)
+      : l_(std::move(l)), uniforms_(std::move(u)), units_(std::move(t)) {}
+  const gpu::RuntimeShape& shape() const override { return l_->shape; }
+
+  void vertex(gpu::VertexLanes& lanes) const override {
+    LaneReg* r = regs(l_->vs.registers);
+    const auto* base = reinterpret_cast<const std::byte*>(&lanes);
+    for (const Copy& c : l_->vs_in) std::memcpy(r + c.reg, base + c.offset, sizeof(LaneReg));
+    run_stage(l_->vs, r, 0xFFFFu, inputs(false));
+    auto* out = reinterpret_cast<std::byte*>(&lanes);
+    for (const Copy& c : l_->vs_out) std::memcpy(out + c.offset, r + c.reg, sizeof(LaneReg));
+  }
+
+  void fragment(gpu::FragmentLanes& lanes) const override {
+    LaneReg* r = regs(l_->fs.registers);
+    const auto* base = reinterpret_cast<const std::byte*>(&lanes);
+    for (const Copy& c : l_->fs_in) std::memcpy(r + c.reg, base + c.offset, sizeof(LaneReg));
+    for (ir::Reg f : l_->fs_front_facing)
+      for (int l = 0; l < ir::kLanes; ++l) r[f].u[l] = ((lanes.front_facing >> l) & 1) ? ~0u : 0u;
+    lanes.killed = run_stage(l_->fs, r, 0xFFFFu, inputs(true));
+    auto* out = reinterpret_cast<std::byte*>(&lanes);
+    for (const auto& [reg, off] : l_->fs_out) std::memcpy(out + off, r + reg, sizeof(LaneReg));
+    if (!l_->frag_color.empty()) {
+      for (int o = 0; o < l_->shape.outputs; ++o)
+        for (int c = 0; c < 4; ++c) std::memcpy(lanes.color[o][c], r[l_->frag_color[size_t(c)]].u, sizeof(LaneReg));
+    }
+  }
+
+ private:
+  std::shared_ptr<const Linked> l_;
+  std::vector<uint32_t> uniforms_;
+  std::vector<TextureUnit> units_;
+
+  RunInputs inputs(bool fragment) const {
+    RunInputs in;
+    in.uniforms = uniforms_.data();
+    in.uniform_words = uint32_t(uniforms_.size());
+    in.units = units_.data();
+    in.unit_count = int(units_.size());
+    in.fragment = fragment;
+    return in;
+  }
+  static LaneReg* regs(uint32_t n) {
+    thread_local std::vector<LaneReg> file;
+    if (file.size() < n) file.resize(n);
+    return file.data();
+  }
+};
+
+int locations_of(const Interface& f) {
+  // An attribute takes a location per vector: per column of a matrix, per array element.
+  const int per = f.gl_type >= 0x8B5A && f.gl_type <= 0x8B5C ? (f.gl_type - 0x8B5A + 2)
+                  : (f.gl_type >= 0x8B65 && f.gl_type <= 0x8B6A) ? (f.gl_type <= 0x8B66 ? 2 : f.gl_type <= 0x8B68 ? 3 : 4)
+                                                                 : 1;
+  return per * std::max(1, f.array_size);
+}
+
+int builtin_attribute_location(const std::string& name) {
+  if (name == "gl_Vertex") return kLocationVertex;
+  if (name == "gl_Normal") return kLocationNormal;
+  if (name == "gl_Color") return kLocationColor;
+  if (name == "gl_SecondaryColor") return kLocationSecondaryColor;
+  if (name == "gl_FogCoord") return kLocationFogCoord;
+  if (name.rfind("gl_MultiTexCoord", 0) == 0 && name.size() == 17) return kLocationMultiTexCoord0 + (name[16] - '0');
+  return -1;
+}
+
+// The vertex output a fragment input reads (GL matches by name; the compatibility colours
+// pair front colours with gl_Color).
+std::string vertex_name_for(const std::string& fs_name) {
+  if (fs_name == "gl_Color") return "gl_FrontColor";
+  if (fs_name == "gl_SecondaryColor") return "gl_FrontSecondaryColor";
+  return fs_name;
+}
+
+template <class T, class M> uint32_t offset_of(M T::*member) {
+  return uint32_t(reinterpret_cast<size_t>(&(reinterpret_cast<T*>(0)->*member)));
+}
+
+}  // namespace
+
+Program::Program() : impl_(std::make_unique<Impl>()) {}
+Program::~Program() = default;
+
+std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragment, const LinkOptions& options) {
+  std::shared_ptr<Program> p(new Program());
+  Impl& m = *p->impl_;
+  if (vertex.stage() != Stage::Vertex || fragment.stage() != Stage::Fragment) {
+    m.log = "error: a program needs a vertex shader and a fragment shader\n";
+    return p;
+  }
+  if (!vertex.ok() || !fragment.ok()) {
+    m.log = "error: linking with uncompiled/shader that failed to compile\n";
+    return p;
+  }
+  init_glslang();
+  auto linked = std::make_shared<Linked>();
+  LoweredStage vs, fs;
+  {
+    std::lock_guard lock(glslang_mutex());
+    try {
+      glslang::TShader tvs(EShLangVertex), tfs(EShLangFragment);
+      std::string log;
+      if (!parse(tvs, vertex.source(), log) || !parse(tfs, fragment.source(), log)) {
+        m.log = log;
+        return p;
+      }
+      glslang::TProgram prog;
+      prog.addShader(&tvs);
+      prog.addShader(&tfs);
+      if (!prog.link(EShMsgDefault)) {
+        m.log = prog.getInfoLog();
+        if (m.log.empty()) m.log = "error: link failed\n";
+        return p;
+      }
+      vs = lower_stage(*prog.getIntermediate(EShLangVertex), 0, m.layout);
+      fs = lower_stage(*prog.getIntermediate(EShLangFragment), 1, m.layout);
+    } catch (const std::exception& e) {
+      m.log = std::string(e.what()) + "\n";
+      return p;
+    }
+  }
+  std::string errors;
+  auto error = [&](const std::string& e) { errors += "error: " + e + "\n"; };
+
+  // Attributes: layout(location), then the application's bindings, then the lowest free
+  // locations in declaration order; the compatibility attributes have fixed ones.
+  using gpu::VertexLanes;
+  using gpu::FragmentLanes;
+  uint32_t used = 0;
+  std::vector<Interface*> unplaced;
+  auto place_attr = [&](Interface& a, int loc) {
+    const int n = locations_of(a);
+    if (loc < 0 || loc + n > gpu::kMaxVertexAttribs) {
+      error("attribute '" + a.name + "' has no room at location " + std::to_string(loc));
+      return;
+    }
+    a.location = loc;
+    for (int i = 0; i < n; ++i) used |= 1u << (loc + i);
+  };
+  for (Interface& a : vs.inputs) {
+    if (a.block) continue;
+    if (a.name == "gl_VertexID" || a.name == "gl_InstanceID") continue;
+    if (a.builtin) {
+      const int loc = builtin_attribute_location(a.name);
+      if (loc < 0) {
+        error("built-in input '" + a.name + "' is not supported");
+        continue;
+      }
+      place_attr(a, loc);
+      continue;
+    }
+    if (a.location >= 0) {
+      place_attr(a, a.location);
+      continue;
+    }
+    auto it = options.attribute_locations.find(a.name);
+    if (it != options.attribute_locations.end()) place_attr(a, it->second);
+    else unplaced.push_back(&a);
+  }
+  for (Interface* a : unplaced) {
+    const int n = locations_of(*a);
+    int loc = 0;
+    while (loc + n <= gpu::kMaxVertexAttribs && ((used >> loc) & ((1u << n) - 1))) ++loc;
+    if (loc + n > gpu::kMaxVertexAttribs) {
+      error("too many vertex attributes ('" + a->name + "')");
+      continue;
+    }
+    place_attr(*a, loc);
+  }
+  for (const Interface& a : vs.inputs) {
+    if (a.name == "gl_VertexID" || a.name == "gl_InstanceID") {
+      linked->vs_in.push_back({a.reg, a.name == "gl_VertexID" ? offset_of(&VertexLanes::vertex_id)
+                                                              : offset_of(&VertexLanes::instance_id)});
+      continue;
+    }
+    if (a.location < 0) continue;
+    // Components: a location's four per vector (column, element).
+    const int vectors = locations_of(a);
+    const int per = a.components / std::max(1, vectors);
+    for (int v = 0; v < vectors; ++v) {
+      for (int c = 0; c < per; ++c) {
+        linked->vs_in.push_back({a.reg + ir::Reg(v * per + c),
+                                 offset_of(&VertexLanes::attr) + uint32_t(((a.location + v) * 4 + c) * ir::kLanes * 4)});
+      }
+      linked->shape.attributes |= 1u << (a.location + v);
+    }
+    if (!a.builtin) m.attributes.push_back({a.name, a.gl_type, std::max(1, a.array_size), a.location});
+  }
+
+  // Varyings: matched by name; each matched fragment input gets consecutive slots.
+  int slot = 0;
+  for (const Interface& o : vs.outputs) {
+    if (o.name == "gl_Position") {
+      for (int c = 0; c < 4; ++c)
+        linked->vs_out.push_back({o.reg + ir::Reg(c), offset_of(&VertexLanes::position) + uint32_t(c * ir::kLanes * 4)});
+    }
+  }
+  for (const Interface& i : fs.inputs) {
+    if (i.block) continue;
+    if (i.name == "gl_FragCoord") {
+      for (int c = 0; c < 4; ++c)
+        linked->fs_in.push_back({i.reg + ir::Reg(c), offset_of(&FragmentLanes::coord) + uint32_t(c * ir::kLanes * 4)});
+      continue;
+    }
+    if (i.name == "gl_FrontFacing") {
+      linked->fs_front_facing.push_back(i.reg);
+      continue;
+    }
+    if (i.name == "gl_PrimitiveID") {
+      linked->fs_in.push_back({i.reg, offset_of(&FragmentLanes::primitive_id)});
+      continue;
+    }
+    if (i.name == "gl_PointCoord") continue;  // read as zero: points are squares without sprite coordinates yet
+    const std::string vname = vertex_name_for(i.name);
+    const Interface* o = nullptr;
+    for (const Interface& c : vs.outputs)
+      if (c.name == vname) o = &c;
+    if (!o) {
+      // A varying the vertex shader declares but never writes, or a compatibility input it
+      // does not write, reads as zero; one it does not declare is an error (as in Mesa).
+      if (!i.builtin && !vs.declared_outputs.count(vname))
+        error("fragment shader input '" + i.name + "' is not written by the vertex shader");
+      fs.ir.variables.push_back({i.reg, uint32_t(i.components)});
+      continue;
+    }
+    if (o->gl_type != i.gl_type || o->components != i.components) {
+      error("'" + i.name + "' has different types in the vertex and fragment shaders");
+      continue;
+    }
+    if (i.base != Base::Float && !i.flat) {
+      error("integer fragment input '" + i.name + "' must be qualified flat");
+      continue;
+    }
+    if (slot + i.components > gpu::kMaxVaryings) {
+      error("too many varying components (at most " + std::to_string(gpu::kMaxVaryings) + ")");
+      break;
+    }
+    for (int c = 0; c < i.components; ++c) {
+      const uint32_t off = offset_of(&VertexLanes::varyings) + uint32_t((slot + c) * ir::kLanes * 4);
+      linked->vs_out.push_back({o->reg + ir::Reg(c), off});
+      linked->fs_in.push_back({i.reg + ir::Reg(c), offset_of(&FragmentLanes::varyings) + uint32_t((slot + c) * ir::kLanes * 4)});
+      if (i.flat || i.base != Base::Float) linked->shape.flat |= uint64_t(1) << (slot + c);
+      if (i.noperspective) linked->shape.noperspective |= uint64_t(1) << (slot + c);
+    }
+    slot += i.components;
+  }
+  linked->shape.varyings = slot;
+
+  // Fragment outputs: layout(location), then the application's bindings, then 0 for a single
+  // output; gl_FragColor goes to every output, gl_FragData[i] to output i.
+  int outputs = 0;
+  std::vector<Interface*> free_outputs;
+  bool frag_color = false, frag_data = false;
+  for (Interface& o : fs.outputs) {
+    if (o.block) continue;
+    if (o.name == "gl_FragDepth") {
+      linked->fs_out.push_back({o.reg, int(offset_of(&FragmentLanes::depth))});
+      continue;
+    }
+    if (o.name == "gl_FragColor") {
+      frag_color = true;
+      for (int c = 0; c < 4; ++c) linked->frag_color.push_back(o.reg + ir::Reg(c));
+      outputs = std::max(outputs, 1);
+      continue;
+    }
+    if (o.name == "gl_FragData") {
+      frag_data = true;
+      const int n = std::min(o.array_size, gpu::kMaxColorAttachments);
+      for (int e = 0; e < n; ++e)
+        for (int c = 0; c < 4; ++c)
+          linked->fs_out.push_back({o.reg + ir::Reg(e * 4 + c),
+                                    int(offset_of(&FragmentLanes::color)) + (e * 4 + c) * ir::kLanes * 4});
+      outputs = std::max(outputs, n);
+      continue;
+    }
+    if (o.builtin) continue;
+    if (o.location < 0) {
+      auto it = options.frag_data_locations.find(o.name);
+      if (it != options.frag_data_locations.end()) o.location = it->second;
+    }
+    if (o.location < 0) free_outputs.push_back(&o);
+  }
+  if (frag_color && frag_data) error("a fragment shader may not write both gl_FragColor and gl_FragData");
+  for (Interface* o : free_outputs) {
+    int loc = 0;
+    for (;; ++loc) {
+      bool taken = false;
+      for (const Interface& q : fs.outputs)
+        if (&q != o && q.location >= 0 && loc >= q.location && loc < q.location + std::max(1, q.array_size)) taken = true;
+      if (!taken) break;
+    }
+    o->location = loc;
+  }
+  for (const Interface& o : fs.outputs) {
+    if (o.builtin) continue;
+    const int n = std::max(1, o.array_size);
+    if (o.location < 0 || o.location + n > gpu::kMaxColorAttachments) {
+      error("fragment output '" + o.name + "' has no room at location " + std::to_string(o.location));
+      continue;
+    }
+    const int per = o.components / n;
+    for (int e = 0; e < n; ++e)
+      for (int c = 0; c < per; ++c)
+        linked->fs_out.push_back({o.reg + ir::Reg(e * per + c),
+                                  int(offset_of(&FragmentLanes::color)) + ((o.location + e) * 4 + c) * ir::kLanes * 4});
+    outputs = std::max(outputs, o.location + n);
+    m.outputs.push_back({o.name, o.gl_type, std::max(1, o.array_size), o.location});
+  }
+  if (frag_color) outputs = gpu::kMaxColorAttachments;  // gl_FragColor is written to every draw buffer
+  linked->shape.outputs = outputs;
+  linked->shape.discards = fs.ir.discards;
+  linked->shape.writes_depth = fs.ir.writes_depth;
+  linked->shape.lanes_independent = !fs.ir.uses_derivatives;
+  if (!errors.empty()) {
+    m.log = errors;
+    return p;
+  }
+
+  // Uniform locations: each element of each slot, in order.
+  for (size_t s = 0; s < m.layout.slots.size(); ++s) {
+    const UniformSlot& u = m.layout.slots[s];
+    const int base = int(m.locations.size());
+    for (int e = 0; e < u.array_size; ++e) m.locations.push_back({s, e});
+    m.uniform_names[u.name] = base;
+    if (u.array_size > 1 || u.name.back() == ']') m.uniform_names[u.name + "[0]"] = base;
+    if (!u.builtin && u.active)
+      m.uniforms.push_back({u.array_size > 1 ? u.name + "[0]" : u.name, u.gl_type, u.array_size, base});
+  }
+  m.values.assign(m.layout.words, 0);
+  linked->vs = std::move(vs.ir);
+  linked->fs = std::move(fs.ir);
+  m.linked = std::move(linked);
+  m.ok = true;
+  return p;
+}
+
+bool Program::ok() const { return impl_->ok; }
+const std::string& Program::info_log() const { return impl_->log; }
+const std::vector<Variable>& Program::attributes() const { return impl_->attributes; }
+const std::vector<Variable>& Program::uniforms() const { return impl_->uniforms; }
+const std::vector<Variable>& Program::outputs() const { return impl_->outputs; }
+
+int Program::attribute_location(std::string_view name) const {
+  for (const Variable& v : impl_->attributes)
+    if (v.name == name) return v.location;
+  return -1;
+}
+
+int Program::frag_data_location(std::string_view name) const {
+  for (const Variable& v : impl_->outputs)
+    if (v.name == name) return v.location;
+  return -1;
+}
+
+int Program::uniform_location(std::string_view name) const {
+  const Impl& m = *impl_;
+  if (!m.ok) return -1;
+  auto it = m.uniform_names.find(name);
+  if (it != m.uniform_names.end()) return m.layout.slots[m.locations[size_t(it->second)].slot].active ? it->second : -1;
+  // "name[i]": element i of an array slot.
+  if (!name.empty() && name.back() == ']') {
+    const size_t open = name.rfind('[');
+    if (open == std::string_view::npos) return -1;
+    const std::string_view idx = name.substr(open + 1, name.size() - open - 2);
+    if (idx.empty() || idx.size() > 9 || idx.find_first_not_of("0123456789") != std::string_view::npos) return -1;
+    const int i = std::stoi(std::string(idx));
+    auto b = m.uniform_names.find(name.substr(0, open));
+    if (b == m.uniform_names.end()) return -1;
+    const UniformSlot& s = m.layout.slots[m.locations[size_t(b->second)].slot];
+    if (!s.active || i >= s.array_size) return -1;
+    return b->second + i;
+  }
+  return -1;
+}
+
+namespace {
+template <class T>
+bool store_uniform(Program::Impl& m, int location, const T* data, int components, int count, Base given) {
+  if (location == -1) return true;
+  if (!m.ok || location < 0 || size_t(location) >= m.locations.size() || count < 0 || !data) return false;
+  const auto [slot, element] = m.locations[size_t(location)];
+  const UniformSlot& u = m.layout.slots[slot];
+  if (components != u.components) return false;
+  if (u.sampler) {
+    if (given != Base::Int) return false;
+  } else if (u.base != Base::Bool && u.base != given) {
+    return false;
+  }
+  if (count > 1 && u.array_size == 1) return false;
+  const int n = std::min(count, u.array_size - element);
+  for (int e = 0; e < n; ++e) {
+    for (int c = 0; c < components; ++c) {
+      const T v = data[size_t(e * components + c)];
+      uint32_t w;
+      if (u.base == Base::Bool) w = v != T(0) ? ~0u : 0u;
+      else std::memcpy(&w, &v, 4);
+      m.values[u.word + uint32_t((element + e) * components + c)] = w;
+    }
+  }
+  return true;
+}
+}  // namespace
+
+bool Program::set_uniform(int location, const float* data, int components, int count) {
+  return store_uniform(*impl_, location, data, components, count, Base::Float);
+}
+bool Program::set_uniform(int location, const int32_t* data, int components, int count) {
+  return store_uniform(*impl_, location, data, components, count, Base::Int);
+}
+bool Program::set_uniform(int location, const uint32_t* data, int components, int count) {
+  return store_uniform(*impl_, location, data, components, count, Base::Uint);
+}
+
+bool Program::get_uniform_words(int location, uint32_t* out) const {
+  const Impl& m = *impl_;
+  if (!m.ok || location < 0 || size_t(location) >= m.locations.size()) return false;
+  const auto [slot, element] = m.locations[size_t(location)];
+  const UniformSlot& u = m.layout.slots[slot];
+  for (int c = 0; c < u.components; ++c) out[c] = m.values[u.word + uint32_t(element * u.components + c)];
+  return true;
+}
+
+bool Program::get_uniform(int location, float* out) const {
+  const Impl& m = *impl_;
+  uint32_t w[16];
+  if (!get_uniform_words(location, w)) return false;
+  const UniformSlot& u = m.layout.slots[m.locations[size_t(location)].slot];
+  for (int c = 0; c < u.components; ++c) {
+    switch (u.base) {
+      case Base::Float: std::memcpy(&out[c], &w[c], 4); break;
+      case Base::Int: out[c] = float(int32_t(w[c])); break;
+      case Base::Uint: out[c] = float(w[c]); break;
+      case Base::Bool: out[c] = w[c] ? 1.0f : 0.0f; break;
+    }
+  }
+  return true;
+}
+
+std::shared_ptr<const gpu::RuntimeShader> Program::bind(std::span<const TextureBinding> units) const {
+  const Impl& m = *impl_;
+  if (!m.ok) throw gpu::Error("draw: the program is not linked: " + m.log);
+  std::vector<TextureUnit> u;
+  u.reserve(units.size());
+  for (const TextureBinding& b : units) u.push_back({b.texture_2d, b.texture_cube, b.sampler});
+  return std::make_shared<Bound>(m.linked, m.values, std::move(u));
+}
+
+void Program::draw(gpu::Context& ctx, const gpu::VertexLayout& layout, const gpu::RenderState& state,
+                   const gpu::DrawCall& call, std::span<const TextureBinding> units) const {
+  ctx.draw(bind(units), layout, state, call);
+}
+
+}  // namespace tessel::glsl

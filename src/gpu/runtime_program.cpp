@@ -1,0 +1,132 @@
+// The bridge from the pipeline's compiled-in shader loop (detail/raster.hpp, a template over a
+// C++ shader type) to shaders known only at run time (runtime_shader.hpp).
+//
+// The raster loop needs the number of varyings at compile time, so the bridge is
+// instantiated for a few sizes (kSizes) and a program runs in the smallest that holds its
+// varyings; the unused components are zero. It is instantiated twice more for programs whose
+// lanes are independent and that neither discard nor write depth: those may be packed.
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <type_traits>
+
+#include "tessel/gpu/context.hpp"
+#include "tessel/gpu/detail/raster.hpp"
+
+namespace tessel::gpu {
+namespace {
+
+struct NoVaryings {};
+template <class F, int K> struct VaryingArray {
+  F v[K];
+};
+
+template <int K, bool Packed> struct RuntimeBridge {
+  using Uniforms = std::shared_ptr<const RuntimeShader>;
+  template <class F> using Varyings = std::conditional_t<K == 0, NoVaryings, VaryingArray<F, (K > 0 ? K : 1)>>;
+  static constexpr bool runtime = true;
+  // Without packing, discarding and depth writes are taken as possible: when the program
+  // does neither, `killed` stays clear and `depth` holds the interpolated depth, so the
+  // results are the same; the pipeline still tests depth early (ProgramBase::discards).
+  static constexpr bool discards = !Packed;
+  static constexpr bool writes_depth = !Packed;
+  static constexpr bool lanes_independent = Packed;
+  static constexpr int outputs = Packed ? 1 : kMaxColorAttachments;
+
+  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+    constexpr int N = lane_width<F>;
+    thread_local VertexLanes lanes;
+    const RuntimeShape& shape = u->shape();
+    for (uint32_t m = shape.attributes; m; m &= m - 1) {
+      const int loc = __builtin_ctz(m);
+      if (loc >= kMaxVertexAttribs) break;
+      in.attr[size_t(loc)].x.store(lanes.attr[loc][0]);
+      in.attr[size_t(loc)].y.store(lanes.attr[loc][1]);
+      in.attr[size_t(loc)].z.store(lanes.attr[loc][2]);
+      in.attr[size_t(loc)].w.store(lanes.attr[loc][3]);
+    }
+    float_from_bits(in.vertex_id).store(reinterpret_cast<float*>(lanes.vertex_id));
+    float_from_bits(in.instance_id).store(reinterpret_cast<float*>(lanes.instance_id));
+    lanes.count = N;
+    u->vertex(lanes);
+    if constexpr (K > 0) {
+      const int n = std::min(K, shape.varyings);
+      for (int k = 0; k < n; ++k) out.v[k] = F::load(lanes.varyings[k]);
+      for (int k = n; k < K; ++k) out.v[k] = F(0.0f);
+    }
+    return Vec4<F>(F::load(lanes.position[0]), F::load(lanes.position[1]), F::load(lanes.position[2]),
+                   F::load(lanes.position[3]));
+  }
+
+  template <class F> void fragment(const Uniforms& u, const Varyings<F>& in, Fragment<F>& f) const {
+    constexpr int N = lane_width<F>;
+    thread_local FragmentLanes lanes;
+    const RuntimeShape& shape = u->shape();
+    if constexpr (K > 0) {
+      const int n = std::min(K, shape.varyings);
+      for (int k = 0; k < n; ++k) in.v[k].store(lanes.varyings[k]);
+    }
+    f.coord.x.store(lanes.coord[0]);
+    f.coord.y.store(lanes.coord[1]);
+    f.coord.z.store(lanes.coord[2]);
+    f.coord.w.store(lanes.coord[3]);
+    float_from_bits(f.primitive_id).store(reinterpret_cast<float*>(lanes.primitive_id));
+    lanes.front_facing = f.front_facing.bits();
+    lanes.mask = N == 16 ? 0xFFFFu : 0xFFu;
+    lanes.killed = 0;
+    if (shape.writes_depth) f.coord.z.store(lanes.depth);
+    u->fragment(lanes);
+    const int outs = std::min(outputs, shape.outputs);
+    for (int i = 0; i < outs; ++i) {
+      f.color[size_t(i)] = Vec4<F>(F::load(lanes.color[i][0]), F::load(lanes.color[i][1]), F::load(lanes.color[i][2]),
+                                   F::load(lanes.color[i][3]));
+    }
+    if constexpr (!Packed) {
+      if (shape.writes_depth) f.depth = F::load(lanes.depth);
+      if (lanes.killed) f.discard(MaskOf<F>::from_bits(lanes.killed));
+    }
+  }
+};
+
+constexpr std::array<int, 7> kSizes = {0, 4, 8, 16, 24, 32, kMaxVaryings};
+
+template <int K, bool Packed>
+std::unique_ptr<detail::ProgramBase> make_bridge(const std::shared_ptr<const RuntimeShader>& s) {
+  auto p = std::make_unique<detail::Program<RuntimeBridge<K, Packed>>>(RuntimeBridge<K, Packed>{}, s);
+  const RuntimeShape& shape = s->shape();
+  p->flat = shape.flat;
+  p->noperspective = shape.noperspective;
+  p->discards = shape.discards;
+  p->writes_depth = shape.writes_depth;
+  p->outputs = shape.outputs;
+  return p;
+}
+
+template <bool Packed, size_t... I>
+std::unique_ptr<detail::ProgramBase> pick(const std::shared_ptr<const RuntimeShader>& s, int varyings,
+                                          std::index_sequence<I...>) {
+  std::unique_ptr<detail::ProgramBase> r;
+  ((r == nullptr && varyings <= kSizes[I] ? (void)(r = make_bridge<kSizes[I], Packed>(s)) : void()), ...);
+  return r;
+}
+
+}  // namespace
+
+void Context::draw(std::shared_ptr<const RuntimeShader> shader, const VertexLayout& layout, const RenderState& state,
+                   const DrawCall& call) {
+  if (!shader) throw Error("draw: no shader");
+  const RuntimeShape& shape = shader->shape();
+  if (shape.varyings < 0 || shape.varyings > kMaxVaryings)
+    throw Error("draw: the program passes " + std::to_string(shape.varyings) + " varying components; at most " +
+                std::to_string(kMaxVaryings) + " are supported");
+  if (shape.outputs < 0 || shape.outputs > kMaxColorAttachments)
+    throw Error("draw: the program writes " + std::to_string(shape.outputs) + " colour outputs; at most " +
+                std::to_string(kMaxColorAttachments) + " are supported");
+  const bool packed = shape.lanes_independent && !shape.discards && !shape.writes_depth && shape.outputs <= 1;
+  const int K = shape.varyings;
+  auto program = packed ? pick<true>(shader, K, std::make_index_sequence<kSizes.size()>())
+                        : pick<false>(shader, K, std::make_index_sequence<kSizes.size()>());
+  submit(std::move(program), layout, state, call, shape.attributes);
+}
+
+}  // namespace tessel::gpu

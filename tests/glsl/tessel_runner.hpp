@@ -1,0 +1,181 @@
+// Runs a GlslDrawSpec (tests/reference/glsl_oracle.hpp) on Tessel: the same GLSL, attributes,
+// uniforms and textures that the Mesa oracle draws, into RGBA32F targets, read back the same
+// way (rows bottom-up), so that the two results compare value for value.
+#pragma once
+
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "glsl_oracle.hpp"
+#include "tessel/glsl/program.hpp"
+
+namespace tessel::testing {
+
+struct TesselResult {
+  bool ok = false;
+  std::string log;
+  std::vector<std::vector<float>> outputs;
+};
+
+inline gpu::Filter to_filter(uint32_t e) {
+  switch (e) {
+    case 0x2600: return gpu::Filter::Nearest;
+    case 0x2601: return gpu::Filter::Linear;
+    case 0x2700: return gpu::Filter::NearestMipmapNearest;
+    case 0x2701: return gpu::Filter::LinearMipmapNearest;
+    case 0x2702: return gpu::Filter::NearestMipmapLinear;
+    default: return gpu::Filter::LinearMipmapLinear;
+  }
+}
+inline gpu::Wrap to_wrap(uint32_t e) {
+  switch (e) {
+    case 0x812F: return gpu::Wrap::ClampToEdge;
+    case 0x8370: return gpu::Wrap::MirroredRepeat;
+    case 0x812D: return gpu::Wrap::ClampToBorder;
+    default: return gpu::Wrap::Repeat;
+  }
+}
+
+inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads = 2) {
+  TesselResult r;
+  auto vs = glsl::Shader::compile(glsl::Stage::Vertex, spec.vertex);
+  auto fs = glsl::Shader::compile(glsl::Stage::Fragment, spec.fragment);
+  if (!vs->ok() || !fs->ok()) {
+    r.log = vs->info_log() + fs->info_log();
+    return r;
+  }
+  auto prog = glsl::Program::link(*vs, *fs);
+  if (!prog->ok()) {
+    r.log = prog->info_log();
+    return r;
+  }
+  // Attributes.
+  std::vector<std::unique_ptr<gpu::Buffer>> buffers;
+  gpu::VertexLayout layout;
+  for (const auto& a : spec.attributes) {
+    const int loc = prog->attribute_location(a.name);
+    if (loc < 0) continue;
+    if (a.integer) {
+      buffers.push_back(std::make_unique<gpu::Buffer>(a.idata.data(), a.idata.size() * 4));
+      layout.attrib(loc, *buffers.back(), a.components, gpu::AttribType::I32, 0, 0);
+      layout.attribs[size_t(loc)].integer = true;
+    } else {
+      buffers.push_back(std::make_unique<gpu::Buffer>(a.data.data(), a.data.size() * 4));
+      layout.attrib(loc, *buffers.back(), a.components, gpu::AttribType::F32, 0, 0);
+    }
+  }
+  for (const auto& u : spec.uniforms) {
+    const int loc = prog->uniform_location(u.name);
+    if (loc < 0) continue;
+    uint32_t type = 0;
+    int size = 1;
+    for (const auto& v : prog->uniforms()) {
+      std::string base = v.name;
+      if (base.size() > 3 && base.compare(base.size() - 3, 3, "[0]") == 0) base.resize(base.size() - 3);
+      if (u.name == v.name || u.name == base || u.name.rfind(base + "[", 0) == 0) {
+        type = v.type;
+        size = v.size;
+      }
+    }
+    (void)type;
+    (void)size;
+    // Components per element: the count of values over the elements given.
+    auto try_set = [&](auto* data, size_t n) {
+      for (int comps : {16, 12, 9, 8, 6, 4, 3, 2, 1}) {
+        if (n % size_t(comps) != 0) continue;
+        if (prog->set_uniform(loc, data, comps, int(n / size_t(comps)))) return true;
+      }
+      return false;
+    };
+    bool done = false;
+    if (!u.f.empty()) done = try_set(u.f.data(), u.f.size());
+    else if (!u.i.empty()) done = try_set(u.i.data(), u.i.size());
+    else if (!u.u.empty()) done = try_set(u.u.data(), u.u.size());
+    if (!done) r.log += "uniform '" + u.name + "' could not be set\n";
+  }
+  // Textures (2D and cube faces, RGBA32F data).
+  std::vector<std::unique_ptr<gpu::Texture2D>> textures;
+  std::vector<std::unique_ptr<gpu::TextureCube>> cubes;
+  std::vector<glsl::TextureBinding> units(16);
+  for (const auto& t : spec.textures) {
+    gpu::SamplerState st;
+    st.min_filter = to_filter(t.min_filter);
+    st.mag_filter = to_filter(t.mag_filter);
+    st.wrap_s = st.wrap_t = st.wrap_r = to_wrap(t.wrap);
+    st.compare = t.compare;
+    if (!t.mipmaps) st.max_lod = 0.0f;
+    const bool depth = t.internal_format == 0x8CAC;  // GL_DEPTH_COMPONENT32F
+    const gpu::Format fmt = depth ? gpu::Format::Depth32F : t.internal_format == 0x8058 ? gpu::Format::RGBA8 : gpu::Format::RGBA32F;
+    if (t.target == 0x8513) {  // cube
+      cubes.push_back(std::make_unique<gpu::TextureCube>(fmt, t.width, t.mipmaps ? 0 : 1));
+      for (int f = 0; f < 6; ++f) {
+        const float* d = t.data.data() + size_t(f) * size_t(t.width * t.height * 4);
+        cubes.back()->face(f).upload_rgba32f(0, d, size_t(t.width * t.height * 16));
+      }
+      if (t.mipmaps) cubes.back()->generate_mipmaps();
+      units.at(size_t(t.unit)).texture_cube = cubes.back().get();
+    } else {
+      textures.push_back(std::make_unique<gpu::Texture2D>(fmt, t.width, t.height, t.mipmaps ? 0 : 1));
+      if (depth) {
+        std::vector<float> rgba(size_t(t.width * t.height) * 4);
+        for (size_t i = 0; i < size_t(t.width * t.height); ++i) rgba[i * 4] = t.data[i];
+        textures.back()->upload_rgba32f(0, rgba.data(), rgba.size() * 4);
+      } else {
+        textures.back()->upload_rgba32f(0, t.data.data(), t.data.size() * 4);
+      }
+      if (t.mipmaps) textures.back()->generate_mipmaps();
+      units.at(size_t(t.unit)).texture_2d = textures.back().get();
+    }
+    units.at(size_t(t.unit)).sampler = st;
+  }
+  // Targets.
+  std::vector<std::unique_ptr<gpu::Texture2D>> colors;
+  gpu::Framebuffer fb;
+  for (int i = 0; i < spec.outputs; ++i) {
+    colors.push_back(std::make_unique<gpu::Texture2D>(gpu::Format::RGBA32F, spec.width, spec.height));
+    fb.color[size_t(i)].texture = colors.back().get();
+  }
+  std::unique_ptr<gpu::Texture2D> depth;
+  if (spec.depth) {
+    depth = std::make_unique<gpu::Texture2D>(gpu::Format::Depth32F, spec.width, spec.height);
+    fb.depth.texture = depth.get();
+  }
+  try {
+    gpu::Context ctx(threads);
+    ctx.bind_framebuffer(&fb);
+    gpu::ClearValues cv;
+    cv.color = glm::vec4(spec.clear[0], spec.clear[1], spec.clear[2], spec.clear[3]);
+    ctx.clear(cv);
+    gpu::RenderState state;
+    state.viewport = {0, 0, spec.width, spec.height};
+    state.depth_test = spec.depth;
+    gpu::DrawCall call;
+    call.count = uint32_t(spec.count);
+    switch (spec.primitive) {
+      case 0x0005: call.topology = gpu::Topology::TriangleStrip; break;
+      case 0x0006: call.topology = gpu::Topology::TriangleFan; break;
+      default: call.topology = gpu::Topology::Triangles; break;
+    }
+    prog->draw(ctx, layout, state, call, units);
+    ctx.finish();
+  } catch (const std::exception& e) {
+    r.log += e.what();
+    return r;
+  }
+  for (const auto& c : colors) {
+    std::vector<float> px(size_t(spec.width * spec.height) * 4);
+    for (int y = 0; y < spec.height; ++y)
+      for (int x = 0; x < spec.width; ++x) {
+        const glm::vec4 v = c->fetch(0, x, y);
+        std::memcpy(&px[(size_t(y) * size_t(spec.width) + size_t(x)) * 4], &v, 16);
+      }
+    r.outputs.push_back(std::move(px));
+  }
+  r.ok = true;
+  return r;
+}
+
+}  // namespace tessel::testing

@@ -1,0 +1,208 @@
+// The glsl layer's own rules: info logs, link errors, reflection, uniforms, bad input.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tessel_runner.hpp"
+
+namespace tessel::testing {
+namespace {
+
+using glsl::Program;
+using glsl::Shader;
+using glsl::Stage;
+
+const char* kVs = R"(#version 330
+layout(location = 0) in vec2 pos;
+out vec2 p;
+void main() { p = pos * 0.5 + 0.5; gl_Position = vec4(pos, 0.0, 1.0); }
+)";
+
+std::shared_ptr<Program> link_fs(const std::string& fs) {
+  auto v = Shader::compile(Stage::Vertex, kVs);
+  auto f = Shader::compile(Stage::Fragment, fs);
+  EXPECT_TRUE(v->ok()) << v->info_log();
+  EXPECT_TRUE(f->ok()) << f->info_log();
+  return Program::link(*v, *f);
+}
+
+// Draws a full-screen quad of 16x16 with `fs` and returns pixel (x, y) of output 0.
+std::vector<float> draw(const std::string& fs, std::string* log = nullptr) {
+  reference::GlslDrawSpec s;
+  s.vertex = kVs;
+  s.fragment = fs;
+  s.attributes.push_back({"pos", 2, {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1}});
+  s.count = 6;
+  TesselResult r = run_tessel(s);
+  if (log) *log = r.log;
+  return r.ok ? r.outputs[0] : std::vector<float>{};
+}
+
+TEST(Glsl, CompileErrorNamesTheLine) {
+  auto s = Shader::compile(Stage::Fragment, "#version 330\nout vec4 c;\nvoid main() {\n  c = vec4(foo);\n}\n");
+  EXPECT_FALSE(s->ok());
+  EXPECT_NE(s->info_log().find("0:4"), std::string::npos) << s->info_log();
+  EXPECT_NE(s->info_log().find("foo"), std::string::npos) << s->info_log();
+}
+
+TEST(Glsl, VersionsAndCompatibilityBuiltinsCompile) {
+  EXPECT_TRUE(Shader::compile(Stage::Vertex, "void main() { gl_Position = ftransform(); }")->ok());
+  EXPECT_TRUE(Shader::compile(Stage::Vertex,
+                              "#version 120\nattribute vec3 a; varying vec3 n;\nvoid main() { n = gl_NormalMatrix * gl_Normal;"
+                              " gl_Position = gl_ModelViewProjectionMatrix * vec4(a, 1.0); }")
+                  ->ok());
+  EXPECT_TRUE(Shader::compile(Stage::Fragment, "#version 130\nprecision highp float; out vec4 c; void main() { c = vec4(1.0); }")->ok());
+  EXPECT_TRUE(Shader::compile(Stage::Fragment, "#version 150\nout vec4 c; void main() { c = vec4(1.0); }")->ok());
+}
+
+TEST(Glsl, LinkErrors) {
+  // A varying the vertex shader does not write.
+  auto p = link_fs("#version 330\nin vec3 missing; out vec4 c; void main() { c = vec4(missing, 1.0); }");
+  EXPECT_FALSE(p->ok());
+  EXPECT_NE(p->info_log().find("missing"), std::string::npos) << p->info_log();
+  // A type mismatch between the stages.
+  p = link_fs("#version 330\nin vec3 p; out vec4 c; void main() { c = vec4(p, 1.0); }");
+  EXPECT_FALSE(p->ok());
+  // No main.
+  auto v = Shader::compile(Stage::Vertex, kVs);
+  auto f = Shader::compile(Stage::Fragment, "#version 330\nout vec4 c; void f() { c = vec4(1.0); }");
+  if (f->ok()) EXPECT_FALSE(Program::link(*v, *f)->ok());
+  // Drawing a program that did not link is an error, not a crash.
+  gpu::Context ctx(1);
+  gpu::Texture2D color(gpu::Format::RGBA8, 4, 4);
+  gpu::Framebuffer fb(&color);
+  ctx.bind_framebuffer(&fb);
+  EXPECT_THROW(p->draw(ctx, gpu::VertexLayout{}, gpu::RenderState{}, {.count = 3}), gpu::Error);
+}
+
+TEST(Glsl, ReflectionAndLocations) {
+  auto v = Shader::compile(Stage::Vertex, R"(#version 330
+layout(location = 3) in vec4 fixed_loc;
+in vec2 bound;
+in mat3 m;
+in float unused;
+out vec4 col;
+void main() { col = fixed_loc + vec4(bound, 0.0, 0.0) + vec4(m[1], 0.0); gl_Position = vec4(bound, 0.0, 1.0); })");
+  auto f = Shader::compile(Stage::Fragment, R"(#version 330
+in vec4 col;
+uniform float k[4];
+uniform struct { vec3 a; int b; } s;
+uniform sampler2D tex;
+uniform float not_used;
+layout(location = 1) out vec4 second;
+out vec4 first;
+void main() { first = col * k[2] + texture(tex, col.xy); second = vec4(s.a, float(s.b)); })");
+  ASSERT_TRUE(v->ok()) << v->info_log();
+  ASSERT_TRUE(f->ok()) << f->info_log();
+  glsl::LinkOptions o;
+  o.attribute_locations["bound"] = 7;
+  auto p = Program::link(*v, *f, o);
+  ASSERT_TRUE(p->ok()) << p->info_log();
+  EXPECT_EQ(p->attribute_location("fixed_loc"), 3);
+  EXPECT_EQ(p->attribute_location("bound"), 7);
+  const int m = p->attribute_location("m");
+  EXPECT_GE(m, 0);
+  EXPECT_TRUE(m + 2 < 3 || m > 3) << "mat3 takes three locations that must not overlap location 3";
+  EXPECT_EQ(p->attribute_location("unused"), -1);  // not active
+  EXPECT_EQ(p->frag_data_location("second"), 1);
+  EXPECT_EQ(p->frag_data_location("first"), 0);
+  EXPECT_GE(p->uniform_location("k"), 0);
+  EXPECT_EQ(p->uniform_location("k[2]"), p->uniform_location("k") + 2);
+  EXPECT_EQ(p->uniform_location("k[4]"), -1) << p->uniform_location("k");
+  EXPECT_GE(p->uniform_location("s.a"), 0);
+  EXPECT_GE(p->uniform_location("tex"), 0);
+  EXPECT_EQ(p->uniform_location("not_used"), -1);
+  // The active uniforms as GL lists them.
+  bool found_k = false;
+  for (const auto& u : p->uniforms())
+    if (u.name == "k[0]") {
+      found_k = true;
+      EXPECT_EQ(u.type, 0x1406u);  // GL_FLOAT
+      EXPECT_EQ(u.size, 4);
+    }
+  EXPECT_TRUE(found_k);
+  // Uniform values: type and size rules.
+  const float three[3] = {1, 2, 3};
+  const int32_t one = 1;
+  EXPECT_TRUE(p->set_uniform(p->uniform_location("s.a"), three, 3));
+  EXPECT_FALSE(p->set_uniform(p->uniform_location("s.a"), three, 2));   // size mismatch
+  EXPECT_FALSE(p->set_uniform(p->uniform_location("s.b"), three, 1));   // float into int
+  EXPECT_TRUE(p->set_uniform(p->uniform_location("s.b"), &one, 1));
+  EXPECT_FALSE(p->set_uniform(p->uniform_location("tex"), three, 1));   // samplers take ints
+  EXPECT_TRUE(p->set_uniform(-1, three, 3));                            // -1 is ignored
+  EXPECT_FALSE(p->set_uniform(12345, three, 3));
+  float back[3] = {};
+  EXPECT_TRUE(p->get_uniform(p->uniform_location("s.a"), back));
+  EXPECT_EQ(back[2], 3.0f);
+  const float ks[4] = {5, 6, 7, 8};
+  EXPECT_TRUE(p->set_uniform(p->uniform_location("k[1]"), ks, 1, 4));  // the rest past the end is ignored
+  EXPECT_TRUE(p->get_uniform(p->uniform_location("k[3]"), back));
+  EXPECT_EQ(back[0], 7.0f);
+}
+
+TEST(Glsl, DrawsAndIsIdenticalForAnyThreadCount) {
+  const std::string fs = "#version 330\nin vec2 p; out vec4 c; void main() { c = vec4(p, sin(p.x * 10.0), 1.0); }";
+  reference::GlslDrawSpec s;
+  s.vertex = kVs;
+  s.fragment = fs;
+  s.width = 37;
+  s.height = 23;
+  s.attributes.push_back({"pos", 2, {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1}});
+  s.count = 6;
+  const TesselResult a = run_tessel(s, 1), b = run_tessel(s, 2), c = run_tessel(s, 5);
+  ASSERT_TRUE(a.ok) << a.log;
+  EXPECT_EQ(a.outputs, b.outputs);
+  EXPECT_EQ(a.outputs, c.outputs);
+  // The centre pixel holds the interpolated position.
+  const float* px = &a.outputs[0][size_t((11 * 37 + 18) * 4)];
+  EXPECT_NEAR(px[0], 18.5f / 37.0f, 1e-5f);
+  EXPECT_NEAR(px[1], 11.5f / 23.0f, 1e-5f);
+}
+
+TEST(Glsl, BadInputGetsALogOrADefinedResult) {
+  // Unterminated comment, undefined names, type errors: info logs.
+  {
+    // The comment swallows main(): a compile error or a link error.
+    auto f = Shader::compile(Stage::Fragment, "#version 330\nout vec4 c; /* never closed\nvoid main() {}");
+    if (f->ok()) EXPECT_FALSE(Program::link(*Shader::compile(Stage::Vertex, kVs), *f)->ok());
+  }
+  EXPECT_FALSE(Shader::compile(Stage::Fragment, "#version 330\nout vec4 c; void main() { c = 1; }")->ok());
+  {
+    auto empty = Shader::compile(Stage::Fragment, "");  // compiles (as in Mesa); has no main to link
+    if (empty->ok()) EXPECT_FALSE(Program::link(*Shader::compile(Stage::Vertex, kVs), *empty)->ok());
+  }
+  // Deep nesting and a huge source.
+  std::string deep = "#version 330\nout vec4 c; void main() { float x = ";
+  for (int i = 0; i < 10000; ++i) deep += "(";
+  deep += "1.0";
+  for (int i = 0; i < 10000; ++i) deep += ")";
+  deep += "; c = vec4(x); }";
+  (void)Shader::compile(Stage::Fragment, deep);  // a log or success, never a crash
+  std::string huge = "#version 330\nout vec4 c;\n";
+  while (huge.size() < 10u * 1024 * 1024) huge += "// padding padding padding padding padding padding padding padding\n";
+  huge += "void main() { c = vec4(1.0); }\n";
+  EXPECT_TRUE(Shader::compile(Stage::Fragment, huge)->ok());
+  // Recursion is a compile or link error.
+  auto v = Shader::compile(Stage::Vertex, kVs);
+  auto f = Shader::compile(Stage::Fragment,
+                           "#version 330\nin vec2 p; out vec4 c; float r(float x) { return x < 0.0 ? x : r(x - 1.0); }"
+                           " void main() { c = vec4(r(p.x)); }");
+  if (f->ok()) EXPECT_FALSE(Program::link(*v, *f)->ok());
+  // An infinite loop ends (cut after 65535 iterations); integer division by zero and indices
+  // out of range give defined values.
+  std::string log;
+  auto px = draw("#version 330\nin vec2 p; out vec4 c; void main() { float s = 0.0; while (true) { s += 1.0; }"
+                 " c = vec4(s); }",
+                 &log);
+  ASSERT_FALSE(px.empty()) << log;
+  EXPECT_EQ(px[0], 65535.0f);
+  px = draw("#version 330\nin vec2 p; out vec4 c; uniform int z; void main() { int a = 7 / z; int b = 7 % z;"
+            " float arr[3] = float[3](1.0, 2.0, 3.0); int k = int(p.x * 100.0) - 50;"
+            " c = vec4(float(a), float(b), arr[k], arr[-k]); }",
+            &log);
+  ASSERT_FALSE(px.empty()) << log;
+  for (float x : px) EXPECT_FALSE(std::isnan(x));
+}
+
+}  // namespace
+}  // namespace tessel::testing

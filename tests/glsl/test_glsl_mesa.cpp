@@ -1,0 +1,304 @@
+// The same GLSL on Tessel and on Mesa llvmpipe, into RGBA32F targets, compared value for
+// value with a tolerance stated per case. The cases are generated from tables: built-in
+// functions across their domains, operators on each type, divergent control flow, arrays,
+// structs, matrices, derivatives, textures and flat integers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "compare.hpp"
+#include "glsl_oracle.hpp"
+#include "tessel_runner.hpp"
+
+namespace tessel::testing {
+namespace {
+
+reference::GlslOracle* oracle() {
+  static std::unique_ptr<reference::GlslOracle> o = [] {
+    std::string why;
+    auto p = reference::GlslOracle::create(&why);
+    if (!p) std::fprintf(stderr, "no Mesa oracle: %s\n", why.c_str());
+    return p;
+  }();
+  return o.get();
+}
+
+const char* kVertex330 = R"(#version 330
+layout(location = 0) in vec2 pos;
+out vec2 p;
+void main() { p = pos * 0.5 + 0.5; gl_Position = vec4(pos, 0.0, 1.0); }
+)";
+
+// A fragment shader whose main() runs `body` with `t` in [0, 1] across the 256 pixels
+// (one value per pixel, the same on both sides), `i` the pixel index, writing vec4 `c`.
+std::string fragment330(const std::string& decl, const std::string& body) {
+  return "#version 330\nin vec2 p;\nout vec4 c;\n" + decl +
+         "\nvoid main() {\n  int i = int(gl_FragCoord.x) + 16 * int(gl_FragCoord.y);\n  float t = float(i) / 255.0;\n  " +
+         body + "\n}\n";
+}
+
+reference::GlslDrawSpec quad_spec(const std::string& vs, const std::string& fs) {
+  reference::GlslDrawSpec s;
+  s.vertex = vs;
+  s.fragment = fs;
+  s.attributes.push_back({"pos", 2, {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1}});
+  s.count = 6;
+  return s;
+}
+
+struct Case {
+  std::string name;
+  std::string decl, body;
+  Tolerance tol;
+  unsigned channels = 0xF;
+  std::vector<reference::GlslUniform> uniforms = {};
+  std::vector<reference::GlslTexture> textures = {};
+};
+
+void run_case(const Case& c) {
+  if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
+  reference::GlslDrawSpec spec = quad_spec(kVertex330, fragment330(c.decl, c.body));
+  spec.uniforms = c.uniforms;
+  spec.textures = c.textures;
+  const reference::GlslResult mesa = oracle()->run(spec);
+  ASSERT_TRUE(mesa.ok) << "Mesa: " << mesa.log << "\n" << spec.fragment;
+  const TesselResult ours = run_tessel(spec);
+  ASSERT_TRUE(ours.ok) << "Tessel: " << ours.log << "\n" << spec.fragment;
+  ASSERT_EQ(ours.outputs.size(), mesa.outputs.size());
+  const Mismatch m = compare_floats(ours.outputs[0], mesa.outputs[0], spec.width, c.tol, c.channels);
+  EXPECT_EQ(m.count, 0) << c.name << ":" << m.first << "\n" << spec.fragment;
+}
+
+// --- the tables -------------------------------------------------------------------------------
+
+struct Unary {
+  const char* fn;
+  float lo, hi;
+  Tolerance tol;
+};
+const Unary kUnary[] = {
+    {"sin", -10, 10, {2e-6f, 1e-5f}},       {"cos", -10, 10, {2e-6f, 1e-5f}},     {"tan", -1.5f, 1.5f, {1e-5f, 1e-4f}},
+    // llvmpipe's asin/acos are a cheap polynomial, off by up to 3.5e-4 near +-1 (docs/glsl.md).
+    {"asin", -1, 1, {4e-4f, 1e-5f}},        {"acos", -1, 1, {4e-4f, 1e-5f}},      {"atan", -20, 20, {1e-5f, 1e-5f}},
+    {"sinh", -5, 5, {1e-5f, 1e-5f}},        {"cosh", -5, 5, {1e-5f, 1e-5f}},      {"tanh", -5, 5, {1e-5f, 1e-5f}},
+    {"asinh", -10, 10, {1e-5f, 1e-5f}},     {"acosh", 1, 20, {1e-5f, 1e-5f}},     {"atanh", -0.99f, 0.99f, {1e-5f, 1e-5f}},
+    {"exp", -20, 20, {0, 2e-6f}},           {"log", 0.001f, 1000, {2e-6f, 2e-6f}}, {"exp2", -30, 30, {0, 2e-6f}},
+    {"log2", 0.001f, 1000, {2e-6f, 2e-6f}}, {"sqrt", 0, 1000, {0, 2e-7f}},        {"inversesqrt", 0.001f, 1000, {0, 2e-6f}},
+    {"abs", -10, 10, {0, 0}},               {"sign", -10, 10, {0, 0}},            {"floor", -10, 10, {0, 0}},
+    {"ceil", -10, 10, {0, 0}},              {"fract", -10, 10, {1e-6f, 0}},       {"trunc", -10, 10, {0, 0}},
+    {"roundEven", -10, 10, {0, 0}},         {"radians", -720, 720, {0, 1e-6f}},   {"degrees", -10, 10, {0, 1e-6f}},
+};
+
+struct Binary {
+  const char* expr;  // over x (t mapped to [lo, hi]) and y (1 - t mapped)
+  float lo, hi;
+  Tolerance tol;
+};
+const Binary kBinary[] = {
+    {"pow(abs(x) + 0.01, y * 0.3)", -10, 10, {1e-5f, 1e-5f}},
+    {"atan(x, y)", -10, 10, {1e-5f, 1e-5f}},
+    {"mod(x, y)", -10, 10, {1e-5f, 1e-5f}},
+    {"min(x, y)", -10, 10, {0, 0}},
+    {"max(x, y)", -10, 10, {0, 0}},
+    {"step(y, x)", -10, 10, {0, 0}},
+    {"clamp(x, -2.5, y)", -10, 10, {0, 0}},
+    {"mix(x, y, t)", -10, 10, {1e-6f, 1e-6f}},
+    {"smoothstep(-3.0, 4.0, x)", -10, 10, {1e-6f, 1e-6f}},
+    {"x / y", -10, 10, {0, 1e-6f}},
+    {"x * y - x + y", -10, 10, {0, 1e-6f}},
+    {"distance(vec2(x, 1.0), vec2(y, -2.0))", -10, 10, {0, 1e-6f}},
+    {"length(vec3(x, y, 2.0))", -10, 10, {0, 1e-6f}},
+    {"dot(vec4(x, y, 1.0, 2.0), vec4(y, x, -3.0, 0.5))", -10, 10, {1e-5f, 1e-6f}},
+    {"cross(vec3(x, y, 1.0), vec3(y, 2.0, x)).y", -10, 10, {1e-5f, 1e-6f}},
+    {"normalize(vec3(x, y, 1.0)).x", -10, 10, {0, 1e-6f}},
+    {"reflect(normalize(vec3(x, y, 1.0)), vec3(0.0, 0.6, 0.8)).z", -10, 10, {1e-6f, 1e-6f}},
+    {"refract(normalize(vec3(x, -1.0, y)), vec3(0.0, 1.0, 0.0), 0.66).y", -10, 10, {1e-6f, 1e-5f}},
+    {"refract(normalize(vec3(x, -0.1, y)), vec3(0.0, 1.0, 0.0), 1.5).x", -10, 10, {1e-6f, 1e-5f}},
+    {"faceforward(vec2(1.0, 2.0), vec2(x, y), vec2(1.0, -1.0)).y", -10, 10, {0, 0}},
+    {"float(x < y) + 2.0 * float(x == floor(x)) + 4.0 * float(x >= y)", -10, 10, {0, 0}},
+    {"(x > 0.0 ^^ y > 0.0) ? 1.0 : -1.0", -10, 10, {0, 0}},
+    {"float(isnan(sqrt(x))) + 2.0 * float(isinf(exp(x * 20.0)))", -10, 10, {0, 0}},
+    {"intBitsToFloat(floatBitsToInt(x) ^ int(0x80000000))", -10, 10, {0, 0}},
+};
+
+// Integer expressions over i (0..255) and j = 127 - i; results are exact.
+const char* kInteger[] = {
+    "ivec4(i / 7, i % 7, (i - 128) / 5, (i - 128) % 5)",
+    "ivec4(i << 3, (i - 128) >> 2, i & 0x5A, i | 0x81)",
+    "ivec4(i ^ 0x3C, ~i, -i, abs(i - 100))",
+    "ivec4(min(i, 100), max(i - 50, 7), clamp(i, 20, 200), sign(i - 128))",
+    "ivec4(uvec4(uint(i) * 2654435761u >> 20u, uint(i) / 3u, uint(i) % 10u, ~uint(i) >> 24u))",
+    "ivec4(i > 100 ? 1 : 0, i == 42 ? 7 : -7, int(float(i) * 0.37), int(-float(i) * 0.51))",
+};
+
+// Control flow that differs per lane.
+struct Flow {
+  const char* name;
+  const char* decl;
+  const char* body;
+};
+const Flow kFlow[] = {
+    {"nested_if", "",
+     "float r = 0.0; if (t < 0.5) { if (t < 0.25) r = 1.0; else r = 2.0; } else if (t > 0.9) r = 3.0; else { r = 4.0 + t; }\n"
+     "  c = vec4(r, t, 0.0, 1.0);"},
+    {"loop_per_lane_count", "",
+     "float s = 0.0; for (int k = 0; k < i % 17; ++k) s += float(k) * 0.5; c = vec4(s, 0.0, 0.0, 1.0);"},
+    {"loop_break_continue", "",
+     "float s = 0.0; for (int k = 0; k < 40; ++k) { if (k % 3 == 0) continue; if (k > i % 23) break; s += float(k); }\n"
+     "  c = vec4(s, 0.0, 0.0, 1.0);"},
+    {"while_and_do", "",
+     "int n = i; int steps = 0; while (n != 1 && steps < 200) { n = (n % 2 == 0) ? n / 2 : 3 * n + 1; ++steps; }\n"
+     "  int m = 0; do { m += 3; } while (m < i % 11);\n  c = vec4(float(steps), float(m), 0.0, 1.0);"},
+    {"early_return", "float f(float x) { if (x < 0.3) return -1.0; for (int k = 0; k < 10; ++k) { if (float(k) > x * 10.0) return float(k); } return 99.0; }",
+     "c = vec4(f(t), f(1.0 - t), 0.0, 1.0);"},
+    {"discard", "", "if (i % 3 == 1) discard; c = vec4(t, 1.0, 0.0, 1.0);"},
+    {"switch_fallthrough", "",
+     "float r = 0.0; switch (i % 6) { case 0: r = 1.0; break; case 1: r = 2.0; case 2: r += 3.0; break; case 4: { r = 5.0; break; } default: r = -1.0; }\n"
+     "  c = vec4(r, 0.0, 0.0, 1.0);"},
+    {"out_params", "void g(in float a, out float b, inout float cc) { b = a * 2.0; cc += a; }",
+     "float b = 0.0, d = 1.0; g(t, b, d); c = vec4(b, d, 0.0, 1.0);"},
+    {"local_array_dynamic", "",
+     "float a[5]; for (int k = 0; k < 5; ++k) a[k] = float(k * k); a[i % 5] += 0.5; c = vec4(a[i % 5], a[(i + 2) % 5], a[i % 7], 1.0);"},
+    {"struct_and_array_of_struct", "struct S { vec2 v; float w; }; ",
+     "S s[3]; for (int k = 0; k < 3; ++k) s[k] = S(vec2(float(k), t), float(k) * 2.0); S q = s[i % 3];\n"
+     "  q.v.y += 1.0; c = vec4(q.v, q.w, float(s[1] == S(vec2(1.0, t), 2.0)));"},
+    {"swizzles_and_write_masks", "",
+     "vec4 v = vec4(t, 2.0 * t, 3.0, 4.0); v.zx = v.xz; v.yw += vec2(1.0); vec3 w = v.wzy; w.xy = w.yx; c = vec4(w, v.x);"},
+    {"matrix_products", "",
+     "mat3 m = mat3(1.0, t, 2.0, 0.5, 3.0, -t, 1.0, 1.0, 4.0); vec3 v = vec3(t, 1.0, -2.0);\n"
+     "  vec3 a = m * v; vec3 b = v * m; c = vec4(a.x + b.y, a.y - b.z, a.z, (m * m)[1][2]);"},
+    {"matrix_functions", "",
+     "mat3 m = mat3(2.0, t, 0.5, 0.25, 3.0, -t, 1.0, 0.5, 4.0); mat3 n = inverse(m);\n"
+     "  c = vec4(determinant(m), n[0][1], transpose(m)[2][0], outerProduct(vec2(t, 1.0), vec3(2.0, 3.0, 4.0))[2][0]);"},
+    {"mat4_inverse", "",
+     "mat4 m = mat4(2.0, t, 0.5, 0.0, 0.25, 3.0, -t, 0.1, 1.0, 0.5, 4.0, 0.2, 0.3, 0.0, 1.0, 1.0);\n"
+     "  mat4 n = inverse(m); vec4 v = (m * n) * vec4(1.0, 2.0, 3.0, 4.0); c = vec4(v.x, n[3][0], determinant(m), matrixCompMult(m, m)[1][1]);"},
+    {"derivatives", "",
+     "float f = p.x * p.x * 40.0 + p.y * 3.0; c = vec4(dFdx(f), dFdy(f), fwidth(f * p.y), 1.0);"},
+    {"ternary_with_effects", "",
+     "float a = 1.0; float b = t > 0.5 ? (a += 2.0) : (a -= 1.0); c = vec4(a, b, 0.0, 1.0);"},
+    {"short_circuit", "float k = 0.0; bool side(float x) { k += 1.0; return x > 0.7; }",
+     "bool r = t > 0.5 && side(t); bool q = t < 0.2 || side(t); c = vec4(float(r), float(q), k, 1.0);"},
+    {"const_array", "const float K[4] = float[4](1.0, 10.0, 100.0, 1000.0);", "c = vec4(K[i % 4], K[3 - i % 4], 0.0, 1.0);"},
+    {"global_initializer", "float g = 3.0; vec2 h = vec2(1.0, 2.0);", "g *= t; c = vec4(g, h, 1.0);"},
+};
+
+class Functions : public ::testing::TestWithParam<Unary> {};
+TEST_P(Functions, MatchMesa) {
+  const Unary& u = GetParam();
+  char buf[256];
+  // Inputs lo + i * step, rounded the same way on both sides (the step is a float literal).
+  const float step = (u.hi - u.lo) / 256.0f;
+  std::snprintf(buf, sizeof buf, "float x = %.9g + float(i) * %.9g; c = vec4(%s(x), x, 0.0, 1.0);", double(u.lo), double(step), u.fn);
+  run_case({u.fn, "", buf, u.tol});
+}
+INSTANTIATE_TEST_SUITE_P(Glsl, Functions, ::testing::ValuesIn(kUnary),
+                         [](const auto& info) { return std::string(info.param.fn); });
+
+class Expressions : public ::testing::TestWithParam<Binary> {};
+TEST_P(Expressions, MatchMesa) {
+  const Binary& b = GetParam();
+  char buf[512];
+  const float step = (b.hi - b.lo) / 256.0f;
+  std::snprintf(buf, sizeof buf,
+                "float x = %.9g + float(i) * %.9g; float y = %.9g + float(255 - i) * %.9g + 0.375;\n  c = vec4(%s, x, y, 1.0);",
+                double(b.lo), double(step), double(b.lo), double(step), b.expr);
+  run_case({b.expr, "", buf, b.tol});
+}
+INSTANTIATE_TEST_SUITE_P(Glsl, Expressions, ::testing::ValuesIn(kBinary),
+                         [](const auto& info) { return "e" + std::to_string(info.index); });
+
+class Integers : public ::testing::TestWithParam<const char*> {};
+TEST_P(Integers, MatchMesa) {
+  std::string body = "int j = 127 - i; ivec4 r = ";
+  body += GetParam();
+  body += ";\n  c = vec4(r);";
+  run_case({GetParam(), "", body, {0, 0}});
+}
+INSTANTIATE_TEST_SUITE_P(Glsl, Integers, ::testing::ValuesIn(kInteger),
+                         [](const auto& info) { return "i" + std::to_string(info.index); });
+
+class ControlFlow : public ::testing::TestWithParam<Flow> {};
+TEST_P(ControlFlow, MatchMesa) {
+  const Flow& f = GetParam();
+  run_case({f.name, f.decl, f.body, {1e-5f, 1e-5f}});
+}
+INSTANTIATE_TEST_SUITE_P(Glsl, ControlFlow, ::testing::ValuesIn(kFlow),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(GlslMesa, UniformsArraysAndStructsByName) {
+  Case c{"uniforms",
+         "struct L { vec3 pos; float power; }; uniform L lights[2]; uniform float k[3]; uniform mat4 M; uniform int n;"
+         " uniform bool flag;",
+         "vec4 v = M * vec4(t, 1.0, 2.0, 1.0); c = vec4(v.x + k[i % 3], lights[i % 2].pos.y * lights[1].power, float(n) + v.w,"
+         " flag ? 1.0 : 0.0);",
+         {1e-6f, 1e-6f}};
+  c.uniforms = {{"lights[0].pos", {1, 2, 3}},
+                {"lights[1].pos", {4, 5, 6}},
+                {"lights[0].power", {0.5f}},
+                {"lights[1].power", {2.5f}},
+                {"k", {10, 20, 30}},
+                {"M", {1, 0, 0, 0, 0, 2, 0, 0, 0, 0, 3, 0, 0.5f, 0.25f, 0, 1}},
+                {"n", {}, {7}},
+                {"flag", {}, {1}}};
+  run_case(c);
+}
+
+std::vector<float> checker(int w, int h) {
+  std::vector<float> d(size_t(w * h * 4));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      float* p = &d[size_t((y * w + x) * 4)];
+      p[0] = float(x) / float(w);
+      p[1] = float(y) / float(h);
+      p[2] = ((x ^ y) & 1) ? 1.0f : 0.25f;
+      p[3] = 1.0f;
+    }
+  return d;
+}
+
+TEST(GlslMesa, TexelFetchAndSize) {
+  Case c{"texelFetch", "uniform sampler2D tex;",
+         "ivec2 s = textureSize(tex, 0); c = texelFetch(tex, ivec2(i % 8, i / 32), 0) + vec4(0.0, 0.0, 0.0, float(s.x * 100 + s.y));",
+         {0, 0}};
+  reference::GlslTexture t;
+  t.width = 8;
+  t.height = 8;
+  t.data = checker(8, 8);
+  c.textures = {t};
+  c.uniforms = {{"tex", {}, {0}}};
+  run_case(c);
+}
+
+TEST(GlslMesa, TextureNearestAndLinear) {
+  for (uint32_t filter : {0x2600u, 0x2601u}) {
+    Case c{"texture", "uniform sampler2D tex;", "c = texture(tex, p * 1.7 - 0.3) + textureLod(tex, p.yx, 0.0);", {2e-6f, 1e-5f}};
+    reference::GlslTexture t;
+    t.width = 8;
+    t.height = 8;
+    t.data = checker(8, 8);
+    t.min_filter = t.mag_filter = filter;
+    c.textures = {t};
+    c.uniforms = {{"tex", {}, {0}}};
+    SCOPED_TRACE(filter);
+    run_case(c);
+  }
+}
+
+// A wrong result must fail: the comparison of a shader against a slightly different one.
+TEST(GlslMesa, ToleranceCatchesAWrongResult) {
+  if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
+  reference::GlslDrawSpec spec = quad_spec(kVertex330, fragment330("", "c = vec4(sin(t * 6.0), t, 0.0, 1.0);"));
+  const reference::GlslResult mesa = oracle()->run(spec);
+  ASSERT_TRUE(mesa.ok);
+  // sin off by one part in 10^4 (a cheap approximation) is caught by the sin tolerance.
+  spec.fragment = fragment330("", "c = vec4(sin(t * 6.0) * 1.0001, t, 0.0, 1.0);");
+  const TesselResult ours = run_tessel(spec);
+  ASSERT_TRUE(ours.ok) << ours.log;
+  EXPECT_GT(compare_floats(ours.outputs[0], mesa.outputs[0], 16, kUnary[0].tol).count, 0);
+}
+
+}  // namespace
+}  // namespace tessel::testing
