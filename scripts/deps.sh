@@ -7,8 +7,8 @@ packages=(
   build-essential cmake ninja-build pkg-config ccache
   libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev libtinygltf-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  # the GLSL front end (src/glsl)
-  glslang-dev glslang-tools
+  # the GLSL front end and the shader JIT (src/glsl)
+  glslang-dev glslang-tools llvm-15-dev
   # the libFuzzer targets (scripts/fuzz.sh)
   clang libclang-rt-14-dev
   # the reference oracle: Mesa llvmpipe through EGL (surfaceless) and desktop GL

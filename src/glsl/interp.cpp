@@ -78,6 +78,96 @@ float fsign(float x) { return x > 0.0f ? 1.0f : x < 0.0f ? -1.0f : 0.0f; }
 float ffract(float x) { return x - std::floor(x); }
 float fmod_glsl(float x, float y) { return x - y * std::floor(x / y); }
 
+}  // namespace
+
+// The operations that the JIT calls out for (transcendental functions, bit fields, halves,
+// wide products): one definition for both tiers, so that they give the same bits.
+void lane_math(ir::Op op, uint32_t* t, const uint32_t* a, const uint32_t* bb, const uint32_t* c, const uint32_t* e) {
+  auto each = [](uint32_t* out, auto&& fn) {
+    for (int l = 0; l < L; ++l) out[l] = fn(l);
+  };
+  (void)e;
+  switch (op) {
+#define F1(OP, EXPR) \
+  case Op::OP: each(t, [&](int l) { const float x = f(a[l]); (void)x; return u(EXPR); }); break;
+#define F2(OP, EXPR) \
+  case Op::OP: each(t, [&](int l) { const float x = f(a[l]), y = f(bb[l]); return u(EXPR); }); break;
+#define I2(OP, EXPR) \
+  case Op::OP: each(t, [&](int l) { const uint32_t x = a[l], y = bb[l]; (void)y; return uint32_t(EXPR); }); break;
+        F1(FSin, std::sin(x))
+        F1(FCos, std::cos(x))
+        F1(FTan, std::tan(x))
+        F1(FAsin, std::asin(x))
+        F1(FAcos, std::acos(x))
+        F1(FAtan, std::atan(x))
+        F2(FAtan2, std::atan2(x, y))
+        F1(FSinh, std::sinh(x))
+        F1(FCosh, std::cosh(x))
+        F1(FTanh, std::tanh(x))
+        F1(FAsinh, std::asinh(x))
+        F1(FAcosh, std::acosh(x))
+        F1(FAtanh, std::atanh(x))
+        F2(FPow, std::pow(x, y))
+        F1(FExp, std::exp(x))
+        F1(FLog, std::log(x))
+        F1(FExp2, std::exp2(x))
+        F1(FLog2, std::log2(x))
+        case Op::FLdexp:
+          each(t, [&](int l) { return u(std::ldexp(f(a[l]), std::clamp(s(bb[l]), -1000, 1000))); });
+          
+          break;
+        case Op::FFrexpMant:
+          each(t, [&](int l) { int e; return u(std::isfinite(f(a[l])) ? std::frexp(f(a[l]), &e) : f(a[l])); });
+          
+          break;
+        case Op::FFrexpExp:
+          each(t, [&](int l) { int e = 0; if (std::isfinite(f(a[l]))) std::frexp(f(a[l]), &e); return uint32_t(e); });
+          
+          break;
+        I2(BitCount, std::popcount(x))
+        I2(FindLSB, x == 0 ? -1 : std::countr_zero(x))
+        I2(IFindMSB, find_msb_i(s(x)))
+        I2(UFindMSB, find_msb_u(x))
+        I2(BitReverse, bit_reverse(x))
+        case Op::IBitExtract:
+        case Op::UBitExtract:
+          each(t, [&](int l) {
+            const uint32_t off = std::min(bb[l], 32u), bits = std::min(c[l], 32u - off);
+            if (bits == 0) return 0u;
+            uint32_t v = (a[l] >> (off & 31)) & field_mask(bits);
+            if (off >= 32) v = 0;
+            if (op == Op::IBitExtract && bits < 32 && ((v >> (bits - 1)) & 1)) v |= ~field_mask(bits);
+            return v;
+          });
+          
+          break;
+        case Op::BitInsert: {
+          
+          each(t, [&](int l) {
+            const uint32_t off = std::min(c[l], 32u), bits = std::min(e[l], 32u - off);
+            if (bits == 0 || off >= 32) return a[l];
+            const uint32_t m = field_mask(bits) << off;
+            return (a[l] & ~m) | ((bb[l] << off) & m);
+          });
+          
+          break;
+        }
+        I2(UAddCarry, (x + y) < x ? 1u : 0u)
+        I2(USubBorrow, x < y ? 1u : 0u)
+        I2(UMulHi, uint32_t((uint64_t(x) * y) >> 32))
+        I2(IMulHi, uint32_t((int64_t(s(x)) * s(y)) >> 32))
+        case Op::PackHalf: each(t, [&](int l) { return pack_half(f(a[l]), f(bb[l])); });  break;
+        case Op::UnpackHalfLo: each(t, [&](int l) { return u(unpack_half(a[l])); });  break;
+        case Op::UnpackHalfHi: each(t, [&](int l) { return u(unpack_half(a[l] >> 16)); });  break;
+#undef F1
+#undef F2
+#undef I2
+    default: break;
+  }
+}
+
+namespace {
+
 class Runner {
  public:
   Runner(const ir::Stage& st, LaneReg* r, const RunInputs& in) : st_(st), r_(r), in_(in) {}
@@ -203,36 +293,6 @@ class Runner {
         F2(FMod, fmod_glsl(x, y))
         F1(FSqrt, std::sqrt(x))
         F1(FRsq, 1.0f / std::sqrt(x))
-        F1(FSin, std::sin(x))
-        F1(FCos, std::cos(x))
-        F1(FTan, std::tan(x))
-        F1(FAsin, std::asin(x))
-        F1(FAcos, std::acos(x))
-        F1(FAtan, std::atan(x))
-        F2(FAtan2, std::atan2(x, y))
-        F1(FSinh, std::sinh(x))
-        F1(FCosh, std::cosh(x))
-        F1(FTanh, std::tanh(x))
-        F1(FAsinh, std::asinh(x))
-        F1(FAcosh, std::acosh(x))
-        F1(FAtanh, std::atanh(x))
-        F2(FPow, std::pow(x, y))
-        F1(FExp, std::exp(x))
-        F1(FLog, std::log(x))
-        F1(FExp2, std::exp2(x))
-        F1(FLog2, std::log2(x))
-        case Op::FLdexp:
-          each(t, [&](int l) { return u(std::ldexp(f(a[l]), std::clamp(s(bb[l]), -1000, 1000))); });
-          std::memcpy(d, t, sizeof t);
-          break;
-        case Op::FFrexpMant:
-          each(t, [&](int l) { int e; return u(std::isfinite(f(a[l])) ? std::frexp(f(a[l]), &e) : f(a[l])); });
-          std::memcpy(d, t, sizeof t);
-          break;
-        case Op::FFrexpExp:
-          each(t, [&](int l) { int e = 0; if (std::isfinite(f(a[l]))) std::frexp(f(a[l]), &e); return uint32_t(e); });
-          std::memcpy(d, t, sizeof t);
-          break;
         FC(FLt, x < y)
         FC(FLe, x <= y)
         FC(FGt, x > y)
@@ -276,45 +336,49 @@ class Runner {
         I2(UGe, b(x >= y))
         I2(IEq, b(x == y))
         I2(INe, b(x != y))
-        I2(BitCount, std::popcount(x))
-        I2(FindLSB, x == 0 ? -1 : std::countr_zero(x))
-        I2(IFindMSB, find_msb_i(s(x)))
-        I2(UFindMSB, find_msb_u(x))
-        I2(BitReverse, bit_reverse(x))
-        case Op::IBitExtract:
-        case Op::UBitExtract:
-          each(t, [&](int l) {
-            const uint32_t off = std::min(bb[l], 32u), bits = std::min(c[l], 32u - off);
-            if (bits == 0) return 0u;
-            uint32_t v = (a[l] >> (off & 31)) & field_mask(bits);
-            if (off >= 32) v = 0;
-            if (i.op == Op::IBitExtract && bits < 32 && ((v >> (bits - 1)) & 1)) v |= ~field_mask(bits);
-            return v;
-          });
-          std::memcpy(d, t, sizeof t);
-          break;
-        case Op::BitInsert: {
-          const uint32_t* e = r_[i.d].u;
-          each(t, [&](int l) {
-            const uint32_t off = std::min(c[l], 32u), bits = std::min(e[l], 32u - off);
-            if (bits == 0 || off >= 32) return a[l];
-            const uint32_t m = field_mask(bits) << off;
-            return (a[l] & ~m) | ((bb[l] << off) & m);
-          });
-          std::memcpy(d, t, sizeof t);
-          break;
-        }
-        I2(UAddCarry, (x + y) < x ? 1u : 0u)
-        I2(USubBorrow, x < y ? 1u : 0u)
-        I2(UMulHi, uint32_t((uint64_t(x) * y) >> 32))
-        I2(IMulHi, uint32_t((int64_t(s(x)) * s(y)) >> 32))
         case Op::I2F: each(t, [&](int l) { return u(float(s(a[l]))); }); std::memcpy(d, t, sizeof t); break;
         case Op::U2F: each(t, [&](int l) { return u(float(a[l])); }); std::memcpy(d, t, sizeof t); break;
         case Op::F2I: each(t, [&](int l) { return uint32_t(f2i(f(a[l]))); }); std::memcpy(d, t, sizeof t); break;
         case Op::F2U: each(t, [&](int l) { return f2u(f(a[l])); }); std::memcpy(d, t, sizeof t); break;
-        case Op::PackHalf: each(t, [&](int l) { return pack_half(f(a[l]), f(bb[l])); }); std::memcpy(d, t, sizeof t); break;
-        case Op::UnpackHalfLo: each(t, [&](int l) { return u(unpack_half(a[l])); }); std::memcpy(d, t, sizeof t); break;
-        case Op::UnpackHalfHi: each(t, [&](int l) { return u(unpack_half(a[l] >> 16)); }); std::memcpy(d, t, sizeof t); break;
+        case Op::FSin:
+        case Op::FCos:
+        case Op::FTan:
+        case Op::FAsin:
+        case Op::FAcos:
+        case Op::FAtan:
+        case Op::FAtan2:
+        case Op::FSinh:
+        case Op::FCosh:
+        case Op::FTanh:
+        case Op::FAsinh:
+        case Op::FAcosh:
+        case Op::FAtanh:
+        case Op::FPow:
+        case Op::FExp:
+        case Op::FLog:
+        case Op::FExp2:
+        case Op::FLog2:
+        case Op::FLdexp:
+        case Op::FFrexpMant:
+        case Op::FFrexpExp:
+        case Op::BitCount:
+        case Op::FindLSB:
+        case Op::IFindMSB:
+        case Op::UFindMSB:
+        case Op::BitReverse:
+        case Op::IBitExtract:
+        case Op::UBitExtract:
+        case Op::BitInsert:
+        case Op::UAddCarry:
+        case Op::USubBorrow:
+        case Op::UMulHi:
+        case Op::IMulHi:
+        case Op::PackHalf:
+        case Op::UnpackHalfLo:
+        case Op::UnpackHalfHi:
+          lane_math(i.op, t, a, bb, c, r_[i.d].u);
+          std::memcpy(d, t, sizeof t);
+          break;
         // Inside each 2x2 quad (lanes 4q..4q+3: (0,0) (1,0) (0,1) (1,1)), as llvmpipe takes them.
         case Op::Ddx: each(t, [&](int l) { return u(f(a[l | 1]) - f(a[l & ~1])); }); std::memcpy(d, t, sizeof t); break;
         case Op::Ddy: each(t, [&](int l) { return u(f(a[l | 2]) - f(a[l & ~2])); }); std::memcpy(d, t, sizeof t); break;
@@ -332,46 +396,66 @@ class Runner {
     return in_.uniforms[std::min<uint64_t>(w, in_.uniform_words - 1)];
   }
 
-  const TextureUnit* unit_of(const ir::TexOp& t) const {
-    const int32_t unit = s(uniform(uint32_t(t.sampler)));
+  // Gathers a texture instruction's operands into rows, runs it, and scatters the results.
+  void texture(const ir::TexOp& t) {
+    TexLanes tl;
+    std::memset(tl.in, 0, sizeof tl.in);
+    auto row = [&](int k, ir::Reg r) {
+      if (r != ir::TexOp::kNone) std::memcpy(tl.in[k], r_[r].u, sizeof tl.in[k]);
+    };
+    for (int i = 0; i < 5; ++i) row(TexLanes::kCoord + i, t.coord[i]);
+    row(TexLanes::kLod, t.lod);
+    for (int i = 0; i < 3; ++i) {
+      row(TexLanes::kDx + i, t.dx[i]);
+      row(TexLanes::kDy + i, t.dy[i]);
+      row(TexLanes::kOffset + i, t.offset_reg[i]);
+    }
+    run_texture(t, in_, tl);
+    for (int k = 0; k < 4; ++k)
+      if (t.dst[k] != ir::TexOp::kNone) std::memcpy(r_[t.dst[k]].u, tl.out[k], sizeof tl.out[k]);
+  }
+};
+
+const TextureUnit* unit_of(const ir::TexOp& t, const RunInputs& in_) {
+    const int32_t unit = in_.uniform_words ? s(in_.uniforms[std::min<uint32_t>(uint32_t(t.sampler), in_.uniform_words - 1)]) : -1;
     if (unit < 0 || unit >= in_.unit_count) return nullptr;
     return &in_.units[unit];
   }
 
-  float lane(ir::Reg r, int l) const { return r == ir::TexOp::kNone ? 0.0f : f(r_[r].u[l]); }
-  int32_t ilane(ir::Reg r, int l) const { return r == ir::TexOp::kNone ? 0 : s(r_[r].u[l]); }
 
-  void put(const ir::TexOp& t, int l, const glm::vec4& v) {
-    for (int k = 0; k < 4; ++k) {
-      if (t.dst[k] == ir::TexOp::kNone) continue;
-      r_[t.dst[k]].u[l] = t.result == 0 ? u(v[k]) : uint32_t(t.result == 1 ? f2i(v[k]) : f2u(v[k]));
-    }
-  }
 
-  void texture(const ir::TexOp& t) {
-    const TextureUnit* unit = unit_of(t);
+}  // namespace
+
+void run_texture(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl) {
+    auto lanef = [&](int k, int l) { return f(tl.in[k][l]); };
+    auto lanei = [&](int k, int l) { return s(tl.in[k][l]); };
+    auto put = [&](const ir::TexOp& op, int l, const glm::vec4& v) {
+      for (int k = 0; k < 4; ++k) tl.out[k][l] = op.result == 0 ? u(v[k]) : uint32_t(op.result == 1 ? f2i(v[k]) : f2u(v[k]));
+    };
+    const TextureUnit* unit = unit_of(t, in_);
     const gpu::Texture2D* tex2 = unit ? unit->texture_2d : nullptr;
     const gpu::TextureCube* cube = unit ? unit->texture_cube : nullptr;
     const glm::vec4 missing(0.0f, 0.0f, 0.0f, 1.0f);
     if (t.kind == ir::TexKind::Size) {
       for (int l = 0; l < L; ++l) {
-        const int level = ilane(t.lod, l);
+        const int level = lanei(TexLanes::kLod, l);
         glm::ivec2 sz(0);
         if (t.dim == ir::SamplerDim::Cube) {
           if (cube && level >= 0 && level < cube->levels()) sz = glm::ivec2(cube->face(0).width(level), cube->face(0).height(level));
         } else if (tex2 && level >= 0 && level < tex2->levels()) {
           sz = glm::ivec2(tex2->width(level), tex2->height(level));
         }
-        if (t.dst[0] != ir::TexOp::kNone) r_[t.dst[0]].u[l] = uint32_t(sz.x);
-        if (t.dst[1] != ir::TexOp::kNone) r_[t.dst[1]].u[l] = uint32_t(sz.y);
+        tl.out[0][l] = uint32_t(sz.x);
+        tl.out[1][l] = uint32_t(sz.y);
+        tl.out[2][l] = tl.out[3][l] = 0;
       }
       return;
     }
     if (t.kind == ir::TexKind::Fetch) {
       for (int l = 0; l < L; ++l) {
-        const int x = ilane(t.coord[0], l) + t.offset[0] + ilane(t.offset_reg[0], l);
-        const int y = t.dim == ir::SamplerDim::D1 ? 0 : ilane(t.coord[1], l) + t.offset[1] + ilane(t.offset_reg[1], l);
-        put(t, l, gpu::detail::texel_fetch(tex2, x, y, ilane(t.lod, l)));
+        const int x = lanei(0, l) + t.offset[0] + lanei(TexLanes::kOffset + 0, l);
+        const int y = t.dim == ir::SamplerDim::D1 ? 0 : lanei(1, l) + t.offset[1] + lanei(TexLanes::kOffset + 1, l);
+        put(t, l, gpu::detail::texel_fetch(tex2, x, y, lanei(TexLanes::kLod, l)));
       }
       return;
     }
@@ -384,17 +468,17 @@ class Runner {
       if (in_.fragment && !t.has_lod && !t.has_grad) {
         gpu::Vec3<gpu::Float16> dir;
         for (int l = 0; l < L; ++l) {
-          dir.x[l] = lane(t.coord[0], l);
-          dir.y[l] = lane(t.coord[1], l);
-          dir.z[l] = lane(t.coord[2], l);
+          dir.x[l] = lanef(0, l);
+          dir.y[l] = lanef(1, l);
+          dir.z[l] = lanef(2, l);
         }
-        if (t.has_bias) sc.state.lod_bias += lane(t.lod, 0);
+        if (t.has_bias) sc.state.lod_bias += lanef(TexLanes::kLod, 0);
         const gpu::Vec4<gpu::Float16> r = gpu::texture(sc, dir);
         for (int l = 0; l < L; ++l) put(t, l, glm::vec4(r.x[l], r.y[l], r.z[l], r.w[l]));
       } else {
         for (int l = 0; l < L; ++l) {
-          const float lod = t.has_lod ? lane(t.lod, l) : 0.0f;
-          put(t, l, gpu::detail::sample_cube(sc, lane(t.coord[0], l), lane(t.coord[1], l), lane(t.coord[2], l), lod));
+          const float lod = t.has_lod ? lanef(TexLanes::kLod, l) : 0.0f;
+          put(t, l, gpu::detail::sample_cube(sc, lanef(0, l), lanef(1, l), lanef(2, l), lod));
         }
       }
       return;
@@ -408,11 +492,11 @@ class Runner {
     const bool d1 = t.dim == ir::SamplerDim::D1;
     const float w0 = float(tex2->width()), h0 = float(tex2->height());
     for (int l = 0; l < L; ++l) {
-      float x = lane(t.coord[0], l), y = d1 ? 0.5f : lane(t.coord[1], l);
+      float x = lanef(0, l), y = d1 ? 0.5f : lanef(1, l);
       float r = 0.0f;
-      if (t.shadow) r = lane(t.coord[2], l);  // (s, t, ref) for 2D; (s, unused, ref) for 1D
+      if (t.shadow) r = lanef(2, l);  // (s, t, ref) for 2D; (s, unused, ref) for 1D
       if (t.proj) {
-        const float q = lane(t.coord[t.coords - 1], l);
+        const float q = lanef(t.coords - 1, l);
         x /= q;
         if (!d1) y /= q;
         r /= q;
@@ -432,12 +516,12 @@ class Runner {
       gpu::Sampler2DShadow ss{tex2, unit->sampler};
       ss.state.compare = true;
       for (int l = 0; l < L; ++l) {
-        float lod = t.has_lod ? lane(t.lod, l) : 0.0f;
+        float lod = t.has_lod ? lanef(TexLanes::kLod, l) : 0.0f;
         if (implicit && in_.fragment) {
           const int q = l & ~3;
           lod = gpu::detail::lod_from_derivatives(uu[q | 1] - uu[q], vv[q | 1] - vv[q], uu[q | 2] - uu[q], vv[q | 2] - vv[q],
                                                   tex2->width(), tex2->height());
-          if (t.has_bias) lod += lane(t.lod, l);
+          if (t.has_bias) lod += lanef(TexLanes::kLod, l);
         }
         const float v = gpu::detail::sample_2d_compare(ss, uu[l], vv[l], ref[l], lod);
         put(t, l, glm::vec4(v, v, v, 1.0f));
@@ -453,10 +537,10 @@ class Runner {
     for (int l = 0; l < L; ++l) {
       float lod;
       if (t.has_lod) {
-        lod = lane(t.lod, l);
+        lod = lanef(TexLanes::kLod, l);
       } else if (t.has_grad) {
-        float dx0 = lane(t.dx[0], l), dx1 = d1 ? 0.0f : lane(t.dx[1], l);
-        float dy0 = lane(t.dy[0], l), dy1 = d1 ? 0.0f : lane(t.dy[1], l);
+        float dx0 = lanef(TexLanes::kDx + 0, l), dx1 = d1 ? 0.0f : lanef(TexLanes::kDx + 1, l);
+        float dy0 = lanef(TexLanes::kDy + 0, l), dy1 = d1 ? 0.0f : lanef(TexLanes::kDy + 1, l);
         if (t.dim == ir::SamplerDim::Rect) {
           dx0 /= w0, dy0 /= w0, dx1 /= h0, dy1 /= h0;
         }
@@ -468,13 +552,10 @@ class Runner {
       } else {
         lod = 0.0f;
       }
-      if (t.has_bias) lod += lane(t.lod, l);
+      if (t.has_bias) lod += lanef(TexLanes::kLod, l);
       put(t, l, gpu::detail::sample_2d(s2, uu[l], vv[l], lod));
     }
   }
-};
-
-}  // namespace
 
 uint32_t run_stage(const ir::Stage& stage, LaneReg* regs, uint32_t mask, const RunInputs& in) {
   for (const auto& [r, bits] : stage.constants) std::fill(regs[r].u, regs[r].u + ir::kLanes, bits);

@@ -29,6 +29,19 @@ struct RunInputs {
   bool fragment = false;
 };
 
+// The operands of a texture instruction as rows of lanes (a missing operand is a row of 0),
+// and its four results: the interpreter and the JIT both call run_texture with them.
+struct TexLanes {
+  enum : int { kCoord = 0, kLod = 5, kDx = 6, kDy = 9, kOffset = 12, kRows = 15 };
+  alignas(64) uint32_t in[kRows][ir::kLanes];
+  alignas(64) uint32_t out[4][ir::kLanes];
+};
+void run_texture(const ir::TexOp& op, const RunInputs& in, TexLanes& lanes);
+
+// One of the library operations (transcendentals, bit fields, halves, wide products) on
+// sixteen lanes: t = op(a, b, c, e).
+void lane_math(ir::Op op, uint32_t* t, const uint32_t* a, const uint32_t* b, const uint32_t* c, const uint32_t* e);
+
 // Runs `stage` on the registers `regs` (at least stage.registers of them, inputs already
 // copied in) for the lanes in `mask`; fills constants, uniforms and zeroes variables first.
 // Returns the lanes discarded.

@@ -15,9 +15,12 @@
 #include <cstddef>
 #include <cstring>
 #include <mutex>
+#include <cstdlib>
 #include <set>
+#include <string_view>
 
 #include "interp.hpp"
+#include "jit.hpp"
 #include "lower.hpp"
 
 namespace tessel::glsl {
@@ -82,6 +85,7 @@ struct Linked {
   std::vector<std::pair<ir::Reg, int>> fs_out;  // register, byte offset (colour or depth rows)
   std::vector<ir::Reg> frag_color;            // gl_FragColor's four registers (written to every output)
   gpu::RuntimeShape shape;
+  std::unique_ptr<JitCode> jit;               // native code, when LLVM compiled it
 };
 
 struct Program::Impl {
@@ -104,10 +108,17 @@ namespace {
 class Bound final : public gpu::RuntimeShader {
  public:
   Bound(std::shared_ptr<const Linked> l, std::vector<uint32_t> u, std::vector<TextureUnit> t)
-      : l_(std::move(l)), uniforms_(std::move(u)), units_(std::move(t)) {}
+      : l_(std::move(l)), uniforms_(std::move(u)), units_(std::move(t)) {
+    if (uniforms_.empty()) uniforms_.push_back(0);  // the code clamps word indices to the last word
+  }
   const gpu::RuntimeShape& shape() const override { return l_->shape; }
 
   void vertex(gpu::VertexLanes& lanes) const override {
+    if (l_->jit) {
+      const RunInputs in = inputs(false);
+      l_->jit->function(0)(&lanes, uniforms_.data(), uint32_t(uniforms_.size()), &in, 0xFFFFu);
+      return;
+    }
     LaneReg* r = regs(l_->vs.registers);
     const auto* base = reinterpret_cast<const std::byte*>(&lanes);
     for (const Copy& c : l_->vs_in) std::memcpy(r + c.reg, base + c.offset, sizeof(LaneReg));
@@ -117,6 +128,11 @@ class Bound final : public gpu::RuntimeShader {
   }
 
   void fragment(gpu::FragmentLanes& lanes) const override {
+    if (l_->jit) {
+      const RunInputs in = inputs(true);
+      lanes.killed = l_->jit->function(1)(&lanes, uniforms_.data(), uint32_t(uniforms_.size()), &in, 0xFFFFu);
+      return;
+    }
     LaneReg* r = regs(l_->fs.registers);
     const auto* base = reinterpret_cast<const std::byte*>(&lanes);
     for (const Copy& c : l_->fs_in) std::memcpy(r + c.reg, base + c.offset, sizeof(LaneReg));
@@ -435,6 +451,24 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
   m.values.assign(m.layout.words, 0);
   linked->vs = std::move(vs.ir);
   linked->fs = std::move(fs.ir);
+  // Native code for both stages, unless TESSEL_GLSL=interp asks for the interpreter. A
+  // program LLVM cannot compile still runs, on the interpreter (same results).
+  const char* mode = std::getenv("TESSEL_GLSL");
+  if (!(mode && std::string_view(mode) == "interp")) {
+    StageIO vio, fio;
+    for (const Copy& c : linked->vs_in) vio.in.push_back({c.reg, c.offset});
+    for (const Copy& c : linked->vs_out) vio.out.push_back({c.reg, c.offset});
+    for (const Copy& c : linked->fs_in) fio.in.push_back({c.reg, c.offset});
+    for (ir::Reg f : linked->fs_front_facing) fio.in_mask.push_back({f, offset_of(&FragmentLanes::front_facing)});
+    for (const auto& [reg, off] : linked->fs_out) fio.out.push_back({reg, uint32_t(off)});
+    if (!linked->frag_color.empty())
+      for (int o = 0; o < linked->shape.outputs; ++o)
+        for (int c = 0; c < 4; ++c)
+          fio.out.push_back({linked->frag_color[size_t(c)],
+                             offset_of(&FragmentLanes::color) + uint32_t((o * 4 + c) * ir::kLanes * 4)});
+    std::string why;
+    linked->jit = jit_compile(linked->vs, vio, linked->fs, fio, &why);
+  }
   m.linked = std::move(linked);
   m.ok = true;
   return p;

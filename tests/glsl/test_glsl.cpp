@@ -66,7 +66,9 @@ TEST(Glsl, LinkErrors) {
   // No main.
   auto v = Shader::compile(Stage::Vertex, kVs);
   auto f = Shader::compile(Stage::Fragment, "#version 330\nout vec4 c; void f() { c = vec4(1.0); }");
-  if (f->ok()) EXPECT_FALSE(Program::link(*v, *f)->ok());
+  if (f->ok()) {
+    EXPECT_FALSE(Program::link(*v, *f)->ok());
+  }
   // Drawing a program that did not link is an error, not a crash.
   gpu::Context ctx(1);
   gpu::Texture2D color(gpu::Format::RGBA8, 4, 4);
@@ -164,12 +166,16 @@ TEST(Glsl, BadInputGetsALogOrADefinedResult) {
   {
     // The comment swallows main(): a compile error or a link error.
     auto f = Shader::compile(Stage::Fragment, "#version 330\nout vec4 c; /* never closed\nvoid main() {}");
-    if (f->ok()) EXPECT_FALSE(Program::link(*Shader::compile(Stage::Vertex, kVs), *f)->ok());
+    if (f->ok()) {
+      EXPECT_FALSE(Program::link(*Shader::compile(Stage::Vertex, kVs), *f)->ok());
+    }
   }
   EXPECT_FALSE(Shader::compile(Stage::Fragment, "#version 330\nout vec4 c; void main() { c = 1; }")->ok());
   {
     auto empty = Shader::compile(Stage::Fragment, "");  // compiles (as in Mesa); has no main to link
-    if (empty->ok()) EXPECT_FALSE(Program::link(*Shader::compile(Stage::Vertex, kVs), *empty)->ok());
+    if (empty->ok()) {
+      EXPECT_FALSE(Program::link(*Shader::compile(Stage::Vertex, kVs), *empty)->ok());
+    }
   }
   // Deep nesting and a huge source.
   std::string deep = "#version 330\nout vec4 c; void main() { float x = ";
@@ -187,7 +193,9 @@ TEST(Glsl, BadInputGetsALogOrADefinedResult) {
   auto f = Shader::compile(Stage::Fragment,
                            "#version 330\nin vec2 p; out vec4 c; float r(float x) { return x < 0.0 ? x : r(x - 1.0); }"
                            " void main() { c = vec4(r(p.x)); }");
-  if (f->ok()) EXPECT_FALSE(Program::link(*v, *f)->ok());
+  if (f->ok()) {
+    EXPECT_FALSE(Program::link(*v, *f)->ok());
+  }
   // An infinite loop ends (cut after 65535 iterations); integer division by zero and indices
   // out of range give defined values.
   std::string log;

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <map>
 
 #include "compare.hpp"
@@ -69,6 +71,13 @@ void run_case(const Case& c) {
   ASSERT_EQ(ours.outputs.size(), mesa.outputs.size());
   const Mismatch m = compare_floats(ours.outputs[0], mesa.outputs[0], spec.width, c.tol, c.channels);
   EXPECT_EQ(m.count, 0) << c.name << ":" << m.first << "\n" << spec.fragment;
+  // The interpreter (the reference tier) gives the JIT's bits exactly.
+  ::setenv("TESSEL_GLSL", "interp", 1);
+  const TesselResult interp = run_tessel(spec);
+  ::unsetenv("TESSEL_GLSL");
+  ASSERT_TRUE(interp.ok) << interp.log;
+  EXPECT_EQ(0, std::memcmp(interp.outputs[0].data(), ours.outputs[0].data(), ours.outputs[0].size() * 4))
+      << c.name << ": the interpreter and the JIT differ";
 }
 
 // --- the tables -------------------------------------------------------------------------------

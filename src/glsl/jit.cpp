@@ -1,0 +1,605 @@
+// The IR compiled to native code with LLVM (jit.hpp).
+//
+// Each IR register is a stack slot of <16 x i32> that LLVM's mem2reg turns into SSA values;
+// registers of a variable indexed at run time share one array so that lanes can address
+// them. Structured control flow becomes branches on "any lane": an `if` skips an arm no lane
+// takes, a loop runs while a lane is in it (at most ir::kMaxLoopIterations times), and the
+// masks (return, break, continue, discard) are slots too, exactly as the interpreter keeps
+// them, so both tiers compute the same lanes.
+#include "jit.hpp"
+
+#include <llvm/ExecutionEngine/Orc/LLJIT.h>
+#include <llvm/IR/IRBuilder.h>
+#include <llvm/IR/Intrinsics.h>
+#include <llvm/IR/LLVMContext.h>
+#include <llvm/IR/Module.h>
+#include <llvm/IR/Verifier.h>
+#include <llvm/Passes/PassBuilder.h>
+#include <llvm/Support/TargetSelect.h>
+
+#include <map>
+#include <mutex>
+
+namespace tessel::glsl {
+namespace {
+
+using ir::Inst;
+using ir::Op;
+using ir::Reg;
+constexpr int L = ir::kLanes;
+
+extern "C" void tessel_glsl_texture(const ir::TexOp* op, const RunInputs* in, TexLanes* lanes) {
+  run_texture(*op, *in, *lanes);
+}
+extern "C" void tessel_glsl_lane_math(uint32_t op, uint32_t* t, const uint32_t* a, const uint32_t* b, const uint32_t* c,
+                                      const uint32_t* e) {
+  lane_math(ir::Op(op), t, a, b, c, e);
+}
+
+void init_llvm() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    llvm::InitializeNativeTarget();
+    llvm::InitializeNativeTargetAsmPrinter();
+  });
+}
+
+class Codegen {
+ public:
+  Codegen(llvm::LLVMContext& ctx, llvm::Module& m, const ir::Stage& st, const StageIO& io)
+      : c_(ctx), m_(m), st_(st), io_(io), b_(ctx) {
+    i32_ = b_.getInt32Ty();
+    f32_ = b_.getFloatTy();
+    vi_ = llvm::FixedVectorType::get(i32_, L);
+    vf_ = llvm::FixedVectorType::get(f32_, L);
+    vm_ = llvm::FixedVectorType::get(b_.getInt1Ty(), L);
+    ptr_ = llvm::PointerType::getUnqual(ctx);
+  }
+
+  llvm::Function* build(const std::string& name) {
+    auto* fty = llvm::FunctionType::get(i32_, {ptr_, ptr_, i32_, ptr_, i32_}, false);
+    fn_ = llvm::Function::Create(fty, llvm::Function::ExternalLinkage, name, m_);
+    auto args = fn_->arg_begin();
+    lanes_ = &*args++;
+    uniforms_ = &*args++;
+    words_ = &*args++;
+    rin_ = &*args++;
+    llvm::Value* mask_arg = &*args++;
+    entry_ = llvm::BasicBlock::Create(c_, "entry", fn_);
+    b_.SetInsertPoint(entry_);
+    plan_registers();
+    // Constants, uniforms (broadcast), variables zeroed, inputs copied in.
+    for (const auto& [r, bits] : st_.constants) store(r, splat(bits));
+    for (const auto& [r, w] : st_.uniforms) {
+      llvm::Value* idx = b_.CreateSelect(b_.CreateICmpULT(b_.getInt32(w), words_), b_.getInt32(w),
+                                         b_.CreateSub(words_, b_.getInt32(1)));
+      llvm::Value* v = b_.CreateLoad(i32_, b_.CreateGEP(i32_, uniforms_, idx));
+      store(r, b_.CreateVectorSplat(L, v));
+    }
+    for (const auto& [r, n] : st_.variables)
+      for (uint32_t k = 0; k < n; ++k) store(r + k, llvm::Constant::getNullValue(vi_));
+    for (const auto& [r, off] : io_.in) store(r, b_.CreateAlignedLoad(vi_, byte_ptr(lanes_, off), llvm::MaybeAlign(4)));
+    for (const auto& [r, off] : io_.in_mask) {
+      llvm::Value* bits = b_.CreateLoad(i32_, byte_ptr(lanes_, off));
+      store(r, b_.CreateSExt(to_mask(bits), vi_));
+    }
+    ret_ = slot(vm_, "ret");
+    brk_ = slot(vm_, "brk");
+    cont_ = slot(vm_, "cont");
+    kill_ = slot(vm_, "kill");
+    for (llvm::Value* s : {ret_, brk_, cont_, kill_}) b_.CreateStore(llvm::Constant::getNullValue(vm_), s);
+    block(st_.body, to_mask(mask_arg));
+    for (const auto& [r, off] : io_.out) b_.CreateAlignedStore(load(r), byte_ptr(lanes_, off), llvm::MaybeAlign(4));
+    llvm::Value* killed = b_.CreateLoad(vm_, kill_);
+    b_.CreateRet(b_.CreateZExt(b_.CreateBitCast(killed, b_.getInt16Ty()), i32_));
+    return fn_;
+  }
+
+ private:
+  llvm::LLVMContext& c_;
+  llvm::Module& m_;
+  const ir::Stage& st_;
+  const StageIO& io_;
+  llvm::IRBuilder<> b_;
+  llvm::Type *i32_, *f32_, *ptr_;
+  llvm::FixedVectorType *vi_, *vf_, *vm_;
+  llvm::Function* fn_ = nullptr;
+  llvm::BasicBlock* entry_ = nullptr;
+  llvm::Value *lanes_, *uniforms_, *words_, *rin_;
+  llvm::Value *ret_, *brk_, *cont_, *kill_;
+  // Where each register lives: its own slot, or an element of an indexed array.
+  struct Home {
+    llvm::Value* base = nullptr;  // alloca
+    uint32_t index = 0;           // element within an array (0 for a single slot)
+    uint32_t first = 0;           // first register of the array
+    bool array = false;
+  };
+  std::vector<Home> homes_;
+  llvm::Value* tex_lanes_ = nullptr;
+  llvm::Value* math_lanes_ = nullptr;
+
+  llvm::Value* slot(llvm::Type* t, const char* name, llvm::Value* count = nullptr) {
+    llvm::IRBuilder<> eb(entry_, entry_->begin());
+    return eb.CreateAlloca(t, count, name);
+  }
+  llvm::Value* byte_ptr(llvm::Value* base, uint64_t off) { return b_.CreateGEP(b_.getInt8Ty(), base, b_.getInt64(off)); }
+  llvm::Value* splat(uint32_t bits) { return llvm::ConstantVector::getSplat(llvm::ElementCount::getFixed(L), b_.getInt32(bits)); }
+  llvm::Value* splatf(float x) { return llvm::ConstantVector::getSplat(llvm::ElementCount::getFixed(L), llvm::ConstantFP::get(f32_, x)); }
+  llvm::Value* to_mask(llvm::Value* bits32) { return b_.CreateBitCast(b_.CreateTrunc(bits32, b_.getInt16Ty()), vm_); }
+  llvm::Value* any(llvm::Value* m) { return b_.CreateICmpNE(b_.CreateBitCast(m, b_.getInt16Ty()), b_.getInt16(0)); }
+
+  // Registers read by LoadIndexed or written by StoreIndexed are grouped into arrays: the
+  // range [b, last] of each such access joins the array of its variable.
+  void plan_registers() {
+    homes_.assign(st_.registers, Home{});
+    std::vector<std::pair<uint32_t, uint32_t>> ranges;
+    std::function<void(const ir::Block&)> scan = [&](const ir::Block& bl) {
+      for (const ir::Node& n : bl) {
+        for (const Inst& i : n.code) {
+          if (i.op == Op::LoadIndexed) ranges.push_back({i.b, i.imm});
+          if (i.op == Op::StoreIndexed) ranges.push_back({i.dst, i.imm});
+        }
+        scan(n.a);
+        scan(n.b);
+      }
+    };
+    scan(st_.body);
+    // Widen each range to the whole variable it lies in.
+    for (auto& [lo, hi] : ranges)
+      for (const auto& [r, n] : st_.variables)
+        if (lo >= r && lo < r + n) lo = std::min(lo, r), hi = std::max(hi, r + n - 1);
+    for (const auto& [r, bits] : st_.constants) (void)r, (void)bits;
+    std::sort(ranges.begin(), ranges.end());
+    std::vector<std::pair<uint32_t, uint32_t>> merged;
+    for (auto rg : ranges) {
+      if (!merged.empty() && rg.first <= merged.back().second) merged.back().second = std::max(merged.back().second, rg.second);
+      else merged.push_back(rg);
+    }
+    for (auto [lo, hi] : merged) {
+      llvm::Value* arr = slot(vi_, "arr", b_.getInt32(hi - lo + 1));
+      for (uint32_t r = lo; r <= hi && r < st_.registers; ++r) homes_[r] = {arr, r - lo, lo, true};
+    }
+  }
+
+  llvm::Value* home_ptr(Reg r) {
+    Home& h = homes_.at(r);
+    if (!h.base) h.base = slot(vi_, "r");
+    if (!h.array) return h.base;
+    return b_.CreateGEP(vi_, h.base, b_.getInt32(h.index));
+  }
+  llvm::Value* load(Reg r) { return b_.CreateLoad(vi_, home_ptr(r)); }
+  void store(Reg r, llvm::Value* v) {
+    if (v->getType() != vi_) v = b_.CreateBitCast(v, vi_);
+    b_.CreateStore(v, home_ptr(r));
+  }
+  llvm::Value* loadf(Reg r) { return b_.CreateBitCast(load(r), vf_); }
+  llvm::Value* mask_of(Reg r) { return b_.CreateICmpSLT(load(r), llvm::Constant::getNullValue(vi_)); }
+  llvm::Value* sext(llvm::Value* m) { return b_.CreateSExt(m, vi_); }
+
+  llvm::Value* intrinsic(llvm::Intrinsic::ID id, llvm::ArrayRef<llvm::Value*> args) {
+    llvm::Function* f = llvm::Intrinsic::getDeclaration(&m_, id, {args[0]->getType()});
+    return b_.CreateCall(f, args);
+  }
+
+  // The current live lanes: mask less those that returned, broke, continued or were discarded.
+  llvm::Value* live_of(llvm::Value* mask) {
+    llvm::Value* out = b_.CreateOr(b_.CreateOr(b_.CreateLoad(vm_, ret_), b_.CreateLoad(vm_, brk_)),
+                                   b_.CreateOr(b_.CreateLoad(vm_, cont_), b_.CreateLoad(vm_, kill_)));
+    return b_.CreateAnd(mask, b_.CreateNot(out));
+  }
+
+  void block(const ir::Block& bl, llvm::Value* mask) {
+    llvm::BasicBlock* end = nullptr;
+    for (size_t k = 0; k < bl.size(); ++k) {
+      const ir::Node& n = bl[k];
+      llvm::Value* live = live_of(mask);
+      if (k > 0 && bl[k - 1].kind != ir::Node::Kind::Code) {
+        // After a construct that may have cleared lanes, skip the rest when none is left.
+        if (!end) end = llvm::BasicBlock::Create(c_, "end", fn_);
+        llvm::BasicBlock* go = llvm::BasicBlock::Create(c_, "go", fn_);
+        b_.CreateCondBr(any(live), go, end);
+        b_.SetInsertPoint(go);
+      }
+      node(n, live);
+    }
+    if (end) {
+      b_.CreateBr(end);
+      b_.SetInsertPoint(end);
+    }
+  }
+
+  void node(const ir::Node& n, llvm::Value* live) {
+    using K = ir::Node::Kind;
+    switch (n.kind) {
+      case K::Code:
+        for (const Inst& i : n.code) inst(i, live);
+        break;
+      case K::If: {
+        llvm::Value* c = b_.CreateAnd(mask_of(n.cond), live);
+        llvm::BasicBlock* then_bb = llvm::BasicBlock::Create(c_, "then", fn_);
+        llvm::BasicBlock* else_check = llvm::BasicBlock::Create(c_, "elsecheck", fn_);
+        b_.CreateCondBr(any(c), then_bb, else_check);
+        b_.SetInsertPoint(then_bb);
+        block(n.a, c);
+        b_.CreateBr(else_check);
+        b_.SetInsertPoint(else_check);
+        if (!n.b.empty()) {
+          llvm::Value* e = b_.CreateAnd(live, b_.CreateNot(c));
+          llvm::BasicBlock* else_bb = llvm::BasicBlock::Create(c_, "else", fn_);
+          llvm::BasicBlock* merge = llvm::BasicBlock::Create(c_, "merge", fn_);
+          b_.CreateCondBr(any(e), else_bb, merge);
+          b_.SetInsertPoint(else_bb);
+          block(n.b, e);
+          b_.CreateBr(merge);
+          b_.SetInsertPoint(merge);
+        }
+        break;
+      }
+      case K::Loop: {
+        llvm::Value* saved_brk = b_.CreateLoad(vm_, brk_);
+        llvm::Value* saved_cont = b_.CreateLoad(vm_, cont_);
+        b_.CreateStore(llvm::Constant::getNullValue(vm_), brk_);
+        llvm::Value* iter = slot(i32_, "iter");
+        b_.CreateStore(b_.getInt32(0), iter);
+        llvm::BasicBlock* head = llvm::BasicBlock::Create(c_, "loop", fn_);
+        llvm::BasicBlock* body = llvm::BasicBlock::Create(c_, "body", fn_);
+        llvm::BasicBlock* step = llvm::BasicBlock::Create(c_, "step", fn_);
+        llvm::BasicBlock* step_run = llvm::BasicBlock::Create(c_, "steprun", fn_);
+        llvm::BasicBlock* exit = llvm::BasicBlock::Create(c_, "exit", fn_);
+        b_.CreateBr(head);
+        b_.SetInsertPoint(head);
+        b_.CreateStore(llvm::Constant::getNullValue(vm_), cont_);
+        llvm::Value* in = b_.CreateAnd(live, b_.CreateNot(b_.CreateOr(b_.CreateOr(b_.CreateLoad(vm_, ret_),
+                                                                                    b_.CreateLoad(vm_, brk_)),
+                                                                        b_.CreateLoad(vm_, kill_))));
+        llvm::Value* more = b_.CreateICmpSLT(b_.CreateLoad(i32_, iter), b_.getInt32(ir::kMaxLoopIterations));
+        b_.CreateCondBr(b_.CreateAnd(more, any(in)), body, exit);
+        b_.SetInsertPoint(body);
+        block(n.a, in);
+        b_.CreateBr(step);
+        b_.SetInsertPoint(step);
+        b_.CreateStore(llvm::Constant::getNullValue(vm_), cont_);
+        llvm::Value* in2 = b_.CreateAnd(live, b_.CreateNot(b_.CreateOr(b_.CreateOr(b_.CreateLoad(vm_, ret_),
+                                                                                     b_.CreateLoad(vm_, brk_)),
+                                                                         b_.CreateLoad(vm_, kill_))));
+        b_.CreateCondBr(any(in2), step_run, exit);
+        b_.SetInsertPoint(step_run);
+        block(n.b, in2);
+        b_.CreateStore(b_.CreateAdd(b_.CreateLoad(i32_, iter), b_.getInt32(1)), iter);
+        b_.CreateBr(head);
+        b_.SetInsertPoint(exit);
+        b_.CreateStore(saved_brk, brk_);
+        b_.CreateStore(saved_cont, cont_);
+        break;
+      }
+      case K::Break: b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, brk_), live), brk_); break;
+      case K::Continue: b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, cont_), live), cont_); break;
+      case K::Return: b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, ret_), live), ret_); break;
+      case K::Discard: b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, kill_), live), kill_); break;
+      case K::Function: {
+        llvm::Value* saved = b_.CreateLoad(vm_, ret_);
+        block(n.a, live);
+        b_.CreateStore(saved, ret_);
+        break;
+      }
+      case K::Switch: {
+        llvm::Value* saved = b_.CreateLoad(vm_, brk_);
+        b_.CreateStore(llvm::Constant::getNullValue(vm_), brk_);
+        block(n.a, live);
+        b_.CreateStore(saved, brk_);
+        break;
+      }
+    }
+  }
+
+  // A library operation through the interpreter's own code (lane_math).
+  void call_math(const Inst& i) {
+    if (!math_lanes_) math_lanes_ = slot(llvm::ArrayType::get(vi_, 5), "math");
+    auto row = [&](int k) { return b_.CreateGEP(llvm::ArrayType::get(vi_, 5), math_lanes_, {b_.getInt32(0), b_.getInt32(k)}); };
+    b_.CreateStore(load(i.a), row(1));
+    b_.CreateStore(load(i.b), row(2));
+    b_.CreateStore(load(i.c), row(3));
+    b_.CreateStore(load(i.d), row(4));
+    auto* fty = llvm::FunctionType::get(b_.getVoidTy(), {i32_, ptr_, ptr_, ptr_, ptr_, ptr_}, false);
+    llvm::FunctionCallee f = m_.getOrInsertFunction("tessel_glsl_lane_math", fty);
+    b_.CreateCall(f, {b_.getInt32(uint32_t(i.op)), row(0), row(1), row(2), row(3), row(4)});
+    store(i.dst, b_.CreateLoad(vi_, row(0)));
+  }
+
+  void texture(const Inst& i) {
+    const ir::TexOp& t = st_.textures.at(i.imm);
+    auto* tl_ty = llvm::ArrayType::get(vi_, TexLanes::kRows + 4);
+    if (!tex_lanes_) tex_lanes_ = slot(tl_ty, "tex");
+    auto row = [&](int k) { return b_.CreateGEP(tl_ty, tex_lanes_, {b_.getInt32(0), b_.getInt32(k)}); };
+    auto put = [&](int k, Reg r) {
+      b_.CreateStore(r == ir::TexOp::kNone ? llvm::Constant::getNullValue(vi_) : load(r), row(k));
+    };
+    for (int k = 0; k < 5; ++k) put(TexLanes::kCoord + k, t.coord[k]);
+    put(TexLanes::kLod, t.lod);
+    for (int k = 0; k < 3; ++k) {
+      put(TexLanes::kDx + k, t.dx[k]);
+      put(TexLanes::kDy + k, t.dy[k]);
+      put(TexLanes::kOffset + k, t.offset_reg[k]);
+    }
+    auto* fty = llvm::FunctionType::get(b_.getVoidTy(), {ptr_, ptr_, ptr_}, false);
+    llvm::FunctionCallee f = m_.getOrInsertFunction("tessel_glsl_texture", fty);
+    llvm::Value* op = b_.CreateIntToPtr(b_.getInt64(reinterpret_cast<uint64_t>(&t)), ptr_);
+    b_.CreateCall(f, {op, rin_, tex_lanes_});
+    for (int k = 0; k < 4; ++k)
+      if (t.dst[k] != ir::TexOp::kNone) store(t.dst[k], b_.CreateLoad(vi_, row(TexLanes::kRows + k)));
+  }
+
+  // Lane l of a register that lives in an indexed array, at element `index` (a scalar).
+  llvm::Value* lane_ptr(const Home& h, llvm::Value* index, int l) {
+    llvm::Value* flat = b_.CreateAdd(b_.CreateMul(index, b_.getInt32(L)), b_.getInt32(l));
+    return b_.CreateGEP(i32_, h.base, flat);
+  }
+
+  void inst(const Inst& i, llvm::Value* live) {
+    auto F = [&](Reg r) { return loadf(r); };
+    auto I = [&](Reg r) { return load(r); };
+    auto setf = [&](llvm::Value* v) { store(i.dst, v); };
+    auto zero = llvm::Constant::getNullValue(vi_);
+    switch (i.op) {
+      case Op::Const: store(i.dst, splat(i.imm)); break;
+      case Op::Mov: store(i.dst, load(i.a)); break;
+      case Op::Store: store(i.dst, b_.CreateSelect(live, load(i.a), load(i.dst))); break;
+      case Op::Uniform: {
+        llvm::Value* idx = b_.CreateSelect(b_.CreateICmpULT(b_.getInt32(i.imm), words_), b_.getInt32(i.imm),
+                                           b_.CreateSub(words_, b_.getInt32(1)));
+        store(i.dst, b_.CreateVectorSplat(L, b_.CreateLoad(i32_, b_.CreateGEP(i32_, uniforms_, idx))));
+        break;
+      }
+      case Op::UniformIndexed: {
+        llvm::Value* a = I(i.a);
+        llvm::Value* r = zero;
+        for (int l = 0; l < L; ++l) {
+          llvm::Value* w = b_.CreateAdd(b_.getInt32(i.imm), b_.CreateExtractElement(a, b_.getInt32(l)));
+          // min(w, words - 1), unsigned, as the interpreter clamps (64-bit there; w < 2^32 here
+          // unless imm + offset wraps, which a clamped offset cannot reach)
+          w = b_.CreateSelect(b_.CreateICmpULT(w, words_), w, b_.CreateSub(words_, b_.getInt32(1)));
+          r = b_.CreateInsertElement(r, b_.CreateLoad(i32_, b_.CreateGEP(i32_, uniforms_, w)), b_.getInt32(l));
+        }
+        store(i.dst, r);
+        break;
+      }
+      case Op::LoadIndexed: {
+        const Home& h = homes_.at(i.b);
+        llvm::Value* a = I(i.a);
+        llvm::Value* r = zero;
+        for (int l = 0; l < L; ++l) {
+          llvm::Value* e = b_.CreateAdd(b_.getInt32(i.b), b_.CreateExtractElement(a, b_.getInt32(l)));
+          e = b_.CreateSelect(b_.CreateICmpULE(e, b_.getInt32(i.imm)), e, b_.getInt32(i.imm));
+          e = b_.CreateSub(e, b_.getInt32(h.first));
+          r = b_.CreateInsertElement(r, b_.CreateLoad(i32_, lane_ptr(h, e, l)), b_.getInt32(l));
+        }
+        store(i.dst, r);
+        break;
+      }
+      case Op::StoreIndexed: {
+        const Home& h = homes_.at(i.dst);
+        llvm::Value* a = I(i.a);
+        llvm::Value* v = I(i.b);
+        for (int l = 0; l < L; ++l) {
+          llvm::Value* e = b_.CreateAdd(b_.getInt32(i.dst), b_.CreateExtractElement(a, b_.getInt32(l)));
+          e = b_.CreateSelect(b_.CreateICmpULE(e, b_.getInt32(i.imm)), e, b_.getInt32(i.imm));
+          e = b_.CreateSub(e, b_.getInt32(h.first));
+          llvm::Value* p = lane_ptr(h, e, l);
+          llvm::Value* old = b_.CreateLoad(i32_, p);
+          b_.CreateStore(b_.CreateSelect(b_.CreateExtractElement(live, b_.getInt32(l)), b_.CreateExtractElement(v, b_.getInt32(l)), old), p);
+        }
+        break;
+      }
+      case Op::Select: store(i.dst, b_.CreateSelect(mask_of(i.a), I(i.b), I(i.c))); break;
+      case Op::FAdd: setf(b_.CreateFAdd(F(i.a), F(i.b))); break;
+      case Op::FSub: setf(b_.CreateFSub(F(i.a), F(i.b))); break;
+      case Op::FMul: setf(b_.CreateFMul(F(i.a), F(i.b))); break;
+      case Op::FDiv: setf(b_.CreateFDiv(F(i.a), F(i.b))); break;
+      case Op::FNeg: setf(b_.CreateFNeg(F(i.a))); break;
+      case Op::FAbs: setf(intrinsic(llvm::Intrinsic::fabs, {F(i.a)})); break;
+      case Op::FSign: {
+        llvm::Value* x = F(i.a);
+        setf(b_.CreateSelect(b_.CreateFCmpOGT(x, splatf(0.0f)), splatf(1.0f),
+                             b_.CreateSelect(b_.CreateFCmpOLT(x, splatf(0.0f)), splatf(-1.0f), splatf(0.0f))));
+        break;
+      }
+      case Op::FMin: {
+        llvm::Value *x = F(i.a), *y = F(i.b);
+        setf(b_.CreateSelect(b_.CreateFCmpOLT(y, x), y, x));
+        break;
+      }
+      case Op::FMax: {
+        llvm::Value *x = F(i.a), *y = F(i.b);
+        setf(b_.CreateSelect(b_.CreateFCmpOLT(x, y), y, x));
+        break;
+      }
+      case Op::FFma: setf(intrinsic(llvm::Intrinsic::fma, {F(i.a), F(i.b), F(i.c)})); break;
+      case Op::FFloor: setf(intrinsic(llvm::Intrinsic::floor, {F(i.a)})); break;
+      case Op::FCeil: setf(intrinsic(llvm::Intrinsic::ceil, {F(i.a)})); break;
+      case Op::FTrunc: setf(intrinsic(llvm::Intrinsic::trunc, {F(i.a)})); break;
+      case Op::FRound: setf(intrinsic(llvm::Intrinsic::round, {F(i.a)})); break;
+      case Op::FRoundEven: setf(intrinsic(llvm::Intrinsic::nearbyint, {F(i.a)})); break;
+      case Op::FFract: {
+        llvm::Value* x = F(i.a);
+        setf(b_.CreateFSub(x, intrinsic(llvm::Intrinsic::floor, {x})));
+        break;
+      }
+      case Op::FMod: {
+        llvm::Value *x = F(i.a), *y = F(i.b);
+        setf(b_.CreateFSub(x, b_.CreateFMul(y, intrinsic(llvm::Intrinsic::floor, {b_.CreateFDiv(x, y)}))));
+        break;
+      }
+      case Op::FSqrt: setf(intrinsic(llvm::Intrinsic::sqrt, {F(i.a)})); break;
+      case Op::FRsq: setf(b_.CreateFDiv(splatf(1.0f), intrinsic(llvm::Intrinsic::sqrt, {F(i.a)}))); break;
+      case Op::FLt: setf(sext(b_.CreateFCmpOLT(F(i.a), F(i.b)))); break;
+      case Op::FLe: setf(sext(b_.CreateFCmpOLE(F(i.a), F(i.b)))); break;
+      case Op::FGt: setf(sext(b_.CreateFCmpOGT(F(i.a), F(i.b)))); break;
+      case Op::FGe: setf(sext(b_.CreateFCmpOGE(F(i.a), F(i.b)))); break;
+      case Op::FEq: setf(sext(b_.CreateFCmpOEQ(F(i.a), F(i.b)))); break;
+      case Op::FNe: setf(sext(b_.CreateFCmpUNE(F(i.a), F(i.b)))); break;
+      case Op::FIsNan: {
+        llvm::Value* x = F(i.a);
+        setf(sext(b_.CreateFCmpUNO(x, x)));
+        break;
+      }
+      case Op::FIsInf:
+        setf(sext(b_.CreateFCmpOEQ(intrinsic(llvm::Intrinsic::fabs, {F(i.a)}), splatf(INFINITY))));
+        break;
+      case Op::IAdd: setf(b_.CreateAdd(I(i.a), I(i.b))); break;
+      case Op::ISub: setf(b_.CreateSub(I(i.a), I(i.b))); break;
+      case Op::IMul: setf(b_.CreateMul(I(i.a), I(i.b))); break;
+      case Op::IDiv: {
+        // A divisor of 0 acts as -1; dividing by -1 negates (wrapping): no lane can trap.
+        llvm::Value *x = I(i.a), *d = I(i.b);
+        d = b_.CreateSelect(b_.CreateICmpEQ(d, zero), splat(~0u), d);
+        llvm::Value* neg1 = b_.CreateICmpEQ(d, splat(~0u));
+        llvm::Value* q = b_.CreateSDiv(x, b_.CreateSelect(neg1, splat(1), d));
+        setf(b_.CreateSelect(neg1, b_.CreateSub(zero, x), q));
+        break;
+      }
+      case Op::UDiv:
+      case Op::UMod:
+      case Op::IMod: {
+        llvm::Value *x = I(i.a), *d = I(i.b);
+        llvm::Value* z = b_.CreateICmpEQ(d, zero);
+        llvm::Value* safe = b_.CreateSelect(z, splat(1), d);
+        llvm::Value* q = i.op == Op::UDiv ? b_.CreateUDiv(x, safe) : b_.CreateURem(x, safe);
+        setf(b_.CreateSelect(z, splat(~0u), q));
+        break;
+      }
+      case Op::INeg: setf(b_.CreateSub(zero, I(i.a))); break;
+      case Op::IAbs: {
+        llvm::Value* x = I(i.a);
+        setf(b_.CreateSelect(b_.CreateICmpSLT(x, zero), b_.CreateSub(zero, x), x));
+        break;
+      }
+      case Op::ISign: {
+        llvm::Value* x = I(i.a);
+        setf(b_.CreateSelect(b_.CreateICmpSGT(x, zero), splat(1), b_.CreateSelect(b_.CreateICmpSLT(x, zero), splat(~0u), zero)));
+        break;
+      }
+      case Op::IMin: { llvm::Value *x = I(i.a), *y = I(i.b); setf(b_.CreateSelect(b_.CreateICmpSLT(y, x), y, x)); break; }
+      case Op::IMax: { llvm::Value *x = I(i.a), *y = I(i.b); setf(b_.CreateSelect(b_.CreateICmpSLT(x, y), y, x)); break; }
+      case Op::UMin: { llvm::Value *x = I(i.a), *y = I(i.b); setf(b_.CreateSelect(b_.CreateICmpULT(y, x), y, x)); break; }
+      case Op::UMax: { llvm::Value *x = I(i.a), *y = I(i.b); setf(b_.CreateSelect(b_.CreateICmpULT(x, y), y, x)); break; }
+      case Op::And: setf(b_.CreateAnd(I(i.a), I(i.b))); break;
+      case Op::Or: setf(b_.CreateOr(I(i.a), I(i.b))); break;
+      case Op::Xor: setf(b_.CreateXor(I(i.a), I(i.b))); break;
+      case Op::Not: setf(b_.CreateNot(I(i.a))); break;
+      case Op::Shl: setf(b_.CreateShl(I(i.a), b_.CreateAnd(I(i.b), splat(31)))); break;
+      case Op::ShrA: setf(b_.CreateAShr(I(i.a), b_.CreateAnd(I(i.b), splat(31)))); break;
+      case Op::ShrL: setf(b_.CreateLShr(I(i.a), b_.CreateAnd(I(i.b), splat(31)))); break;
+      case Op::ILt: setf(sext(b_.CreateICmpSLT(I(i.a), I(i.b)))); break;
+      case Op::ILe: setf(sext(b_.CreateICmpSLE(I(i.a), I(i.b)))); break;
+      case Op::IGt: setf(sext(b_.CreateICmpSGT(I(i.a), I(i.b)))); break;
+      case Op::IGe: setf(sext(b_.CreateICmpSGE(I(i.a), I(i.b)))); break;
+      case Op::ULt: setf(sext(b_.CreateICmpULT(I(i.a), I(i.b)))); break;
+      case Op::ULe: setf(sext(b_.CreateICmpULE(I(i.a), I(i.b)))); break;
+      case Op::UGt: setf(sext(b_.CreateICmpUGT(I(i.a), I(i.b)))); break;
+      case Op::UGe: setf(sext(b_.CreateICmpUGE(I(i.a), I(i.b)))); break;
+      case Op::IEq: setf(sext(b_.CreateICmpEQ(I(i.a), I(i.b)))); break;
+      case Op::INe: setf(sext(b_.CreateICmpNE(I(i.a), I(i.b)))); break;
+      case Op::I2F: setf(b_.CreateSIToFP(I(i.a), vf_)); break;
+      case Op::U2F: setf(b_.CreateUIToFP(I(i.a), vf_)); break;
+      case Op::F2I: {
+        // As cvttps2dq: NaN and out of range give INT_MIN.
+        llvm::Value* x = F(i.a);
+        llvm::Value* in = b_.CreateAnd(b_.CreateFCmpOGT(x, splatf(-2147483904.0f)), b_.CreateFCmpOLT(x, splatf(2147483648.0f)));
+        llvm::Value* v = b_.CreateFPToSI(b_.CreateSelect(in, x, splatf(0.0f)), vi_);
+        setf(b_.CreateSelect(in, v, splat(0x80000000u)));
+        break;
+      }
+      case Op::F2U: {
+        llvm::Value* x = F(i.a);
+        llvm::Value* low = b_.CreateNot(b_.CreateFCmpOGT(x, splatf(-1.0f)));
+        llvm::Value* high = b_.CreateFCmpOGE(x, splatf(4294967296.0f));
+        llvm::Value* ok = b_.CreateNot(b_.CreateOr(low, high));
+        llvm::Value* v = b_.CreateFPToUI(b_.CreateSelect(ok, x, splatf(0.0f)), vi_);
+        setf(b_.CreateSelect(low, zero, b_.CreateSelect(high, splat(~0u), v)));
+        break;
+      }
+      case Op::Ddx:
+      case Op::Ddy: {
+        const int bit = i.op == Op::Ddx ? 1 : 2;
+        llvm::SmallVector<int, 16> hi, lo;
+        for (int l = 0; l < L; ++l) {
+          hi.push_back(l | bit);
+          lo.push_back(l & ~bit);
+        }
+        llvm::Value* x = F(i.a);
+        setf(b_.CreateFSub(b_.CreateShuffleVector(x, hi), b_.CreateShuffleVector(x, lo)));
+        break;
+      }
+      case Op::Texture: texture(i); break;
+      default: call_math(i); break;
+    }
+  }
+};
+
+class LlvmCode final : public JitCode {
+ public:
+  std::unique_ptr<llvm::orc::LLJIT> jit;
+  StageFn fns[2] = {nullptr, nullptr};
+  StageFn function(int stage) const override { return fns[stage]; }
+};
+
+}  // namespace
+
+std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, const ir::Stage& fs, const StageIO& fio,
+                                     std::string* error) {
+  init_llvm();
+  auto fail = [&](const std::string& e) -> std::unique_ptr<JitCode> {
+    if (error) *error = e;
+    return nullptr;
+  };
+  auto ctx = std::make_unique<llvm::LLVMContext>();
+  auto mod = std::make_unique<llvm::Module>("tessel_glsl", *ctx);
+  Codegen(*ctx, *mod, vs, vio).build("vertex");
+  Codegen(*ctx, *mod, fs, fio).build("fragment");
+  std::string verify;
+  llvm::raw_string_ostream vos(verify);
+  if (llvm::verifyModule(*mod, &vos)) return fail("internal: invalid code: " + vos.str());
+
+  auto jtmb = llvm::orc::JITTargetMachineBuilder::detectHost();
+  if (!jtmb) return fail("no native target");
+  jtmb->setCodeGenOptLevel(llvm::CodeGenOpt::Default);
+  auto tm = jtmb->createTargetMachine();
+  if (!tm) return fail("no target machine");
+  mod->setDataLayout((*tm)->createDataLayout());
+  {
+    llvm::LoopAnalysisManager lam;
+    llvm::FunctionAnalysisManager fam;
+    llvm::CGSCCAnalysisManager cgam;
+    llvm::ModuleAnalysisManager mam;
+    llvm::PassBuilder pb(tm->get());
+    pb.registerModuleAnalyses(mam);
+    pb.registerCGSCCAnalyses(cgam);
+    pb.registerFunctionAnalyses(fam);
+    pb.registerLoopAnalyses(lam);
+    pb.crossRegisterProxies(lam, fam, cgam, mam);
+    llvm::ModulePassManager mpm = pb.buildPerModuleDefaultPipeline(llvm::OptimizationLevel::O2);
+    mpm.run(*mod, mam);
+  }
+  auto jit = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(std::move(*jtmb)).create();
+  if (!jit) return fail("cannot create the JIT: " + llvm::toString(jit.takeError()));
+  auto code = std::make_unique<LlvmCode>();
+  code->jit = std::move(*jit);
+  llvm::orc::SymbolMap syms;
+  auto& es = code->jit->getExecutionSession();
+  syms[es.intern("tessel_glsl_texture")] = llvm::JITEvaluatedSymbol(llvm::pointerToJITTargetAddress(&tessel_glsl_texture),
+                                                                     llvm::JITSymbolFlags::Exported);
+  syms[es.intern("tessel_glsl_lane_math")] = llvm::JITEvaluatedSymbol(
+      llvm::pointerToJITTargetAddress(&tessel_glsl_lane_math), llvm::JITSymbolFlags::Exported);
+  if (auto e = code->jit->getMainJITDylib().define(llvm::orc::absoluteSymbols(syms)))
+    return fail(llvm::toString(std::move(e)));
+  if (auto e = code->jit->addIRModule(llvm::orc::ThreadSafeModule(std::move(mod), std::move(ctx))))
+    return fail(llvm::toString(std::move(e)));
+  for (int s = 0; s < 2; ++s) {
+    auto sym = code->jit->lookup(s == 0 ? "vertex" : "fragment");
+    if (!sym) return fail(llvm::toString(sym.takeError()));
+    code->fns[s] = sym->toPtr<StageFn>();
+  }
+  return code;
+}
+
+}  // namespace tessel::glsl

@@ -1,0 +1,40 @@
+// The native-code tier: one stage of a program compiled by LLVM (ORC JIT) to a function over
+// sixteen lanes, from the same IR the interpreter runs, with the same results bit for bit
+// (every operation is the same IEEE operation, in the same order; the library functions are
+// the interpreter's own, called per sixteen lanes).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "interp.hpp"
+#include "ir.hpp"
+
+namespace tessel::glsl {
+
+// Where a stage's inputs come from and its outputs go: byte offsets into the lanes structure
+// the pipeline passes (gpu::VertexLanes or gpu::FragmentLanes), each a row of sixteen lanes.
+struct StageIO {
+  std::vector<std::pair<ir::Reg, uint32_t>> in, out;
+  // Registers set from a 32-bit lane mask at an offset (gl_FrontFacing): all bits or none.
+  std::vector<std::pair<ir::Reg, uint32_t>> in_mask;
+};
+
+// Runs the stage on `lanes` for the lanes in `mask`; returns the lanes discarded.
+using StageFn = uint32_t (*)(void* lanes, const uint32_t* uniforms, uint32_t uniform_words, const RunInputs* in,
+                             uint32_t mask);
+
+class JitCode {
+ public:
+  virtual ~JitCode() = default;
+  virtual StageFn function(int stage) const = 0;  // 0 vertex, 1 fragment
+};
+
+// Compiles both stages; nullptr (and *error) when LLVM cannot.
+std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, const ir::Stage& fs, const StageIO& fio,
+                                     std::string* error);
+
+}  // namespace tessel::glsl
