@@ -45,9 +45,9 @@ enum class Op : uint8_t {
   Select,
 
   // float, lane-wise
-  FAdd, FSub, FMul, FDiv, FNeg, FAbs, FSign, FMin, FMax, FFma, FFloor, FCeil, FTrunc, FRound, FRoundEven, FFract,
-  FMod, FSqrt, FRsq, FSin, FCos, FTan, FAsin, FAcos, FAtan, FAtan2, FSinh, FCosh, FTanh, FAsinh, FAcosh, FAtanh,
-  FPow, FExp, FLog, FExp2, FLog2, FLdexp, FFrexpMant, FFrexpExp,
+  // (transcendental functions are sequences of these: lower_math.inc)
+  FAdd, FSub, FMul, FDiv, FNeg, FAbs, FSign, FMin, FMax, FFma, FFloor, FCeil, FTrunc, FRoundEven, FFract,
+  FMod, FSqrt, FRsq, FLdexp, FFrexpMant, FFrexpExp,
   FLt, FLe, FGt, FGe, FEq, FNe, FIsNan, FIsInf,
   // integer (two's complement 32 bits); division and shifts are defined for every input
   IAdd, ISub, IMul, IDiv, UDiv, IMod, UMod, INeg, IAbs, ISign, IMin, IMax, UMin, UMax,

@@ -403,21 +403,19 @@ class Codegen {
                              b_.CreateSelect(b_.CreateFCmpOLT(x, splatf(0.0f)), splatf(-1.0f), splatf(0.0f))));
         break;
       }
-      case Op::FMin: {
-        llvm::Value *x = F(i.a), *y = F(i.b);
-        setf(b_.CreateSelect(b_.CreateFCmpOLT(y, x), y, x));
-        break;
-      }
+      case Op::FMin:
       case Op::FMax: {
+        // x < y ? x : y (or >), and a NaN operand gives the other one: the interpreter's rule.
         llvm::Value *x = F(i.a), *y = F(i.b);
-        setf(b_.CreateSelect(b_.CreateFCmpOLT(x, y), y, x));
+        llvm::Value* r = b_.CreateSelect(i.op == Op::FMin ? b_.CreateFCmpOLT(x, y) : b_.CreateFCmpOGT(x, y), x, y);
+        r = b_.CreateSelect(b_.CreateFCmpUNO(x, x), y, r);
+        setf(b_.CreateSelect(b_.CreateFCmpUNO(y, y), x, r));
         break;
       }
       case Op::FFma: setf(intrinsic(llvm::Intrinsic::fma, {F(i.a), F(i.b), F(i.c)})); break;
       case Op::FFloor: setf(intrinsic(llvm::Intrinsic::floor, {F(i.a)})); break;
       case Op::FCeil: setf(intrinsic(llvm::Intrinsic::ceil, {F(i.a)})); break;
       case Op::FTrunc: setf(intrinsic(llvm::Intrinsic::trunc, {F(i.a)})); break;
-      case Op::FRound: setf(intrinsic(llvm::Intrinsic::round, {F(i.a)})); break;
       case Op::FRoundEven: setf(intrinsic(llvm::Intrinsic::nearbyint, {F(i.a)})); break;
       case Op::FFract: {
         llvm::Value* x = F(i.a);
@@ -449,12 +447,12 @@ class Codegen {
       case Op::ISub: setf(b_.CreateSub(I(i.a), I(i.b))); break;
       case Op::IMul: setf(b_.CreateMul(I(i.a), I(i.b))); break;
       case Op::IDiv: {
-        // A divisor of 0 acts as -1; dividing by -1 negates (wrapping): no lane can trap.
+        // A quotient by 0 is 0; dividing by -1 negates (wrapping): no lane can trap.
         llvm::Value *x = I(i.a), *d = I(i.b);
-        d = b_.CreateSelect(b_.CreateICmpEQ(d, zero), splat(~0u), d);
+        llvm::Value* z = b_.CreateICmpEQ(d, zero);
         llvm::Value* neg1 = b_.CreateICmpEQ(d, splat(~0u));
-        llvm::Value* q = b_.CreateSDiv(x, b_.CreateSelect(neg1, splat(1), d));
-        setf(b_.CreateSelect(neg1, b_.CreateSub(zero, x), q));
+        llvm::Value* q = b_.CreateSDiv(x, b_.CreateSelect(b_.CreateOr(z, neg1), splat(1), d));
+        setf(b_.CreateSelect(z, zero, b_.CreateSelect(neg1, b_.CreateSub(zero, x), q)));
         break;
       }
       case Op::UDiv:
@@ -511,11 +509,9 @@ class Codegen {
       }
       case Op::F2U: {
         llvm::Value* x = F(i.a);
-        llvm::Value* low = b_.CreateNot(b_.CreateFCmpOGT(x, splatf(-1.0f)));
-        llvm::Value* high = b_.CreateFCmpOGE(x, splatf(4294967296.0f));
-        llvm::Value* ok = b_.CreateNot(b_.CreateOr(low, high));
+        llvm::Value* ok = b_.CreateAnd(b_.CreateFCmpOGT(x, splatf(-1.0f)), b_.CreateFCmpOLT(x, splatf(4294967296.0f)));
         llvm::Value* v = b_.CreateFPToUI(b_.CreateSelect(ok, x, splatf(0.0f)), vi_);
-        setf(b_.CreateSelect(low, zero, b_.CreateSelect(high, splat(~0u), v)));
+        setf(b_.CreateSelect(ok, v, splat(~0u)));
         break;
       }
       case Op::Ddx:

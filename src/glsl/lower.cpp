@@ -705,11 +705,7 @@ class Lowerer {
         // v * M: component c is dot(v, column c).
         const int rows = tt.getMatrixRows(), cols = tt.getMatrixCols();
         Val out;
-        for (int c = 0; c < cols; ++c) {
-          Reg acc = emit(Op::FMul, a[0], b[size_t(c * rows)]);
-          for (int k = 1; k < rows; ++k) acc = mad(a[size_t(k)], b[size_t(c * rows + k)], acc);
-          out.push_back(acc);
-        }
+        for (int c = 0; c < cols; ++c) out.push_back(dot(a, Val(b.begin() + c * rows, b.begin() + (c + 1) * rows)));
         return out;
       }
       default: break;
@@ -910,22 +906,22 @@ class Lowerer {
       case glslang::EOpCopyObject: return a;
       case glslang::EOpRadians: return each_f([&](Reg c) { return emit(Op::FMul, c, fconst(0.017453292519943295f)); });
       case glslang::EOpDegrees: return each_f([&](Reg c) { return emit(Op::FMul, c, fconst(57.29577951308232f)); });
-      case glslang::EOpSin: return each(Op::FSin);
-      case glslang::EOpCos: return each(Op::FCos);
-      case glslang::EOpTan: return each(Op::FTan);
-      case glslang::EOpAsin: return each(Op::FAsin);
-      case glslang::EOpAcos: return each(Op::FAcos);
-      case glslang::EOpAtan: return each(Op::FAtan);
-      case glslang::EOpSinh: return each(Op::FSinh);
-      case glslang::EOpCosh: return each(Op::FCosh);
-      case glslang::EOpTanh: return each(Op::FTanh);
-      case glslang::EOpAsinh: return each(Op::FAsinh);
-      case glslang::EOpAcosh: return each(Op::FAcosh);
-      case glslang::EOpAtanh: return each(Op::FAtanh);
-      case glslang::EOpExp: return each(Op::FExp);
-      case glslang::EOpLog: return each(Op::FLog);
-      case glslang::EOpExp2: return each(Op::FExp2);
-      case glslang::EOpLog2: return each(Op::FLog2);
+      case glslang::EOpSin: return each_f([&](Reg c) { return mesa_sincos(c, false); });
+      case glslang::EOpCos: return each_f([&](Reg c) { return mesa_sincos(c, true); });
+      case glslang::EOpTan: return each_f([&](Reg c) { return mesa_tan(c); });
+      case glslang::EOpAsin: return each_f([&](Reg c) { return mesa_asin(c); });
+      case glslang::EOpAcos: return each_f([&](Reg c) { return mesa_acos(c); });
+      case glslang::EOpAtan: return each_f([&](Reg c) { return mesa_atan(c); });
+      case glslang::EOpSinh: return each_f([&](Reg c) { return mesa_sinh(c); });
+      case glslang::EOpCosh: return each_f([&](Reg c) { return mesa_cosh(c); });
+      case glslang::EOpTanh: return each_f([&](Reg c) { return mesa_tanh(c); });
+      case glslang::EOpAsinh: return each_f([&](Reg c) { return mesa_asinh(c); });
+      case glslang::EOpAcosh: return each_f([&](Reg c) { return mesa_acosh(c); });
+      case glslang::EOpAtanh: return each_f([&](Reg c) { return mesa_atanh(c); });
+      case glslang::EOpExp: return each_f([&](Reg c) { return mesa_exp(c); });
+      case glslang::EOpLog: return each_f([&](Reg c) { return mesa_log(c); });
+      case glslang::EOpExp2: return each_f([&](Reg c) { return mesa_exp2(c); });
+      case glslang::EOpLog2: return each_f([&](Reg c) { return mesa_log2(c); });
       case glslang::EOpSqrt: return each(Op::FSqrt);
       case glslang::EOpInverseSqrt: return each(Op::FRsq);
       case glslang::EOpAbs: return each(xb == Base::Float ? Op::FAbs : Op::IAbs);
@@ -948,6 +944,7 @@ class Lowerer {
       case glslang::EOpFindMSB: return each(xb == Base::Uint ? Op::UFindMSB : Op::IFindMSB);
       case glslang::EOpLength: return {length(a)};
       case glslang::EOpNormalize: {
+        if (a.size() == 1) return {fsign(a[0])};
         const Reg inv = emit(Op::FRsq, dot(a, a));
         return each_f([&](Reg c) { return emit(Op::FMul, c, inv); });
       }
@@ -997,15 +994,14 @@ class Lowerer {
   // a * b + c with two roundings: llvmpipe does not fuse GLSL's products and sums (only
   // fma() is fused), and matching its results bit for bit matters more than the ulp saved.
   Reg mad(Reg a, Reg b, Reg c) { return emit(Op::FAdd, c, emit(Op::FMul, a, b)); }
+  // dot as llvmpipe sums it: from the last component down, ((w w' + z z') + y y') + x x'.
   Reg dot(const Val& a, const Val& b) {
-    Reg acc = emit(Op::FMul, a[0], b[0]);
-    for (size_t i = 1; i < a.size(); ++i) acc = mad(a[i], b[i], acc);
+    const size_t n = a.size();
+    Reg acc = emit(Op::FMul, a[n - 1], b[n - 1]);
+    for (size_t i = n - 1; i-- > 0;) acc = mad(a[i], b[i], acc);
     return acc;
   }
-  Reg length(const Val& a) {
-    if (a.size() == 1) return emit(Op::FAbs, a[0]);
-    return emit(Op::FSqrt, dot(a, a));
-  }
+  Reg length(const Val& a) { return emit(Op::FSqrt, dot(a, a)); }
   Reg det2(Reg a, Reg b, Reg c, Reg d) { return emit(Op::FSub, emit(Op::FMul, a, d), emit(Op::FMul, b, c)); }
   // m[c][r] = v[c * n + r]
   Reg determinant(const Val& m, int n) {
@@ -1246,8 +1242,24 @@ class Lowerer {
     };
     auto arg = [&](int k, size_t i) { return widen(v[size_t(k)], n).at(i); };
     switch (op) {
-      case glslang::EOpPow: return per([&](size_t i) { return emit(Op::FPow, arg(0, i), arg(1, i)); });
-      case glslang::EOpAtan: return per([&](size_t i) { return emit(Op::FAtan2, arg(0, i), arg(1, i)); });
+      case glslang::EOpPow: {
+        // The rewrites Mesa's compiler makes for constant operands, then exp2(log2(x) y).
+        float ey = 0, ex = 0;
+        const bool cy = scalar_constant(x[1], ey), cx = scalar_constant(x[0], ex);
+        return per([&](size_t i) {
+          const Reg b = arg(0, i), e = arg(1, i);
+          if (cy && ey == 2.0f) return f_mul(b, b);
+          if (cy && ey == 4.0f) {
+            const Reg q = f_mul(b, b);
+            return f_mul(q, q);
+          }
+          if (cy && ey == 1.0f) return b;
+          if (cx && ex == 1.0f) return fconst(1.0f);
+          if (cx && ex == 2.0f) return mesa_exp2(e);
+          return mesa_pow(b, e);
+        });
+      }
+      case glslang::EOpAtan: return per([&](size_t i) { return mesa_atan2(arg(0, i), arg(1, i)); });
       case glslang::EOpMod: return per([&](size_t i) { return emit(Op::FMod, arg(0, i), arg(1, i)); });
       case glslang::EOpMin:
         return per([&](size_t i) {
@@ -1266,7 +1278,13 @@ class Lowerer {
       case glslang::EOpMix: {
         if (base_or_float(x[2]->getType()) == Base::Bool)
           return per([&](size_t i) { return emit(Op::Select, arg(2, i), arg(1, i), arg(0, i)); });
-        // x + a * (y - x), rounded after each step, as llvmpipe computes it
+        // x + a * (y - x), rounded after each step, as llvmpipe computes it; x (1 - a) + y a
+        // when a is a constant (Mesa's flrp lowering picks the exact form there).
+        float ca = 0;
+        if (scalar_constant(x[2], ca))
+          return per([&](size_t i) {
+            return f_add(f_mul(arg(0, i), f_sub(fconst(1.0f), arg(2, i))), f_mul(arg(1, i), arg(2, i)));
+          });
         return per([&](size_t i) { return mad(arg(2, i), emit(Op::FSub, arg(1, i), arg(0, i)), arg(0, i)); });
       }
       case glslang::EOpStep:
@@ -1276,11 +1294,12 @@ class Lowerer {
       case glslang::EOpSmoothStep:
         return per([&](size_t i) {
           Reg t = emit(Op::FDiv, emit(Op::FSub, arg(2, i), arg(0, i)), emit(Op::FSub, arg(1, i), arg(0, i)));
-          t = emit(Op::FMin, emit(Op::FMax, t, fconst(0.0f)), fconst(1.0f));
-          const Reg k = emit(Op::FSub, fconst(3.0f), emit(Op::FMul, fconst(2.0f), t));
-          return emit(Op::FMul, emit(Op::FMul, t, t), k);
+          t = minps(maxps(t, fconst(0.0f)), fconst(1.0f));
+          // t (t (3 - 2 t)), as llvmpipe orders it
+          return f_mul(t, f_mul(t, f_sub(fconst(3.0f), f_mul(fconst(2.0f), t))));
         });
-      case glslang::EOpFma: return per([&](size_t i) { return emit(Op::FFma, arg(0, i), arg(1, i), arg(2, i)); });
+      // llvmpipe does not fuse GLSL's fma() (NIR lowers it to a * b + c).
+      case glslang::EOpFma: return per([&](size_t i) { return mad(arg(0, i), arg(1, i), arg(2, i)); });
       case glslang::EOpLdexp: return per([&](size_t i) { return emit(Op::FLdexp, arg(0, i), arg(1, i)); });
       case glslang::EOpModf: {
         const Place p = place(x[1]);
@@ -1306,6 +1325,7 @@ class Lowerer {
       case glslang::EOpDistance: {
         Val d;
         for (size_t i = 0; i < v[0].size(); ++i) d.push_back(emit(Op::FSub, v[0][i], v[1][i]));
+        if (d.size() == 1) return {emit(Op::FAbs, d[0])};
         return {length(d)};
       }
       case glslang::EOpDot: return {v[0].size() == 1 ? emit(Op::FMul, v[0][0], v[1][0]) : dot(v[0], v[1])};
@@ -1332,8 +1352,8 @@ class Lowerer {
         // k = 1 - eta^2 (1 - dot(N,I)^2); k < 0 ? 0 : eta I - (eta dot(N,I) + sqrt(k)) N
         const Reg eta = v[2][0];
         const Reg d = v[1].size() == 1 ? emit(Op::FMul, v[1][0], v[0][0]) : dot(v[1], v[0]);
-        const Reg k = emit(Op::FSub, fconst(1.0f),
-                           emit(Op::FMul, emit(Op::FMul, eta, eta), emit(Op::FSub, fconst(1.0f), emit(Op::FMul, d, d))));
+        // k = 1 - eta (eta (1 - d d))
+        const Reg k = f_sub(fconst(1.0f), f_mul(eta, f_mul(eta, f_sub(fconst(1.0f), f_mul(d, d)))));
         const Reg neg = emit(Op::FLt, k, fconst(0.0f));
         const Reg s = emit(Op::FAdd, emit(Op::FMul, eta, d), emit(Op::FSqrt, k));
         return per([&](size_t i) {
@@ -1399,6 +1419,20 @@ class Lowerer {
     fail(a, "built-in function '" + std::string(a->getName().c_str()) + "' (" + std::to_string(int(op)) +
                 ") is not supported");
   }
+
+  // Whether n is a constant whose components are all one float value.
+  static bool scalar_constant(TIntermTyped* n, float& out) {
+    TIntermConstantUnion* c = n ? n->getAsConstantUnion() : nullptr;
+    if (!c || c->getType().getBasicType() != glslang::EbtFloat) return false;
+    const auto& arr = c->getConstArray();
+    if (arr.size() < 1) return false;
+    out = float(arr[0].getDConst());
+    for (int i = 1; i < arr.size(); ++i)
+      if (float(arr[i].getDConst()) != out) return false;
+    return true;
+  }
+
+#include "lower_math.inc"
 
   // --- textures -------------------------------------------------------------------------
   Val texture(TIntermAggregate* a);
