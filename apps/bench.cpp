@@ -17,6 +17,7 @@
 #include "scene_phong.hpp"
 #include "scenes.hpp"
 #include "tessel/gl/offscreen.hpp"
+#include "tessel/glsl/program.hpp"
 #include "tessel/gpu/context.hpp"
 #include "tessel/gpu/image.hpp"
 
@@ -36,6 +37,8 @@ struct Run {
   uint64_t triangles = 0, fragments = 0;
   std::string image;
   std::vector<uint8_t> rgba;  // bottom-up
+  double compile_ms = -1;     // GLSL: source to linked program (compile, link, JIT)
+  double first_frame_ms = -1; // GLSL: source to the first frame finished
 };
 
 double median(std::vector<double> v) {
@@ -96,9 +99,102 @@ Run run_tessel_fixed(const scenes::Scene& s, int threads, int frames, int warmup
   return r;
 }
 
+// One scene on Tessel with the peer's own GLSL (scenes::scene_*_glsl) through tessel::glsl:
+// the same program text, uniforms and draws as llvmpipe gets.
+Run run_tessel_glsl(const scenes::Scene& s, int threads, int frames, int warmup, bool instanced) {
+  reset_peak_rss();
+  Run r = start_run("tessel", s, threads);
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  instanced = instanced && s.instanceable;
+  const bool textured = s.textured;
+  auto vs = glsl::Shader::compile(glsl::Stage::Vertex, scenes::scene_vertex_glsl(textured, instanced));
+  auto fs = glsl::Shader::compile(glsl::Stage::Fragment, scenes::scene_fragment_glsl(textured, instanced));
+  if (!vs->ok() || !fs->ok()) throw std::runtime_error("GLSL compile failed: " + vs->info_log() + fs->info_log());
+  auto prog = glsl::Program::link(*vs, *fs);
+  if (!prog->ok()) throw std::runtime_error("GLSL link failed: " + prog->info_log());
+  r.compile_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+
+  Texture2D color(Format::RGBA8, s.width, s.height);
+  Texture2D depth(Format::Depth24Stencil8, s.width, s.height);
+  Framebuffer fb(&color, &depth);
+  Context ctx(threads);
+  ctx.bind_framebuffer(&fb);
+  const Buffer vbo(s.mesh.vertices), ibo(s.mesh.indices);
+  VertexLayout layout;
+  const uint32_t stride = scenes::Mesh::kStride * sizeof(float);
+  layout.attrib(0, vbo, 3, AttribType::F32, stride, 0);
+  layout.attrib(1, vbo, 3, AttribType::F32, stride, 3 * sizeof(float));
+  layout.attrib(2, vbo, 2, AttribType::F32, stride, 6 * sizeof(float));
+  std::vector<float> per_instance;
+  for (const scenes::Draw& d : s.draws)
+    per_instance.insert(per_instance.end(), {d.offset.x, d.offset.y, d.offset.z, d.albedo.x, d.albedo.y, d.albedo.z});
+  const Buffer instances(per_instance);
+  if (instanced) {
+    layout.attrib(3, instances, 3, AttribType::F32, 6 * sizeof(float), 0, false, 1);
+    layout.attrib(4, instances, 3, AttribType::F32, 6 * sizeof(float), 3 * sizeof(float), false, 1);
+  }
+  std::unique_ptr<Texture2D> tex;
+  glsl::TextureBinding unit;
+  if (textured) {
+    tex = std::make_unique<Texture2D>(Format::RGBA8, scenes::kTextureSize, scenes::kTextureSize, 0);
+    const auto px = scenes::texture_rgba8();
+    tex->upload_rgba8(0, px.data(), px.size());
+    tex->generate_mipmaps();
+    unit.texture_2d = tex.get();
+    unit.sampler.min_filter = Filter::LinearMipmapLinear;
+    unit.sampler.mag_filter = Filter::Linear;
+  }
+  RenderState state;
+  state.depth_test = true;
+  state.cull = CullMode::Back;
+  const glm::mat4 viewproj = s.projection * s.view;
+  prog->set_uniform(prog->uniform_location("u_viewproj"), &viewproj[0][0], 16);
+  prog->set_uniform(prog->uniform_location("u_light"), &s.light.x, 3);
+  prog->set_uniform(prog->uniform_location("u_eye"), &s.eye.x, 3);
+  const int32_t zero = 0;
+  prog->set_uniform(prog->uniform_location("u_tex"), &zero, 1);
+  const int loc_offset = prog->uniform_location("u_offset"), loc_albedo = prog->uniform_location("u_albedo");
+  const std::span<const glsl::TextureBinding> units(&unit, 1);
+  auto one = [&] {
+    ctx.clear({.color = {0, 0, 0, 1}, .depth = 1.0f});
+    if (instanced) {
+      const scenes::Draw& d = s.draws.front();
+      prog->draw(ctx, layout, state,
+                 {.topology = Topology::Triangles, .first = d.first_index, .count = d.index_count, .index_buffer = &ibo,
+                  .instance_count = uint32_t(s.draws.size())},
+                 units);
+    } else {
+      for (const scenes::Draw& d : s.draws) {
+        prog->set_uniform(loc_offset, &d.offset.x, 3);
+        prog->set_uniform(loc_albedo, &d.albedo.x, 3);
+        prog->draw(ctx, layout, state,
+                   {.topology = Topology::Triangles, .first = d.first_index, .count = d.index_count, .index_buffer = &ibo},
+                   units);
+      }
+    }
+    ctx.finish();
+  };
+  one();
+  r.first_frame_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  for (int i = 1; i < warmup; ++i) one();
+  ctx.reset_stats();
+  for (int i = 0; i < frames; ++i) {
+    const auto f0 = Clock::now();
+    one();
+    r.ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - f0).count());
+  }
+  r.ms_median = median(r.ms);
+  r.fragments = ctx.stats().fragments_shaded / uint64_t(std::max(1, frames));
+  r.rgba = read_rgba8(color);
+  r.peak_rss_mb = peak_rss_mb();
+  return r;
+}
+
 // One scene on Tessel: `warmup` frames, then `frames` timed frames of clear + draws + finish.
-Run run_tessel(const scenes::Scene& s, int threads, int frames, int warmup, bool instanced) {
+Run run_tessel(const scenes::Scene& s, int threads, int frames, int warmup, bool instanced, bool glsl_shaders) {
   if (s.fixed_function) return run_tessel_fixed(s, threads, frames, warmup);
+  if (glsl_shaders) return run_tessel_glsl(s, threads, frames, warmup, instanced);
   reset_peak_rss();
   Run r = start_run("tessel", s, threads);
 
@@ -302,7 +398,10 @@ int run_bench(const BenchOptions& o) {
   if (!image_dir.empty()) fs::create_directories(image_dir);
   const std::string peer = o.peer ? find_peer(o) : "";
 
+  if (o.shaders != "cpp" && o.shaders != "glsl") throw std::runtime_error("--shaders must be cpp or glsl, not " + o.shaders);
+  const bool glsl_shaders = o.shaders == "glsl";
   std::printf("CPU: %s\n", cpu_flags().c_str());
+  if (glsl_shaders) std::printf("Tessel runs the peer's GLSL (tessel::glsl); fixed-100k stays fixed function\n");
   std::printf("%d frames after %d warm-up frames; ms = median per frame\n\n", o.frames, o.warmup);
   if (o.peer)
     std::printf("%-13s %9s %3s | %9s %7s %8s %7s | %9s %7s | %6s %7s %9s\n", "scene", "size", "thr", "tessel ms",
@@ -317,7 +416,9 @@ int run_bench(const BenchOptions& o) {
     json << (first_json ? "" : ",\n") << "  {\"renderer\": \"" << r.renderer << "\", \"scene\": \"" << r.scene
          << "\", \"width\": " << r.width << ", \"height\": " << r.height << ", \"threads\": " << r.threads
          << ", \"ms_median\": " << r.ms_median << ", \"mtris_s\": " << mtris(r) << ", \"mpix_s\": " << mpix(r, fragments)
-         << ", \"peak_rss_mb\": " << r.peak_rss_mb << ", \"image\": \"" << r.image << "\"" << extra << "}";
+         << ", \"peak_rss_mb\": " << r.peak_rss_mb << ", \"image\": \"" << r.image << "\"";
+    if (r.compile_ms >= 0) json << ", \"glsl_compile_ms\": " << r.compile_ms << ", \"glsl_first_frame_ms\": " << r.first_frame_ms;
+    json << extra << "}";
     first_json = false;
   };
 
@@ -328,7 +429,7 @@ int run_bench(const BenchOptions& o) {
         const scenes::Scene s = scenes::make_scene(name, w, h);
         std::string stem = name;
         if (several) stem += "_" + std::to_string(w) + "x" + std::to_string(h) + "_t" + std::to_string(t);
-        Run mine = run_tessel(s, t, o.frames, o.warmup, o.instanced);
+        Run mine = run_tessel(s, t, o.frames, o.warmup, o.instanced, glsl_shaders);
         if (!image_dir.empty()) {
           mine.image = (fs::path(image_dir) / (stem + ".png")).string();
           write_png(mine.image, w, h, 4, mine.rgba.data());
@@ -337,6 +438,9 @@ int run_bench(const BenchOptions& o) {
         std::snprintf(size, sizeof size, "%dx%d", w, h);
         std::printf("%-13s %9s %3d | %9.2f %7.3g %8.1f %7.1f", name.c_str(), size, t, mine.ms_median, mtris(mine),
                     mpix(mine, mine.fragments), mine.peak_rss_mb);
+        if (mine.compile_ms >= 0)
+          std::fprintf(stderr, "  (%s: GLSL compiled and linked in %.1f ms, first frame done %.1f ms after the source)\n",
+                       name.c_str(), mine.compile_ms, mine.first_frame_ms);
         if (!o.peer) {
           std::printf("\n");
           std::fflush(stdout);

@@ -19,6 +19,7 @@ struct BenchOptions {
   std::string json;       // write results here
   std::string images;     // write images into this folder
   double max_diff_percent = -1;  // with peer: fail when more pixels than this differ by > 2/255
+  std::string shaders = "cpp";    // "cpp": the C++ shader; "glsl": the peer's GLSL through tessel::glsl
 };
 
 // Runs the benchmark and prints its table; returns the process exit code. Throws on errors

@@ -57,6 +57,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bench->add_option("--warmup", bo.warmup, "Untimed frames before timing")->check(CLI::Range(0, 10000))->capture_default_str();
   bench->add_flag("--instanced", bo.instanced, "Draw the sphere grids as one instanced draw instead of 100 draws");
+  bench->add_option("--shaders", bo.shaders, "cpp: Tessel's C++ shader; glsl: the peer's GLSL, compiled by tessel::glsl")
+      ->check(CLI::IsMember({"cpp", "glsl"}))
+      ->capture_default_str();
   bench->add_flag("--peer", bo.peer, "Also run each scene on Mesa llvmpipe (tessel_peer), alternating, and compare");
   bench->add_option("--peer-path", bo.peer_path, "The tessel_peer program (default: next to tessel, then PATH)");
   bench->add_option("--json", bo.json, "Write the results as a JSON array to this file");

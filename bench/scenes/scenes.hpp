@@ -64,4 +64,10 @@ std::vector<uint8_t> texture_rgba8();
 // Blinn-Phong constants shared by the shaders of both renderers.
 inline constexpr float kAmbient = 0.1f, kDiffuse = 0.8f, kSpecular = 0.5f, kShininess = 32.0f;
 
+// The scenes' GLSL 3.30 program (scene_glsl.cpp): attributes 0-2 position, normal, uv (3-4
+// per-instance offset and albedo when instanced); uniforms u_viewproj, u_offset, u_albedo,
+// u_light, u_eye, u_tex.
+std::string scene_vertex_glsl(bool textured, bool instanced);
+std::string scene_fragment_glsl(bool textured, bool instanced);
+
 }  // namespace tessel::scenes
