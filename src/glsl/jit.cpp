@@ -17,6 +17,7 @@
 #include <llvm/Passes/PassBuilder.h>
 #include <llvm/Support/TargetSelect.h>
 
+#include <cstdlib>
 #include <map>
 #include <mutex>
 
@@ -88,7 +89,11 @@ class Codegen {
     cont_ = slot(vm_, "cont");
     kill_ = slot(vm_, "kill");
     for (llvm::Value* s : {ret_, brk_, cont_, kill_}) b_.CreateStore(llvm::Constant::getNullValue(vm_), s);
-    block(st_.body, to_mask(mask_arg));
+    // The pipeline always runs all sixteen lanes (the ones it does not need are helpers for
+    // derivatives or repeat a vertex): with the entry mask a constant, LLVM drops the selects
+    // of stores outside control flow.
+    (void)mask_arg;
+    block(st_.body, llvm::Constant::getAllOnesValue(vm_));
     for (const auto& [r, off] : io_.out) b_.CreateAlignedStore(load(r), byte_ptr(lanes_, off), llvm::MaybeAlign(4));
     llvm::Value* killed = b_.CreateLoad(vm_, kill_);
     b_.CreateRet(b_.CreateZExt(b_.CreateBitCast(killed, b_.getInt16Ty()), i32_));
@@ -576,6 +581,8 @@ std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, co
     llvm::ModulePassManager mpm = pb.buildPerModuleDefaultPipeline(llvm::OptimizationLevel::O2);
     mpm.run(*mod, mam);
   }
+  // TESSEL_GLSL_DUMP=1 prints the optimized LLVM IR of each program on stderr.
+  if (const char* dump = std::getenv("TESSEL_GLSL_DUMP"); dump && *dump == '1') mod->print(llvm::errs(), nullptr);
   auto jit = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(std::move(*jtmb)).create();
   if (!jit) return fail("cannot create the JIT: " + llvm::toString(jit.takeError()));
   auto code = std::make_unique<LlvmCode>();

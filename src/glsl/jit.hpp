@@ -23,7 +23,8 @@ struct StageIO {
   std::vector<std::pair<ir::Reg, uint32_t>> in_mask;
 };
 
-// Runs the stage on `lanes` for the lanes in `mask`; returns the lanes discarded.
+// Runs the stage on all sixteen lanes of `lanes` (`mask` must be 0xFFFF); returns the lanes
+// discarded.
 using StageFn = uint32_t (*)(void* lanes, const uint32_t* uniforms, uint32_t uniform_words, const RunInputs* in,
                              uint32_t mask);
 
