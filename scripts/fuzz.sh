@@ -14,9 +14,9 @@ fi
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DTESSEL_FUZZ=ON -DTESSEL_SANITIZE=ON -DTESSEL_BUILD_BENCH=OFF \
   -DCMAKE_CXX_COMPILER_LAUNCHER="$(command -v ccache || true)" >/dev/null
-cmake --build "$build" -j "${JOBS:-2}" --target fuzz_scene_file fuzz_obj fuzz_gltf fuzz_image
+cmake --build "$build" -j "${JOBS:-2}" --target fuzz_scene_file fuzz_obj fuzz_gltf fuzz_image fuzz_glsl
 status=0
-for t in scene_file obj gltf image; do
+for t in scene_file obj gltf image glsl; do
   work=$(mktemp -d)
   cp -r "$root/tests/fuzz/corpus/$t/." "$work/"
   echo "fuzz.sh: fuzz_$t for ${seconds}s"

@@ -172,7 +172,7 @@ class Runner {
         case ir::Node::Kind::Loop: {
           const uint32_t brk = m_.brk, cont = m_.cont;
           m_.brk = 0;
-          for (int it = 0; it < ir::kMaxLoopIterations; ++it) {
+          for (int it = 0; it < ir::kMaxLoopIterations && budget_ < ir::kMaxTotalLoopIterations; ++it, ++budget_) {
             m_.cont = 0;
             uint32_t lm = live & ~(m_.ret | m_.brk | m_.kill);
             if (!lm) break;
@@ -214,6 +214,7 @@ class Runner {
   LaneReg* r_;
   const RunInputs& in_;
   Masks m_;
+  uint32_t budget_ = 0;  // loop iterations run so far (ir::kMaxTotalLoopIterations)
 
   template <class Fn> void each(uint32_t* d, Fn&& fn) {
     for (int l = 0; l < L; ++l) d[l] = fn(l);

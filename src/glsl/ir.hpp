@@ -23,6 +23,9 @@ inline constexpr int kLanes = 16;
 // A loop is cut after this many iterations, as llvmpipe cuts it (LP_MAX_TGSI_LOOP_ITERATIONS),
 // so that every draw ends.
 inline constexpr int kMaxLoopIterations = 65535;
+// And all the loops of one run together after this many iterations, so that nested loops
+// cannot multiply their limits into hours.
+inline constexpr uint32_t kMaxTotalLoopIterations = 1u << 20;
 
 using Reg = uint32_t;
 

@@ -8,6 +8,7 @@
 // them, so both tiers compute the same lanes.
 #include "jit.hpp"
 
+#include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
 #include <llvm/IR/IRBuilder.h>
 #include <llvm/IR/Intrinsics.h>
@@ -84,6 +85,8 @@ class Codegen {
       llvm::Value* bits = b_.CreateLoad(i32_, byte_ptr(lanes_, off));
       store(r, b_.CreateSExt(to_mask(bits), vi_));
     }
+    budget_ = slot(i32_, "budget");
+    b_.CreateStore(b_.getInt32(0), budget_);
     ret_ = slot(vm_, "ret");
     brk_ = slot(vm_, "brk");
     cont_ = slot(vm_, "cont");
@@ -112,6 +115,7 @@ class Codegen {
   llvm::BasicBlock* entry_ = nullptr;
   llvm::Value *lanes_, *uniforms_, *words_, *rin_;
   llvm::Value *ret_, *brk_, *cont_, *kill_;
+  llvm::Value* budget_ = nullptr;  // loop iterations run so far (ir::kMaxTotalLoopIterations)
   // Where each register lives: its own slot, or an element of an indexed array.
   struct Home {
     llvm::Value* base = nullptr;  // alloca
@@ -257,7 +261,8 @@ class Codegen {
         llvm::Value* in = b_.CreateAnd(live, b_.CreateNot(b_.CreateOr(b_.CreateOr(b_.CreateLoad(vm_, ret_),
                                                                                     b_.CreateLoad(vm_, brk_)),
                                                                         b_.CreateLoad(vm_, kill_))));
-        llvm::Value* more = b_.CreateICmpSLT(b_.CreateLoad(i32_, iter), b_.getInt32(ir::kMaxLoopIterations));
+        llvm::Value* more = b_.CreateAnd(b_.CreateICmpSLT(b_.CreateLoad(i32_, iter), b_.getInt32(ir::kMaxLoopIterations)),
+                                         b_.CreateICmpULT(b_.CreateLoad(i32_, budget_), b_.getInt32(ir::kMaxTotalLoopIterations)));
         b_.CreateCondBr(b_.CreateAnd(more, any(in)), body, exit);
         b_.SetInsertPoint(body);
         block(n.a, in);
@@ -271,6 +276,7 @@ class Codegen {
         b_.SetInsertPoint(step_run);
         block(n.b, in2);
         b_.CreateStore(b_.CreateAdd(b_.CreateLoad(i32_, iter), b_.getInt32(1)), iter);
+        b_.CreateStore(b_.CreateAdd(b_.CreateLoad(i32_, budget_), b_.getInt32(1)), budget_);
         b_.CreateBr(head);
         b_.SetInsertPoint(exit);
         b_.CreateStore(saved_brk, brk_);
@@ -595,6 +601,11 @@ std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, co
       llvm::pointerToJITTargetAddress(&tessel_glsl_lane_math), llvm::JITSymbolFlags::Exported);
   if (auto e = code->jit->getMainJITDylib().define(llvm::orc::absoluteSymbols(syms)))
     return fail(llvm::toString(std::move(e)));
+  // memset and memcpy, which LLVM emits for large zeroings and copies, from this process.
+  auto process = llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess(
+      code->jit->getDataLayout().getGlobalPrefix());
+  if (!process) return fail(llvm::toString(process.takeError()));
+  code->jit->getMainJITDylib().addGenerator(std::move(*process));
   if (auto e = code->jit->addIRModule(llvm::orc::ThreadSafeModule(std::move(mod), std::move(ctx))))
     return fail(llvm::toString(std::move(e)));
   for (int s = 0; s < 2; ++s) {

@@ -132,8 +132,20 @@ class Lowerer {
         // Declared interface variables; only those the code uses become inputs, outputs
         // and uniforms (GL's active ones).
         for (TIntermNode* o : a->getSequence())
-          if (TIntermSymbol* s = o->getAsSymbolNode())
-            if (s->getType().getQualifier().storage == glslang::EvqVaryingOut) out_.declared_outputs.insert(name_of(s));
+          if (TIntermSymbol* s = o->getAsSymbolNode()) {
+            const auto storage = s->getType().getQualifier().storage;
+            if (storage == glslang::EvqVaryingOut) out_.declared_outputs.insert(name_of(s));
+            // A uniform with an initializer carries its value as a constant.
+            if (storage == glslang::EvqUniform && s->getConstArray().size() > 0 &&
+                s->getType().getBasicType() != glslang::EbtBlock) {
+              std::vector<Base> bases;
+              component_bases(s->getType(), bases, s);
+              std::vector<uint32_t> words;
+              for (size_t i = 0; i < bases.size() && int(i) < s->getConstArray().size(); ++i)
+                words.push_back(const_bits(s->getConstArray()[int(i)], bases[i]));
+              uniforms_.initial[name_of(s)] = std::move(words);
+            }
+          }
       } else {
         globals.push_back(n);
       }

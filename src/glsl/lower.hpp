@@ -57,6 +57,9 @@ struct LoweredStage {
 struct UniformLayout {
   std::vector<UniformSlot> slots;
   uint32_t words = 0;
+  // Initial values from initializers (GLSL 1.20 `uniform float k = 2.0;`): variable name ->
+  // its components as words.
+  std::map<std::string, std::vector<uint32_t>> initial;
   std::map<std::string, size_t> by_name;  // top-level variable name -> first slot
 };
 

@@ -471,7 +471,91 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
   }
   m.linked = std::move(linked);
   m.ok = true;
+  p->set_compat_defaults();
+  // Uniform initializers (GLSL 1.20 §4.3.5) give the initial values.
+  for (const auto& [name, words] : m.layout.initial) {
+    auto it = m.layout.by_name.find(name);
+    if (it == m.layout.by_name.end()) continue;
+    const uint32_t base = m.layout.slots[it->second].word;
+    for (size_t i = 0; i < words.size() && base + i < m.values.size(); ++i) m.values[base + i] = words[i];
+  }
   return p;
+}
+
+namespace {
+// Writes `n` floats into the compatibility uniform `name` (a whole slot or one element) if the
+// program uses it.
+void put_builtin(Program& p, const std::string& name, const float* v, int n) {
+  const int loc = p.uniform_location(name);
+  if (loc >= 0) p.set_uniform(loc, v, n);
+}
+}  // namespace
+
+void Program::set_compat_defaults() {
+  const glm::mat4 id(1.0f);
+  set_compat_matrices(id, id);
+  for (int i = 0; i < 8; ++i) put_builtin(*this, "gl_TextureMatrix[" + std::to_string(i) + "]", &id[0][0], 16);
+  // GL 2.1 §2.14.1 Table 2.10 and §6.2: the initial lighting state.
+  const float black[4] = {0, 0, 0, 1}, white[4] = {1, 1, 1, 1}, ambient[4] = {0.2f, 0.2f, 0.2f, 1};
+  const float diffuse[4] = {0.8f, 0.8f, 0.8f, 1}, zero4[4] = {0, 0, 0, 0};
+  const float pos[4] = {0, 0, 1, 0}, dir[3] = {0, 0, -1}, one = 1, cutoff = 180, coscut = -1, zero = 0;
+  for (int i = 0; i < 8; ++i) {
+    const std::string l = "gl_LightSource[" + std::to_string(i) + "].";
+    put_builtin(*this, l + "ambient", black, 4);
+    put_builtin(*this, l + "diffuse", i == 0 ? white : zero4, 4);
+    put_builtin(*this, l + "specular", i == 0 ? white : zero4, 4);
+    put_builtin(*this, l + "position", pos, 4);
+    put_builtin(*this, l + "halfVector", pos, 4);
+    put_builtin(*this, l + "spotDirection", dir, 3);
+    put_builtin(*this, l + "spotExponent", &zero, 1);
+    put_builtin(*this, l + "spotCutoff", &cutoff, 1);
+    put_builtin(*this, l + "spotCosCutoff", &coscut, 1);
+    put_builtin(*this, l + "constantAttenuation", &one, 1);
+    put_builtin(*this, l + "linearAttenuation", &zero, 1);
+    put_builtin(*this, l + "quadraticAttenuation", &zero, 1);
+  }
+  for (const char* side : {"gl_FrontMaterial.", "gl_BackMaterial."}) {
+    const std::string s = side;
+    put_builtin(*this, s + "emission", black, 4);
+    put_builtin(*this, s + "ambient", ambient, 4);
+    put_builtin(*this, s + "diffuse", diffuse, 4);
+    put_builtin(*this, s + "specular", black, 4);
+    put_builtin(*this, s + "shininess", &zero, 1);
+  }
+  put_builtin(*this, "gl_LightModel.ambient", ambient, 4);
+  const float range[3] = {0, 1, 1};
+  put_builtin(*this, "gl_DepthRange.near", &range[0], 1);
+  put_builtin(*this, "gl_DepthRange.far", &range[1], 1);
+  put_builtin(*this, "gl_DepthRange.diff", &range[2], 1);
+  put_builtin(*this, "gl_Point.size", &one, 1);
+  put_builtin(*this, "gl_Point.sizeMin", &zero, 1);
+  const float big = 1e30f;
+  put_builtin(*this, "gl_Point.sizeMax", &big, 1);
+  put_builtin(*this, "gl_Fog.density", &one, 1);
+  put_builtin(*this, "gl_Fog.start", &zero, 1);
+  put_builtin(*this, "gl_Fog.end", &one, 1);
+  put_builtin(*this, "gl_Fog.scale", &one, 1);
+  put_builtin(*this, "gl_Fog.color", zero4, 4);
+}
+
+void Program::set_compat_matrices(const glm::mat4& mv, const glm::mat4& proj) {
+  const glm::mat4 mvp = proj * mv;
+  auto put = [&](const char* name, const glm::mat4& x) { put_builtin(*this, name, &x[0][0], 16); };
+  put("gl_ModelViewMatrix", mv);
+  put("gl_ProjectionMatrix", proj);
+  put("gl_ModelViewProjectionMatrix", mvp);
+  put("gl_ModelViewMatrixInverse", glm::inverse(mv));
+  put("gl_ProjectionMatrixInverse", glm::inverse(proj));
+  put("gl_ModelViewProjectionMatrixInverse", glm::inverse(mvp));
+  put("gl_ModelViewMatrixTranspose", glm::transpose(mv));
+  put("gl_ProjectionMatrixTranspose", glm::transpose(proj));
+  put("gl_ModelViewProjectionMatrixTranspose", glm::transpose(mvp));
+  put("gl_ModelViewMatrixInverseTranspose", glm::transpose(glm::inverse(mv)));
+  put("gl_ProjectionMatrixInverseTranspose", glm::transpose(glm::inverse(proj)));
+  put("gl_ModelViewProjectionMatrixInverseTranspose", glm::transpose(glm::inverse(mvp)));
+  // GL 2.1 §2.11.3: the normal matrix is the inverse transpose of the upper-left 3x3.
+  const glm::mat3 n = glm::transpose(glm::inverse(glm::mat3(mv)));
+  put_builtin(*this, "gl_NormalMatrix", &n[0][0], 9);
 }
 
 bool Program::ok() const { return impl_->ok; }

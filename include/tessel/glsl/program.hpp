@@ -101,6 +101,13 @@ class Program {
   bool get_uniform(int location, float* out) const;
   bool get_uniform_words(int location, uint32_t* out) const;
 
+  // The compatibility state the GLSL 1.10-1.50 built-in uniforms read (gl_ModelViewMatrix
+  // and the rest). Linking sets them to OpenGL's initial state; the GL layer, or any
+  // application, sets the matrices here: the derived ones (the products, inverses,
+  // transposes and gl_NormalMatrix) follow. Other state (gl_LightSource[i].diffuse, ...)
+  // is set with uniform_location/set_uniform under its GLSL name.
+  void set_compat_matrices(const glm::mat4& modelview, const glm::mat4& projection);
+
   // The pipeline's view of this program with its current uniforms and the given texture
   // units: what gpu::Context::draw takes. Valid after the program changes or goes.
   std::shared_ptr<const gpu::RuntimeShader> bind(std::span<const TextureBinding> units = {}) const;
@@ -113,6 +120,7 @@ class Program {
 
  private:
   Program();
+  void set_compat_defaults();
   std::unique_ptr<Impl> impl_;
 };
 

@@ -1,0 +1,441 @@
+// Runs piglit's .shader_test files (Debian package `piglit`) on Tessel's GLSL compiler and
+// pipeline, without a window system, and counts pass / fail / skip per GLSL version.
+//
+//   tessel_piglit [--verbose] [--list-failures] DIR_OR_FILE...
+//
+// What it understands of the format (piglit's shader_runner): [require] with GLSL and GL
+// versions (extensions, GLSL ES and other shader stages are skipped), [vertex shader],
+// [vertex shader passthrough], [fragment shader], [vertex data], and in [test]: uniform,
+// clear color, clear, draw rect [ortho], draw arrays, probe rgb/rgba (pixel, rect, all,
+// relative), link error / link success, ortho. A test that needs anything else is counted as
+// skipped with the reason. The default window is 250x250 RGBA8, probes allow 0.01 per channel
+// (piglit's default tolerance).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "tessel/glsl/program.hpp"
+
+namespace fs = std::filesystem;
+using namespace tessel;
+
+namespace {
+
+enum class Outcome { Pass, Fail, Skip };
+struct Result {
+  Outcome outcome = Outcome::Pass;
+  std::string why;
+};
+
+std::string trim(std::string s) {
+  const auto a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return "";
+  const auto b = s.find_last_not_of(" \t\r");
+  return s.substr(a, b - a + 1);
+}
+
+std::vector<float> numbers(const std::string& s) {
+  std::vector<float> v;
+  std::string t = s;
+  for (char& c : t)
+    if (c == '(' || c == ')' || c == ',') c = ' ';
+  std::istringstream in(t);
+  std::string w;
+  while (in >> w) {
+    char* end = nullptr;
+    if (w.rfind("0x", 0) == 0 || w.rfind("-0x", 0) == 0) {
+      v.push_back(float(std::strtoll(w.c_str(), &end, 16)));
+    } else {
+      v.push_back(std::strtof(w.c_str(), &end));
+    }
+  }
+  return v;
+}
+
+struct Test {
+  int glsl = 110;  // required GLSL version * 100
+  int width = 250, height = 250;
+  std::string vs, fs;
+  bool passthrough = false;
+  std::vector<std::string> vertex_data;
+  std::vector<std::string> test;
+  std::string skip;
+};
+
+Test parse(const std::string& path) {
+  Test t;
+  std::ifstream in(path);
+  std::string line, section;
+  while (std::getline(in, line)) {
+    const std::string tl = trim(line);
+    if (!tl.empty() && tl[0] == '[' && tl.back() == ']') {
+      section = tl;
+      if ((tl == "[vertex shader]" && !t.vs.empty()) || (tl == "[fragment shader]" && !t.fs.empty()))
+        t.skip = "several shader objects for one stage (a Program takes one per stage)";
+      if (section == "[vertex shader passthrough]") t.passthrough = true;
+      else if (section != "[require]" && section != "[vertex shader]" && section != "[fragment shader]" &&
+               section != "[test]" && section != "[vertex data]")
+        t.skip = "section " + section;
+      continue;
+    }
+    if (section == "[require]") {
+      if (tl.empty() || tl[0] == '#') continue;
+      std::istringstream w(tl);
+      std::string a, op, ver;
+      w >> a;
+      if (a == "GLSL") {
+        w >> op >> ver;
+        if (op == "ES" || ver == "ES") t.skip = "GLSL ES";
+        else if (op == ">=") t.glsl = int(std::lround(std::stod(ver) * 100));
+        else if (op != "<" && op != "<=") t.skip = "GLSL requirement " + tl;
+      } else if (a == "GL") {
+        w >> op >> ver;
+        if (op == "ES") t.skip = "GL ES";
+        else if (op == ">=" && std::stod(ver) > 3.3) t.skip = "needs " + tl;
+      } else if (a == "SIZE") {
+        w >> t.width >> t.height;
+      } else if (a.rfind("GL_", 0) == 0) {
+        t.skip = "extension " + a;
+      } else if (a.rfind("GLSL", 0) != 0 && a != "GL" && !a.empty()) {
+        // limits such as GL_MAX_... or "rlimit": taken as met
+      }
+    } else if (section == "[vertex shader]") {
+      t.vs += line + "\n";
+    } else if (section == "[fragment shader]") {
+      t.fs += line + "\n";
+    } else if (section == "[vertex data]") {
+      if (!tl.empty() && tl[0] != '#') t.vertex_data.push_back(tl);
+    } else if (section == "[test]") {
+      std::string cmd = tl;
+      if (const auto hash = cmd.find('#'); hash != std::string::npos) cmd = trim(cmd.substr(0, hash));
+      if (!cmd.empty()) t.test.push_back(cmd);
+    }
+  }
+  return t;
+}
+
+struct Runner {
+  Test t;
+  std::shared_ptr<glsl::Program> prog;
+  gpu::Context ctx{1};
+  std::unique_ptr<gpu::Texture2D> color;
+  gpu::Framebuffer fb;
+  glm::vec4 clear_color{0.0f};
+
+  Result fail(const std::string& why) { return {Outcome::Fail, why}; }
+  Result skip(const std::string& why) { return {Outcome::Skip, why}; }
+
+  glm::vec4 pixel(int x, int y) { return color->fetch(0, x, y); }
+
+  bool probe(int x0, int y0, int w, int h, const std::vector<float>& want, int n, std::string& why) {
+    for (int y = y0; y < y0 + h; ++y)
+      for (int x = x0; x < x0 + w; ++x) {
+        if (x < 0 || y < 0 || x >= t.width || y >= t.height) continue;
+        const glm::vec4 got = pixel(x, y);
+        for (int c = 0; c < n; ++c)
+          if (std::fabs(got[c] - want[size_t(c)]) > 0.01f) {
+            char buf[256];
+            std::snprintf(buf, sizeof buf, "probe at (%d, %d): expected (%g %g %g %g) got (%g %g %g %g)", x, y,
+                          double(want[0]), double(want[1]), double(want[2]), n > 3 ? double(want[3]) : 0.0,
+                          double(got.r), double(got.g), double(got.b), double(got.a));
+            why = buf;
+            return false;
+          }
+      }
+    return true;
+  }
+
+  void draw_quad(float x, float y, float w, float h) {
+    const float v[] = {x, y, 0, 1, x + w, y, 0, 1, x + w, y + h, 0, 1, x, y, 0, 1, x + w, y + h, 0, 1, x, y + h, 0, 1};
+    gpu::Buffer vbo(v, sizeof v);
+    gpu::VertexLayout layout;
+    layout.attrib(0, vbo, 4, gpu::AttribType::F32, 16, 0);
+    gpu::RenderState state;
+    prog->draw(ctx, layout, state, {.topology = gpu::Topology::Triangles, .count = 6});
+    ctx.finish();
+  }
+
+  Result set_uniform(const std::string& line) {
+    std::istringstream in(line);
+    std::string kw, type, name;
+    in >> kw >> type >> name;
+    std::string rest;
+    std::getline(in, rest);
+    const int loc = prog->uniform_location(name);
+    if (loc < 0) return {};  // inactive uniforms are ignored, as GL ignores location -1
+    const std::vector<float> v = numbers(rest);
+    const int n = int(v.size());
+    if (n == 0) return skip("uniform without values: " + line);
+    bool ok = false;
+    if (type.find("sampler") != std::string::npos || type == "int" || type.rfind("ivec", 0) == 0) {
+      std::vector<int32_t> iv;
+      // integers are parsed exactly (hex included)
+      std::string t2 = rest;
+      for (char& c : t2)
+        if (c == '(' || c == ')' || c == ',') c = ' ';
+      std::istringstream w(t2);
+      std::string tok;
+      while (w >> tok) iv.push_back(int32_t(std::strtoll(tok.c_str(), nullptr, 0)));
+      ok = prog->set_uniform(loc, iv.data(), int(iv.size()));
+    } else if (type == "uint" || type.rfind("uvec", 0) == 0) {
+      std::vector<uint32_t> uv;
+      std::string t2 = rest;
+      for (char& c : t2)
+        if (c == '(' || c == ')' || c == ',') c = ' ';
+      std::istringstream w(t2);
+      std::string tok;
+      while (w >> tok) uv.push_back(uint32_t(std::strtoull(tok.c_str(), nullptr, 0)));
+      ok = prog->set_uniform(loc, uv.data(), int(uv.size()));
+    } else if (type == "bool" || type.rfind("bvec", 0) == 0) {
+      std::vector<int32_t> iv;
+      for (float f : v) iv.push_back(f != 0.0f);
+      ok = prog->set_uniform(loc, iv.data(), n);
+    } else {
+      // Missing components of a vector read as 0 (shader_runner's parser); a hex value is the
+      // float's bits.
+      std::vector<float> f;
+      {
+        std::string t2 = rest;
+        for (char& c : t2)
+          if (c == '(' || c == ')' || c == ',') c = ' ';
+        std::istringstream w(t2);
+        std::string tok;
+        while (w >> tok) {
+          if (tok.rfind("0x", 0) == 0) {
+            const uint32_t bits = uint32_t(std::strtoull(tok.c_str(), nullptr, 16));
+            float x;
+            std::memcpy(&x, &bits, 4);
+            f.push_back(x);
+          } else {
+            f.push_back(std::strtof(tok.c_str(), nullptr));
+          }
+        }
+      }
+      const int want = type == "vec2" ? 2 : type == "vec3" ? 3 : type == "vec4" ? 4 : 0;
+      if (want && int(f.size()) % want) f.resize(f.size() + size_t(want - int(f.size()) % want), 0.0f);
+      ok = prog->set_uniform(loc, f.data(), int(f.size()));
+    }
+    if (!ok) return fail("could not set uniform: " + line);
+    return {};
+  }
+
+  Result run() {
+    if (!t.skip.empty()) return skip(t.skip);
+    if (t.fs.empty() && t.vs.empty()) return skip("no shaders");
+    std::string vs = t.vs;
+    if (t.passthrough || vs.empty()) {
+      if (t.glsl >= 140)
+        vs = "#version " + std::to_string(t.glsl) + "\nin vec4 piglit_vertex;\nvoid main() { gl_Position = piglit_vertex; }\n";
+      else
+        vs = "#version 110\nvoid main() { gl_Position = gl_Vertex; }\n";
+    }
+    std::string fs = t.fs;
+    if (fs.empty()) fs = "void main() { gl_FragColor = vec4(0.0); }\n";
+    // A shader without #version is compiled at the version the test requires, as shader_runner
+    // does.
+    auto versioned = [&](const std::string& src) {
+      if (src.find("#version") != std::string::npos || t.glsl == 110) return src;
+      return "#version " + std::to_string(t.glsl) + "\n" + src;
+    };
+    vs = versioned(vs);
+    fs = versioned(fs);
+    bool expect_link_error = false;
+    for (const std::string& c : t.test)
+      if (c == "link error") expect_link_error = true;
+    auto v = glsl::Shader::compile(glsl::Stage::Vertex, vs);
+    auto f = glsl::Shader::compile(glsl::Stage::Fragment, fs);
+    if (!v->ok() || !f->ok()) {
+      if (expect_link_error) return {};
+      return fail("compile: " + v->info_log() + f->info_log());
+    }
+    glsl::LinkOptions lo;
+    lo.attribute_locations["piglit_vertex"] = 0;
+    prog = glsl::Program::link(*v, *f, lo);
+    if (expect_link_error) return prog->ok() ? fail("linked, but a link error was expected") : Result{};
+    if (!prog->ok()) {
+      if (prog->info_log().find("not supported") != std::string::npos) return skip("Tessel: " + prog->info_log());
+      return fail("link: " + prog->info_log());
+    }
+    color = std::make_unique<gpu::Texture2D>(gpu::Format::RGBA8, t.width, t.height);
+    fb = gpu::Framebuffer(color.get());
+    ctx.bind_framebuffer(&fb);
+    for (const std::string& c : t.test) {
+      std::istringstream in(c);
+      std::string w1, w2;
+      in >> w1 >> w2;
+      try {
+        if (w1 == "uniform") {
+          Result r = set_uniform(c);
+          if (r.outcome != Outcome::Pass) return r;
+        } else if (w1 == "clear" && w2 == "color") {
+          const auto n = numbers(c.substr(11));
+          if (n.size() >= 4) clear_color = glm::vec4(n[0], n[1], n[2], n[3]);
+        } else if (w1 == "clear") {
+          ctx.clear({.color = clear_color, .clear_depth = false, .clear_stencil = false});
+          ctx.finish();
+        } else if (w1 == "draw" && w2 == "rect") {
+          std::string rest;
+          std::getline(in, rest);
+          bool ortho = false;
+          if (trim(rest).rfind("ortho", 0) == 0) {
+            ortho = true;
+            rest = trim(rest).substr(5);
+          }
+          const auto n = numbers(rest);
+          if (n.size() < 4) return skip("draw rect form: " + c);
+          float x = n[0], y = n[1], w = n[2], h = n[3];
+          if (ortho) {
+            x = 2.0f * x / float(t.width) - 1.0f;
+            y = 2.0f * y / float(t.height) - 1.0f;
+            w = 2.0f * w / float(t.width);
+            h = 2.0f * h / float(t.height);
+          }
+          draw_quad(x, y, w, h);
+        } else if (w1 == "probe" || w1 == "relative") {
+          std::string rest = c;
+          const bool relative = w1 == "relative";
+          if (relative) rest = trim(rest.substr(8));
+          rest = trim(rest.substr(5));  // after "probe"
+          std::string kind;
+          {
+            std::istringstream k(rest);
+            k >> kind;
+          }
+          bool all = false, rect = false;
+          if (kind == "all") {
+            all = true;
+            rest = trim(rest.substr(3));
+          } else if (kind == "rect") {
+            rect = true;
+            rest = trim(rest.substr(4));
+          }
+          std::istringstream k(rest);
+          std::string comps;
+          k >> comps;
+          int nc = comps == "rgba" ? 4 : comps == "rgb" ? 3 : 0;
+          if (!nc) return skip("probe form: " + c);
+          std::string tail;
+          std::getline(k, tail);
+          const auto n = numbers(tail);
+          std::string why;
+          bool ok;
+          if (all) {
+            if (int(n.size()) < nc) return skip("probe form: " + c);
+            ok = probe(0, 0, t.width, t.height, n, nc, why);
+          } else if (rect) {
+            if (int(n.size()) < 4 + nc) return skip("probe form: " + c);
+            std::vector<float> want(n.begin() + 4, n.end());
+            int x = int(n[0]), y = int(n[1]), w = int(n[2]), h = int(n[3]);
+            if (relative) {
+              x = int(n[0] * float(t.width));
+              y = int(n[1] * float(t.height));
+              w = int(n[2] * float(t.width));
+              h = int(n[3] * float(t.height));
+            }
+            ok = probe(x, y, w, h, want, nc, why);
+          } else {
+            if (int(n.size()) < 2 + nc) return skip("probe form: " + c);
+            std::vector<float> want(n.begin() + 2, n.end());
+            int x = int(n[0]), y = int(n[1]);
+            if (relative) {
+              x = int(n[0] * float(t.width));
+              y = int(n[1] * float(t.height));
+            }
+            ok = probe(x, y, 1, 1, want, nc, why);
+          }
+          if (!ok) return fail(why);
+        } else if (w1 == "link") {
+          // link success / link error: handled above
+        } else if (w1 == "ortho") {
+          // glOrtho(0, w, 0, h, -1, 1) on the projection matrix, as shader_runner does
+          prog->set_compat_matrices(glm::mat4(1.0f), glm::ortho(0.0f, float(t.width), 0.0f, float(t.height), -1.0f, 1.0f));
+        } else {
+          return skip("command: " + c);
+        }
+      } catch (const std::exception& e) {
+        return fail(std::string("error: ") + e.what());
+      }
+    }
+    return {};
+  }
+};
+
+std::string version_of(const std::string& path) {
+  const auto at = path.find("glsl-");
+  if (at == std::string::npos) return "other";
+  return path.substr(at, 9);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool verbose = false, list_failures = false;
+  std::vector<std::string> files;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--verbose") verbose = true;
+    else if (a == "--list-failures") list_failures = true;
+    else if (fs::is_directory(a)) {
+      for (const auto& e : fs::recursive_directory_iterator(a))
+        if (e.path().extension() == ".shader_test") files.push_back(e.path().string());
+    } else {
+      files.push_back(a);
+    }
+  }
+  std::sort(files.begin(), files.end());
+  struct Count {
+    int pass = 0, fail = 0, skip = 0;
+  };
+  std::map<std::string, Count> counts;
+  std::map<std::string, int> skip_reasons;
+  for (const std::string& f : files) {
+    Runner r;
+    r.t = parse(f);
+    Result res;
+    try {
+      res = r.run();
+    } catch (const std::exception& e) {
+      res = {Outcome::Fail, std::string("exception: ") + e.what()};
+    }
+    Count& c = counts[version_of(f)];
+    if (res.outcome == Outcome::Pass) ++c.pass;
+    else if (res.outcome == Outcome::Fail) ++c.fail;
+    else {
+      ++c.skip;
+      std::string key = res.why.substr(0, res.why.find_first_of("\n"));
+      if (key.rfind("extension ", 0) == 0) key = "extension";
+      if (key.rfind("command: ", 0) == 0) key = "command: " + key.substr(9, key.find(' ', 9) - 9);
+      ++skip_reasons[key.substr(0, 60)];
+    }
+    if ((res.outcome == Outcome::Fail && list_failures) || verbose)
+      std::printf("%s %s: %s\n", res.outcome == Outcome::Pass ? "PASS" : res.outcome == Outcome::Fail ? "FAIL" : "SKIP",
+                  f.c_str(), res.why.substr(0, 300).c_str());
+  }
+  std::printf("\n%-10s %6s %6s %6s %8s\n", "version", "pass", "fail", "skip", "pass %");
+  Count total;
+  for (const auto& [v, c] : counts) {
+    const int run = c.pass + c.fail;
+    std::printf("%-10s %6d %6d %6d %7.1f%%\n", v.c_str(), c.pass, c.fail, c.skip, run ? 100.0 * c.pass / run : 0.0);
+    total.pass += c.pass;
+    total.fail += c.fail;
+    total.skip += c.skip;
+  }
+  const int run = total.pass + total.fail;
+  std::printf("%-10s %6d %6d %6d %7.1f%%\n", "all", total.pass, total.fail, total.skip, run ? 100.0 * total.pass / run : 0.0);
+  std::printf("\nskipped, by reason:\n");
+  std::vector<std::pair<int, std::string>> reasons;
+  for (const auto& [k, n] : skip_reasons) reasons.push_back({n, k});
+  std::sort(reasons.rbegin(), reasons.rend());
+  for (size_t i = 0; i < reasons.size() && i < 25; ++i) std::printf("%6d  %s\n", reasons[i].first, reasons[i].second.c_str());
+  std::printf("%d passed, %d failed\n", total.pass, total.fail);
+  return 0;
+}
