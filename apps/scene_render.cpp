@@ -9,6 +9,7 @@
 
 #include "tessel/gpu/framebuffer.hpp"
 #include "tessel/gpu/image.hpp"
+#include "tessel/scene/glsl_shaders.hpp"
 #include "tessel/scene/scene_file.hpp"
 
 namespace tessel::apps {
@@ -46,9 +47,13 @@ int render_scene(const SceneRenderOptions& o) {
   try {
     file = scene::load_scene_file(o.scene);
     if (!o.shading.empty()) {
-      const auto shader = scene::shader_by_name(o.shading);
+      const auto shader = o.shading.rfind("glsl-", 0) == 0 ? scene::glsl_shader_by_name(o.shading)
+                                                          : scene::shader_by_name(o.shading);
       if (!shader) {
-        std::fprintf(stderr, "tessel render: --shading '%s': expected gouraud, phong, normalmap, npr, depth or normal\n", o.shading.c_str());
+        std::fprintf(stderr,
+                     "tessel render: --shading '%s': expected gouraud, phong, normalmap, npr, depth, normal, or the GLSL "
+                     "glsl-gouraud, glsl-phong, glsl-npr\n",
+                     o.shading.c_str());
         return 2;
       }
       for (auto& obj : file.scene.objects) obj->shader = shader;

@@ -62,19 +62,36 @@ uint32_t bit_reverse(uint32_t x) {
 }
 uint32_t field_mask(uint32_t bits) { return bits >= 32 ? ~0u : ((1u << bits) - 1u); }
 
-uint32_t pack_half(float a, float c) {
-  const _Float16 x = _Float16(a), y = _Float16(c);
-  uint16_t bx, by;
-  std::memcpy(&bx, &x, 2);
-  std::memcpy(&by, &y, 2);
-  return uint32_t(bx) | (uint32_t(by) << 16);
+// IEEE half precision, round to nearest even (as F16C's vcvtps2ph with rounding mode 0).
+uint16_t to_half(float f) {
+  const uint32_t x = std::bit_cast<uint32_t>(f);
+  const uint32_t sign = (x >> 16) & 0x8000u;
+  const uint32_t abs = x & 0x7fffffffu;
+  if (abs >= 0x7f800000u) return uint16_t(sign | 0x7c00u | (abs > 0x7f800000u ? 0x200u | ((abs >> 13) & 0x3ffu) : 0u));
+  if (abs >= 0x477ff000u) return uint16_t(sign | 0x7c00u);  // rounds past the largest half: infinity
+  if (abs < 0x38800000u) {                                   // a half denormal (or zero)
+    // h = round(f / 2^-24) = round(m 2^(e - 126)) for the 24-bit significand m
+    const int shift = 126 - int(abs >> 23);
+    if (shift > 24) return uint16_t(sign);
+    const uint32_t m = (abs & 0x7fffffu) | 0x800000u;
+    uint32_t h = m >> shift;
+    const uint32_t rest = m & ((1u << shift) - 1u), half = 1u << (shift - 1);
+    if (rest > half || (rest == half && (h & 1u))) ++h;
+    return uint16_t(sign | h);
+  }
+  uint32_t h = ((abs - 0x38000000u) >> 13);
+  const uint32_t rest = abs & 0x1fffu;
+  if (rest > 0x1000u || (rest == 0x1000u && (h & 1u))) ++h;
+  return uint16_t(sign | h);
 }
-float unpack_half(uint32_t h) {
-  const uint16_t v = uint16_t(h);
-  _Float16 x;
-  std::memcpy(&x, &v, 2);
-  return float(x);
+float from_half(uint16_t h) {
+  const uint32_t sign = uint32_t(h & 0x8000u) << 16, e = (h >> 10) & 0x1fu, m = h & 0x3ffu;
+  if (e == 0) return std::bit_cast<float>(sign) + (sign ? -1.0f : 1.0f) * std::ldexp(float(m), -24);
+  if (e == 31) return std::bit_cast<float>(sign | 0x7f800000u | (m << 13));
+  return std::bit_cast<float>(sign | ((e + 112) << 23) | (m << 13));
 }
+uint32_t pack_half(float a, float c) { return uint32_t(to_half(a)) | (uint32_t(to_half(c)) << 16); }
+float unpack_half(uint32_t h) { return from_half(uint16_t(h)); }
 
 float fsign(float x) { return x > 0.0f ? 1.0f : x < 0.0f ? -1.0f : 0.0f; }
 float ffract(float x) { return x - std::floor(x); }

@@ -110,7 +110,50 @@ struct Place {
   Reg dyn = kNone;  // register with a component offset added at run time
   std::vector<uint32_t> comps;
   bool sampler = false;
+  bool block = false;  // in a uniform block: bools are raw words (any non-zero is true)
 };
+
+uint32_t round_up(uint32_t x, uint32_t a) { return (x + a - 1) / a * a; }
+
+// std140 (GL 3.3 §2.11.4), in words: the base alignment of t, and its components' offsets.
+uint32_t std140_align(const TType& t) {
+  if (t.isArray() || t.isStruct() || t.isMatrix()) return 4;
+  const int n = std::max(1, t.getVectorSize());
+  return n == 1 ? 1 : n == 2 ? 2 : 4;
+}
+bool member_row_major(const TType& m, bool block_row_major) {
+  const auto lm = m.getQualifier().layoutMatrix;
+  return lm == glslang::ElmRowMajor || (lm == glslang::ElmNone && block_row_major);
+}
+// Appends the word offsets of t's components (GLSL order) placed at word `at`; returns its
+// size in words.
+uint32_t std140_layout(const TType& t, uint32_t at, bool row_major, std::vector<uint32_t>& comps) {
+  if (t.isArray()) {
+    TType e(t, 0);
+    std::vector<uint32_t> scratch;
+    const uint32_t stride = round_up(std140_layout(e, 0, row_major, scratch), 4);
+    for (int i = 0; i < array_length(t); ++i) std140_layout(e, at + uint32_t(i) * stride, row_major, comps);
+    return uint32_t(array_length(t)) * stride;
+  }
+  if (t.isStruct()) {
+    uint32_t off = at;
+    for (const auto& m : *t.getStruct()) {
+      const bool rm = member_row_major(*m.type, row_major);
+      off = round_up(off, std140_align(*m.type));
+      off += std140_layout(*m.type, off, rm, comps);
+    }
+    return round_up(off - at, 4);
+  }
+  if (t.isMatrix()) {
+    const uint32_t cols = uint32_t(t.getMatrixCols()), rows = uint32_t(t.getMatrixRows());
+    for (uint32_t c = 0; c < cols; ++c)
+      for (uint32_t r = 0; r < rows; ++r) comps.push_back(row_major ? at + r * 4 + c : at + c * 4 + r);
+    return (row_major ? rows : cols) * 4;
+  }
+  const uint32_t n = uint32_t(std::max(1, t.getVectorSize()));
+  for (uint32_t i = 0; i < n; ++i) comps.push_back(at + i);
+  return n;
+}
 
 class Lowerer {
  public:
@@ -278,7 +321,7 @@ class Lowerer {
   Place uniform_place(const TIntermSymbol* s) {
     const std::string name = name_of(s);
     const TType& t = s->getType();
-    if (t.getBasicType() == glslang::EbtBlock) fail(s, "uniform blocks are not supported yet ('" + name + "')");
+    if (t.getBasicType() == glslang::EbtBlock) return block_place(s);
     auto it = uniforms_.by_name.find(name);
     if (it == uniforms_.by_name.end()) {
       uint32_t w = uniforms_.words;
@@ -298,6 +341,57 @@ class Lowerer {
     // Mark every slot of this variable active.
     for (size_t i = it->second; i < uniforms_.slots.size() && uniforms_.slots[i].word < first.word + uint32_t(n); ++i)
       uniforms_.slots[i].active = true;
+    return p;
+  }
+
+  // A uniform block: its region of uniform words, shared by both stages (by block name).
+  Place block_place(const TIntermSymbol* s) {
+    const TType& t = s->getType();
+    const std::string bname = t.getTypeName().c_str();
+    if (t.isArray()) fail(s, "arrays of uniform blocks are not supported yet ('" + bname + "')");
+    const bool row_major = t.getQualifier().layoutMatrix == glslang::ElmRowMajor;
+    std::vector<uint32_t> comps;
+    const uint32_t words = round_up(std140_layout(t, 0, row_major, comps), 4);
+    size_t index = uniforms_.blocks.size();
+    for (size_t i = 0; i < uniforms_.blocks.size(); ++i)
+      if (uniforms_.blocks[i].name == bname) index = i;
+    if (index == uniforms_.blocks.size()) {
+      UniformBlockLayout b;
+      b.name = bname;
+      b.word = uniforms_.words;
+      b.bytes = words * 4;
+      uniforms_.words += words;
+      // Members as GL names them, with their std140 offsets and strides.
+      const std::string inst = name_of(s);
+      const bool anonymous = inst.rfind("anon@", 0) == 0;
+      uint32_t off = 0;
+      for (const auto& m : *t.getStruct()) {
+        const TType& mt = *m.type;
+        const bool rm = member_row_major(mt, row_major);
+        off = round_up(off, std140_align(mt));
+        std::vector<uint32_t> mc;
+        const uint32_t size = std140_layout(mt, off, rm, mc);
+        BlockMember bm;
+        bm.name = (anonymous ? "" : bname + ".") + std::string(mt.getFieldName().c_str());
+        TType e = mt.isArray() ? TType(mt, 0) : TType();
+        const TType& el = mt.isArray() ? e : mt;
+        bm.gl_type = el.isStruct() ? 0 : gl_type_of(el);
+        bm.array_size = mt.isArray() ? array_length(mt) : 1;
+        bm.offset = off * 4;
+        if (mt.isArray()) bm.array_stride = size / uint32_t(bm.array_size) * 4;
+        if (el.isMatrix()) bm.matrix_stride = 16;
+        bm.row_major = el.isMatrix() && rm;
+        b.members.push_back(bm);
+        off += size;
+      }
+      uniforms_.blocks.push_back(b);
+    }
+    Place p;
+    p.where = Place::Where::Uniform;
+    p.base = uniforms_.blocks[index].word;
+    p.size = words;
+    p.comps = comps;
+    p.block = true;
     return p;
   }
 
@@ -467,6 +561,14 @@ class Lowerer {
         else v.push_back(emit(Op::UniformIndexed, p.dyn, 0, 0, p.base + c));
       }
     }
+    return v;
+  }
+
+  // A read of a value of type t: a bool in a uniform block is any non-zero word.
+  Val read_typed(const Place& p, const TType& t) {
+    Val v = read(p);
+    if (p.block && t.getBasicType() == glslang::EbtBool)
+      for (Reg& r : v) r = emit(Op::INe, r, iconst(0));
     return v;
   }
 
@@ -751,7 +853,7 @@ class Lowerer {
       case glslang::EOpIndexIndirect:
       case glslang::EOpIndexDirectStruct:
       case glslang::EOpVectorSwizzle:
-        if (is_access_chain(b)) return read(place(b));
+        if (is_access_chain(b)) return read_typed(place(b), b->getType());
         return rvalue_access(b);
       case glslang::EOpAssign: {
         Val v = value(b->getRight());

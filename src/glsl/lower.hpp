@@ -53,6 +53,22 @@ struct LoweredStage {
   std::set<std::string> declared_outputs;  // declared, whether or not written
 };
 
+// A uniform block (GLSL 1.40 / GL 3.1), laid out by std140 (GL 3.3 §2.11.4) in a run of
+// uniform words that each draw fills from the buffer bound to its binding point.
+struct BlockMember {
+  std::string name;  // GL's name: "member", or "Block.member" for a block with an instance name
+  uint32_t gl_type = 0;
+  int array_size = 1;
+  uint32_t offset = 0, array_stride = 0, matrix_stride = 0;  // bytes
+  bool row_major = false;
+};
+struct UniformBlockLayout {
+  std::string name;
+  uint32_t word = 0;   // first uniform word
+  uint32_t bytes = 0;  // data size (a multiple of 16)
+  std::vector<BlockMember> members;
+};
+
 // Uniforms are shared between the stages of a program: both stages lower into one layout.
 struct UniformLayout {
   std::vector<UniformSlot> slots;
@@ -60,6 +76,7 @@ struct UniformLayout {
   // Initial values from initializers (GLSL 1.20 `uniform float k = 2.0;`): variable name ->
   // its components as words.
   std::map<std::string, std::vector<uint32_t>> initial;
+  std::vector<UniformBlockLayout> blocks;
   std::map<std::string, size_t> by_name;  // top-level variable name -> first slot
 };
 

@@ -7,10 +7,6 @@
 // gpu::RuntimeShader.
 #include "tessel/glsl/program.hpp"
 
-#include <glslang/MachineIndependent/localintermediate.h>
-#include <glslang/Public/ResourceLimits.h>
-#include <glslang/Public/ShaderLang.h>
-
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
@@ -19,35 +15,13 @@
 #include <set>
 #include <string_view>
 
+#include "front.hpp"
 #include "interp.hpp"
 #include "jit.hpp"
 #include "lower.hpp"
 
 namespace tessel::glsl {
 namespace {
-
-// glslang keeps process-wide tables (its built-in symbol tables): set up once, and used by
-// one thread at a time.
-std::mutex& glslang_mutex() {
-  static std::mutex m;
-  return m;
-}
-void init_glslang() {
-  static std::once_flag once;
-  std::call_once(once, [] { glslang::InitializeProcess(); });
-}
-
-EShLanguage language(Stage s) { return s == Stage::Vertex ? EShLangVertex : EShLangFragment; }
-
-// Parses one stage; the shader object must outlive any program that links it.
-bool parse(glslang::TShader& sh, const std::string& source, std::string& log) {
-  const char* text = source.c_str();
-  const int length = int(std::min<size_t>(source.size(), size_t(INT32_MAX)));
-  sh.setStringsWithLengths(&text, &length, 1);
-  const bool ok = sh.parse(GetDefaultResources(), 110, ENoProfile, false, false, EShMsgDefault);
-  log = sh.getInfoLog();
-  return ok;
-}
 
 struct Copy {
   ir::Reg reg;
@@ -62,15 +36,7 @@ std::shared_ptr<Shader> Shader::compile(Stage stage, std::string source) {
   auto s = std::make_shared<Shader>();
   s->stage_ = stage;
   s->source_ = std::move(source);
-  init_glslang();
-  std::lock_guard lock(glslang_mutex());
-  try {
-    glslang::TShader sh(language(stage));
-    s->ok_ = parse(sh, s->source_, s->log_);
-  } catch (const std::exception& e) {
-    s->ok_ = false;
-    s->log_ = std::string("0:0: error: ") + e.what() + "\n";
-  }
+  s->ok_ = front_compile(stage == Stage::Vertex ? 0 : 1, s->source_, s->log_);
   return s;
 }
 
@@ -95,6 +61,7 @@ struct Program::Impl {
   UniformLayout layout;
   std::vector<uint32_t> values;  // uniform words
   std::vector<Variable> attributes, uniforms, outputs;
+  std::vector<UniformBlock> blocks;
   struct Location {
     size_t slot;
     int element;
@@ -214,33 +181,9 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
     m.log = "error: linking with uncompiled/shader that failed to compile\n";
     return p;
   }
-  init_glslang();
   auto linked = std::make_shared<Linked>();
   LoweredStage vs, fs;
-  {
-    std::lock_guard lock(glslang_mutex());
-    try {
-      glslang::TShader tvs(EShLangVertex), tfs(EShLangFragment);
-      std::string log;
-      if (!parse(tvs, vertex.source(), log) || !parse(tfs, fragment.source(), log)) {
-        m.log = log;
-        return p;
-      }
-      glslang::TProgram prog;
-      prog.addShader(&tvs);
-      prog.addShader(&tfs);
-      if (!prog.link(EShMsgDefault)) {
-        m.log = prog.getInfoLog();
-        if (m.log.empty()) m.log = "error: link failed\n";
-        return p;
-      }
-      vs = lower_stage(*prog.getIntermediate(EShLangVertex), 0, m.layout);
-      fs = lower_stage(*prog.getIntermediate(EShLangFragment), 1, m.layout);
-    } catch (const std::exception& e) {
-      m.log = std::string(e.what()) + "\n";
-      return p;
-    }
-  }
+  if (!front_link(vertex.source(), fragment.source(), m.layout, vs, fs, m.log)) return p;
   std::string errors;
   auto error = [&](const std::string& e) { errors += "error: " + e + "\n"; };
 
@@ -449,6 +392,15 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
       m.uniforms.push_back({u.array_size > 1 ? u.name + "[0]" : u.name, u.gl_type, u.array_size, base});
   }
   m.values.assign(m.layout.words, 0);
+  for (const UniformBlockLayout& b : m.layout.blocks) {
+    UniformBlock ub;
+    ub.name = b.name;
+    ub.size = int(b.bytes);
+    for (const BlockMember& bm : b.members)
+      ub.members.push_back({bm.name, bm.gl_type, bm.array_size, int(bm.offset), int(bm.array_stride),
+                            int(bm.matrix_stride), bm.row_major});
+    m.blocks.push_back(std::move(ub));
+  }
   linked->vs = std::move(vs.ir);
   linked->fs = std::move(fs.ir);
   // Native code for both stages, unless TESSEL_GLSL=interp asks for the interpreter. A
@@ -660,18 +612,47 @@ bool Program::get_uniform(int location, float* out) const {
   return true;
 }
 
-std::shared_ptr<const gpu::RuntimeShader> Program::bind(std::span<const TextureBinding> units) const {
+const std::vector<UniformBlock>& Program::uniform_blocks() const { return impl_->blocks; }
+
+int Program::uniform_block_index(std::string_view name) const {
+  for (size_t i = 0; i < impl_->blocks.size(); ++i)
+    if (impl_->blocks[i].name == name) return int(i);
+  return -1;
+}
+
+bool Program::set_uniform_block_binding(int index, int binding) {
+  if (index < 0 || size_t(index) >= impl_->blocks.size() || binding < 0 || binding >= 36) return false;
+  impl_->blocks[size_t(index)].binding = binding;
+  return true;
+}
+
+std::shared_ptr<const gpu::RuntimeShader> Program::bind(std::span<const TextureBinding> units,
+                                                        std::span<const BufferBinding> uniform_buffers) const {
   const Impl& m = *impl_;
   if (!m.ok) throw gpu::Error("draw: the program is not linked: " + m.log);
   std::vector<TextureUnit> u;
   u.reserve(units.size());
   for (const TextureBinding& b : units) u.push_back({b.texture_2d, b.texture_cube, b.sampler});
-  return std::make_shared<Bound>(m.linked, m.values, std::move(u));
+  std::vector<uint32_t> values = m.values;
+  for (size_t i = 0; i < m.blocks.size(); ++i) {
+    const UniformBlockLayout& bl = m.layout.blocks[i];
+    uint32_t* dst = values.data() + bl.word;
+    std::memset(dst, 0, bl.bytes);
+    const size_t point = size_t(m.blocks[i].binding);
+    if (point >= uniform_buffers.size() || !uniform_buffers[point].buffer) continue;
+    const BufferBinding& bb = uniform_buffers[point];
+    const size_t total = bb.buffer->size();
+    if (bb.offset >= total) continue;
+    const size_t avail = bb.size ? std::min(bb.size, total - bb.offset) : total - bb.offset;
+    std::memcpy(dst, bb.buffer->data() + bb.offset, std::min<size_t>(avail, bl.bytes));
+  }
+  return std::make_shared<Bound>(m.linked, std::move(values), std::move(u));
 }
 
 void Program::draw(gpu::Context& ctx, const gpu::VertexLayout& layout, const gpu::RenderState& state,
-                   const gpu::DrawCall& call, std::span<const TextureBinding> units) const {
-  ctx.draw(bind(units), layout, state, call);
+                   const gpu::DrawCall& call, std::span<const TextureBinding> units,
+                   std::span<const BufferBinding> uniform_buffers) const {
+  ctx.draw(bind(units, uniform_buffers), layout, state, call);
 }
 
 }  // namespace tessel::glsl

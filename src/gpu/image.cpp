@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 #include <stb_image.h>
@@ -54,6 +55,13 @@ std::string temp_path_for(const std::string& path) {
 
 // Writes bytes to path atomically: a temporary file next to it, then rename.
 void write_file_atomic(const std::string& path, const std::vector<uint8_t>& bytes) {
+  // The folders on the way are made, as a user of `-o out/new/dir/x.png` expects.
+  {
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    std::error_code ec;
+    if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+    if (ec) throw Error("write_png: cannot create the folder '" + parent.string() + "': " + ec.message());
+  }
   const std::string tmp = temp_path_for(path);
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (f == nullptr) {

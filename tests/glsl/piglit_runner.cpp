@@ -160,8 +160,73 @@ struct Runner {
     gpu::VertexLayout layout;
     layout.attrib(0, vbo, 4, gpu::AttribType::F32, 16, 0);
     gpu::RenderState state;
-    prog->draw(ctx, layout, state, {.topology = gpu::Topology::Triangles, .count = 6});
+    std::vector<glsl::BufferBinding> points;
+    block_buffers.clear();
+    for (size_t i = 0; i < block_data.size(); ++i) {
+      block_buffers.push_back(std::make_unique<gpu::Buffer>(block_data[i].data(), block_data[i].size()));
+      prog->set_uniform_block_binding(int(i), int(i));
+      points.push_back({block_buffers.back().get(), 0, 0});
+    }
+    prog->draw(ctx, layout, state, {.topology = gpu::Topology::Triangles, .count = 6}, {}, points);
     ctx.finish();
+  }
+
+  // Uniform blocks get a buffer each, bound at the block's index (as shader_runner does);
+  // `uniform` commands for block members write into it at the member's std140 offset.
+  std::vector<std::vector<uint8_t>> block_data;
+  std::vector<std::unique_ptr<gpu::Buffer>> block_buffers;
+
+  Result set_block_member(const std::string& type, const std::string& name, const std::string& line) {
+    std::string base = name;
+    int index = 0;
+    if (const auto b = name.find('['); b != std::string::npos) {
+      base = name.substr(0, b);
+      index = std::atoi(name.c_str() + b + 1);
+    }
+    const auto& blocks = prog->uniform_blocks();
+    for (size_t bi = 0; bi < blocks.size(); ++bi)
+      for (const auto& m : blocks[bi].members) {
+        std::string mname = m.name;
+        if (const auto dot = mname.find('.'); dot != std::string::npos && base.find('.') == std::string::npos)
+          mname = mname.substr(dot + 1);
+        if (mname != base) continue;
+        std::istringstream in(line);
+        std::string kw, t, n;
+        in >> kw >> t >> n;
+        std::string rest;
+        std::getline(in, rest);
+        for (char& c : rest)
+          if (c == '(' || c == ')' || c == ',') c = ' ';
+        std::istringstream w(rest);
+        std::vector<uint32_t> words;
+        std::string tok;
+        const bool integer = type == "int" || type.rfind("ivec", 0) == 0 || type == "uint" || type.rfind("uvec", 0) == 0 ||
+                             type == "bool" || type.rfind("bvec", 0) == 0;
+        while (w >> tok) {
+          if (integer) {
+            words.push_back(uint32_t(std::strtoll(tok.c_str(), nullptr, 0)));
+          } else {
+            const float x = std::strtof(tok.c_str(), nullptr);
+            uint32_t u;
+            std::memcpy(&u, &x, 4);
+            words.push_back(u);
+          }
+        }
+        const bool matrix = type.rfind("mat", 0) == 0;
+        const int cols = matrix ? type[3] - '0' : 1;
+        const int rows = matrix ? (type.size() > 5 ? type[5] - '0' : cols) : int(words.size());
+        size_t off = size_t(m.offset) + size_t(index) * size_t(m.array_stride);
+        auto& data = block_data[bi];
+        for (int c = 0; c < cols; ++c)
+          for (int r = 0; r < rows; ++r) {
+            const size_t k = size_t(c * rows + r);
+            if (k >= words.size()) continue;
+            const size_t at = off + size_t(c) * size_t(matrix ? 16 : 0) + size_t(r) * 4;
+            if (at + 4 <= data.size()) std::memcpy(&data[at], &words[k], 4);
+          }
+        return {};
+      }
+    return {};  // inactive uniforms are ignored, as GL ignores location -1
   }
 
   Result set_uniform(const std::string& line) {
@@ -171,7 +236,7 @@ struct Runner {
     std::string rest;
     std::getline(in, rest);
     const int loc = prog->uniform_location(name);
-    if (loc < 0) return {};  // inactive uniforms are ignored, as GL ignores location -1
+    if (loc < 0) return set_block_member(type, name, line);
     const std::vector<float> v = numbers(rest);
     const int n = int(v.size());
     if (n == 0) return skip("uniform without values: " + line);
@@ -265,6 +330,7 @@ struct Runner {
       if (prog->info_log().find("not supported") != std::string::npos) return skip("Tessel: " + prog->info_log());
       return fail("link: " + prog->info_log());
     }
+    for (const auto& b : prog->uniform_blocks()) block_data.emplace_back(size_t(b.size), uint8_t(0));
     color = std::make_unique<gpu::Texture2D>(gpu::Format::RGBA8, t.width, t.height);
     fb = gpu::Framebuffer(color.get());
     ctx.bind_framebuffer(&fb);
@@ -355,6 +421,10 @@ struct Runner {
           if (!ok) return fail(why);
         } else if (w1 == "link") {
           // link success / link error: handled above
+        } else if (w1 == "frustum") {
+          const auto n = numbers(c.substr(7));
+          if (n.size() < 6) return skip("frustum form: " + c);
+          prog->set_compat_matrices(glm::mat4(1.0f), glm::frustum(n[0], n[1], n[2], n[3], n[4], n[5]));
         } else if (w1 == "ortho") {
           // glOrtho(0, w, 0, h, -1, 1) on the projection matrix, as shader_runner does
           prog->set_compat_matrices(glm::mat4(1.0f), glm::ortho(0.0f, float(t.width), 0.0f, float(t.height), -1.0f, 1.0f));

@@ -159,7 +159,16 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
       case 0x0006: call.topology = gpu::Topology::TriangleFan; break;
       default: call.topology = gpu::Topology::Triangles; break;
     }
-    prog->draw(ctx, layout, state, call, units);
+    std::vector<std::unique_ptr<gpu::Buffer>> ubos;
+    std::vector<glsl::BufferBinding> points;
+    for (size_t i = 0; i < spec.uniform_buffers.size(); ++i) {
+      const auto& ub = spec.uniform_buffers[i];
+      const int index = prog->uniform_block_index(ub.block);
+      ubos.push_back(std::make_unique<gpu::Buffer>(ub.data.data(), ub.data.size()));
+      points.push_back({ubos.back().get(), 0, 0});
+      if (index >= 0) prog->set_uniform_block_binding(index, int(i));
+    }
+    prog->draw(ctx, layout, state, call, units, points);
     ctx.finish();
   } catch (const std::exception& e) {
     r.log += e.what();

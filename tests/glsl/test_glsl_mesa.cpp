@@ -257,6 +257,70 @@ TEST(GlslMesa, UniformsArraysAndStructsByName) {
   run_case(c);
 }
 
+// A uniform block in std140 (vec3 alignment, arrays of floats on vec4 strides, a row-major
+// matrix, a struct, a bool) read with constant and run-time indices, against llvmpipe.
+TEST(GlslMesa, UniformBlocksStd140) {
+  if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
+  const char* decl = R"(
+struct S { vec2 a; float b; };
+layout(std140) uniform Params {
+  float f;
+  vec3 v;
+  float arr[3];
+  layout(row_major) mat3 m;
+  S s;
+  bool flag;
+  vec4 tail;
+};
+uniform Other { vec4 o; } other;)";
+  const char* body =
+      "vec3 mv = m * vec3(1.0, 2.0, 3.0); c = vec4(f + v.z + arr[i % 3], mv.y, s.a.y + s.b + (flag ? 100.0 : 0.0),"
+      " tail.w + other.o.x);";
+  reference::GlslDrawSpec spec = quad_spec(kVertex330, fragment330(decl, body));
+  // std140 offsets (bytes): f 0, v 16, arr 32/48/64, m 80 (3 rows of vec4 when row-major:
+  // 80, 96, 112), s.a 128, s.b 136, flag 144, tail 160; size 176.
+  std::vector<float> p(44, 0.0f);
+  p[0] = 1.5f;
+  p[4] = 0.25f, p[5] = 0.5f, p[6] = 0.75f;
+  p[8] = 10, p[12] = 20, p[16] = 30;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) p[size_t(20 + r * 4 + c)] = float(r * 3 + c + 1);
+  p[32] = 7, p[33] = 8, p[34] = 9;
+  const uint32_t yes = 1;
+  std::memcpy(&p[36], &yes, 4);
+  p[40] = 1, p[41] = 2, p[42] = 3, p[43] = 4;
+  std::vector<uint8_t> bytes(p.size() * 4);
+  std::memcpy(bytes.data(), p.data(), bytes.size());
+  std::vector<uint8_t> other(16);
+  const float o[4] = {1000, 0, 0, 0};
+  std::memcpy(other.data(), o, 16);
+  spec.uniform_buffers = {{"Params", bytes}, {"Other", other}};
+  const reference::GlslResult mesa = oracle()->run(spec);
+  ASSERT_TRUE(mesa.ok) << mesa.log;
+  const TesselResult ours = run_tessel(spec);
+  ASSERT_TRUE(ours.ok) << ours.log;
+  const Mismatch mm = compare_floats(ours.outputs[0], mesa.outputs[0], spec.width, {0, 0});
+  EXPECT_EQ(mm.count, 0) << mm.first;
+  // The reflected layout is std140's.
+  auto v = glsl::Shader::compile(glsl::Stage::Vertex, kVertex330);
+  auto f = glsl::Shader::compile(glsl::Stage::Fragment, spec.fragment);
+  auto prog = glsl::Program::link(*v, *f);
+  ASSERT_TRUE(prog->ok()) << prog->info_log();
+  const int pi = prog->uniform_block_index("Params");
+  ASSERT_GE(pi, 0);
+  const glsl::UniformBlock& b = prog->uniform_blocks()[size_t(pi)];
+  EXPECT_EQ(b.size, 176);
+  std::map<std::string, int> off;
+  for (const auto& mb : b.members) off[mb.name] = mb.offset;
+  EXPECT_EQ(off["v"], 16);
+  EXPECT_EQ(off["arr"], 32);
+  EXPECT_EQ(off["m"], 80);
+  EXPECT_EQ(off["s"], 128);
+  EXPECT_EQ(off["flag"], 144);
+  EXPECT_EQ(off["tail"], 160);
+  EXPECT_EQ(prog->uniform_blocks()[size_t(prog->uniform_block_index("Other"))].members[0].name, "Other.o");
+}
+
 std::vector<float> checker(int w, int h) {
   std::vector<float> d(size_t(w * h * 4));
   for (int y = 0; y < h; ++y)

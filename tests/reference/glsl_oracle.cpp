@@ -862,6 +862,20 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
     glClearBufferfv(GL_DEPTH, 0, &one);
   }
   check_gl("clearing", &problems);
+  for (size_t i = 0; i < spec.uniform_buffers.size(); ++i) {
+    const auto& ub = spec.uniform_buffers[i];
+    const GLuint index = glGetUniformBlockIndex(obj.program, ub.block.c_str());
+    if (index == GL_INVALID_INDEX) continue;
+    GLuint buf = 0;
+    glGenBuffers(1, &buf);
+    obj.vbos.push_back(buf);  // deleted with the run's other buffers
+    glBindBuffer(GL_UNIFORM_BUFFER, buf);
+    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(ub.data.size()), ub.data.data(), GL_STATIC_DRAW);
+    glUniformBlockBinding(obj.program, index, GLuint(i));
+    glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(i), buf);
+  }
+  glBindBuffer(GL_UNIFORM_BUFFER, 0);
+  check_gl("uniform buffers", &problems);
   if (spec.count > 0) glDrawArrays(spec.primitive, 0, spec.count);
   check_gl("glDrawArrays", &problems);
 

@@ -90,6 +90,13 @@ struct GlslDrawSpec {
   std::vector<GlslAttribute> attributes;
   std::vector<GlslUniform> uniforms;     // set in this order after glUseProgram
   std::vector<GlslTexture> textures;
+  // Uniform blocks: the named block reads binding point i (glUniformBlockBinding), which holds
+  // a buffer of these bytes (glBindBufferBase). Blocks not found are skipped.
+  struct UniformBuffer {
+    std::string block;
+    std::vector<uint8_t> data;
+  };
+  std::vector<UniformBuffer> uniform_buffers;
   uint32_t primitive = 0x0004;           // GL_TRIANGLES; glDrawArrays(primitive, 0, count)
   int count = 0;
   int width = 16, height = 16;

@@ -66,6 +66,29 @@ struct TextureBinding {
   gpu::SamplerState sampler;
 };
 
+// A range of a buffer bound to a uniform buffer binding point (glBindBufferRange).
+struct BufferBinding {
+  const gpu::Buffer* buffer = nullptr;
+  size_t offset = 0;
+  size_t size = 0;  // 0: to the end of the buffer
+};
+
+// A uniform block as GL reports it (glGetActiveUniformBlock*, glGetActiveUniforms with
+// GL_UNIFORM_OFFSET and the strides): std140 layout, which also serves shared and packed.
+struct UniformBlockMember {
+  std::string name;  // "member", or "Block.member" when the block has an instance name
+  uint32_t type = 0;
+  int size = 1;      // array elements
+  int offset = 0, array_stride = 0, matrix_stride = 0;  // bytes
+  bool row_major = false;
+};
+struct UniformBlock {
+  std::string name;
+  int size = 0;      // GL_UNIFORM_BLOCK_DATA_SIZE, bytes
+  int binding = 0;   // the binding point it reads (glUniformBlockBinding)
+  std::vector<UniformBlockMember> members;
+};
+
 // Fixed attribute locations of the compatibility attributes (as NVIDIA aliases them).
 inline constexpr int kLocationVertex = 0, kLocationNormal = 2, kLocationColor = 3, kLocationSecondaryColor = 4,
                      kLocationFogCoord = 5, kLocationMultiTexCoord0 = 8;
@@ -108,13 +131,21 @@ class Program {
   // is set with uniform_location/set_uniform under its GLSL name.
   void set_compat_matrices(const glm::mat4& modelview, const glm::mat4& projection);
 
-  // The pipeline's view of this program with its current uniforms and the given texture
-  // units: what gpu::Context::draw takes. Valid after the program changes or goes.
-  std::shared_ptr<const gpu::RuntimeShader> bind(std::span<const TextureBinding> units = {}) const;
+  const std::vector<UniformBlock>& uniform_blocks() const;
+  int uniform_block_index(std::string_view name) const;  // -1 when not an active block
+  // glUniformBlockBinding: false for a bad index or a binding outside [0, 36).
+  bool set_uniform_block_binding(int index, int binding);
+
+  // The pipeline's view of this program with its current uniforms, the given texture units
+  // and the uniform buffer bindings (indexed by binding point; each block's data is copied
+  // from its range, and what the range lacks reads as zero): what gpu::Context::draw takes.
+  // Valid after the program changes or goes.
+  std::shared_ptr<const gpu::RuntimeShader> bind(std::span<const TextureBinding> units = {},
+                                                 std::span<const BufferBinding> uniform_buffers = {}) const;
   // Queues a draw (bind() and gpu::Context::draw). Throws gpu::Error as draw does, and for a
   // program that did not link.
   void draw(gpu::Context& ctx, const gpu::VertexLayout& layout, const gpu::RenderState& state, const gpu::DrawCall& call,
-            std::span<const TextureBinding> units = {}) const;
+            std::span<const TextureBinding> units = {}, std::span<const BufferBinding> uniform_buffers = {}) const;
 
   struct Impl;
 

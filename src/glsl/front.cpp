@@ -1,0 +1,76 @@
+// glslang: preprocessing, parsing, type checking and linking of the two stages (front.hpp).
+#include "front.hpp"
+
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <exception>
+#include <mutex>
+
+namespace tessel::glsl {
+namespace {
+
+// glslang keeps process-wide tables (its built-in symbol tables): set up once, and used by
+// one thread at a time.
+std::mutex& glslang_mutex() {
+  static std::mutex m;
+  return m;
+}
+void init_glslang() {
+  static std::once_flag once;
+  std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+// Parses one stage at its #version (1.10 without one); the shader object must outlive any
+// program that links it.
+bool parse(glslang::TShader& sh, const std::string& source, std::string& log) {
+  const char* text = source.c_str();
+  const int length = int(std::min<size_t>(source.size(), size_t(INT32_MAX)));
+  sh.setStringsWithLengths(&text, &length, 1);
+  const bool ok = sh.parse(GetDefaultResources(), 110, ENoProfile, false, false, EShMsgDefault);
+  log = sh.getInfoLog();
+  return ok;
+}
+
+}  // namespace
+
+bool front_compile(int stage, const std::string& source, std::string& log) {
+  init_glslang();
+  std::lock_guard lock(glslang_mutex());
+  try {
+    glslang::TShader sh(stage == 0 ? EShLangVertex : EShLangFragment);
+    return parse(sh, source, log);
+  } catch (const std::exception& e) {
+    log = std::string("0:0: error: ") + e.what() + "\n";
+    return false;
+  }
+}
+
+bool front_link(const std::string& vertex, const std::string& fragment, UniformLayout& layout, LoweredStage& vs,
+                LoweredStage& fs, std::string& log) {
+  init_glslang();
+  std::lock_guard lock(glslang_mutex());
+  try {
+    glslang::TShader tvs(EShLangVertex), tfs(EShLangFragment);
+    if (!parse(tvs, vertex, log) || !parse(tfs, fragment, log)) return false;
+    glslang::TProgram prog;
+    prog.addShader(&tvs);
+    prog.addShader(&tfs);
+    if (!prog.link(EShMsgDefault)) {
+      log = prog.getInfoLog();
+      if (log.empty()) log = "error: link failed\n";
+      return false;
+    }
+    vs = lower_stage(*prog.getIntermediate(EShLangVertex), 0, layout);
+    fs = lower_stage(*prog.getIntermediate(EShLangFragment), 1, layout);
+    return true;
+  } catch (const std::exception& e) {
+    log = std::string(e.what()) + "\n";
+    return false;
+  }
+}
+
+}  // namespace tessel::glsl

@@ -1,0 +1,19 @@
+// The glslang front end behind plain data: the only files that touch glslang's classes
+// (front.cpp, lower.cpp) are compiled without RTTI, as Debian builds glslang.
+#pragma once
+
+#include <string>
+
+#include "lower.hpp"
+
+namespace tessel::glsl {
+
+// Parses one stage (0 vertex, 1 fragment); returns whether it compiled, and its info log.
+bool front_compile(int stage, const std::string& source, std::string& log);
+
+// Parses and links both stages and lowers them into `vs` and `fs` (uniforms into `layout`);
+// false with the info log when glslang or the lowering refuses.
+bool front_link(const std::string& vertex, const std::string& fragment, UniformLayout& layout, LoweredStage& vs,
+                LoweredStage& fs, std::string& log);
+
+}  // namespace tessel::glsl

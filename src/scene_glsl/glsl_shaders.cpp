@@ -1,0 +1,258 @@
+// The GLSL twins of the scene shaders (glsl_shaders.hpp): the notes' illumination model in
+// GLSL 3.30, with the uniforms filled from the RenderState as the C++ shaders fill theirs
+// (src/scene/shaders.cpp).
+#include "tessel/scene/glsl_shaders.hpp"
+
+#include <map>
+#include <mutex>
+
+#include "tessel/glsl/program.hpp"
+
+namespace tessel::scene {
+namespace {
+
+const char* kLighting = R"(
+struct Light {
+  vec4 wLightPos;  // w = 0: directional
+  vec3 La, Le, attenuation, spotDirection;
+  float spotCosCutoff, spotExponent;
+};
+uniform Light lights[8];
+uniform int nLights;
+uniform vec3 ka, kd, ks, emission;
+uniform float shininess;
+uniform bool phongSpecular;  // R.V instead of Blinn's N.H
+uniform vec3 wEye;
+uniform bool textured;
+uniform sampler2D tex;
+uniform int shadowLight;     // -1: no shadow map
+uniform mat4 lightVP;
+uniform sampler2DShadow shadowMap;
+uniform int pcf;
+uniform float texel;
+
+// The fraction of the (2 pcf + 1)^2 bilinear compares that see p from the light.
+float shadowVisibility(vec3 p) {
+  vec4 q = lightVP * vec4(p, 1.0);
+  float inv = 1.0 / q.w;
+  vec3 s = vec3(q.x * inv * 0.5 + 0.5, q.y * inv * 0.5 + 0.5, q.z * inv * 0.5 + 0.5);
+  float sum = 0.0;
+  for (int j = -pcf; j <= pcf; ++j)
+    for (int i = -pcf; i <= pcf; ++i)
+      sum += texture(shadowMap, vec3(s.x + float(i) * texel, s.y + float(j) * texel, s.z));
+  float n = float((2 * pcf + 1) * (2 * pcf + 1));
+  return (s.z > 1.0 || q.w <= 0.0) ? 1.0 : sum * (1.0 / n);
+}
+
+// colour = emission + sum over lights of ka La + (kd cos(theta) + ks cos(delta)^shininess) Le
+void illuminate(vec3 p, vec3 N, float visibility, out vec3 ambientDiffuse, out vec3 specular) {
+  vec3 V = normalize(wEye - p);
+  ambientDiffuse = vec3(0.0);
+  specular = vec3(0.0);
+  for (int i = 0; i < nLights; ++i) {
+    vec3 L = normalize(lights[i].wLightPos.xyz - p * lights[i].wLightPos.w);
+    float spot = 1.0;
+    if (lights[i].spotCosCutoff > -1.0) {
+      float c = dot(-L, normalize(lights[i].spotDirection));
+      spot = c >= lights[i].spotCosCutoff
+                 ? (lights[i].spotExponent == 0.0 ? 1.0 : pow(max(c, 0.0), lights[i].spotExponent))
+                 : 0.0;
+    }
+    float cost = max(dot(N, L), 0.0);
+    float sc = phongSpecular ? dot(reflect(-L, N), V) : dot(N, normalize(L + V));
+    float cosd = cost > 0.0 ? pow(max(sc, 0.0), shininess) : 0.0;
+    vec3 att = lights[i].attenuation;
+    if (lights[i].wLightPos.w != 0.0 && (att.y != 0.0 || att.z != 0.0 || att.x != 1.0)) {
+      vec3 d = lights[i].wLightPos.xyz / lights[i].wLightPos.w - p;
+      float d2 = dot(d, d);
+      spot = spot / (att.x + att.y * sqrt(d2) + att.z * d2);
+    }
+    if (i == shadowLight) spot *= visibility;
+    vec3 Le = lights[i].Le * spot;
+    ambientDiffuse += ka * lights[i].La + kd * Le * cost;
+    specular += ks * Le * cosd;
+  }
+  ambientDiffuse += emission;
+}
+)";
+
+const char* kVertexHead = R"(#version 330
+layout(location = 0) in vec3 vtxPos;
+layout(location = 1) in vec3 vtxNorm;
+layout(location = 2) in vec2 vtxUV;
+uniform mat4 MVP, M, Mnormal;  // Mnormal = (M^-1)^T
+)";
+
+const char* kPhongVertex = R"(
+out vec3 wPos, wNormal;
+out vec2 uv;
+void main() {
+  vec4 pos = vec4(vtxPos, 1.0);
+  wPos = (M * pos).xyz;
+  wNormal = (Mnormal * vec4(vtxNorm, 0.0)).xyz;
+  uv = vtxUV;
+  gl_Position = MVP * pos;
+}
+)";
+
+const char* kPhongFragment = R"(
+in vec3 wPos, wNormal;
+in vec2 uv;
+out vec4 fragmentColor;
+void main() {
+  float visibility = shadowLight >= 0 ? shadowVisibility(wPos) : 1.0;
+  vec3 ambientDiffuse, specular;
+  illuminate(wPos, normalize(wNormal), visibility, ambientDiffuse, specular);
+  vec3 c = ambientDiffuse;
+  if (textured) c *= texture(tex, uv).xyz;
+  fragmentColor = vec4(c + specular, 1.0);
+}
+)";
+
+const char* kGouraudVertex = R"(
+out vec3 ambientDiffuse, specular;
+out vec2 uv;
+void main() {
+  vec4 pos = vec4(vtxPos, 1.0);
+  vec3 p = (M * pos).xyz;
+  vec3 N = normalize((Mnormal * vec4(vtxNorm, 0.0)).xyz);
+  illuminate(p, N, 1.0, ambientDiffuse, specular);
+  uv = vtxUV;
+  gl_Position = MVP * pos;
+}
+)";
+
+const char* kGouraudFragment = R"(
+in vec3 ambientDiffuse, specular;
+in vec2 uv;
+out vec4 fragmentColor;
+void main() {
+  vec3 c = ambientDiffuse;
+  if (textured) c *= texture(tex, uv).xyz;
+  fragmentColor = vec4(c + specular, 1.0);
+}
+)";
+
+// The notes' NPR: quantized diffuse light and a black silhouette where |N.V| is small.
+const char* kNprFragment = R"(
+uniform float bands, silhouette;
+in vec3 wPos, wNormal;
+in vec2 uv;
+out vec4 fragmentColor;
+void main() {
+  vec3 N = normalize(wNormal), V = normalize(wEye - wPos);
+  float y = 1.0;
+  if (nLights > 0) {
+    vec4 lp = lights[0].wLightPos;
+    vec3 L = normalize(lp.xyz - wPos * lp.w);
+    float d = max(dot(N, L), 0.0);
+    y = bands <= 2.0 ? (d > 0.5 ? 1.0 : 0.5) : (floor(d * bands) + 1.0) * (1.0 / bands);
+    y = min(y, 1.0);
+  }
+  vec3 c = kd * y;
+  if (textured) c *= texture(tex, uv).xyz;
+  fragmentColor = abs(dot(N, V)) < silhouette ? vec4(0.0, 0.0, 0.0, 1.0) : vec4(c, 1.0);
+}
+)";
+
+}  // namespace
+
+std::string GlslShader::vertex_source(Kind kind) {
+  return std::string(kVertexHead) + kLighting + (kind == Kind::Gouraud ? kGouraudVertex : kPhongVertex);
+}
+std::string GlslShader::fragment_source(Kind kind) {
+  const char* body = kind == Kind::Gouraud ? kGouraudFragment : kind == Kind::Phong ? kPhongFragment : kNprFragment;
+  return std::string("#version 330\n") + kLighting + body;
+}
+
+struct GlslShader::Impl {
+  Kind kind;
+  float bands, silhouette;
+  std::shared_ptr<glsl::Program> program;
+  std::mutex mutex;  // draw() sets the program's uniforms
+};
+
+GlslShader::GlslShader(Kind kind, int npr_bands, float npr_silhouette) : impl_(std::make_unique<Impl>()) {
+  impl_->kind = kind;
+  impl_->bands = float(npr_bands < 1 ? 1 : npr_bands);
+  impl_->silhouette = npr_silhouette;
+  auto vs = glsl::Shader::compile(glsl::Stage::Vertex, vertex_source(kind));
+  auto fs = glsl::Shader::compile(glsl::Stage::Fragment, fragment_source(kind));
+  if (!vs->ok() || !fs->ok()) throw gpu::Error("GLSL scene shader: " + vs->info_log() + fs->info_log());
+  impl_->program = glsl::Program::link(*vs, *fs);
+  if (!impl_->program->ok()) throw gpu::Error("GLSL scene shader: " + impl_->program->info_log());
+}
+
+GlslShader::~GlslShader() = default;
+
+void GlslShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {
+  std::lock_guard lock(impl_->mutex);
+  glsl::Program& p = *impl_->program;
+  auto m4 = [&](const char* name, const glm::mat4& m) { p.set_uniform(p.uniform_location(name), &m[0][0], 16); };
+  auto v3 = [&](const std::string& name, const glm::vec3& v) { p.set_uniform(p.uniform_location(name), &v.x, 3); };
+  auto f1 = [&](const std::string& name, float v) { p.set_uniform(p.uniform_location(name), &v, 1); };
+  auto i1 = [&](const std::string& name, int32_t v) { p.set_uniform(p.uniform_location(name), &v, 1); };
+  m4("MVP", state.P * state.V * state.M);
+  m4("M", state.M);
+  m4("Mnormal", glm::transpose(state.Minv));
+  const int n = int(std::min<size_t>(state.lights.size(), kMaxLights));
+  i1("nLights", n);
+  for (int i = 0; i < n; ++i) {
+    const Light& l = state.lights[size_t(i)];
+    const std::string s = "lights[" + std::to_string(i) + "].";
+    p.set_uniform(p.uniform_location(s + "wLightPos"), &l.wLightPos.x, 4);
+    v3(s + "La", l.La);
+    v3(s + "Le", l.Le);
+    v3(s + "attenuation", l.attenuation);
+    v3(s + "spotDirection", l.spot_direction);
+    f1(s + "spotCosCutoff", l.spot_cos_cutoff);
+    f1(s + "spotExponent", l.spot_exponent);
+  }
+  const Material m = state.material ? *state.material : Material{};
+  v3("ka", m.ka);
+  v3("kd", m.kd);
+  v3("ks", m.ks);
+  v3("emission", m.emission);
+  f1("shininess", m.shininess);
+  i1("phongSpecular", m.specular == Specular::Phong);
+  v3("wEye", state.wEye);
+  i1("textured", m.texture != nullptr);
+  i1("tex", 0);
+  i1("shadowMap", 1);
+  f1("bands", impl_->bands);
+  f1("silhouette", impl_->silhouette);
+  glsl::TextureBinding units[2];
+  units[0].texture_2d = m.texture.get();
+  units[0].sampler.min_filter = gpu::Filter::LinearMipmapLinear;
+  units[0].sampler.mag_filter = gpu::Filter::Linear;
+  // A 2D shadow map (a point light's cube of maps is not in the twin: it draws unshadowed).
+  const bool shadow = state.shadow_map && !state.cube_shadow && impl_->kind == Kind::Phong;
+  i1("shadowLight", shadow ? state.shadow_light : -1);
+  if (shadow) {
+    m4("lightVP", state.light_VP);
+    i1("pcf", state.pcf);
+    f1("texel", 1.0f / float(state.shadow_map->width()));
+    units[1].texture_2d = state.shadow_map;
+    // Outside the map is lit: the border (depth 1) passes every reference up to the far plane.
+    units[1].sampler = gpu::Sampler2DShadow{}.state;
+    units[1].sampler.wrap_s = units[1].sampler.wrap_t = gpu::Wrap::ClampToBorder;
+    units[1].sampler.border_color = glm::vec4(1.0f);
+  }
+  p.draw(ctx, geometry.layout(), state.pipeline, geometry.draw_call(), units);
+}
+
+std::shared_ptr<const Shader> glsl_shader_by_name(const std::string& name) {
+  static std::mutex m;
+  static std::map<std::string, std::shared_ptr<const Shader>> made;
+  std::lock_guard lock(m);
+  auto it = made.find(name);
+  if (it != made.end()) return it->second;
+  std::shared_ptr<const Shader> s;
+  if (name == "glsl-gouraud") s = std::make_shared<GlslShader>(GlslShader::Kind::Gouraud);
+  else if (name == "glsl-phong") s = std::make_shared<GlslShader>(GlslShader::Kind::Phong);
+  else if (name == "glsl-npr") s = std::make_shared<GlslShader>(GlslShader::Kind::Npr);
+  if (s) made[name] = s;
+  return s;
+}
+
+}  // namespace tessel::scene
