@@ -27,6 +27,7 @@ struct RunInputs {
   const TextureUnit* units = nullptr;
   int unit_count = 0;
   bool fragment = false;
+  const ir::TexOp* textures = nullptr;  // the running stage's texture instructions
 };
 
 // The operands of a texture instruction as rows of lanes (a missing operand is a row of 0),

@@ -10,6 +10,10 @@
 
 #include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
+#include <llvm/ExecutionEngine/Orc/ObjectTransformLayer.h>
+#include <llvm/Config/llvm-config.h>
+#include <llvm/Support/Host.h>
+#include <llvm/Support/MemoryBuffer.h>
 #include <llvm/IR/IRBuilder.h>
 #include <llvm/IR/Intrinsics.h>
 #include <llvm/IR/LLVMContext.h>
@@ -18,8 +22,13 @@
 #include <llvm/Passes/PassBuilder.h>
 #include <llvm/Support/TargetSelect.h>
 
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <mutex>
 
 namespace tessel::glsl {
@@ -30,8 +39,10 @@ using ir::Op;
 using ir::Reg;
 constexpr int L = ir::kLanes;
 
-extern "C" void tessel_glsl_texture(const ir::TexOp* op, const RunInputs* in, TexLanes* lanes) {
-  run_texture(*op, *in, *lanes);
+// The compiled code names a texture instruction by its index (no address of this process is
+// baked into it, so that it can be cached on disk and loaded by another process).
+extern "C" void tessel_glsl_texture(uint32_t op, const RunInputs* in, TexLanes* lanes) {
+  run_texture(in->textures[op], *in, *lanes);
 }
 extern "C" void tessel_glsl_lane_math(uint32_t op, uint32_t* t, const uint32_t* a, const uint32_t* b, const uint32_t* c,
                                       const uint32_t* e) {
@@ -332,10 +343,9 @@ class Codegen {
       put(TexLanes::kDy + k, t.dy[k]);
       put(TexLanes::kOffset + k, t.offset_reg[k]);
     }
-    auto* fty = llvm::FunctionType::get(b_.getVoidTy(), {ptr_, ptr_, ptr_}, false);
+    auto* fty = llvm::FunctionType::get(b_.getVoidTy(), {i32_, ptr_, ptr_}, false);
     llvm::FunctionCallee f = m_.getOrInsertFunction("tessel_glsl_texture", fty);
-    llvm::Value* op = b_.CreateIntToPtr(b_.getInt64(reinterpret_cast<uint64_t>(&t)), ptr_);
-    b_.CreateCall(f, {op, rin_, tex_lanes_});
+    b_.CreateCall(f, {b_.getInt32(i.imm), rin_, tex_lanes_});
     for (int k = 0; k < 4; ++k)
       if (t.dst[k] != ir::TexOp::kNone) store(t.dst[k], b_.CreateLoad(vi_, row(TexLanes::kRows + k)));
   }
@@ -543,12 +553,180 @@ class Codegen {
   }
 };
 
+// --- the disk cache ------------------------------------------------------------------------
+
+// Two FNV-1a hashes (different offsets) over the program's IR and interface and the machine.
+struct Hasher {
+  uint64_t a = 14695981039346656037ull, b = 0x84222325cbf29ce4ull;
+  void bytes(const void* p, size_t n) {
+    const auto* c = static_cast<const unsigned char*>(p);
+    for (size_t i = 0; i < n; ++i) {
+      a = (a ^ c[i]) * 1099511628211ull;
+      b = (b ^ c[i]) * 0x100000001b3ull + 0x9e3779b97f4a7c15ull;
+    }
+  }
+  void u32(uint32_t v) { bytes(&v, 4); }
+  void str(const std::string& s) {
+    u32(uint32_t(s.size()));
+    bytes(s.data(), s.size());
+  }
+  void block(const ir::Block& bl) {
+    u32(uint32_t(bl.size()));
+    for (const ir::Node& n : bl) {
+      u32(uint32_t(n.kind));
+      u32(n.cond);
+      u32(uint32_t(n.code.size()));
+      for (const Inst& i : n.code) {
+        u32(uint32_t(i.op));
+        u32(i.dst), u32(i.a), u32(i.b), u32(i.c), u32(i.d), u32(i.imm);
+      }
+      block(n.a);
+      block(n.b);
+    }
+  }
+  void stage(const ir::Stage& st, const StageIO& io) {
+    block(st.body);
+    u32(st.registers);
+    for (const auto* list : {&st.constants, &st.uniforms, &st.variables}) {
+      u32(uint32_t(list->size()));
+      for (const auto& [r, v] : *list) u32(r), u32(v);
+    }
+    u32(uint32_t(st.textures.size()));
+    for (const ir::TexOp& t : st.textures) {
+      u32(uint32_t(t.kind)), u32(uint32_t(t.dim)), u32(t.array), u32(t.shadow), u32(t.proj);
+      u32(t.has_lod), u32(t.has_bias), u32(t.has_grad), u32(uint32_t(t.sampler)), u32(uint32_t(t.coords));
+      for (Reg r : t.coord) u32(r);
+      u32(t.ref), u32(t.lod);
+      for (int k = 0; k < 3; ++k) u32(t.dx[k]), u32(t.dy[k]), u32(uint32_t(t.offset[k])), u32(t.offset_reg[k]);
+      for (Reg r : t.dst) u32(r);
+      u32(uint32_t(t.result));
+    }
+    for (const auto* list : {&io.in, &io.out, &io.in_mask}) {
+      u32(uint32_t(list->size()));
+      for (const auto& [r, off] : *list) u32(r), u32(off);
+    }
+  }
+};
+
+// What a cached object was made for: the code generator's version, this format, the CPU.
+std::string host_id() {
+  std::string id = std::string("tessel-jit-2 llvm-") + LLVM_VERSION_STRING + " " + llvm::sys::getHostCPUName().str();
+  llvm::StringMap<bool> features;
+  if (llvm::sys::getHostCPUFeatures(features)) {
+    std::vector<std::string> on;
+    for (const auto& f : features)
+      if (f.second) on.push_back(f.first().str());
+    std::sort(on.begin(), on.end());
+    for (const auto& f : on) id += " +" + f;
+  }
+  return id;
+}
+
+std::string cache_dir() {
+  if (const char* off = std::getenv("TESSEL_SHADER_CACHE"); off && std::string(off) == "0") return {};
+  if (const char* d = std::getenv("TESSEL_SHADER_CACHE_DIR"); d && *d) return d;
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::string(x) + "/tessel";
+  if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.cache/tessel";
+  return {};
+}
+
+constexpr char kMagic[8] = {'T', 'S', 'L', 'J', 'I', 'T', '0', '2'};
+
+uint64_t checksum(const std::string& s) {
+  Hasher h;
+  h.bytes(s.data(), s.size());
+  return h.a ^ (h.b << 1);
+}
+
+// The object code cached under `key`, if a file there is whole and was made for this machine.
+bool cache_read(const std::string& path, const std::string& host, std::string& object) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string f = ss.str();
+  size_t at = 0;
+  auto take = [&](void* p, size_t n) {
+    if (at + n > f.size()) return false;
+    std::memcpy(p, f.data() + at, n);
+    at += n;
+    return true;
+  };
+  char magic[8];
+  uint32_t host_len = 0;
+  uint64_t size = 0, sum = 0;
+  if (!take(magic, 8) || std::memcmp(magic, kMagic, 8) != 0 || !take(&host_len, 4) || host_len > 65536) return false;
+  if (at + host_len > f.size() || f.compare(at, host_len, host) != 0 || host_len != host.size()) return false;
+  at += host_len;
+  if (!take(&size, 8) || !take(&sum, 8) || size != f.size() - at) return false;
+  object = f.substr(at);
+  return checksum(object) == sum;
+}
+
+void cache_write(const std::string& path, const std::string& host, const std::string& object) {
+  std::error_code ec;
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+  if (ec) return;
+  const std::string tmp = path + ".tmp" + std::to_string(uint64_t(reinterpret_cast<uintptr_t>(&object)));
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    const uint32_t host_len = uint32_t(host.size());
+    const uint64_t size = object.size(), sum = checksum(object);
+    out.write(kMagic, 8);
+    out.write(reinterpret_cast<const char*>(&host_len), 4);
+    out.write(host.data(), std::streamsize(host.size()));
+    out.write(reinterpret_cast<const char*>(&size), 8);
+    out.write(reinterpret_cast<const char*>(&sum), 8);
+    out.write(object.data(), std::streamsize(object.size()));
+    if (!out) {
+      std::filesystem::remove(tmp, ec);
+      return;
+    }
+  }
+  std::filesystem::rename(tmp, path, ec);  // atomic: a reader sees the old file or the whole new one
+  if (ec) std::filesystem::remove(tmp, ec);
+}
+
 class LlvmCode final : public JitCode {
  public:
   std::unique_ptr<llvm::orc::LLJIT> jit;
   StageFn fns[2] = {nullptr, nullptr};
   StageFn function(int stage) const override { return fns[stage]; }
 };
+
+}  // namespace
+
+namespace {
+
+// A JIT with the two helper functions and memset/memcpy from this process.
+llvm::Expected<std::unique_ptr<llvm::orc::LLJIT>> make_jit(llvm::orc::JITTargetMachineBuilder jtmb) {
+  auto jit = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(std::move(jtmb)).create();
+  if (!jit) return jit.takeError();
+  auto& es = (*jit)->getExecutionSession();
+  llvm::orc::SymbolMap syms;
+  syms[es.intern("tessel_glsl_texture")] = llvm::JITEvaluatedSymbol(llvm::pointerToJITTargetAddress(&tessel_glsl_texture),
+                                                                     llvm::JITSymbolFlags::Exported);
+  syms[es.intern("tessel_glsl_lane_math")] = llvm::JITEvaluatedSymbol(
+      llvm::pointerToJITTargetAddress(&tessel_glsl_lane_math), llvm::JITSymbolFlags::Exported);
+  if (auto e = (*jit)->getMainJITDylib().define(llvm::orc::absoluteSymbols(syms))) return e;
+  auto process =
+      llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess((*jit)->getDataLayout().getGlobalPrefix());
+  if (!process) return process.takeError();
+  (*jit)->getMainJITDylib().addGenerator(std::move(*process));
+  return jit;
+}
+
+bool find_functions(LlvmCode& code) {
+  for (int s = 0; s < 2; ++s) {
+    auto sym = code.jit->lookup(s == 0 ? "vertex" : "fragment");
+    if (!sym) {
+      llvm::consumeError(sym.takeError());
+      return false;
+    }
+    code.fns[s] = sym->toPtr<StageFn>();
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -559,6 +737,38 @@ std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, co
     if (error) *error = e;
     return nullptr;
   };
+  auto jtmb = llvm::orc::JITTargetMachineBuilder::detectHost();
+  if (!jtmb) return fail("no native target");
+  jtmb->setCodeGenOptLevel(llvm::CodeGenOpt::Default);
+
+  // The disk cache: the key covers the IR of both stages, their interfaces and the machine.
+  const std::string dir = cache_dir();
+  const std::string host = dir.empty() ? std::string() : host_id();
+  std::string path;
+  if (!dir.empty()) {
+    Hasher h;
+    h.str(host);
+    h.stage(vs, vio);
+    h.stage(fs, fio);
+    char name[40];
+    std::snprintf(name, sizeof name, "%016llx%016llx.o", (unsigned long long)h.a, (unsigned long long)h.b);
+    path = dir + "/glsl/" + name;
+    std::string object;
+    if (cache_read(path, host, object)) {
+      auto jit = make_jit(*jtmb);
+      if (jit) {
+        auto code = std::make_unique<LlvmCode>();
+        code->jit = std::move(*jit);
+        code->from_cache = true;
+        if (!code->jit->addObjectFile(llvm::MemoryBuffer::getMemBufferCopy(object, path)) && find_functions(*code))
+          return code;
+      } else {
+        llvm::consumeError(jit.takeError());
+      }
+      // A file that does not load is ignored: the program is compiled again.
+    }
+  }
+
   auto ctx = std::make_unique<llvm::LLVMContext>();
   auto mod = std::make_unique<llvm::Module>("tessel_glsl", *ctx);
   Codegen(*ctx, *mod, vs, vio).build("vertex");
@@ -566,10 +776,6 @@ std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, co
   std::string verify;
   llvm::raw_string_ostream vos(verify);
   if (llvm::verifyModule(*mod, &vos)) return fail("internal: invalid code: " + vos.str());
-
-  auto jtmb = llvm::orc::JITTargetMachineBuilder::detectHost();
-  if (!jtmb) return fail("no native target");
-  jtmb->setCodeGenOptLevel(llvm::CodeGenOpt::Default);
   auto tm = jtmb->createTargetMachine();
   if (!tm) return fail("no target machine");
   mod->setDataLayout((*tm)->createDataLayout());
@@ -589,30 +795,23 @@ std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, co
   }
   // TESSEL_GLSL_DUMP=1 prints the optimized LLVM IR of each program on stderr.
   if (const char* dump = std::getenv("TESSEL_GLSL_DUMP"); dump && *dump == '1') mod->print(llvm::errs(), nullptr);
-  auto jit = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(std::move(*jtmb)).create();
+  auto jit = make_jit(*jtmb);
   if (!jit) return fail("cannot create the JIT: " + llvm::toString(jit.takeError()));
   auto code = std::make_unique<LlvmCode>();
   code->jit = std::move(*jit);
-  llvm::orc::SymbolMap syms;
-  auto& es = code->jit->getExecutionSession();
-  syms[es.intern("tessel_glsl_texture")] = llvm::JITEvaluatedSymbol(llvm::pointerToJITTargetAddress(&tessel_glsl_texture),
-                                                                     llvm::JITSymbolFlags::Exported);
-  syms[es.intern("tessel_glsl_lane_math")] = llvm::JITEvaluatedSymbol(
-      llvm::pointerToJITTargetAddress(&tessel_glsl_lane_math), llvm::JITSymbolFlags::Exported);
-  if (auto e = code->jit->getMainJITDylib().define(llvm::orc::absoluteSymbols(syms)))
-    return fail(llvm::toString(std::move(e)));
-  // memset and memcpy, which LLVM emits for large zeroings and copies, from this process.
-  auto process = llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess(
-      code->jit->getDataLayout().getGlobalPrefix());
-  if (!process) return fail(llvm::toString(process.takeError()));
-  code->jit->getMainJITDylib().addGenerator(std::move(*process));
+  // The object file as it is made, for the cache.
+  std::string object;
+  if (!path.empty())
+    code->jit->getObjTransformLayer().setTransform(
+        [&object](std::unique_ptr<llvm::MemoryBuffer> obj) -> llvm::Expected<std::unique_ptr<llvm::MemoryBuffer>> {
+          object = obj->getBuffer().str();
+          return obj;
+        });
   if (auto e = code->jit->addIRModule(llvm::orc::ThreadSafeModule(std::move(mod), std::move(ctx))))
     return fail(llvm::toString(std::move(e)));
-  for (int s = 0; s < 2; ++s) {
-    auto sym = code->jit->lookup(s == 0 ? "vertex" : "fragment");
-    if (!sym) return fail(llvm::toString(sym.takeError()));
-    code->fns[s] = sym->toPtr<StageFn>();
-  }
+  if (!find_functions(*code)) return fail("the compiled functions are missing");
+  code->jit->getObjTransformLayer().setTransform(nullptr);
+  if (!path.empty() && !object.empty()) cache_write(path, host, object);
   return code;
 }
 

@@ -32,9 +32,14 @@ class JitCode {
  public:
   virtual ~JitCode() = default;
   virtual StageFn function(int stage) const = 0;  // 0 vertex, 1 fragment
+  bool from_cache = false;  // loaded from the disk cache rather than compiled
 };
 
-// Compiles both stages; nullptr (and *error) when LLVM cannot.
+// Compiles both stages; nullptr (and *error) when LLVM cannot. Compiled code is kept in a disk
+// cache, as Mesa keeps its shader cache: $TESSEL_SHADER_CACHE_DIR, else
+// $XDG_CACHE_HOME/tessel, else ~/.cache/tessel (TESSEL_SHADER_CACHE=0 turns it off). A file is
+// used only when its header, size, checksum and the machine it was made for all match.
+
 std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, const ir::Stage& fs, const StageIO& fio,
                                      std::string* error);
 

@@ -121,6 +121,7 @@ class Bound final : public gpu::RuntimeShader {
 
   RunInputs inputs(bool fragment) const {
     RunInputs in;
+    in.textures = fragment ? l_->fs.textures.data() : l_->vs.textures.data();
     in.uniforms = uniforms_.data();
     in.uniform_words = uint32_t(uniforms_.size());
     in.units = units_.data();
@@ -511,6 +512,8 @@ void Program::set_compat_matrices(const glm::mat4& mv, const glm::mat4& proj) {
 }
 
 bool Program::ok() const { return impl_->ok; }
+bool Program::native() const { return impl_->ok && impl_->linked->jit != nullptr; }
+bool Program::from_cache() const { return native() && impl_->linked->jit->from_cache; }
 const std::string& Program::info_log() const { return impl_->log; }
 const std::vector<Variable>& Program::attributes() const { return impl_->attributes; }
 const std::vector<Variable>& Program::uniforms() const { return impl_->uniforms; }

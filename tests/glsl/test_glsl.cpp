@@ -1,7 +1,10 @@
 // The glsl layer's own rules: info logs, link errors, reflection, uniforms, bad input.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <unistd.h>
 
 #include "tessel_runner.hpp"
 
@@ -159,6 +162,48 @@ TEST(Glsl, DrawsAndIsIdenticalForAnyThreadCount) {
   const float* px = &a.outputs[0][size_t((11 * 37 + 18) * 4)];
   EXPECT_NEAR(px[0], 18.5f / 37.0f, 1e-5f);
   EXPECT_NEAR(px[1], 11.5f / 23.0f, 1e-5f);
+}
+
+// The disk cache: a program's second link loads its code; the images are the same; a damaged
+// or truncated file is ignored and the program compiled again.
+TEST(Glsl, DiskCacheOfCompiledPrograms) {
+  const std::string dir = ::testing::TempDir() + "tessel_cache_" + std::to_string(::getpid());
+  std::filesystem::remove_all(dir);
+  ::setenv("TESSEL_SHADER_CACHE_DIR", dir.c_str(), 1);
+  const std::string fs =
+      "#version 330\nin vec2 p; out vec4 c; uniform float k; void main() { c = vec4(sin(p.x * k), p.y, 0.5, 1.0); }";
+  auto link = [&] {
+    auto v = Shader::compile(Stage::Vertex, kVs);
+    auto f = Shader::compile(Stage::Fragment, fs);
+    return Program::link(*v, *f);
+  };
+  auto first = link();
+  ASSERT_TRUE(first->ok());
+  ASSERT_TRUE(first->native());
+  EXPECT_FALSE(first->from_cache());
+  auto second = link();
+  EXPECT_TRUE(second->from_cache());
+  const std::vector<float> a = draw(fs), b = draw(fs);
+  EXPECT_EQ(a, b);
+  // Damage every cached file: the next link compiles again (and rewrites the file).
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    if (!e.is_regular_file()) continue;
+    std::fstream f(e.path(), std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(std::streamoff(e.file_size() / 2));
+    f.put('\x5a');
+    f.put('\xa5');
+  }
+  auto third = link();
+  ASSERT_TRUE(third->ok());
+  EXPECT_FALSE(third->from_cache());
+  EXPECT_EQ(draw(fs), a);
+  // Truncated files too.
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) std::filesystem::resize_file(e.path(), e.file_size() / 3);
+  auto fourth = link();
+  EXPECT_FALSE(fourth->from_cache());
+  ::unsetenv("TESSEL_SHADER_CACHE_DIR");
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Glsl, BadInputGetsALogOrADefinedResult) {

@@ -101,17 +101,29 @@ TEST_F(ImageFiles, GreyAndRgbExpandToRgba) {
   EXPECT_EQ(c.pixels, (std::vector<uint8_t>{1, 2, 3, 255, 4, 5, 6, 255}));
 }
 
-TEST_F(ImageFiles, WriteToMissingFolderThrowsAndLeavesNothing) {
+// The folders of the path are made, as a user of `-o out/new/dir/x.png` expects.
+TEST_F(ImageFiles, WriteToMissingFolderMakesIt) {
   const std::vector<uint8_t> px = sample_pixels();
   const std::string p = path("no/such/folder/x.png");
+  write_png(p, 3, 2, 4, px.data());
+  EXPECT_TRUE(fs::exists(p));
+  EXPECT_EQ(load_image(p).width, 3);
+}
+
+// A folder that cannot be made (a file is in its way) is an error naming the path, and
+// nothing is left behind.
+TEST_F(ImageFiles, WriteWhereNoFolderCanBeMadeThrowsAndLeavesNothing) {
+  const std::vector<uint8_t> px = sample_pixels();
+  { std::ofstream(path("blocker")) << "a file, not a folder"; }
+  const std::string p = path("blocker/sub/x.png");
   try {
     write_png(p, 3, 2, 4, px.data());
     FAIL() << "no exception";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("blocker"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(p));
-  EXPECT_TRUE(files().empty());
+  EXPECT_EQ(files().size(), 1u);  // the blocker alone
 }
 
 TEST_F(ImageFiles, FailedRenameRemovesTheTemporary) {

@@ -102,6 +102,10 @@ class Program {
 
   bool ok() const;
   const std::string& info_log() const;
+  // Whether the program runs as native code (LLVM), and whether that code came from the disk
+  // cache of compiled programs instead of being compiled (jit.hpp says where the cache is).
+  bool native() const;
+  bool from_cache() const;
 
   const std::vector<Variable>& attributes() const;  // active, user-declared
   const std::vector<Variable>& uniforms() const;    // active, user-declared (gl_ state excluded)
