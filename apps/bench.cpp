@@ -99,6 +99,53 @@ Run run_tessel_fixed(const scenes::Scene& s, int threads, int frames, int warmup
   return r;
 }
 
+// What both ways of drawing a scene on Tessel share: the target, the mesh and per-instance
+// buffers with their layout (attributes 0-2, and 3-4 per instance when instanced), the
+// mipmapped texture of the textured scene, and the pipeline state.
+struct SceneTargets {
+  Texture2D color, depth;
+  Framebuffer fb;
+  Context ctx;
+  Buffer vbo, ibo, instances;
+  VertexLayout layout;
+  std::unique_ptr<Texture2D> tex;
+  RenderState state;
+  bool instanced;
+
+  static std::vector<float> per_instance(const scenes::Scene& s) {
+    std::vector<float> v;
+    for (const scenes::Draw& d : s.draws) v.insert(v.end(), {d.offset.x, d.offset.y, d.offset.z, d.albedo.x, d.albedo.y, d.albedo.z});
+    return v;
+  }
+  SceneTargets(const scenes::Scene& s, int threads, bool want_instanced)
+      : color(Format::RGBA8, s.width, s.height),
+        depth(Format::Depth24Stencil8, s.width, s.height),
+        fb(&color, &depth),
+        ctx(threads),
+        vbo(s.mesh.vertices),
+        ibo(s.mesh.indices),
+        instances(per_instance(s)),
+        instanced(want_instanced && s.instanceable) {
+    ctx.bind_framebuffer(&fb);
+    const uint32_t stride = scenes::Mesh::kStride * sizeof(float);
+    layout.attrib(0, vbo, 3, AttribType::F32, stride, 0);
+    layout.attrib(1, vbo, 3, AttribType::F32, stride, 3 * sizeof(float));
+    layout.attrib(2, vbo, 2, AttribType::F32, stride, 6 * sizeof(float));
+    if (instanced) {
+      layout.attrib(3, instances, 3, AttribType::F32, 6 * sizeof(float), 0, false, 1);
+      layout.attrib(4, instances, 3, AttribType::F32, 6 * sizeof(float), 3 * sizeof(float), false, 1);
+    }
+    if (s.textured) {
+      tex = std::make_unique<Texture2D>(Format::RGBA8, scenes::kTextureSize, scenes::kTextureSize, 0);
+      const auto px = scenes::texture_rgba8();
+      tex->upload_rgba8(0, px.data(), px.size());
+      tex->generate_mipmaps();
+    }
+    state.depth_test = true;
+    state.cull = CullMode::Back;
+  }
+};
+
 // One scene on Tessel with the peer's own GLSL (scenes::scene_*_glsl) through tessel::glsl:
 // the same program text, uniforms and draws as llvmpipe gets.
 Run run_tessel_glsl(const scenes::Scene& s, int threads, int frames, int warmup, bool instanced) {
@@ -115,39 +162,12 @@ Run run_tessel_glsl(const scenes::Scene& s, int threads, int frames, int warmup,
   if (!prog->ok()) throw std::runtime_error("GLSL link failed: " + prog->info_log());
   r.compile_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 
-  Texture2D color(Format::RGBA8, s.width, s.height);
-  Texture2D depth(Format::Depth24Stencil8, s.width, s.height);
-  Framebuffer fb(&color, &depth);
-  Context ctx(threads);
-  ctx.bind_framebuffer(&fb);
-  const Buffer vbo(s.mesh.vertices), ibo(s.mesh.indices);
-  VertexLayout layout;
-  const uint32_t stride = scenes::Mesh::kStride * sizeof(float);
-  layout.attrib(0, vbo, 3, AttribType::F32, stride, 0);
-  layout.attrib(1, vbo, 3, AttribType::F32, stride, 3 * sizeof(float));
-  layout.attrib(2, vbo, 2, AttribType::F32, stride, 6 * sizeof(float));
-  std::vector<float> per_instance;
-  for (const scenes::Draw& d : s.draws)
-    per_instance.insert(per_instance.end(), {d.offset.x, d.offset.y, d.offset.z, d.albedo.x, d.albedo.y, d.albedo.z});
-  const Buffer instances(per_instance);
-  if (instanced) {
-    layout.attrib(3, instances, 3, AttribType::F32, 6 * sizeof(float), 0, false, 1);
-    layout.attrib(4, instances, 3, AttribType::F32, 6 * sizeof(float), 3 * sizeof(float), false, 1);
-  }
-  std::unique_ptr<Texture2D> tex;
+  SceneTargets g(s, threads, instanced);
+  Context& ctx = g.ctx;
   glsl::TextureBinding unit;
-  if (textured) {
-    tex = std::make_unique<Texture2D>(Format::RGBA8, scenes::kTextureSize, scenes::kTextureSize, 0);
-    const auto px = scenes::texture_rgba8();
-    tex->upload_rgba8(0, px.data(), px.size());
-    tex->generate_mipmaps();
-    unit.texture_2d = tex.get();
-    unit.sampler.min_filter = Filter::LinearMipmapLinear;
-    unit.sampler.mag_filter = Filter::Linear;
-  }
-  RenderState state;
-  state.depth_test = true;
-  state.cull = CullMode::Back;
+  unit.texture_2d = g.tex.get();
+  unit.sampler.min_filter = Filter::LinearMipmapLinear;
+  unit.sampler.mag_filter = Filter::Linear;
   const glm::mat4 viewproj = s.projection * s.view;
   prog->set_uniform(prog->uniform_location("u_viewproj"), &viewproj[0][0], 16);
   prog->set_uniform(prog->uniform_location("u_light"), &s.light.x, 3);
@@ -160,16 +180,16 @@ Run run_tessel_glsl(const scenes::Scene& s, int threads, int frames, int warmup,
     ctx.clear({.color = {0, 0, 0, 1}, .depth = 1.0f});
     if (instanced) {
       const scenes::Draw& d = s.draws.front();
-      prog->draw(ctx, layout, state,
-                 {.topology = Topology::Triangles, .first = d.first_index, .count = d.index_count, .index_buffer = &ibo,
+      prog->draw(ctx, g.layout, g.state,
+                 {.topology = Topology::Triangles, .first = d.first_index, .count = d.index_count, .index_buffer = &g.ibo,
                   .instance_count = uint32_t(s.draws.size())},
                  units);
     } else {
       for (const scenes::Draw& d : s.draws) {
         prog->set_uniform(loc_offset, &d.offset.x, 3);
         prog->set_uniform(loc_albedo, &d.albedo.x, 3);
-        prog->draw(ctx, layout, state,
-                   {.topology = Topology::Triangles, .first = d.first_index, .count = d.index_count, .index_buffer = &ibo},
+        prog->draw(ctx, g.layout, g.state,
+                   {.topology = Topology::Triangles, .first = d.first_index, .count = d.index_count, .index_buffer = &g.ibo},
                    units);
       }
     }
@@ -186,7 +206,7 @@ Run run_tessel_glsl(const scenes::Scene& s, int threads, int frames, int warmup,
   }
   r.ms_median = median(r.ms);
   r.fragments = ctx.stats().fragments_shaded / uint64_t(std::max(1, frames));
-  r.rgba = read_rgba8(color);
+  r.rgba = read_rgba8(g.color);
   r.peak_rss_mb = peak_rss_mb();
   return r;
 }
@@ -197,40 +217,13 @@ Run run_tessel(const scenes::Scene& s, int threads, int frames, int warmup, bool
   if (glsl_shaders) return run_tessel_glsl(s, threads, frames, warmup, instanced);
   reset_peak_rss();
   Run r = start_run("tessel", s, threads);
-
-  Texture2D color(Format::RGBA8, s.width, s.height);
-  Texture2D depth(Format::Depth24Stencil8, s.width, s.height);
-  Framebuffer fb(&color, &depth);
-  Context ctx(threads);
-  ctx.bind_framebuffer(&fb);
-
-  const Buffer vbo(s.mesh.vertices), ibo(s.mesh.indices);
-  VertexLayout layout;
-  const uint32_t stride = scenes::Mesh::kStride * sizeof(float);
-  layout.attrib(0, vbo, 3, AttribType::F32, stride, 0);
-  layout.attrib(1, vbo, 3, AttribType::F32, stride, 3 * sizeof(float));
-  layout.attrib(2, vbo, 2, AttribType::F32, stride, 6 * sizeof(float));
-  instanced = instanced && s.instanceable;
-  std::vector<float> per_instance;
-  for (const scenes::Draw& d : s.draws)
-    per_instance.insert(per_instance.end(), {d.offset.x, d.offset.y, d.offset.z, d.albedo.x, d.albedo.y, d.albedo.z});
-  const Buffer instances(per_instance);
-  if (instanced) {
-    layout.attrib(3, instances, 3, AttribType::F32, 6 * sizeof(float), 0, false, 1);
-    layout.attrib(4, instances, 3, AttribType::F32, 6 * sizeof(float), 3 * sizeof(float), false, 1);
-  }
-
-  std::unique_ptr<Texture2D> tex;
-  if (s.textured) {
-    tex = std::make_unique<Texture2D>(Format::RGBA8, scenes::kTextureSize, scenes::kTextureSize, 0);
-    const auto px = scenes::texture_rgba8();
-    tex->upload_rgba8(0, px.data(), px.size());
-    tex->generate_mipmaps();
-  }
-
-  RenderState state;
-  state.depth_test = true;
-  state.cull = CullMode::Back;
+  SceneTargets g(s, threads, instanced);
+  Context& ctx = g.ctx;
+  instanced = g.instanced;
+  const VertexLayout& layout = g.layout;
+  const RenderState& state = g.state;
+  const Buffer& ibo = g.ibo;
+  const std::unique_ptr<Texture2D>& tex = g.tex;
 
   auto frame = [&]<bool T, bool I>() {
     ctx.clear({.color = {0, 0, 0, 1}, .depth = 1.0f});
@@ -272,7 +265,7 @@ Run run_tessel(const scenes::Scene& s, int threads, int frames, int warmup, bool
   }
   r.ms_median = median(r.ms);
   r.fragments = ctx.stats().fragments_shaded / uint64_t(std::max(1, frames));
-  r.rgba = read_rgba8(color);
+  r.rgba = read_rgba8(g.color);
   r.peak_rss_mb = peak_rss_mb();
   return r;
 }
