@@ -362,6 +362,102 @@ TEST(GlslMesa, TextureNearestAndLinear) {
   }
 }
 
+TEST(GlslMesa, TextureFunctionsOn2D) {
+  // Mipmapped linear sampling with explicit LOD, gradients, projection, bias and offsets.
+  const char* bodies[] = {
+      "c = textureLod(tex, p * 3.0 - 1.0, t * 3.0);",
+      "c = textureGrad(tex, p, vec2(t * 0.5, 0.0), vec2(0.0, 0.25));",
+      "c = textureProj(tex, vec3(p * 2.0, 2.0)) + textureProj(tex, vec4(p, 0.0, 1.0));",
+      "c = texelFetch(tex, ivec2(i % 4, i / 64), 1) + vec4(textureSize(tex, 2), 0.0, 0.0);",
+  };
+  for (const char* body : bodies) {
+    Case c{body, "uniform sampler2D tex;", body, {1e-5f, 1e-5f}};
+    reference::GlslTexture tx;
+    tx.width = 16;
+    tx.height = 16;
+    tx.data = checker(16, 16);
+    tx.mipmaps = true;
+    tx.min_filter = 0x2703;  // GL_LINEAR_MIPMAP_LINEAR
+    tx.mag_filter = 0x2601;
+    c.textures = {tx};
+    c.uniforms = {{"tex", {}, {0}}};
+    SCOPED_TRACE(body);
+    run_case(c);
+  }
+}
+
+TEST(GlslMesa, ShadowAndCubeSamplers) {
+  {
+    Case c{"shadow", "uniform sampler2DShadow sm;", "float v = texture(sm, vec3(p, t)); c = vec4(v, texture(sm, vec3(p.yx, 0.5)), 0.0, 1.0);",
+           {1e-5f, 1e-5f}};
+    reference::GlslTexture tx;
+    tx.width = 8;
+    tx.height = 8;
+    tx.internal_format = 0x8CAC;  // GL_DEPTH_COMPONENT32F
+    for (int k = 0; k < 64; ++k) tx.data.push_back(float((k * 37) % 64) / 63.0f);
+    tx.compare = true;
+    tx.min_filter = tx.mag_filter = 0x2601;
+    tx.wrap = 0x812F;
+    c.textures = {tx};
+    c.uniforms = {{"sm", {}, {0}}};
+    SCOPED_TRACE("sampler2DShadow");
+    run_case(c);
+  }
+  {
+    // Directions with one clearly largest axis (the face of a tie is the implementation's).
+    Case c{"cube", "uniform samplerCube cm;", "c = texture(cm, vec3(p * 2.0 - 1.0, 1.7)) + textureLod(cm, vec3(1.0, p.yx - 0.5), 0.0) +"
+           " 2.0 * texture(cm, vec3(p.x - 0.5, -1.3, p.y - 0.5));",
+           {1e-5f, 1e-5f}};
+    reference::GlslTexture tx;
+    tx.target = 0x8513;  // GL_TEXTURE_CUBE_MAP
+    tx.width = tx.height = 4;
+    for (int f = 0; f < 6; ++f)
+      for (int k = 0; k < 16; ++k) {
+        tx.data.push_back(float(f) / 5.0f);
+        tx.data.push_back(float(k % 4) / 3.0f);
+        tx.data.push_back(float(k / 4) / 3.0f);
+        tx.data.push_back(1.0f);
+      }
+    tx.min_filter = tx.mag_filter = 0x2600;
+    tx.wrap = 0x812F;
+    c.textures = {tx};
+    c.uniforms = {{"cm", {}, {0}}};
+    SCOPED_TRACE("samplerCube");
+    run_case(c);
+  }
+}
+
+// Flat integer varyings keep every bit (they never pass through a float plane), and
+// gl_FrontFacing, gl_FragCoord come from the rasterizer as in llvmpipe.
+TEST(GlslMesa, FlatIntegersAndBuiltinInputs) {
+  if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
+  reference::GlslDrawSpec spec;
+  spec.vertex = R"(#version 330
+layout(location = 0) in vec2 pos;
+layout(location = 1) in ivec2 bits;
+flat out ivec2 vbits;
+void main() { vbits = bits; gl_Position = vec4(pos, 0.0, 1.0); })";
+  spec.fragment = R"(#version 330
+flat in ivec2 vbits;
+out vec4 c;
+void main() {
+  c = vec4(float(vbits.x & 0xFFFF), float((vbits.x >> 16) & 0xFFFF), float(vbits.y & 0xFF),
+           (gl_FrontFacing ? 1.0 : 0.0) + gl_FragCoord.x * 0.001);
+})";
+  spec.attributes.push_back({"pos", 2, {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1}});
+  reference::GlslAttribute b{"bits", 2, {}, true, {}};
+  // 0x80000000 (the bits of -0.0) and a signalling-NaN pattern must survive.
+  for (int v = 0; v < 6; ++v) b.idata.insert(b.idata.end(), {int32_t(0x80000000u), int32_t(0x7f800001 + v)});
+  spec.attributes.push_back(b);
+  spec.count = 6;
+  const reference::GlslResult mesa = oracle()->run(spec);
+  ASSERT_TRUE(mesa.ok) << mesa.log;
+  const TesselResult ours = run_tessel(spec);
+  ASSERT_TRUE(ours.ok) << ours.log;
+  const Mismatch m = compare_floats(ours.outputs[0], mesa.outputs[0], spec.width, {0, 0});
+  EXPECT_EQ(m.count, 0) << m.first;
+}
+
 // A wrong result must fail: the comparison of a shader against a slightly different one.
 TEST(GlslMesa, ToleranceCatchesAWrongResult) {
   if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
