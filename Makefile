@@ -45,8 +45,8 @@ bench-peer: build
 # piglit's GLSL 1.10-3.30 shader_test files through tessel::glsl (docs/glsl.md has the counts).
 PIGLIT ?= /usr/lib/x86_64-linux-gnu/piglit
 piglit: configure
-	@dpkg-query -W piglit >/dev/null 2>&1 || sudo_cmd=$$( [ "$$(id -u)" -ne 0 ] && echo sudo ); \
-	  dpkg-query -W piglit >/dev/null 2>&1 || $$sudo_cmd apt-get install -y -qq --no-install-recommends piglit >/dev/null
+	@dpkg-query -W piglit >/dev/null 2>&1 || \
+	  $$([ "$$(id -u)" -ne 0 ] && echo sudo) apt-get install -y -qq --no-install-recommends piglit >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target tessel_piglit
 	@$(BUILD)/tests/tessel_piglit $(foreach v,1.10 1.20 1.30 1.40 1.50 3.30,$(wildcard $(PIGLIT)/tests/spec/glsl-$(v) $(PIGLIT)/generated_tests/spec/glsl-$(v)))
 

@@ -2,6 +2,8 @@
 // ir.hpp describes: `live` is the set of lanes that run a node.
 #include "interp.hpp"
 
+#include "tessel/gpu/format.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -62,36 +64,10 @@ uint32_t bit_reverse(uint32_t x) {
 }
 uint32_t field_mask(uint32_t bits) { return bits >= 32 ? ~0u : ((1u << bits) - 1u); }
 
-// IEEE half precision, round to nearest even (as F16C's vcvtps2ph with rounding mode 0).
-uint16_t to_half(float f) {
-  const uint32_t x = std::bit_cast<uint32_t>(f);
-  const uint32_t sign = (x >> 16) & 0x8000u;
-  const uint32_t abs = x & 0x7fffffffu;
-  if (abs >= 0x7f800000u) return uint16_t(sign | 0x7c00u | (abs > 0x7f800000u ? 0x200u | ((abs >> 13) & 0x3ffu) : 0u));
-  if (abs >= 0x477ff000u) return uint16_t(sign | 0x7c00u);  // rounds past the largest half: infinity
-  if (abs < 0x38800000u) {                                   // a half denormal (or zero)
-    // h = round(f / 2^-24) = round(m 2^(e - 126)) for the 24-bit significand m
-    const int shift = 126 - int(abs >> 23);
-    if (shift > 24) return uint16_t(sign);
-    const uint32_t m = (abs & 0x7fffffu) | 0x800000u;
-    uint32_t h = m >> shift;
-    const uint32_t rest = m & ((1u << shift) - 1u), half = 1u << (shift - 1);
-    if (rest > half || (rest == half && (h & 1u))) ++h;
-    return uint16_t(sign | h);
-  }
-  uint32_t h = ((abs - 0x38000000u) >> 13);
-  const uint32_t rest = abs & 0x1fffu;
-  if (rest > 0x1000u || (rest == 0x1000u && (h & 1u))) ++h;
-  return uint16_t(sign | h);
-}
-float from_half(uint16_t h) {
-  const uint32_t sign = uint32_t(h & 0x8000u) << 16, e = (h >> 10) & 0x1fu, m = h & 0x3ffu;
-  if (e == 0) return std::bit_cast<float>(sign) + (sign ? -1.0f : 1.0f) * std::ldexp(float(m), -24);
-  if (e == 31) return std::bit_cast<float>(sign | 0x7f800000u | (m << 13));
-  return std::bit_cast<float>(sign | ((e + 112) << 23) | (m << 13));
-}
-uint32_t pack_half(float a, float c) { return uint32_t(to_half(a)) | (uint32_t(to_half(c)) << 16); }
-float unpack_half(uint32_t h) { return from_half(uint16_t(h)); }
+// packHalf2x16 / unpackHalf2x16 with the gpu layer's conversions (round to nearest even,
+// as F16C's vcvtps2ph).
+uint32_t pack_half(float a, float c) { return uint32_t(gpu::float_to_half(a)) | (uint32_t(gpu::float_to_half(c)) << 16); }
+float unpack_half(uint32_t h) { return gpu::half_to_float(uint16_t(h)); }
 
 float fsign(float x) { return x > 0.0f ? 1.0f : x < 0.0f ? -1.0f : 0.0f; }
 float ffract(float x) { return x - std::floor(x); }
@@ -99,8 +75,8 @@ float fmod_glsl(float x, float y) { return x - y * std::floor(x / y); }
 
 }  // namespace
 
-// The operations that the JIT calls out for (transcendental functions, bit fields, halves,
-// wide products): one definition for both tiers, so that they give the same bits.
+// The operations that the JIT calls out for (bit fields, frexp, halves): one definition for
+// both tiers, so that they give the same bits.
 void lane_math(ir::Op op, uint32_t* t, const uint32_t* a, const uint32_t* bb, const uint32_t* c, const uint32_t* e) {
   auto each = [](uint32_t* out, auto&& fn) {
     for (int l = 0; l < L; ++l) out[l] = fn(l);
@@ -155,8 +131,6 @@ void lane_math(ir::Op op, uint32_t* t, const uint32_t* a, const uint32_t* bb, co
         }
         I2(UAddCarry, (x + y) < x ? 1u : 0u)
         I2(USubBorrow, x < y ? 1u : 0u)
-        I2(UMulHi, uint32_t((uint64_t(x) * y) >> 32))
-        I2(IMulHi, uint32_t((int64_t(s(x)) * s(y)) >> 32))
         case Op::PackHalf: each(t, [&](int l) { return pack_half(f(a[l]), f(bb[l])); });  break;
         case Op::UnpackHalfLo: each(t, [&](int l) { return u(unpack_half(a[l])); });  break;
         case Op::UnpackHalfHi: each(t, [&](int l) { return u(unpack_half(a[l] >> 16)); });  break;
@@ -245,13 +219,11 @@ class Runner {
       const uint32_t* c = r_[i.c].u;
       uint32_t t[L];
       switch (i.op) {
-        case Op::Const: each(d, [&](int) { return i.imm; }); break;
         case Op::Mov: std::memcpy(t, a, sizeof t); std::memcpy(d, t, sizeof t); break;
         case Op::Store:
           for (int l = 0; l < L; ++l)
             if ((live >> l) & 1) d[l] = a[l];
           break;
-        case Op::Uniform: each(d, [&](int) { return uniform(i.imm); }); break;
         case Op::UniformIndexed: each(t, [&](int l) { return uniform(i.imm + a[l]); }); std::memcpy(d, t, sizeof t); break;
         case Op::LoadIndexed:
           // b + a[l] stays within the variable (i.imm is its last register).
@@ -309,9 +281,6 @@ class Runner {
         I2(IMul, x * y)
         I2(IDiv, idiv(s(x), s(y)))
         I2(UDiv, udiv(x, y))
-        // GLSL leaves % undefined for negative operands; Mesa takes the remainder of the bits
-        // as unsigned, and so does Tessel.
-        I2(IMod, umod(x, y))
         I2(UMod, umod(x, y))
         I2(INeg, 0u - x)
         I2(IAbs, s(x) < 0 ? 0u - x : x)
@@ -355,8 +324,6 @@ class Runner {
         case Op::BitInsert:
         case Op::UAddCarry:
         case Op::USubBorrow:
-        case Op::UMulHi:
-        case Op::IMulHi:
         case Op::PackHalf:
         case Op::UnpackHalfLo:
         case Op::UnpackHalfHi:

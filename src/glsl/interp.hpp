@@ -39,7 +39,7 @@ struct TexLanes {
 };
 void run_texture(const ir::TexOp& op, const RunInputs& in, TexLanes& lanes);
 
-// One of the library operations (transcendentals, bit fields, halves, wide products) on
+// One of the library operations (bit fields, frexp/ldexp, halves, carries) on
 // sixteen lanes: t = op(a, b, c, e).
 void lane_math(ir::Op op, uint32_t* t, const uint32_t* a, const uint32_t* b, const uint32_t* c, const uint32_t* e);
 

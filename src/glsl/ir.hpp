@@ -30,14 +30,10 @@ inline constexpr uint32_t kMaxTotalLoopIterations = 1u << 20;
 using Reg = uint32_t;
 
 enum class Op : uint8_t {
-  // dst = imm (bits), broadcast
-  Const,
   // dst = a (whole)
   Mov,
   // dst = a in the lanes of the current mask, dst elsewhere
   Store,
-  // dst = uniform word imm, broadcast
-  Uniform,
   // dst = uniform word (imm + a[lane]); a is a clamped word offset
   UniformIndexed,
   // dst = register (b + a[lane])[lane]: a is a clamped component offset into a variable
@@ -53,11 +49,11 @@ enum class Op : uint8_t {
   FMod, FSqrt, FRsq, FLdexp, FFrexpMant, FFrexpExp,
   FLt, FLe, FGt, FGe, FEq, FNe, FIsNan, FIsInf,
   // integer (two's complement 32 bits); division and shifts are defined for every input
-  IAdd, ISub, IMul, IDiv, UDiv, IMod, UMod, INeg, IAbs, ISign, IMin, IMax, UMin, UMax,
+  IAdd, ISub, IMul, IDiv, UDiv, UMod, INeg, IAbs, ISign, IMin, IMax, UMin, UMax,
   And, Or, Xor, Not, Shl, ShrA, ShrL,
   ILt, ILe, IGt, IGe, ULt, ULe, UGt, UGe, IEq, INe,
   BitCount, FindLSB, IFindMSB, UFindMSB, BitReverse, IBitExtract, UBitExtract, BitInsert,
-  UAddCarry, USubBorrow, UMulHi, IMulHi,
+  UAddCarry, USubBorrow,
   // conversions
   I2F, U2F, F2I, F2U, PackHalf, UnpackHalfLo, UnpackHalfHi,
   // derivatives inside each 2x2 quad (fragment stage)

@@ -83,12 +83,7 @@ class Codegen {
     plan_registers();
     // Constants, uniforms (broadcast), variables zeroed, inputs copied in.
     for (const auto& [r, bits] : st_.constants) store(r, splat(bits));
-    for (const auto& [r, w] : st_.uniforms) {
-      llvm::Value* idx = b_.CreateSelect(b_.CreateICmpULT(b_.getInt32(w), words_), b_.getInt32(w),
-                                         b_.CreateSub(words_, b_.getInt32(1)));
-      llvm::Value* v = b_.CreateLoad(i32_, b_.CreateGEP(i32_, uniforms_, idx));
-      store(r, b_.CreateVectorSplat(L, v));
-    }
+    for (const auto& [r, w] : st_.uniforms) store(r, b_.CreateVectorSplat(L, uniform_word(b_.getInt32(w))));
     for (const auto& [r, n] : st_.variables)
       for (uint32_t k = 0; k < n; ++k) store(r + k, llvm::Constant::getNullValue(vi_));
     for (const auto& [r, off] : io_.in) store(r, b_.CreateAlignedLoad(vi_, byte_ptr(lanes_, off), llvm::MaybeAlign(4)));
@@ -168,7 +163,6 @@ class Codegen {
     for (auto& [lo, hi] : ranges)
       for (const auto& [r, n] : st_.variables)
         if (lo >= r && lo < r + n) lo = std::min(lo, r), hi = std::max(hi, r + n - 1);
-    for (const auto& [r, bits] : st_.constants) (void)r, (void)bits;
     std::sort(ranges.begin(), ranges.end());
     std::vector<std::pair<uint32_t, uint32_t>> merged;
     for (auto rg : ranges) {
@@ -179,6 +173,19 @@ class Codegen {
       llvm::Value* arr = slot(vi_, "arr", b_.getInt32(hi - lo + 1));
       for (uint32_t r = lo; r <= hi && r < st_.registers; ++r) homes_[r] = {arr, r - lo, lo, true};
     }
+  }
+
+  // Uniform word w, clamped to the last word as the interpreter clamps it (a clamped offset
+  // cannot make imm + offset wrap past 2^32).
+  llvm::Value* uniform_word(llvm::Value* w) {
+    w = b_.CreateSelect(b_.CreateICmpULT(w, words_), w, b_.CreateSub(words_, b_.getInt32(1)));
+    return b_.CreateLoad(i32_, b_.CreateGEP(i32_, uniforms_, w));
+  }
+
+  // The lanes of `live` still in a loop: not returned, broken out or discarded.
+  llvm::Value* in_loop(llvm::Value* live) {
+    llvm::Value* out = b_.CreateOr(b_.CreateOr(b_.CreateLoad(vm_, ret_), b_.CreateLoad(vm_, brk_)), b_.CreateLoad(vm_, kill_));
+    return b_.CreateAnd(live, b_.CreateNot(out));
   }
 
   llvm::Value* home_ptr(Reg r) {
@@ -269,9 +276,7 @@ class Codegen {
         b_.CreateBr(head);
         b_.SetInsertPoint(head);
         b_.CreateStore(llvm::Constant::getNullValue(vm_), cont_);
-        llvm::Value* in = b_.CreateAnd(live, b_.CreateNot(b_.CreateOr(b_.CreateOr(b_.CreateLoad(vm_, ret_),
-                                                                                    b_.CreateLoad(vm_, brk_)),
-                                                                        b_.CreateLoad(vm_, kill_))));
+        llvm::Value* in = in_loop(live);
         llvm::Value* more = b_.CreateAnd(b_.CreateICmpSLT(b_.CreateLoad(i32_, iter), b_.getInt32(ir::kMaxLoopIterations)),
                                          b_.CreateICmpULT(b_.CreateLoad(i32_, budget_), b_.getInt32(ir::kMaxTotalLoopIterations)));
         b_.CreateCondBr(b_.CreateAnd(more, any(in)), body, exit);
@@ -280,9 +285,7 @@ class Codegen {
         b_.CreateBr(step);
         b_.SetInsertPoint(step);
         b_.CreateStore(llvm::Constant::getNullValue(vm_), cont_);
-        llvm::Value* in2 = b_.CreateAnd(live, b_.CreateNot(b_.CreateOr(b_.CreateOr(b_.CreateLoad(vm_, ret_),
-                                                                                     b_.CreateLoad(vm_, brk_)),
-                                                                         b_.CreateLoad(vm_, kill_))));
+        llvm::Value* in2 = in_loop(live);
         b_.CreateCondBr(any(in2), step_run, exit);
         b_.SetInsertPoint(step_run);
         block(n.b, in2);
@@ -362,24 +365,14 @@ class Codegen {
     auto setf = [&](llvm::Value* v) { store(i.dst, v); };
     auto zero = llvm::Constant::getNullValue(vi_);
     switch (i.op) {
-      case Op::Const: store(i.dst, splat(i.imm)); break;
       case Op::Mov: store(i.dst, load(i.a)); break;
       case Op::Store: store(i.dst, b_.CreateSelect(live, load(i.a), load(i.dst))); break;
-      case Op::Uniform: {
-        llvm::Value* idx = b_.CreateSelect(b_.CreateICmpULT(b_.getInt32(i.imm), words_), b_.getInt32(i.imm),
-                                           b_.CreateSub(words_, b_.getInt32(1)));
-        store(i.dst, b_.CreateVectorSplat(L, b_.CreateLoad(i32_, b_.CreateGEP(i32_, uniforms_, idx))));
-        break;
-      }
       case Op::UniformIndexed: {
         llvm::Value* a = I(i.a);
         llvm::Value* r = zero;
         for (int l = 0; l < L; ++l) {
           llvm::Value* w = b_.CreateAdd(b_.getInt32(i.imm), b_.CreateExtractElement(a, b_.getInt32(l)));
-          // min(w, words - 1), unsigned, as the interpreter clamps (64-bit there; w < 2^32 here
-          // unless imm + offset wraps, which a clamped offset cannot reach)
-          w = b_.CreateSelect(b_.CreateICmpULT(w, words_), w, b_.CreateSub(words_, b_.getInt32(1)));
-          r = b_.CreateInsertElement(r, b_.CreateLoad(i32_, b_.CreateGEP(i32_, uniforms_, w)), b_.getInt32(l));
+          r = b_.CreateInsertElement(r, uniform_word(w), b_.getInt32(l));
         }
         store(i.dst, r);
         break;
@@ -477,8 +470,7 @@ class Codegen {
         break;
       }
       case Op::UDiv:
-      case Op::UMod:
-      case Op::IMod: {
+      case Op::UMod: {
         llvm::Value *x = I(i.a), *d = I(i.b);
         llvm::Value* z = b_.CreateICmpEQ(d, zero);
         llvm::Value* safe = b_.CreateSelect(z, splat(1), d);

@@ -87,6 +87,28 @@ int count(const TType& t) {
   return std::max(1, t.getVectorSize());
 }
 
+// What an index selects in a value of type t: `elems` elements of `size` components each
+// (array elements, matrix columns, vector components).
+struct Elements {
+  int elems, size;
+};
+Elements elements_of(const TType& t) {
+  if (t.isArray()) return {array_length(t), count(TType(t, 0))};
+  if (t.isMatrix()) return {t.getMatrixCols(), t.getMatrixRows()};
+  return {t.getVectorSize(), 1};
+}
+// The components of member k of struct type t: from `first`, `count` of them.
+struct Range {
+  int first, count;
+};
+Range member_range(const TType& t, int k) {
+  const auto& members = *t.getStruct();
+  int off = 0;
+  for (int i = 0; i < k; ++i) off += count(*members[size_t(i)].type);
+  return {off, count(*members[size_t(k)].type)};
+}
+int const_index(TIntermTyped* n) { return n->getAsConstantUnion()->getConstArray()[0].getIConst(); }
+
 void component_bases(const TType& t, std::vector<Base>& out, const TIntermNode* where) {
   if (t.isArray()) {
     TType e(t, 0);
@@ -599,38 +621,22 @@ class Lowerer {
         const TType& lt = b->getLeft()->getType();
         if (op == glslang::EOpVectorSwizzle) {
           std::vector<uint32_t> c;
-          for (TIntermNode* s : b->getRight()->getAsAggregate()->getSequence()) {
-            const int i = s->getAsConstantUnion()->getConstArray()[0].getIConst();
-            c.push_back(p.comps.at(size_t(i)));
-          }
+          for (TIntermNode* s : b->getRight()->getAsAggregate()->getSequence())
+            c.push_back(p.comps.at(size_t(const_index(s->getAsTyped()))));
           p.comps = c;
           return p;
         }
         if (op == glslang::EOpIndexDirectStruct) {
-          const int k = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
-          int off = 0;
-          const auto& members = *lt.getStruct();
-          for (int i = 0; i < k; ++i) off += count(*members[size_t(i)].type);
-          const int n = count(*members[size_t(k)].type);
-          p.comps = std::vector<uint32_t>(p.comps.begin() + off, p.comps.begin() + off + n);
-          p.sampler = members[size_t(k)].type->getBasicType() == glslang::EbtSampler;
+          const int k = const_index(b->getRight());
+          const Range m = member_range(lt, k);
+          p.comps = std::vector<uint32_t>(p.comps.begin() + m.first, p.comps.begin() + m.first + m.count);
+          p.sampler = (*lt.getStruct())[size_t(k)].type->getBasicType() == glslang::EbtSampler;
           return p;
         }
         // Element i of an array, column i of a matrix, component i of a vector.
-        int elems = 0, esize = 0;
-        if (lt.isArray()) {
-          elems = array_length(lt);
-          esize = count(TType(lt, 0));
-        } else if (lt.isMatrix()) {
-          elems = lt.getMatrixCols();
-          esize = lt.getMatrixRows();
-        } else {
-          elems = lt.getVectorSize();
-          esize = 1;
-        }
+        const auto [elems, esize] = elements_of(lt);
         if (op == glslang::EOpIndexDirect) {
-          int i = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
-          i = std::clamp(i, 0, elems - 1);
+          const int i = std::clamp(const_index(b->getRight()), 0, elems - 1);
           p.comps = std::vector<uint32_t>(p.comps.begin() + i * esize, p.comps.begin() + (i + 1) * esize);
           return p;
         }
@@ -660,9 +666,9 @@ class Lowerer {
     if (n->getAsSymbolNode()) return true;
     if (TIntermBinary* b = n->getAsBinaryNode()) {
       const auto op = b->getOp();
-      if (op == glslang::EOpIndexDirect || op == glslang::EOpIndexDirectStruct || op == glslang::EOpVectorSwizzle)
+      if (op == glslang::EOpIndexDirect || op == glslang::EOpIndexIndirect || op == glslang::EOpIndexDirectStruct ||
+          op == glslang::EOpVectorSwizzle)
         return is_access_chain(b->getLeft());
-      if (op == glslang::EOpIndexIndirect) return is_access_chain(b->getLeft());
     }
     return false;
   }
@@ -694,11 +700,11 @@ class Lowerer {
     return false;
   }
 
-  Val constant(TIntermConstantUnion* c) {
-    const TType& t = c->getType();
+  // The registers of a constant of type t (components converted to t's base types).
+  Val constant(const glslang::TConstUnionArray& arr, const TType& t, const TIntermNode* where) {
     std::vector<Base> bases;
-    component_bases(t, bases, c);
-    const auto& arr = c->getConstArray();
+    component_bases(t, bases, where);
+    if (arr.size() < int(bases.size())) fail(where, "constant without a value");
     Val v;
     for (size_t i = 0; i < bases.size(); ++i) v.push_back(konst(const_bits(arr[int(i)], bases[i])));
     return v;
@@ -726,11 +732,11 @@ class Lowerer {
 
   // --- expressions ----------------------------------------------------------------------
   Val value(TIntermTyped* n) {
-    if (TIntermConstantUnion* c = n->getAsConstantUnion()) return constant(c);
+    if (TIntermConstantUnion* c = n->getAsConstantUnion()) return constant(c->getConstArray(), c->getType(), c);
     if (TIntermSymbol* s = n->getAsSymbolNode()) {
       if (s->getType().getQualifier().storage == glslang::EvqConst && s->getConstArray().size() > 0 &&
           !s->getType().isArray())
-        return constant_of_symbol(s);
+        return constant(s->getConstArray(), s->getType(), s);
       return read(lookup(s));
     }
     if (TIntermBinary* b = n->getAsBinaryNode()) return binary(b);
@@ -738,14 +744,6 @@ class Lowerer {
     if (TIntermAggregate* a = n->getAsAggregate()) return aggregate(a);
     if (TIntermSelection* s = n->getAsSelectionNode()) return select(s);
     fail(n, "expression not supported");
-  }
-
-  Val constant_of_symbol(TIntermSymbol* s) {
-    std::vector<Base> bases;
-    component_bases(s->getType(), bases, s);
-    Val v;
-    for (size_t i = 0; i < bases.size(); ++i) v.push_back(konst(const_bits(s->getConstArray()[int(i)], bases[i])));
-    return v;
   }
 
   static Base base_or_float(const TType& t) {
@@ -781,7 +779,9 @@ class Lowerer {
       case glslang::EOpMatrixTimesScalarAssign:
         return f ? Op::FMul : Op::IMul;
       case glslang::EOpDiv: case glslang::EOpDivAssign: return f ? Op::FDiv : u ? Op::UDiv : Op::IDiv;
-      case glslang::EOpMod: case glslang::EOpModAssign: return f ? Op::FMod : u ? Op::UMod : Op::IMod;
+      // GLSL leaves % undefined for negative operands; Mesa takes the remainder of the bits
+      // as unsigned, and so does Tessel.
+      case glslang::EOpMod: case glslang::EOpModAssign: return f ? Op::FMod : Op::UMod;
       case glslang::EOpAnd: case glslang::EOpAndAssign: return Op::And;
       case glslang::EOpInclusiveOr: case glslang::EOpInclusiveOrAssign: return Op::Or;
       case glslang::EOpExclusiveOr: case glslang::EOpExclusiveOrAssign: return Op::Xor;
@@ -832,6 +832,19 @@ class Lowerer {
       return componentwise(arith_op(op, lb, where), a, b, n);
     }
     return componentwise(arith_op(op, base, where), a, b, n);
+  }
+
+  // The lane-wise comparison of GLSL's relational operators and functions (lessThan, equal, ...).
+  static Op compare_op(glslang::TOperator op, Base b) {
+    const bool f = b == Base::Float, u = b == Base::Uint;
+    switch (op) {
+      case glslang::EOpVectorEqual: return f ? Op::FEq : Op::IEq;
+      case glslang::EOpVectorNotEqual: return f ? Op::FNe : Op::INe;
+      case glslang::EOpLessThan: return f ? Op::FLt : u ? Op::ULt : Op::ILt;
+      case glslang::EOpGreaterThan: return f ? Op::FGt : u ? Op::UGt : Op::IGt;
+      case glslang::EOpLessThanEqual: return f ? Op::FLe : u ? Op::ULe : Op::ILe;
+      default: return f ? Op::FGe : u ? Op::UGe : Op::IGe;
+    }
   }
 
   Val compare_all(bool equal, const TType& t, const Val& a, const Val& b, TIntermNode* where) {
@@ -916,18 +929,7 @@ class Lowerer {
       case glslang::EOpGreaterThan:
       case glslang::EOpLessThanEqual:
       case glslang::EOpGreaterThanEqual: {
-        const Base base = base_or_float(lt);
-        Op o;
-        const bool f = base == Base::Float, u = base == Base::Uint;
-        switch (op) {
-          case glslang::EOpVectorEqual: o = f ? Op::FEq : Op::IEq; break;
-          case glslang::EOpVectorNotEqual: o = f ? Op::FNe : Op::INe; break;
-          case glslang::EOpLessThan: o = f ? Op::FLt : u ? Op::ULt : Op::ILt; break;
-          case glslang::EOpGreaterThan: o = f ? Op::FGt : u ? Op::UGt : Op::IGt; break;
-          case glslang::EOpLessThanEqual: o = f ? Op::FLe : u ? Op::ULe : Op::ILe; break;
-          default: o = f ? Op::FGe : u ? Op::UGe : Op::IGe; break;
-        }
-        return componentwise(o, a, c, std::max(a.size(), c.size()));
+        return componentwise(compare_op(op, base_or_float(lt)), a, c, std::max(a.size(), c.size()));
       }
       default: return arithmetic(op, b->getType(), b->getLeft(), a, b->getRight(), c, b);
     }
@@ -940,31 +942,16 @@ class Lowerer {
     const TType& lt = b->getLeft()->getType();
     if (op == glslang::EOpVectorSwizzle) {
       Val r;
-      for (TIntermNode* s : b->getRight()->getAsAggregate()->getSequence())
-        r.push_back(v.at(size_t(s->getAsConstantUnion()->getConstArray()[0].getIConst())));
+      for (TIntermNode* s : b->getRight()->getAsAggregate()->getSequence()) r.push_back(v.at(size_t(const_index(s->getAsTyped()))));
       return r;
     }
     if (op == glslang::EOpIndexDirectStruct) {
-      const int k = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
-      int off = 0;
-      const auto& members = *lt.getStruct();
-      for (int i = 0; i < k; ++i) off += count(*members[size_t(i)].type);
-      const int n = count(*members[size_t(k)].type);
-      return Val(v.begin() + off, v.begin() + off + n);
+      const Range m = member_range(lt, const_index(b->getRight()));
+      return Val(v.begin() + m.first, v.begin() + m.first + m.count);
     }
-    int elems, esize;
-    if (lt.isArray()) {
-      elems = array_length(lt);
-      esize = count(TType(lt, 0));
-    } else if (lt.isMatrix()) {
-      elems = lt.getMatrixCols();
-      esize = lt.getMatrixRows();
-    } else {
-      elems = lt.getVectorSize();
-      esize = 1;
-    }
+    const auto [elems, esize] = elements_of(lt);
     if (op == glslang::EOpIndexDirect) {
-      const int i = std::clamp(b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst(), 0, elems - 1);
+      const int i = std::clamp(const_index(b->getRight()), 0, elems - 1);
       return Val(v.begin() + i * esize, v.begin() + (i + 1) * esize);
     }
     // Run-time index: a chain of selects over the elements.
@@ -1485,16 +1472,7 @@ class Lowerer {
         return per([&](size_t i) { return emit(Op::FMul, arg(0, i), arg(1, i)); });
       case glslang::EOpLessThan: case glslang::EOpGreaterThan: case glslang::EOpLessThanEqual:
       case glslang::EOpGreaterThanEqual: case glslang::EOpVectorEqual: case glslang::EOpVectorNotEqual: {
-        const bool f = b == Base::Float, u = b == Base::Uint;
-        Op o;
-        switch (op) {
-          case glslang::EOpVectorEqual: o = f ? Op::FEq : Op::IEq; break;
-          case glslang::EOpVectorNotEqual: o = f ? Op::FNe : Op::INe; break;
-          case glslang::EOpLessThan: o = f ? Op::FLt : u ? Op::ULt : Op::ILt; break;
-          case glslang::EOpGreaterThan: o = f ? Op::FGt : u ? Op::UGt : Op::IGt; break;
-          case glslang::EOpLessThanEqual: o = f ? Op::FLe : u ? Op::ULe : Op::ILe; break;
-          default: o = f ? Op::FGe : u ? Op::UGe : Op::IGe; break;
-        }
+        const Op o = compare_op(op, b);
         return per([&](size_t i) { return emit(o, arg(0, i), arg(1, i)); });
       }
       case glslang::EOpBitfieldExtract:
@@ -1519,15 +1497,8 @@ class Lowerer {
         return r;
       }
       case glslang::EOpUMulExtended:
-      case glslang::EOpIMulExtended: {
-        const Place hi = place(x[2]);
-        const Place lo = place(x[3]);
-        (void)lo;
-        fail(a, "umulExtended/imulExtended are not supported");
-      }
-      case glslang::EOpFtransform: {
-        fail(a, "ftransform() is not supported yet");
-      }
+      case glslang::EOpIMulExtended: fail(a, "umulExtended/imulExtended are not supported");
+      case glslang::EOpFtransform: fail(a, "ftransform() is not supported yet");
       default: break;
     }
     fail(a, "built-in function '" + std::string(a->getName().c_str()) + "' (" + std::to_string(int(op)) +
@@ -1658,9 +1629,6 @@ class Lowerer {
     Node node;
     node.kind = Kind::Switch;
     blocks_.push_back(&node.a);
-    ir::Block* run = nullptr;
-    Node* current_if = nullptr;
-    (void)current_if;
     std::vector<TIntermNode*> pending;
     auto flush = [&]() {
       if (pending.empty()) return;
@@ -1673,7 +1641,6 @@ class Lowerer {
       blocks_.back()->push_back(std::move(ifn));
       pending.clear();
     };
-    (void)run;
     for (TIntermNode* c : body) {
       TIntermBranch* b = c->getAsBranchNode();
       if (b && (b->getFlowOp() == glslang::EOpCase || b->getFlowOp() == glslang::EOpDefault)) {

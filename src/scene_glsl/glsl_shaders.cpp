@@ -3,6 +3,7 @@
 // (src/scene/shaders.cpp).
 #include "tessel/scene/glsl_shaders.hpp"
 
+#include <array>
 #include <map>
 #include <mutex>
 
@@ -170,6 +171,25 @@ struct GlslShader::Impl {
   float bands, silhouette;
   std::shared_ptr<glsl::Program> program;
   std::mutex mutex;  // draw() sets the program's uniforms
+  // The uniforms' locations, looked up once (-1 for those a kind does not use).
+  enum : int { kLightPos, kLa, kLe, kAttenuation, kSpotDirection, kSpotCosCutoff, kSpotExponent, kLightFields };
+  static constexpr const char* kLightField[kLightFields] = {"wLightPos",     "La",           "Le",          "attenuation",
+                                                            "spotDirection", "spotCosCutoff", "spotExponent"};
+  std::array<std::array<int, kLightFields>, kMaxLights> light{};
+  int MVP, M, Mnormal, nLights, ka, kd, ks, emission, shininess, phongSpecular, wEye, textured, tex, shadowMap, bands_loc,
+      silhouette_loc, shadowLight, lightVP, pcf, texel;
+  void locate() {
+    const glsl::Program& p = *program;
+    auto at = [&](const std::string& n) { return p.uniform_location(n); };
+    MVP = at("MVP"), M = at("M"), Mnormal = at("Mnormal"), nLights = at("nLights");
+    ka = at("ka"), kd = at("kd"), ks = at("ks"), emission = at("emission"), shininess = at("shininess");
+    phongSpecular = at("phongSpecular"), wEye = at("wEye"), textured = at("textured"), tex = at("tex");
+    shadowMap = at("shadowMap"), bands_loc = at("bands"), silhouette_loc = at("silhouette");
+    shadowLight = at("shadowLight"), lightVP = at("lightVP"), pcf = at("pcf"), texel = at("texel");
+    for (int i = 0; i < kMaxLights; ++i)
+      for (int f = 0; f < kLightFields; ++f)
+        light[size_t(i)][size_t(f)] = at("lights[" + std::to_string(i) + "]." + kLightField[f]);
+  }
 };
 
 GlslShader::GlslShader(Kind kind, int npr_bands, float npr_silhouette) : impl_(std::make_unique<Impl>()) {
@@ -181,57 +201,59 @@ GlslShader::GlslShader(Kind kind, int npr_bands, float npr_silhouette) : impl_(s
   if (!vs->ok() || !fs->ok()) throw gpu::Error("GLSL scene shader: " + vs->info_log() + fs->info_log());
   impl_->program = glsl::Program::link(*vs, *fs);
   if (!impl_->program->ok()) throw gpu::Error("GLSL scene shader: " + impl_->program->info_log());
+  impl_->locate();
 }
 
 GlslShader::~GlslShader() = default;
 
 void GlslShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {
   std::lock_guard lock(impl_->mutex);
-  glsl::Program& p = *impl_->program;
-  auto m4 = [&](const char* name, const glm::mat4& m) { p.set_uniform(p.uniform_location(name), &m[0][0], 16); };
-  auto v3 = [&](const std::string& name, const glm::vec3& v) { p.set_uniform(p.uniform_location(name), &v.x, 3); };
-  auto f1 = [&](const std::string& name, float v) { p.set_uniform(p.uniform_location(name), &v, 1); };
-  auto i1 = [&](const std::string& name, int32_t v) { p.set_uniform(p.uniform_location(name), &v, 1); };
-  m4("MVP", state.P * state.V * state.M);
-  m4("M", state.M);
-  m4("Mnormal", glm::transpose(state.Minv));
+  Impl& u = *impl_;
+  glsl::Program& p = *u.program;
+  auto m4 = [&](int loc, const glm::mat4& m) { p.set_uniform(loc, &m[0][0], 16); };
+  auto v3 = [&](int loc, const glm::vec3& v) { p.set_uniform(loc, &v.x, 3); };
+  auto f1 = [&](int loc, float v) { p.set_uniform(loc, &v, 1); };
+  auto i1 = [&](int loc, int32_t v) { p.set_uniform(loc, &v, 1); };
+  m4(u.MVP, state.P * state.V * state.M);
+  m4(u.M, state.M);
+  m4(u.Mnormal, glm::transpose(state.Minv));
   const int n = int(std::min<size_t>(state.lights.size(), kMaxLights));
-  i1("nLights", n);
+  i1(u.nLights, n);
   for (int i = 0; i < n; ++i) {
     const Light& l = state.lights[size_t(i)];
-    const std::string s = "lights[" + std::to_string(i) + "].";
-    p.set_uniform(p.uniform_location(s + "wLightPos"), &l.wLightPos.x, 4);
-    v3(s + "La", l.La);
-    v3(s + "Le", l.Le);
-    v3(s + "attenuation", l.attenuation);
-    v3(s + "spotDirection", l.spot_direction);
-    f1(s + "spotCosCutoff", l.spot_cos_cutoff);
-    f1(s + "spotExponent", l.spot_exponent);
+    const auto& at = u.light[size_t(i)];
+    p.set_uniform(at[Impl::kLightPos], &l.wLightPos.x, 4);
+    v3(at[Impl::kLa], l.La);
+    v3(at[Impl::kLe], l.Le);
+    v3(at[Impl::kAttenuation], l.attenuation);
+    v3(at[Impl::kSpotDirection], l.spot_direction);
+    f1(at[Impl::kSpotCosCutoff], l.spot_cos_cutoff);
+    f1(at[Impl::kSpotExponent], l.spot_exponent);
   }
   const Material m = state.material ? *state.material : Material{};
-  v3("ka", m.ka);
-  v3("kd", m.kd);
-  v3("ks", m.ks);
-  v3("emission", m.emission);
-  f1("shininess", m.shininess);
-  i1("phongSpecular", m.specular == Specular::Phong);
-  v3("wEye", state.wEye);
-  i1("textured", m.texture != nullptr);
-  i1("tex", 0);
-  i1("shadowMap", 1);
-  f1("bands", impl_->bands);
-  f1("silhouette", impl_->silhouette);
+  v3(u.ka, m.ka);
+  v3(u.kd, m.kd);
+  v3(u.ks, m.ks);
+  v3(u.emission, m.emission);
+  f1(u.shininess, m.shininess);
+  i1(u.phongSpecular, m.specular == Specular::Phong);
+  v3(u.wEye, state.wEye);
+  i1(u.textured, m.texture != nullptr);
+  i1(u.tex, 0);
+  i1(u.shadowMap, 1);
+  f1(u.bands_loc, u.bands);
+  f1(u.silhouette_loc, u.silhouette);
   glsl::TextureBinding units[2];
   units[0].texture_2d = m.texture.get();
   units[0].sampler.min_filter = gpu::Filter::LinearMipmapLinear;
   units[0].sampler.mag_filter = gpu::Filter::Linear;
   // A 2D shadow map (a point light's cube of maps is not in the twin: it draws unshadowed).
-  const bool shadow = state.shadow_map && !state.cube_shadow && impl_->kind == Kind::Phong;
-  i1("shadowLight", shadow ? state.shadow_light : -1);
+  const bool shadow = state.shadow_map && !state.cube_shadow && u.kind == Kind::Phong;
+  i1(u.shadowLight, shadow ? state.shadow_light : -1);
   if (shadow) {
-    m4("lightVP", state.light_VP);
-    i1("pcf", state.pcf);
-    f1("texel", 1.0f / float(state.shadow_map->width()));
+    m4(u.lightVP, state.light_VP);
+    i1(u.pcf, state.pcf);
+    f1(u.texel, 1.0f / float(state.shadow_map->width()));
     units[1].texture_2d = state.shadow_map;
     // Outside the map is lit: the border (depth 1) passes every reference up to the far plane.
     units[1].sampler = gpu::Sampler2DShadow{}.state;

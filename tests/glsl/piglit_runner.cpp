@@ -61,6 +61,38 @@ std::vector<float> numbers(const std::string& s) {
   return v;
 }
 
+enum class ValueKind { Float, Int, Uint, Bool };
+ValueKind value_kind(const std::string& type) {
+  if (type.find("sampler") != std::string::npos || type == "int" || type.rfind("ivec", 0) == 0) return ValueKind::Int;
+  if (type == "uint" || type.rfind("uvec", 0) == 0) return ValueKind::Uint;
+  if (type == "bool" || type.rfind("bvec", 0) == 0) return ValueKind::Bool;
+  return ValueKind::Float;
+}
+
+// The 32-bit words of a `uniform` command's values: integers exactly (hex included), floats
+// by value or, written in hex, by their bits, bools as 0 or 1.
+std::vector<uint32_t> value_words(ValueKind kind, std::string text) {
+  for (char& c : text)
+    if (c == '(' || c == ')' || c == ',') c = ' ';
+  std::istringstream w(text);
+  std::vector<uint32_t> words;
+  for (std::string tok; w >> tok;) {
+    if (kind == ValueKind::Int || kind == ValueKind::Uint) {
+      words.push_back(uint32_t(std::strtoll(tok.c_str(), nullptr, 0)));
+    } else if (kind == ValueKind::Bool) {
+      words.push_back(std::strtof(tok.c_str(), nullptr) != 0.0f);
+    } else if (tok.rfind("0x", 0) == 0) {
+      words.push_back(uint32_t(std::strtoull(tok.c_str(), nullptr, 16)));
+    } else {
+      const float x = std::strtof(tok.c_str(), nullptr);
+      uint32_t u;
+      std::memcpy(&u, &x, 4);
+      words.push_back(u);
+    }
+  }
+  return words;
+}
+
 struct Test {
   int glsl = 110;  // required GLSL version * 100
   int width = 250, height = 250;
@@ -191,27 +223,10 @@ struct Runner {
           mname = mname.substr(dot + 1);
         if (mname != base) continue;
         std::istringstream in(line);
-        std::string kw, t, n;
+        std::string kw, t, n, rest;
         in >> kw >> t >> n;
-        std::string rest;
         std::getline(in, rest);
-        for (char& c : rest)
-          if (c == '(' || c == ')' || c == ',') c = ' ';
-        std::istringstream w(rest);
-        std::vector<uint32_t> words;
-        std::string tok;
-        const bool integer = type == "int" || type.rfind("ivec", 0) == 0 || type == "uint" || type.rfind("uvec", 0) == 0 ||
-                             type == "bool" || type.rfind("bvec", 0) == 0;
-        while (w >> tok) {
-          if (integer) {
-            words.push_back(uint32_t(std::strtoll(tok.c_str(), nullptr, 0)));
-          } else {
-            const float x = std::strtof(tok.c_str(), nullptr);
-            uint32_t u;
-            std::memcpy(&u, &x, 4);
-            words.push_back(u);
-          }
-        }
+        const std::vector<uint32_t> words = value_words(value_kind(type), rest);
         const bool matrix = type.rfind("mat", 0) == 0;
         const int cols = matrix ? type[3] - '0' : 1;
         const int rows = matrix ? (type.size() > 5 ? type[5] - '0' : cols) : int(words.size());
@@ -237,56 +252,21 @@ struct Runner {
     std::getline(in, rest);
     const int loc = prog->uniform_location(name);
     if (loc < 0) return set_block_member(type, name, line);
-    const std::vector<float> v = numbers(rest);
-    const int n = int(v.size());
-    if (n == 0) return skip("uniform without values: " + line);
+    const ValueKind kind = value_kind(type);
+    std::vector<uint32_t> words = value_words(kind, rest);
+    if (words.empty()) return skip("uniform without values: " + line);
     bool ok = false;
-    if (type.find("sampler") != std::string::npos || type == "int" || type.rfind("ivec", 0) == 0) {
-      std::vector<int32_t> iv;
-      // integers are parsed exactly (hex included)
-      std::string t2 = rest;
-      for (char& c : t2)
-        if (c == '(' || c == ')' || c == ',') c = ' ';
-      std::istringstream w(t2);
-      std::string tok;
-      while (w >> tok) iv.push_back(int32_t(std::strtoll(tok.c_str(), nullptr, 0)));
+    if (kind == ValueKind::Uint) {
+      ok = prog->set_uniform(loc, words.data(), int(words.size()));
+    } else if (kind != ValueKind::Float) {
+      std::vector<int32_t> iv(words.begin(), words.end());
       ok = prog->set_uniform(loc, iv.data(), int(iv.size()));
-    } else if (type == "uint" || type.rfind("uvec", 0) == 0) {
-      std::vector<uint32_t> uv;
-      std::string t2 = rest;
-      for (char& c : t2)
-        if (c == '(' || c == ')' || c == ',') c = ' ';
-      std::istringstream w(t2);
-      std::string tok;
-      while (w >> tok) uv.push_back(uint32_t(std::strtoull(tok.c_str(), nullptr, 0)));
-      ok = prog->set_uniform(loc, uv.data(), int(uv.size()));
-    } else if (type == "bool" || type.rfind("bvec", 0) == 0) {
-      std::vector<int32_t> iv;
-      for (float f : v) iv.push_back(f != 0.0f);
-      ok = prog->set_uniform(loc, iv.data(), n);
     } else {
-      // Missing components of a vector read as 0 (shader_runner's parser); a hex value is the
-      // float's bits.
-      std::vector<float> f;
-      {
-        std::string t2 = rest;
-        for (char& c : t2)
-          if (c == '(' || c == ')' || c == ',') c = ' ';
-        std::istringstream w(t2);
-        std::string tok;
-        while (w >> tok) {
-          if (tok.rfind("0x", 0) == 0) {
-            const uint32_t bits = uint32_t(std::strtoull(tok.c_str(), nullptr, 16));
-            float x;
-            std::memcpy(&x, &bits, 4);
-            f.push_back(x);
-          } else {
-            f.push_back(std::strtof(tok.c_str(), nullptr));
-          }
-        }
-      }
+      // Missing components of a vector read as 0 (shader_runner's parser).
       const int want = type == "vec2" ? 2 : type == "vec3" ? 3 : type == "vec4" ? 4 : 0;
-      if (want && int(f.size()) % want) f.resize(f.size() + size_t(want - int(f.size()) % want), 0.0f);
+      if (want && int(words.size()) % want) words.resize(words.size() + size_t(want - int(words.size()) % want), 0u);
+      std::vector<float> f(words.size());
+      std::memcpy(f.data(), words.data(), words.size() * 4);
       ok = prog->set_uniform(loc, f.data(), int(f.size()));
     }
     if (!ok) return fail("could not set uniform: " + line);

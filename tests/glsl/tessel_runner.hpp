@@ -70,18 +70,6 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
   for (const auto& u : spec.uniforms) {
     const int loc = prog->uniform_location(u.name);
     if (loc < 0) continue;
-    uint32_t type = 0;
-    int size = 1;
-    for (const auto& v : prog->uniforms()) {
-      std::string base = v.name;
-      if (base.size() > 3 && base.compare(base.size() - 3, 3, "[0]") == 0) base.resize(base.size() - 3);
-      if (u.name == v.name || u.name == base || u.name.rfind(base + "[", 0) == 0) {
-        type = v.type;
-        size = v.size;
-      }
-    }
-    (void)type;
-    (void)size;
     // Components per element: the count of values over the elements given.
     auto try_set = [&](auto* data, size_t n) {
       for (int comps : {16, 12, 9, 8, 6, 4, 3, 2, 1}) {

@@ -321,28 +321,23 @@ uniform Other { vec4 o; } other;)";
   EXPECT_EQ(prog->uniform_blocks()[size_t(prog->uniform_block_index("Other"))].members[0].name, "Other.o");
 }
 
-std::vector<float> checker(int w, int h) {
-  std::vector<float> d(size_t(w * h * 4));
+// An RGBA32F checker texture on unit 0 (red and green ramps, blue alternating), read by the
+// uniform sampler `tex`.
+reference::GlslTexture checker_texture(int w, int h) {
+  reference::GlslTexture t;
+  t.width = w;
+  t.height = h;
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      float* p = &d[size_t((y * w + x) * 4)];
-      p[0] = float(x) / float(w);
-      p[1] = float(y) / float(h);
-      p[2] = ((x ^ y) & 1) ? 1.0f : 0.25f;
-      p[3] = 1.0f;
-    }
-  return d;
+    for (int x = 0; x < w; ++x)
+      t.data.insert(t.data.end(), {float(x) / float(w), float(y) / float(h), ((x ^ y) & 1) ? 1.0f : 0.25f, 1.0f});
+  return t;
 }
 
 TEST(GlslMesa, TexelFetchAndSize) {
   Case c{"texelFetch", "uniform sampler2D tex;",
          "ivec2 s = textureSize(tex, 0); c = texelFetch(tex, ivec2(i % 8, i / 32), 0) + vec4(0.0, 0.0, 0.0, float(s.x * 100 + s.y));",
          {0, 0}};
-  reference::GlslTexture t;
-  t.width = 8;
-  t.height = 8;
-  t.data = checker(8, 8);
-  c.textures = {t};
+  c.textures = {checker_texture(8, 8)};
   c.uniforms = {{"tex", {}, {0}}};
   run_case(c);
 }
@@ -350,10 +345,7 @@ TEST(GlslMesa, TexelFetchAndSize) {
 TEST(GlslMesa, TextureNearestAndLinear) {
   for (uint32_t filter : {0x2600u, 0x2601u}) {
     Case c{"texture", "uniform sampler2D tex;", "c = texture(tex, p * 1.7 - 0.3) + textureLod(tex, p.yx, 0.0);", {2e-6f, 1e-5f}};
-    reference::GlslTexture t;
-    t.width = 8;
-    t.height = 8;
-    t.data = checker(8, 8);
+    reference::GlslTexture t = checker_texture(8, 8);
     t.min_filter = t.mag_filter = filter;
     c.textures = {t};
     c.uniforms = {{"tex", {}, {0}}};
@@ -372,10 +364,7 @@ TEST(GlslMesa, TextureFunctionsOn2D) {
   };
   for (const char* body : bodies) {
     Case c{body, "uniform sampler2D tex;", body, {1e-5f, 1e-5f}};
-    reference::GlslTexture tx;
-    tx.width = 16;
-    tx.height = 16;
-    tx.data = checker(16, 16);
+    reference::GlslTexture tx = checker_texture(16, 16);
     tx.mipmaps = true;
     tx.min_filter = 0x2703;  // GL_LINEAR_MIPMAP_LINEAR
     tx.mag_filter = 0x2601;
