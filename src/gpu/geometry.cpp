@@ -1,0 +1,257 @@
+// The geometry loop of one chunk of a draw: element ids, the post-transform vertex cache,
+// vertex shading, clip codes and window positions, then per primitive: assembly, clipping
+// (Sutherland-Hodgman in clip space), setup (setup.cpp, setup_triangle.hpp) and binning.
+#include <algorithm>
+#include <climits>
+#include <cstring>
+
+#include "frame.hpp"
+#include "setup_triangle.hpp"
+
+namespace tessel::gpu {
+using namespace detail;
+
+void Context::Frame::process_chunk(Worker& w, uint32_t chunk_index) {
+  const Chunk& ch = chunks[chunk_index];
+  const Command& cmd = commands[ch.command];
+  if (cmd.clear) {
+    bin(w, chunk_index, nullptr, &clears[cmd.index]->base);
+    return;
+  }
+  process_draw_chunk(w, chunk_index, ch, *draws[cmd.index]);
+}
+
+void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const Chunk& ch,
+                                        const DrawRecord& d) {
+  const int K = d.program->varyings;
+  const int ps = prim_size(d.topology);
+  const uint32_t n_elements = d.count;
+  const uint32_t nprims = ch.end - ch.begin;
+
+  // 1. Vertex ids of the chunk's primitives, each shaded once (post-transform cache).
+  const size_t total = size_t(nprims) * ps;
+  w.prim_slots.resize(total);
+  uint32_t* ids = w.prim_slots.data();  // element ids first, replaced by slots below
+  if (d.topology == Topology::Triangles) {
+    const size_t e0 = size_t(ch.begin) * 3;
+    if (d.indexed) std::memcpy(ids, d.elements + e0, total * sizeof(uint32_t));
+    else for (size_t i = 0; i < total; ++i) ids[i] = d.first + uint32_t(e0 + i);
+  } else {
+    uint32_t e[3];
+    for (uint32_t p = 0; p < nprims; ++p) {
+      prim_elements(d.topology, ch.begin + p, n_elements, e);
+      for (int k = 0; k < ps; ++k) {
+        uint32_t id = d.first + e[k];
+        if (d.indexed) std::memcpy(&id, d.elements + e[k], 4);  // may be a buffer's bytes
+        ids[size_t(p) * ps + k] = id;
+      }
+    }
+  }
+  w.ids.clear();
+  uint32_t lo = UINT32_MAX, hi = 0;
+  for (size_t i = 0; i < total; ++i) {
+    lo = std::min(lo, ids[i]);
+    hi = std::max(hi, ids[i]);
+  }
+  const size_t range = size_t(hi - lo) + 1;
+  if (range * 3 <= total) {
+    // A dense range (a mesh's chunk, whose ids a few rows of vertices span, each used about
+    // six times): every id in the range is shaded, in order, and its slot is id - lo. Ids the
+    // chunk does not use cost a vertex each, but no more than a third of the chunk's indices,
+    // still fewer vertices than an unindexed draw shades.
+    w.ids.resize(range);
+    for (size_t i = 0; i < range; ++i) w.ids[i] = lo + uint32_t(i);
+    for (size_t i = 0; i < total; ++i) ids[i] -= lo;
+  } else if (range <= 4 * total) {
+    // A compact range of ids: a table indexed by id - lo, without branches (whether an id
+    // is new is as good as random, and a mispredicted branch per new id cost more than the
+    // loop's other work).
+    w.direct.assign(range, UINT32_MAX);
+    w.ids.resize(total);
+    uint32_t* table = w.direct.data();
+    uint32_t* unique = w.ids.data();
+    uint32_t count = 0;
+    for (size_t i = 0; i < total; ++i) {
+      const uint32_t id = ids[i];
+      const uint32_t seen = table[id - lo];
+      const bool fresh = seen == UINT32_MAX;
+      const uint32_t slot = fresh ? count : seen;
+      table[id - lo] = slot;
+      unique[count] = id;  // kept only when fresh: count moves on
+      count += fresh;
+      ids[i] = slot;
+    }
+    w.ids.resize(count);
+  } else {
+    // Scattered ids: a direct-mapped hash cache (a vertex may be shaded twice on a collision).
+    const size_t cache_size = size_t(1) << kCacheBits;
+    if (w.cache_tag.size() != cache_size) {
+      w.cache_tag.assign(cache_size, 0);
+      w.cache_slot.assign(cache_size, 0);
+    }
+    ++w.stamp;
+    for (size_t i = 0; i < total; ++i) {
+      const uint32_t id = ids[i];
+      const size_t h = (id * 2654435761u) >> (32 - kCacheBits);
+      const uint64_t tag = (uint64_t(w.stamp) << 32) | id;
+      if (w.cache_tag[h] != tag) {
+        w.cache_tag[h] = tag;
+        w.cache_slot[h] = uint32_t(w.ids.size());
+        w.ids.push_back(id);
+      }
+      ids[i] = w.cache_slot[h];
+    }
+  }
+  const size_t nv = w.ids.size();
+  w.pos.resize(nv);
+  w.vars.resize(nv * size_t(K) + 1);
+  w.soa.resize((nv + 7) / 8 * 32);
+  d.program->shade_vertices(d, w.ids.data(), int(nv), ch.instance, w.pos.data(), w.vars.data(), w.soa.data());
+  w.counters.vertices_shaded += nv;
+
+  // 2. Per vertex: clip code, and the window position of the vertices inside every plane.
+  const ClipPlanes planes = make_clip_planes(d);
+  w.codes.resize(nv);
+  w.win.resize(nv);
+  finish_vertices(d, planes, w.soa.data(), w.vars.data(), K, nv, w.codes.data(), w.win.data());
+
+  // 3. Assembly, clipping, setup, binning.
+  const PolygonMode mode_front = d.state.polygon_mode;
+  const PolygonMode mode_back = d.state.polygon_mode_per_face ? d.state.polygon_mode_back : mode_front;
+  const bool fill = mode_front == PolygonMode::Fill && mode_back == PolygonMode::Fill;
+  Prim* out[2];
+  const bool filled_triangles = ps == 3 && fill;
+  // Read through locals in the loop: stores into Prims could alias the vectors' and the
+  // DrawRecord's fields as far as the compiler knows, so it would load them again each time.
+  const SetupConstants sc(d);
+  const uint32_t* const slots = w.prim_slots.data();
+  const unsigned* const codes = w.codes.data();
+  const WinVert* const win = w.win.data();
+  const float* const vars = w.vars.data();
+  const bool offset_fill = d.state.offset_fill;
+  uint64_t culled_count = 0;
+  w.counters.primitives_in += nprims;
+  for (uint32_t p = 0; p < nprims; ++p) {
+    const uint32_t prim_id = ch.begin + p;
+    const uint32_t* s = slots + size_t(p) * ps;
+    if (filled_triangles && (codes[s[0]] | codes[s[1]] | codes[s[2]]) == 0) {
+      // The common case: a filled triangle inside every plane, set up here without a call.
+      bool culled = false;
+      Prim* pr = setup_triangle_inline(d, sc, win[s[0]], win[s[1]], win[s[2]], vars + size_t(s[2]) * K, prim_id,
+                                       Facing::FromArea, offset_fill, w.arena, w.counters, &culled);
+      culled_count += culled;
+      if (pr) bin(w, chunk_index, &d, pr);
+      continue;
+    }
+    unsigned any_code = 0;
+    for (int k = 0; k < ps; ++k) any_code |= w.codes[s[k]];
+    if (any_code & kNotFinite) continue;  // NaN or Inf position: the primitive is dropped
+    auto var_of = [&](uint32_t slot) { return &w.vars[size_t(slot) * K]; };
+
+    if (ps == 1) {
+      if (w.codes[s[0]]) continue;
+      const int n = setup_point(d, w.win[s[0]], prim_id, true, 0.0f, w.arena, w.counters, out);
+      for (int i = 0; i < n; ++i) bin(w, chunk_index, &d, out[i]);
+      continue;
+    }
+    if (ps == 2) {
+      const glm::vec4 &p0 = w.pos[s[0]], &p1 = w.pos[s[1]];
+      const unsigned c0 = w.codes[s[0]], c1 = w.codes[s[1]];
+      if (c0 & c1) continue;
+      const float* flat_src = var_of(s[1]);
+      WinVert a, b;
+      if ((c0 | c1) == 0) {
+        a = w.win[s[0]];
+        b = w.win[s[1]];
+      } else {
+        float t0, t1;
+        if (!clip_line(planes, c0 | c1, p0, p1, t0, t1)) continue;
+        ++w.counters.primitives_clipped;
+        ClipVert& ca = w.clip_a[0];
+        ClipVert& cb = w.clip_a[1];
+        ca.pos = p0 + (p1 - p0) * t0;
+        cb.pos = p0 + (p1 - p0) * t1;
+        const float *va = var_of(s[0]), *vb = var_of(s[1]);
+        for (int k = 0; k < K; ++k) {
+          ca.var[k] = va[k] + (vb[k] - va[k]) * t0;
+          cb.var[k] = va[k] + (vb[k] - va[k]) * t1;
+        }
+        a = to_window(d, ca.pos, ca.var);
+        b = to_window(d, cb.pos, cb.var);
+      }
+      const int n = setup_line(d, a, b, flat_src, prim_id, true, 0.0f, w.arena, w.counters, out);
+      for (int i = 0; i < n; ++i) bin(w, chunk_index, &d, out[i]);
+      continue;
+    }
+
+    // Triangles.
+    const float* flat_src = var_of(s[2]);
+    const unsigned c0 = w.codes[s[0]], c1 = w.codes[s[1]], c2 = w.codes[s[2]];
+    if (c0 & c1 & c2) continue;
+    WinVert wv[24];
+    int nw;
+    if ((c0 | c1 | c2) == 0) {
+      wv[0] = w.win[s[0]];
+      wv[1] = w.win[s[1]];
+      wv[2] = w.win[s[2]];
+      nw = 3;
+    } else {
+      ++w.counters.primitives_clipped;
+      for (int k = 0; k < 3; ++k) {
+        w.clip_a[k].pos = w.pos[s[k]];
+        std::copy_n(var_of(s[k]), K, w.clip_a[k].var);
+      }
+      ClipVert* poly;
+      nw = clip_polygon(planes, c0 | c1 | c2, w.clip_a, 3, w.clip_b, K, &poly);
+      for (int i = 0; i < nw; ++i) wv[i] = to_window(d, poly[i].pos, poly[i].var);
+    }
+    if (nw < 3) continue;
+    if (fill) {
+      for (int i = 1; i + 1 < nw; ++i) {
+        bool culled = false;
+        Prim* pr = setup_triangle(d, wv[0], wv[i], wv[i + 1], flat_src, prim_id, Facing::FromArea,
+                                  d.state.offset_fill, w.arena, w.counters, &culled);
+        if (culled) ++w.counters.primitives_culled;
+        if (pr) bin(w, chunk_index, &d, pr);
+      }
+      continue;
+    }
+    // Polygon mode line or point: facing of the whole (clipped) polygon, then its edges or
+    // its vertices (GL 4.6 §14.6.4).
+    double area = 0.0;
+    for (int i = 0; i < nw; ++i) {
+      const WinVert &a = wv[i], &b = wv[(i + 1) % nw];
+      area += double(a.x) * b.y - double(b.x) * a.y;
+    }
+    if (area == 0.0) continue;
+    const bool front = (d.state.front_face == FrontFace::CCW) == (area > 0.0);
+    const CullMode cm = d.state.cull;
+    if (cm == CullMode::FrontAndBack || (cm == CullMode::Front && front) || (cm == CullMode::Back && !front)) {
+      ++w.counters.primitives_culled;
+      continue;
+    }
+    const PolygonMode mode = front ? mode_front : mode_back;
+    if (mode == PolygonMode::Fill) {
+      const Facing facing = front ? Facing::Front : Facing::Back;
+      for (int i = 1; i + 1 < nw; ++i) {
+        Prim* pr = setup_triangle(d, wv[0], wv[i], wv[i + 1], flat_src, prim_id, facing, d.state.offset_fill, w.arena,
+                                  w.counters, nullptr);
+        if (pr) bin(w, chunk_index, &d, pr);
+      }
+      continue;
+    }
+    const bool line = mode == PolygonMode::Line;
+    const bool offset = line ? d.state.offset_line : d.state.offset_point;
+    const float zoff = offset ? polygon_offset(d, wv[0], wv[1], wv[2]) : 0.0f;
+    const int ef = d.state.edge_flag_varying;
+    for (int i = 0; i < nw; ++i) {
+      // A vertex made by clipping carries the flag interpolated from its edge's ends.
+      if (ef >= 0 && ef < K && wv[i].var[ef] == 0.0f) continue;
+      const int n = line ? setup_line(d, wv[i], wv[(i + 1) % nw], flat_src, prim_id, front, zoff, w.arena, w.counters, out)
+                         : setup_point(d, wv[i], prim_id, front, zoff, w.arena, w.counters, out);
+      for (int j = 0; j < n; ++j) bin(w, chunk_index, &d, out[j]);
+    }
+  }
+  w.counters.primitives_culled += culled_count;
+}
+}  // namespace tessel::gpu
