@@ -52,7 +52,7 @@ int render_scene(const SceneRenderOptions& o) {
       if (!shader) {
         std::fprintf(stderr,
                      "tessel render: --shading '%s': expected gouraud, phong, normalmap, npr, depth, normal, or the GLSL "
-                     "glsl-gouraud, glsl-phong, glsl-npr\n",
+                     "glsl-gouraud, glsl-phong, glsl-normalmap, glsl-npr, glsl-depth, glsl-normal\n",
                      o.shading.c_str());
         return 2;
       }

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
   render->add_option("--threads", threads, "Worker threads (0 = one per hardware thread; default: the scene's)")
       ->check(CLI::Range(0, 64));
   render->add_option("-o,--output", out, "Output PNG file (with --frames: NAME_0001.png ...)")->capture_default_str();
-  render->add_option("--shading", shading, "Draw every object with this shader: gouraud, phong, normalmap, npr, depth, normal, or a GLSL twin: glsl-gouraud, glsl-phong, glsl-npr");
+  render->add_option("--shading", shading, "Draw every object with this shader: gouraud, phong, normalmap, npr, depth, normal, or a GLSL twin: glsl-gouraud, glsl-phong, glsl-normalmap, glsl-npr, glsl-depth, glsl-normal");
   render->add_option("--frames", frames, "Render frames A..B of the animation (render.fps a second), numbered files");
   render->add_flag("--stats", stats,
                   "Print the pipeline's counters; with a scene file JSON per frame and per pass (shadow, objects, planar_shadows, gbuffer, lighting) with ms");

@@ -1,5 +1,6 @@
 // The scene engine's shaders written in GLSL and run through tessel::glsl: twins of the C++
-// GouraudShader, PhongShader (with 2D shadow maps and PCF) and NprShader that read the same
+// GouraudShader, PhongShader (Blinn or Phong specular, textures, 2D and cube shadow maps with
+// PCF), NormalMapShader, NprShader, DepthShader and NormalShader that read the same
 // RenderState and give the same images (within 1/255; tests/scene/test_glsl_twins.cpp). They
 // show what the notes' GLSL looks like in this engine, and let `tessel render --shading
 // glsl-phong` draw any scene file through the GLSL compiler.
@@ -14,7 +15,7 @@ namespace tessel::scene {
 
 class GlslShader : public Shader {
  public:
-  enum class Kind { Gouraud, Phong, Npr };
+  enum class Kind { Gouraud, Phong, NormalMap, Npr, Depth, Normal };
   // Compiles and links the program (throws gpu::Error with the info log if it fails).
   explicit GlslShader(Kind kind, int npr_bands = 2, float npr_silhouette = 0.2f);
   ~GlslShader() override;
@@ -28,7 +29,8 @@ class GlslShader : public Shader {
   std::unique_ptr<Impl> impl_;
 };
 
-// "glsl-gouraud", "glsl-phong", "glsl-npr" (nullptr if unknown).
+// "glsl-gouraud", "glsl-phong", "glsl-normalmap", "glsl-npr", "glsl-depth", "glsl-normal"
+// (nullptr if unknown).
 std::shared_ptr<const Shader> glsl_shader_by_name(const std::string& name);
 
 }  // namespace tessel::scene
