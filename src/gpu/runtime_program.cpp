@@ -58,14 +58,23 @@ template <int K, bool Packed> struct RuntimeBridge {
                    F::load(lanes.position[3]));
   }
 
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>& in, Fragment<F>& f) const {
-    constexpr int N = lane_width<F>;
+  // The lane rows the fragment stage reads and writes on this thread. The raster loop stores
+  // the interpolated varyings straight into them and calls fragment_stored.
+  static FragmentLanes& fragment_lanes() {
     thread_local FragmentLanes lanes;
-    const RuntimeShape& shape = u->shape();
+    return lanes;
+  }
+  template <class F> void fragment(const Uniforms& u, const Varyings<F>& in, Fragment<F>& f) const {
     if constexpr (K > 0) {
-      const int n = std::min(K, shape.varyings);
-      for (int k = 0; k < n; ++k) in.v[k].store(lanes.varyings[k]);
+      FragmentLanes& lanes = fragment_lanes();
+      for (int k = 0; k < K; ++k) in.v[k].store(lanes.varyings[k]);
     }
+    fragment_stored(u, f);
+  }
+  template <class F> void fragment_stored(const Uniforms& u, Fragment<F>& f) const {
+    constexpr int N = lane_width<F>;
+    FragmentLanes& lanes = fragment_lanes();
+    const RuntimeShape& shape = u->shape();
     f.coord.x.store(lanes.coord[0]);
     f.coord.y.store(lanes.coord[1]);
     f.coord.z.store(lanes.coord[2]);

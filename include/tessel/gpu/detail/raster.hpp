@@ -244,8 +244,10 @@ template <class S> class Program final : public ProgramBase {
       for (int k = 0; k < K; ++k) {
         lanes[k] = F::load(st.v[k]);
         if (!((linear >> k) & 1)) lanes[k] = lanes[k] * w;
+        // A run-time shader reads its inputs from lane rows: stored there straight away.
+        if constexpr (shader_runtime<S>()) lanes[k].store(S::fragment_lanes().varyings[k]);
       }
-      std::memcpy(&vary, lanes, sizeof lanes);
+      if constexpr (!shader_runtime<S>()) std::memcpy(&vary, lanes, sizeof lanes);
     }
     Fragment<F> f;
     const F cx = F::load(st.v[K]), cy = F::load(st.v[K + 1]);
@@ -256,7 +258,8 @@ template <class S> class Program final : public ProgramBase {
     for (int i = 0; i < shader_outputs<S>(); ++i) f.color[size_t(i)] = Vec4<F>(F(0.0f));
     f.depth = f.coord.z;
     f.killed = MaskOf<F>(false);
-    shader_.fragment(uniforms_, vary, f);
+    if constexpr (shader_runtime<S>()) shader_.fragment_stored(uniforms_, f);
+    else shader_.fragment(uniforms_, vary, f);
     const Vec4<F>& col = f.color[0];
     alignas(32) int32_t px[16], xs[16], ys[16];
     (to_unorm8(col.x.lo) | (to_unorm8(col.y.lo) << 8) | (to_unorm8(col.z.lo) << 16) | (to_unorm8(col.w.lo) << 24)).store(px);
@@ -468,9 +471,10 @@ template <class S> class Program final : public ProgramBase {
           v = plane(pla + k, plb + k, K, fx, fy);
           if (!(((flat | noperspective) >> k) & 1)) v = v * w;
         }
-        lanes[k] = v;
+        if constexpr (shader_runtime<S>()) v.store(S::fragment_lanes().varyings[k]);
+        else lanes[k] = v;
       }
-      std::memcpy(&vary, lanes, sizeof lanes);
+      if constexpr (!shader_runtime<S>()) std::memcpy(&vary, lanes, sizeof lanes);
     }
     Fragment<F> f;
     f.coord = Vec4<F>(cx, cy, z, oow);
@@ -479,7 +483,8 @@ template <class S> class Program final : public ProgramBase {
     for (int i = 0; i < outputs; ++i) f.color[size_t(i)] = Vec4<F>(F(0.0f));
     f.depth = z;
     f.killed = MaskOf<F>(false);
-    shader_.fragment(uniforms_, vary, f);
+    if constexpr (shader_runtime<S>()) shader_.fragment_stored(uniforms_, f);
+    else shader_.fragment(uniforms_, vary, f);
     if constexpr (shader_discards<S>()) mask &= ~f.killed.bits();
     if constexpr (shader_writes_depth<S>()) z = clamp(f.depth, F(0.0f), F(1.0f));
     c.fragments_shaded += unsigned(__builtin_popcount(mask));
