@@ -970,6 +970,15 @@ class Lowerer {
     const TType& xt = x->getType();
     const Base xb = base_or_float(xt);
     switch (op) {
+      case glslang::EOpTextureQuerySize: {
+        // textureSize of a sampler without levels (sampler2DRect) has one argument, so
+        // glslang makes it a unary node: the same lowering as with a level.
+        glslang::TIntermAggregate call(op);
+        call.getSequence().push_back(x);
+        call.setType(u->getType());
+        call.setLoc(u->getLoc());
+        return texture(&call);
+      }
       case glslang::EOpPostIncrement:
       case glslang::EOpPostDecrement:
       case glslang::EOpPreIncrement:

@@ -920,5 +920,372 @@ TEST(GlslConformance, Derivatives) {
        {0, 0});
 }
 
+// --- varyings: perspective, noperspective, flat integers, gl_FragCoord, gl_FrontFacing ---------------
+
+// Two triangles with a different w at each vertex (so perspective correction matters), one
+// counter-clockwise and one clockwise; the shared edge misses the pixel centres.
+reference::GlslDrawSpec varying_spec(const std::string& vs, const std::string& fs) {
+  reference::GlslDrawSpec s;
+  s.vertex = vs;
+  s.fragment = fs;
+  const float pos[] = {-1, -1, 1, -1, 1, 0.97f, -1, -0.97f, -1, 1, 1, 1};
+  const float w[] = {1.0f, 2.5f, 0.6f, 1.7f, 0.8f, 3.0f};
+  reference::GlslAttribute ap{"pos", 4, {}}, acol{"col", 4, {}}, aint{"bits", 4, {}, true, {}};
+  for (int v = 0; v < 6; ++v) {
+    ap.data.insert(ap.data.end(),
+                   {pos[v * 2] * w[v], pos[v * 2 + 1] * w[v], (0.2f * float(v) - 0.5f) * w[v], w[v]});
+    acol.data.insert(acol.data.end(), {float(v), 10.0f - float(v * v), 0.125f * float(v), -3.0f + float(v)});
+    aint.idata.insert(aint.idata.end(),
+                      {v * 1000 - 2500, int32_t(0x80000000u) + v, int32_t(0x7f800001) + v, -v});
+  }
+  s.attributes = {ap, acol, aint};
+  s.count = 6;
+  s.outputs = 4;
+  return s;
+}
+
+TEST(GlslConformance, Varyings) {
+  const char* vs = R"(#version 330
+in vec4 pos; in vec4 col; in ivec4 bits;
+out vec4 sm; noperspective out vec4 np; smooth out vec2 sm2; noperspective out float np1;
+flat out int f1; flat out ivec2 f2; flat out uvec3 f3; flat out ivec4 f4; flat out float ff; flat out uvec4 f5;
+void main() {
+  gl_Position = pos;
+  sm = col; np = col * 2.0 - 1.0; sm2 = col.yx; np1 = col.w;
+  f1 = bits.x; f2 = bits.yz; f3 = uvec3(bits.zwx); f4 = bits; ff = col.y; f5 = uvec4(bits) * 3u;
+})";
+  // Tolerance for interpolated values (smooth, noperspective, gl_FragCoord.zw): llvmpipe
+  // interpolates from its plane equations, Tessel from its setup's barycentric planes; they
+  // differ by an ulp or two. Their derivatives are differences of two such values (up to
+  // 10 here, an ulp ~1e-6): 4e-6 absolute. Flat values and gl_FrontFacing are exact.
+  const Tolerance interp{2e-6f, 2e-6f};
+  struct {
+    const char* name;
+    const char* body;
+    Tolerance tol;
+  } cases[] = {
+      {"smooth and noperspective", "c = sm; c1 = np; c2 = vec4(sm2, np1, 0.0); c3 = vec4(0.0);", interp},
+      {"flat integers of several sizes",
+       "c = vec4(f1 >> 16, f1 & 0xFFFF, f2.x >> 16, f2.x & 0xFFFF); c1 = vec4(f2.y >> 16, f2.y & 0xFFFF, "
+       "f3.xy >> 16u);"
+       " c2 = vec4(f4.zw & 0xFFFF, f3.z >> 16u, ff); c3 = vec4(f5 >> 16u);",
+       {0, 0}},
+      {"gl_FragCoord and gl_FrontFacing",
+       "c = gl_FragCoord; c1 = vec4(gl_FrontFacing ? 1.0 : -1.0, float(gl_FrontFacing), 0.0, 0.0); c2 = "
+       "vec4(0.0);"
+       " c3 = vec4(1.0 / gl_FragCoord.w);",
+       interp},
+      {"derivatives of varyings",
+       "c = dFdx(sm); c1 = dFdy(np); c2 = vec4(fwidth(sm2), 0.0, 0.0); c3 = vec4(dFdx(gl_FragCoord.w));",
+       {4e-6f, 1e-6f}},
+  };
+  for (const auto& k : cases) {
+    SCOPED_TRACE(k.name);
+    const std::string fs = std::string(R"(#version 330
+in vec4 sm; noperspective in vec4 np; smooth in vec2 sm2; noperspective in float np1;
+flat in int f1; flat in ivec2 f2; flat in uvec3 f3; flat in ivec4 f4; flat in float ff; flat in uvec4 f5;
+layout(location = 0) out vec4 c; layout(location = 1) out vec4 c1; layout(location = 2) out vec4 c2;
+layout(location = 3) out vec4 c3;
+void main() { )") + k.body +
+                           " }\n";
+    run_spec(k.name, varying_spec(vs, fs), k.tol);
+  }
+}
+
+// --- textures --------------------------------------------------------------------------------------
+
+// A texture of pseudo-random texel values (so each level and filter weight shows).
+reference::GlslTexture noise_texture(uint32_t target, int w, int h, int faces = 1) {
+  reference::GlslTexture t;
+  t.target = target;
+  t.width = w;
+  t.height = h;
+  uint32_t x = 12345;
+  for (int k = 0; k < w * h * faces * 4; ++k) {
+    x = x * 1664525u + 1013904223u;
+    t.data.push_back(float(x >> 8) / 16777216.0f);
+  }
+  return t;
+}
+
+const uint32_t kFilters[] = {0x2600, 0x2601, 0x2700, 0x2701, 0x2702, 0x2703};
+const char* filter_name(uint32_t f) {
+  switch (f) {
+    case 0x2600:
+      return "NEAREST";
+    case 0x2601:
+      return "LINEAR";
+    case 0x2700:
+      return "NEAREST_MIPMAP_NEAREST";
+    case 0x2701:
+      return "LINEAR_MIPMAP_NEAREST";
+    case 0x2702:
+      return "NEAREST_MIPMAP_LINEAR";
+    default:
+      return "LINEAR_MIPMAP_LINEAR";
+  }
+}
+const uint32_t kWraps[] = {0x2901, 0x812F, 0x8370,
+                           0x812D};  // REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT, CLAMP_TO_BORDER
+
+// Tessel applies texel offsets in units of level 0's texels (docs/glsl.md, not yet fixed),
+// GLSL in units of the level sampled: with a mipmap filter an offset is only checked tier
+// against tier, not against Mesa.
+bool offset_on_mip_levels(const std::string& body, const reference::GlslTexture& tx) {
+  return body.find("Offset") != std::string::npos && tx.mipmaps && tx.min_filter >= 0x2700;
+}
+
+void run_texture(const std::string& name, const std::string& decl, const std::string& body,
+                 reference::GlslTexture tx, Tolerance tol, const std::string& version_fs = "") {
+  SCOPED_TRACE(name);
+  reference::GlslDrawSpec spec;
+  if (version_fs.empty()) {
+    spec = quad_spec(kVertex330, fragment2(decl, "  " + body));
+  } else {
+    spec = quad_spec(
+        "#version 120\nattribute vec2 pos;\nvarying vec2 p;\nvoid main() { p = pos * 0.5 + 0.5; gl_Position "
+        "= "
+        "vec4(pos, 0.0, 1.0); }\n",
+        version_fs);
+  }
+  spec.outputs = version_fs.empty() ? 2 : 1;
+  spec.textures = {tx};
+  spec.uniforms = {{"s", {}, {0}}};
+  run_spec(name, spec, tol, 0xF, !offset_on_mip_levels(body, tx));
+}
+
+// The coordinates: uv crosses [0, 1] (wrapping) at a scale that grows down the rows, so that
+// the implicit level of detail walks the mip chain.
+const char* kUv = "vec2 uv = (p - 0.4) * exp2(p.y * 5.0 - 1.0) + 0.5;";
+
+// Tolerance 1e-6 (a few ulp of values in [0, 1]): the mip levels come from glGenerateMipmap
+// on one side and Texture2D::generate_mipmaps on the other, whose box filters round the last
+// bit differently (NEAREST_MIPMAP_NEAREST on level 1 already differs by one ulp), and linear
+// filtering blends in a different order of lerps. Texel choice, wrapping, level selection
+// and offsets are exact: any of them wrong moves a result by far more.
+const Tolerance kTexTol{1e-6f, 1e-6f};
+
+TEST(GlslConformance, Texture2DFunctionsFiltersAndWraps) {
+  const char* funcs[] = {
+      "outf(texture(s, uv));",
+      "outf(texture(s, uv, p.x * 3.0 - 1.0));",
+      "outf(textureProj(s, vec3(uv * (1.0 + p.x), 1.0 + p.x)));",
+      "outf(textureProj(s, vec4(uv * 2.0, 0.7, 2.0)));",
+      "outf(textureLod(s, uv, p.x * 5.0 - 0.5));",
+      "outf(textureOffset(s, uv, ivec2(1, -2)));",
+      "outf(textureOffset(s, uv, ivec2(-3, 2), 0.5));",
+      "outf(textureProjOffset(s, vec3(uv * 1.5, 1.5), ivec2(2, 1)));",
+      "outf(textureLodOffset(s, uv, p.y * 4.0, ivec2(-1, 3)));",
+      "outf(textureGrad(s, uv, vec2(p.x * 0.3, 0.01), vec2(0.02, p.y * 0.2)));",
+      "outf(textureGradOffset(s, uv, vec2(0.05, p.x * 0.1), vec2(0.0, 0.3 * p.y), ivec2(2, -1)));",
+      "outf(textureProjLod(s, vec3(uv, 1.0) * 2.0, p.y * 3.0));",
+      "outf(textureProjGrad(s, vec4(uv, 0.0, 1.0) * 1.5, vec2(0.1 * p.x, 0.0), vec2(0.0, 0.07)));",
+      "outf(texelFetch(s, ivec2(i % 16, i / 16) >> (i % 3), i % 3));",
+      "outf(texelFetchOffset(s, ivec2(i % 8, i / 32), 1, ivec2(-1, 2)));",
+      "outf(vec4(textureSize(s, 1), textureSize(s, 3)) + vec4(textureSize(s, 0), textureSize(s, 4)));",
+  };
+  int shaders = 0;
+  for (const char* f : funcs)
+    for (uint32_t filter : kFilters) {
+      // Fetches and sizes do not filter: one filter for them.
+      if ((std::string(f).find("texel") != std::string::npos ||
+           std::string(f).find("Size") != std::string::npos) &&
+          filter != 0x2703)
+        continue;
+      reference::GlslTexture tx = noise_texture(0x0DE1, 16, 16);
+      tx.mipmaps = true;
+      tx.min_filter = filter;
+      tx.mag_filter = filter == 0x2600 || filter == 0x2700 || filter == 0x2702 ? 0x2600 : 0x2601;
+      run_texture(std::string(f) + " " + filter_name(filter), "uniform sampler2D s;",
+                  std::string(kUv) + " " + f, tx, kTexTol);
+      ++shaders;
+    }
+  for (uint32_t wrap : kWraps)
+    for (const char* f :
+         {"outf(texture(s, uv * 2.0 - 0.5));", "outf(textureOffset(s, uv * 3.0 - 1.0, ivec2(-2, 3)));",
+          "outf(textureLod(s, uv * 2.5 - 1.0, p.x * 3.0));"})
+      for (uint32_t filter : {0x2600u, 0x2601u, 0x2703u}) {
+        reference::GlslTexture tx = noise_texture(0x0DE1, 8, 4);
+        tx.mipmaps = true;
+        tx.wrap = wrap;
+        tx.min_filter = filter;
+        tx.mag_filter = filter == 0x2600 ? 0x2600 : 0x2601;
+        run_texture(fmt("%s wrap 0x%x %s", f, wrap, filter_name(filter)), "uniform sampler2D s;",
+                    std::string(kUv) + " " + f, tx, kTexTol);
+        ++shaders;
+      }
+  std::printf("2D textures: %d shaders\n", shaders);
+}
+
+TEST(GlslConformance, Texture1DRectCubeAndShadow) {
+  int shaders = 0;
+  // sampler1D.
+  const char* f1[] = {
+      "outf(texture(s, uv.x));",
+      "outf(texture(s, uv.x, 1.0));",
+      "outf(textureProj(s, vec2(uv.x * 2.0, 2.0)));",
+      "outf(textureLod(s, uv.x, p.y * 4.0));",
+      "outf(textureOffset(s, uv.x, -3));",
+      "outf(textureGrad(s, uv.x, p.x * 0.2, 0.0));",
+      "outf(texelFetch(s, i % 16, 0) + vec4(textureSize(s, 1)));",
+  };
+  for (const char* f : f1)
+    for (uint32_t filter : {0x2600u, 0x2703u}) {
+      reference::GlslTexture tx = noise_texture(0x0DE0, 16, 1);
+      tx.mipmaps = true;
+      tx.min_filter = filter;
+      tx.mag_filter = filter == 0x2600 ? 0x2600 : 0x2601;
+      run_texture(std::string("1D ") + f + filter_name(filter), "uniform sampler1D s;",
+                  std::string(kUv) + " " + f, tx, kTexTol);
+      ++shaders;
+    }
+  // sampler2DRect: texel coordinates, no mipmaps.
+  const char* fr[] = {
+      "outf(texture(s, uv * vec2(12.0, 6.0)));",
+      "outf(textureProj(s, vec3(uv * vec2(24.0, 12.0), 2.0)));",
+      "outf(textureOffset(s, uv * vec2(12.0, 6.0), ivec2(2, -1)));",
+      "outf(texelFetch(s, ivec2(i % 12, i / 48)) + vec4(textureSize(s), 0.0, 0.0));",
+      "outf(textureGrad(s, uv * vec2(12.0, 6.0), vec2(1.0, 0.0), vec2(0.0, 3.0)));",
+  };
+  for (const char* f : fr)
+    for (uint32_t filter : {0x2600u, 0x2601u}) {
+      reference::GlslTexture tx = noise_texture(0x84F5, 12, 6);
+      tx.min_filter = tx.mag_filter = filter;
+      tx.wrap = 0x812F;
+      run_texture(std::string("Rect ") + f + filter_name(filter), "uniform sampler2DRect s;",
+                  std::string(kUv) + " " + f, tx, kTexTol);
+      ++shaders;
+    }
+  // samplerCube: directions with one clearly largest axis (the face of a tie is the
+  // implementation's), inside the face (seamless filtering across faces is off).
+  const char* fc[] = {
+      "outf(texture(s, vec3(p * 2.4 - 1.2, 1.6)));",
+      "outf(texture(s, vec3(-1.7, p.yx * 2.0 - 1.0), 0.5));",
+      "outf(textureLod(s, vec3(p.x - 0.5, -1.9, p.y - 0.5), p.x * 3.0));",
+      "outf(textureGrad(s, vec3(1.8, p - 0.5), vec3(0.0, 0.1 * p.x, 0.0), vec3(0.0, 0.0, 0.05)));",
+      "outf(texture(s, vec3(p.x - 0.5, 1.1, p.y * 1.8 - 0.9)) + texture(s, vec3(p.yx - 0.5, -1.2)));",
+      "outf(vec4(textureSize(s, 1), textureSize(s, 2)) + vec4(textureSize(s, 0), textureSize(s, 3)));",
+  };
+  for (const char* f : fc)
+    for (uint32_t filter : {0x2600u, 0x2601u, 0x2703u}) {
+      if (std::string(f).find("Size") != std::string::npos && filter != 0x2703) continue;
+      reference::GlslTexture tx = noise_texture(0x8513, 8, 8, 6);
+      tx.mipmaps = true;
+      tx.min_filter = filter;
+      tx.mag_filter = filter == 0x2600 ? 0x2600 : 0x2601;
+      tx.wrap = 0x812F;
+      run_texture(std::string("Cube ") + f + filter_name(filter), "uniform samplerCube s;",
+                  std::string(kUv) + " " + f, tx, kTexTol);
+      ++shaders;
+    }
+  // sampler2DShadow with every compare function.
+  const char* fs[] = {
+      "outf(vec4(texture(s, vec3(uv, p.x)), texture(s, vec3(uv.yx, 0.5), 0.5), 0.0, 1.0));",
+      "outf(vec4(textureProj(s, vec4(uv * 2.0, p.y * 2.0, 2.0)), textureLod(s, vec3(uv, 0.4), 1.0), "
+      "textureOffset(s, vec3(uv, p.x), ivec2(1, 1)), textureGrad(s, vec3(uv, 0.6), vec2(0.1, 0.0), vec2(0.0, "
+      "0.1))));",
+  };
+  for (uint32_t func = 0x0200; func <= 0x0207; ++func)
+    for (const char* f : fs) {
+      reference::GlslTexture tx;
+      tx.width = tx.height = 8;
+      tx.internal_format = 0x8CAC;
+      for (int k = 0; k < 64; ++k) tx.data.push_back(float((k * 37) % 64) / 63.0f);
+      tx.compare = true;
+      tx.compare_func = func;
+      tx.min_filter = tx.mag_filter = func % 2 ? 0x2601 : 0x2600;
+      tx.wrap = 0x812F;
+      run_texture(fmt("2DShadow func 0x%x %s", func, f), "uniform sampler2DShadow s;",
+                  std::string(kUv) + " " + f, tx, kTexTol);
+      ++shaders;
+    }
+  std::printf("1D, Rect, Cube and shadow textures: %d shaders\n", shaders);
+}
+
+// The GLSL 1.10/1.20 names, through the compatibility path.
+TEST(GlslConformance, TextureLegacyNames) {
+  struct {
+    uint32_t target;
+    const char* decl;
+    const char* body;
+  } cases[] = {
+      {0x0DE1, "uniform sampler2D s;", "gl_FragColor = texture2D(s, uv) + texture2D(s, uv.yx, 1.0);"},
+      {0x0DE1, "uniform sampler2D s;",
+       "gl_FragColor = texture2DProj(s, vec3(uv, 1.0) * 1.5) + texture2DProj(s, vec4(uv, 0.3, 1.0));"},
+      {0x0DE0, "uniform sampler1D s;",
+       "gl_FragColor = texture1D(s, uv.x) + texture1DProj(s, vec2(uv.x, 1.0) * 2.0);"},
+      {0x8513, "uniform samplerCube s;",
+       "gl_FragColor = textureCube(s, vec3(p - 0.5, 1.5)) + textureCube(s, vec3(-1.5, p - 0.5), 1.0);"},
+      {0, "uniform sampler2DShadow s;",
+       "gl_FragColor = shadow2D(s, vec3(uv, p.x)) + shadow2DProj(s, vec4(uv, p.y, 1.0) * 2.0);"},
+  };
+  for (const auto& k : cases) {
+    reference::GlslTexture tx;
+    if (k.target == 0) {
+      tx.width = tx.height = 8;
+      tx.internal_format = 0x8CAC;
+      for (int q = 0; q < 64; ++q) tx.data.push_back(float((q * 29) % 64) / 63.0f);
+      tx.compare = true;
+    } else {
+      tx = noise_texture(k.target, 8, k.target == 0x0DE0 ? 1 : 8, k.target == 0x8513 ? 6 : 1);
+      tx.mipmaps = true;
+    }
+    tx.min_filter = 0x2703;
+    tx.mag_filter = 0x2601;
+    tx.wrap = 0x812F;
+    const std::string fs = std::string("#version 120\nvarying vec2 p;\n") + k.decl + "\nvoid main() {\n  " +
+                           kUv + "\n  " + k.body + "\n}\n";
+    run_texture(k.body, "", "", tx, kTexTol, fs);
+  }
+}
+
+// --- the set catches wrong results at the edges ------------------------------------------------------
+
+// A min() that does not return the other operand for a NaN, a roundEven() that rounds halves
+// up, and an int() that does not give INT_MIN out of range all differ from Mesa on the edge
+// values of the tables, at the tables' tolerance (0).
+TEST(GlslConformance, EdgeValuesCatchAWrongResult) {
+  if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
+  const std::string decl = tables() + generators(-10, 10, true) + generators(-10, 10, false, "0");
+  const std::pair<const char*, const char*> pairs[] = {
+      {"float a = genf(i); float b = genf((i * 3 + 11) & 255); outf(vec4(min(a, b), max(a, b), 0.0, 0.0));",
+       "float a = genf(i); float b = genf((i * 3 + 11) & 255); outf(vec4(a < b ? a : b, a > b ? a : b, 0.0, "
+       "0.0));"},
+      {"float a = genf(i); outf(vec4(roundEven(a), 0.0, 0.0, 0.0));",
+       "float a = genf(i); outf(vec4(floor(a + 0.5), 0.0, 0.0, 0.0));"},
+      {"float a = genf(i); outi(uvec4(int(a), 0, 0, 0));",
+       "float a = genf(i); outi(uvec4(int(clamp(a, -2147483520.0, 2147483520.0)), 0, 0, 0));"},
+  };
+  for (const auto& [right, wrong] : pairs) {
+    SCOPED_TRACE(right);
+    reference::GlslDrawSpec spec = quad_spec(kVertex330, fragment2(decl, std::string("  ") + right));
+    spec.outputs = 2;
+    const reference::GlslResult mesa = oracle()->run(spec);
+    ASSERT_TRUE(mesa.ok) << mesa.log;
+    const TesselResult ours = run_tessel(spec);
+    ASSERT_TRUE(ours.ok) << ours.log;
+    EXPECT_EQ(compare_floats(ours.outputs[0], mesa.outputs[0], 16, {0, 0}).count +
+                  compare_floats(ours.outputs[1], mesa.outputs[1], 16, {0, 0}).count,
+              0);
+    spec.fragment = fragment2(decl, std::string("  ") + wrong);
+    const TesselResult bad = run_tessel(spec);
+    ASSERT_TRUE(bad.ok) << bad.log;
+    EXPECT_GT(compare_floats(bad.outputs[0], mesa.outputs[0], 16, {0, 0}).count +
+                  compare_floats(bad.outputs[1], mesa.outputs[1], 16, {0, 0}).count,
+              0);
+  }
+}
+
+// How many shaders were compared, when the tests run in one process (not under ctest, which
+// runs each test alone).
+class CountShaders : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    if (shaders_compared() > 0)
+      std::printf("GLSL shaders compared with Mesa or between tiers: %d\n", shaders_compared());
+  }
+};
+[[maybe_unused]] ::testing::Environment* const kCount = ::testing::AddGlobalTestEnvironment(new CountShaders);
+
 }  // namespace
 }  // namespace tessel::testing
