@@ -1032,7 +1032,8 @@ const uint32_t kWraps[] = {0x2901, 0x812F, 0x8370,
 // GLSL in units of the level sampled: with a mipmap filter an offset is only checked tier
 // against tier, not against Mesa.
 bool offset_on_mip_levels(const std::string& body, const reference::GlslTexture& tx) {
-  return body.find("Offset") != std::string::npos && tx.mipmaps && tx.min_filter >= 0x2700;
+  return body.find("Offset") != std::string::npos && body.find("texelFetch") == std::string::npos &&
+         tx.mipmaps && tx.min_filter >= 0x2700;
 }
 
 void run_texture(const std::string& name, const std::string& decl, const std::string& body,
