@@ -446,11 +446,11 @@ void run_texture(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl) {
       float x = lanef(0, l), y = d1 ? 0.5f : lanef(1, l);
       float r = 0.0f;
       if (t.shadow) r = lanef(2, l);  // (s, t, ref) for 2D; (s, unused, ref) for 1D
-      if (t.proj) {
-        const float q = lanef(t.coords - 1, l);
-        x /= q;
-        if (!d1) y /= q;
-        r /= q;
+      if (t.proj) {  // times the reciprocal, as llvmpipe projects
+        const float q = 1.0f / lanef(t.coords - 1, l);
+        x *= q;
+        if (!d1) y *= q;
+        r *= q;
       }
       if (t.dim == ir::SamplerDim::Rect) {
         x /= w0;

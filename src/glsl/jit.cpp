@@ -72,6 +72,8 @@ class Codegen {
   llvm::Function* build(const std::string& name) {
     auto* fty = llvm::FunctionType::get(i32_, {ptr_, ptr_, i32_, ptr_, i32_}, false);
     fn_ = llvm::Function::Create(fty, llvm::Function::ExternalLinkage, name, m_);
+    // The code runs with denormals flushed (program.cpp): LLVM must not fold as if not.
+    fn_->addFnAttr("denormal-fp-math", "preserve-sign,preserve-sign");
     auto args = fn_->arg_begin();
     lanes_ = &*args++;
     uniforms_ = &*args++;
@@ -602,7 +604,7 @@ struct Hasher {
 
 // What a cached object was made for: the code generator's version, this format, the CPU.
 std::string host_id() {
-  std::string id = std::string("tessel-jit-2 llvm-") + LLVM_VERSION_STRING + " " + llvm::sys::getHostCPUName().str();
+  std::string id = std::string("tessel-jit-3 llvm-") + LLVM_VERSION_STRING + " " + llvm::sys::getHostCPUName().str();
   llvm::StringMap<bool> features;
   if (llvm::sys::getHostCPUFeatures(features)) {
     std::vector<std::string> on;

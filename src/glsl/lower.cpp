@@ -970,6 +970,15 @@ class Lowerer {
     const TType& xt = x->getType();
     const Base xb = base_or_float(xt);
     switch (op) {
+      case glslang::EOpTextureQuerySize: {
+        // textureSize of a sampler without levels (sampler2DRect) has one argument, so
+        // glslang makes it a unary node: the same lowering as with a level.
+        glslang::TIntermAggregate call(op);
+        call.getSequence().push_back(x);
+        call.setType(u->getType());
+        call.setLoc(u->getLoc());
+        return texture(&call);
+      }
       case glslang::EOpPostIncrement:
       case glslang::EOpPostDecrement:
       case glslang::EOpPreIncrement:
@@ -1126,24 +1135,42 @@ class Lowerer {
     }
     return acc;
   }
+  // A 3x3 determinant expanded along the first column, s(c, r) its elements: (s00 (s11 s22 -
+  // s21 s12) - s01 (s10 s22 - s20 s12)) + s02 (s10 s21 - s20 s11), in the order llvmpipe's
+  // inverse() evaluates it.
+  template <class At>
+  Reg det3_by_column(At s) {
+    Reg r = emit(Op::FMul, s(0, 0), det2(s(1, 1), s(2, 1), s(1, 2), s(2, 2)));
+    r = emit(Op::FSub, r, emit(Op::FMul, s(0, 1), det2(s(1, 0), s(2, 0), s(1, 2), s(2, 2))));
+    return emit(Op::FAdd, r, emit(Op::FMul, s(0, 2), det2(s(1, 0), s(2, 0), s(1, 1), s(2, 1))));
+  }
+  // The adjugate over the determinant, each element divided (not multiplied by 1 / det), with
+  // the cofactors and the determinant in llvmpipe's order of operations.
   Val inverse(const Val& m, int n) {
     auto at = [&](int c, int r) { return m[size_t(c * n + r)]; };
-    const Reg inv_det = emit(Op::FDiv, fconst(1.0f), determinant(m, n));
-    Val r(size_t(n * n));
-    for (int c = 0; c < n; ++c) {
+    Val adj(size_t(n * n));
+    for (int c = 0; c < n; ++c)
       for (int row = 0; row < n; ++row) {
-        // inverse[c][row] = cofactor(row, c) / det  (the adjugate is the transposed cofactors)
-        Val sub;
-        for (int cc = 0; cc < n; ++cc) {
-          if (cc == row) continue;
-          for (int rr = 0; rr < n; ++rr)
-            if (rr != c) sub.push_back(at(cc, rr));
+        // adj[c][row] is the cofactor of m[row][c]: without column `row` and row `c`.
+        int cols[3], rows[3], nc = 0, nr = 0;
+        for (int k = 0; k < n; ++k) {
+          if (k != row) cols[nc++] = k;
+          if (k != c) rows[nr++] = k;
         }
-        Reg minor = n == 2 ? sub[0] : determinant(sub, n - 1);
-        if ((row + c) & 1) minor = emit(Op::FNeg, minor);
-        r[size_t(c * n + row)] = emit(Op::FMul, minor, inv_det);
+        auto s = [&](int i, int j) { return at(cols[i], rows[j]); };
+        Reg v = n == 2 ? s(0, 0) : n == 3 ? det2(s(0, 0), s(1, 0), s(0, 1), s(1, 1)) : det3_by_column(s);
+        if ((row + c) & 1) v = emit(Op::FNeg, v);
+        adj[size_t(c * n + row)] = v;
       }
+    Reg det;
+    if (n == 2) det = det2(at(0, 0), at(1, 0), at(0, 1), at(1, 1));
+    else if (n == 3) det = det3_by_column(at);
+    else {  // m00 adj00 + (m01 adj10 + (m02 adj20 + m03 adj30))
+      det = emit(Op::FMul, at(0, 3), adj[size_t(3 * n)]);
+      for (int k = 2; k >= 0; --k) det = emit(Op::FAdd, emit(Op::FMul, at(0, k), adj[size_t(k * n)]), det);
     }
+    Val r(adj.size());
+    for (size_t k = 0; k < adj.size(); ++k) r[k] = emit(Op::FDiv, adj[k], det);
     return r;
   }
 

@@ -14,6 +14,9 @@
 #include <cstdlib>
 #include <set>
 #include <string_view>
+#if defined(__SSE__) || defined(_M_X64)
+#include <xmmintrin.h>
+#endif
 
 #include "front.hpp"
 #include "interp.hpp"
@@ -72,6 +75,22 @@ struct Program::Impl {
 
 namespace {
 
+// llvmpipe runs its shaders with the SSE control register's flush-to-zero and
+// denormals-are-zero bits set (denormal results become zero of the same sign, denormal
+// operands read as zero), and GLSL allows it. Both tiers run under the same bits for the
+// time of a shader call, so their results agree with llvmpipe's and with each other through
+// denormals; the C++ shaders and the rest of the pipeline keep IEEE denormals.
+class DenormalsFlushed {
+ public:
+#if defined(__SSE__) || defined(_M_X64)
+  DenormalsFlushed() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }  // FTZ | DAZ
+  ~DenormalsFlushed() { _mm_setcsr(saved_); }
+
+ private:
+  unsigned saved_;
+#endif
+};
+
 class Bound final : public gpu::RuntimeShader {
  public:
   Bound(std::shared_ptr<const Linked> l, std::vector<uint32_t> u, std::vector<TextureUnit> t)
@@ -81,6 +100,7 @@ class Bound final : public gpu::RuntimeShader {
   const gpu::RuntimeShape& shape() const override { return l_->shape; }
 
   void vertex(gpu::VertexLanes& lanes) const override {
+    const DenormalsFlushed ftz;
     if (l_->jit) {
       const RunInputs in = inputs(false);
       l_->jit->function(0)(&lanes, uniforms_.data(), uint32_t(uniforms_.size()), &in, 0xFFFFu);
@@ -95,6 +115,7 @@ class Bound final : public gpu::RuntimeShader {
   }
 
   void fragment(gpu::FragmentLanes& lanes) const override {
+    const DenormalsFlushed ftz;
     if (l_->jit) {
       const RunInputs in = inputs(true);
       lanes.killed = l_->jit->function(1)(&lanes, uniforms_.data(), uint32_t(uniforms_.size()), &in, 0xFFFFu);

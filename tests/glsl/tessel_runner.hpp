@@ -94,6 +94,7 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
     st.mag_filter = to_filter(t.mag_filter);
     st.wrap_s = st.wrap_t = st.wrap_r = to_wrap(t.wrap);
     st.compare = t.compare;
+    st.compare_func = gpu::CompareFunc(t.compare_func - 0x0200u);  // GL_NEVER.. in GL's order
     if (!t.mipmaps) st.max_lod = 0.0f;
     const bool depth = t.internal_format == 0x8CAC;  // GL_DEPTH_COMPONENT32F
     const gpu::Format fmt = depth ? gpu::Format::Depth32F : t.internal_format == 0x8058 ? gpu::Format::RGBA8 : gpu::Format::RGBA32F;

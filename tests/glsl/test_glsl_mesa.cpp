@@ -10,75 +10,10 @@
 #include <cstring>
 #include <map>
 
-#include "compare.hpp"
-#include "glsl_oracle.hpp"
-#include "tessel_runner.hpp"
+#include "mesa_case.hpp"
 
 namespace tessel::testing {
 namespace {
-
-reference::GlslOracle* oracle() {
-  static std::unique_ptr<reference::GlslOracle> o = [] {
-    std::string why;
-    auto p = reference::GlslOracle::create(&why);
-    if (!p) std::fprintf(stderr, "no Mesa oracle: %s\n", why.c_str());
-    return p;
-  }();
-  return o.get();
-}
-
-const char* kVertex330 = R"(#version 330
-layout(location = 0) in vec2 pos;
-out vec2 p;
-void main() { p = pos * 0.5 + 0.5; gl_Position = vec4(pos, 0.0, 1.0); }
-)";
-
-// A fragment shader whose main() runs `body` with `t` in [0, 1] across the 256 pixels
-// (one value per pixel, the same on both sides), `i` the pixel index, writing vec4 `c`.
-std::string fragment330(const std::string& decl, const std::string& body) {
-  return "#version 330\nin vec2 p;\nout vec4 c;\n" + decl +
-         "\nvoid main() {\n  int i = int(gl_FragCoord.x) + 16 * int(gl_FragCoord.y);\n  float t = float(i) / 255.0;\n  " +
-         body + "\n}\n";
-}
-
-reference::GlslDrawSpec quad_spec(const std::string& vs, const std::string& fs) {
-  reference::GlslDrawSpec s;
-  s.vertex = vs;
-  s.fragment = fs;
-  s.attributes.push_back({"pos", 2, {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1}});
-  s.count = 6;
-  return s;
-}
-
-struct Case {
-  std::string name;
-  std::string decl, body;
-  Tolerance tol;
-  unsigned channels = 0xF;
-  std::vector<reference::GlslUniform> uniforms = {};
-  std::vector<reference::GlslTexture> textures = {};
-};
-
-void run_case(const Case& c) {
-  if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
-  reference::GlslDrawSpec spec = quad_spec(kVertex330, fragment330(c.decl, c.body));
-  spec.uniforms = c.uniforms;
-  spec.textures = c.textures;
-  const reference::GlslResult mesa = oracle()->run(spec);
-  ASSERT_TRUE(mesa.ok) << "Mesa: " << mesa.log << "\n" << spec.fragment;
-  const TesselResult ours = run_tessel(spec);
-  ASSERT_TRUE(ours.ok) << "Tessel: " << ours.log << "\n" << spec.fragment;
-  ASSERT_EQ(ours.outputs.size(), mesa.outputs.size());
-  const Mismatch m = compare_floats(ours.outputs[0], mesa.outputs[0], spec.width, c.tol, c.channels);
-  EXPECT_EQ(m.count, 0) << c.name << ":" << m.first << "\n" << spec.fragment;
-  // The interpreter (the reference tier) gives the JIT's bits exactly.
-  ::setenv("TESSEL_GLSL", "interp", 1);
-  const TesselResult interp = run_tessel(spec);
-  ::unsetenv("TESSEL_GLSL");
-  ASSERT_TRUE(interp.ok) << interp.log;
-  EXPECT_EQ(0, std::memcmp(interp.outputs[0].data(), ours.outputs[0].data(), ours.outputs[0].size() * 4))
-      << c.name << ": the interpreter and the JIT differ";
-}
 
 // --- the tables -------------------------------------------------------------------------------
 
