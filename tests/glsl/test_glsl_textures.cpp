@@ -321,6 +321,23 @@ TEST(GlslTextures, SamplerBuffer) {
       kExact);
 }
 
+// RGBA8 3D and array textures: llvmpipe filters them in 8-bit fixed point and returns 8-bit
+// results; Tessel filters them in float (its 16-bit fixed-point path is the 2D texture() one),
+// so linear results differ by up to about one step of 8-bit colour (measured: 4.6e-3 at most,
+// where mip levels of high contrast are blended). Fetches are exact.
+TEST(GlslTextures, Rgba8WithinTwoSteps) {
+  constexpr Tolerance kTwoSteps{2.0f / 255.0f, 0};
+  reference::GlslTexture t3 = filtered(colour_texture(kTex3D, 8, 8, 4), kLinearMipmapLinear, kLinear, kRepeat, true);
+  t3.internal_format = kRGBA8;
+  run("uniform sampler3D tex;", "c = texture(tex, vec3(p.yx * 1.6 - 0.31, t * 1.8 - 0.4));", t3, kTwoSteps);
+  run("uniform sampler3D tex;", "c = textureLod(tex, vec3(p.yx * 1.6 - 0.31, t * 1.8 - 0.4), 0.5);", t3, kTwoSteps);
+  run("uniform sampler3D tex;", "c = texelFetch(tex, ivec3(i % 8, (i / 8) % 8, i / 64), 0);", t3, kExact);
+  reference::GlslTexture a = filtered(colour_texture(kTex2DArray, 8, 8, 4), kLinearMipmapLinear, kLinear, kRepeat, true);
+  a.internal_format = kRGBA8;
+  run("uniform sampler2DArray tex;", "c = texture(tex, vec3(p.yx * 1.6 - 0.31, t * 4.0));", a, kTwoSteps);
+  run("uniform sampler2DArray tex;", "c = textureLod(tex, vec3(p.yx * 1.6 - 0.31, t * 4.0), 0.4);", a, kTwoSteps);
+}
+
 // Reflection: the GL type enums of the new sampler types.
 TEST(GlslTextures, SamplerTypeEnums) {
   const char* vs = "#version 330\nvoid main() { gl_Position = vec4(0.0); }\n";
