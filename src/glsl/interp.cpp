@@ -375,6 +375,106 @@ const TextureUnit* unit_of(const ir::TexOp& t, const RunInputs& in_) {
 
 
 
+// 3D, array and buffer textures and samplerCubeShadow, lane by lane (run_texture's other
+// targets; 1D arrays are height-1 2D arrays, read at t = 0.5).
+void run_texture_layered(const ir::TexOp& t, const TextureUnit* unit, const RunInputs& in_, TexLanes& tl) {
+  using ir::SamplerDim;
+  auto lanef = [&](int k, int l) { return f(tl.in[k][l]); };
+  auto lanei = [&](int k, int l) { return s(tl.in[k][l]); };
+  auto put = [&](int l, const glm::vec4& v) {
+    for (int k = 0; k < 4; ++k) tl.out[k][l] = t.result == 0 ? u(v[k]) : uint32_t(t.result == 1 ? f2i(v[k]) : f2u(v[k]));
+  };
+  const bool d1 = t.dim == SamplerDim::D1, d3 = t.dim == SamplerDim::D3, cube = t.dim == SamplerDim::Cube;
+  const gpu::Texture3D* t3 = unit ? unit->texture_3d : nullptr;
+  const gpu::Texture2DArray* ta = unit ? unit->texture_2d_array : nullptr;
+  const gpu::TextureCube* tc = unit ? unit->texture_cube : nullptr;
+  if (t.kind == ir::TexKind::Size) {
+    for (int l = 0; l < L; ++l) {
+      const int level = lanei(TexLanes::kLod, l);
+      glm::ivec3 sz(0);
+      if (t.dim == SamplerDim::Buffer) {
+        if (unit && unit->texture_buffer) sz.x = unit->texture_buffer->size();
+      } else if (d3) {
+        if (t3 && level >= 0 && level < t3->levels()) sz = {t3->width(level), t3->height(level), t3->depth(level)};
+      } else if (t.array) {
+        if (ta && level >= 0 && level < ta->levels())
+          sz = d1 ? glm::ivec3(ta->width(level), ta->layers(), 0) : glm::ivec3(ta->width(level), ta->height(level), ta->layers());
+      } else if (tc && level >= 0 && level < tc->levels()) {
+        sz = {tc->face(0).width(level), tc->face(0).height(level), 0};
+      }
+      for (int k = 0; k < 3; ++k) tl.out[k][l] = uint32_t(sz[k]);
+      tl.out[3][l] = 0;
+    }
+    return;
+  }
+  if (t.kind == ir::TexKind::Fetch) {
+    for (int l = 0; l < L; ++l) {
+      const int x = lanei(0, l) + t.offset[0], level = lanei(TexLanes::kLod, l);
+      if (t.dim == SamplerDim::Buffer) put(l, gpu::detail::texel_fetch(unit ? unit->texture_buffer : nullptr, lanei(0, l)));
+      else if (d3) put(l, gpu::detail::texel_fetch(t3, x, lanei(1, l) + t.offset[1], lanei(2, l) + t.offset[2], level));
+      else if (d1) put(l, gpu::detail::texel_fetch(ta, x, 0, lanei(1, l), level));
+      else put(l, gpu::detail::texel_fetch(ta, x, lanei(1, l) + t.offset[1], lanei(2, l), level));
+    }
+    return;
+  }
+  // The coordinates: (s, t, r) of a 3D texture, (s, t, layer) of an array (t = 0.5 for 1D),
+  // the direction of a cube, then the reference of a shadow lookup.
+  alignas(64) float c[4][L];
+  const int spatial = cube || d3 ? 3 : d1 ? 1 : 2;
+  for (int l = 0; l < L; ++l) {
+    const float q = t.proj ? lanef(t.coords - 1, l) : 1.0f;
+    int k = 0;
+    c[0][l] = lanef(k++, l);
+    c[1][l] = spatial >= 2 ? lanef(k++, l) : 0.5f;
+    c[2][l] = spatial == 3 || t.array ? lanef(k++, l) : 0.0f;
+    c[3][l] = t.shadow ? lanef(k, l) : 0.0f;
+    if (t.proj) {  // textureProj: 3D only (arrays and cubes have none)
+      for (int i = 0; i < 3; ++i) c[i][l] /= q;
+    }
+  }
+  int w = 1, h = 1, d = 1;
+  if (d3 && t3) w = t3->width(), h = t3->height(), d = t3->depth();
+  if (t.array && ta) w = ta->width(), h = ta->height();
+  if (cube && tc) w = h = tc->size();
+  const bool implicit = !t.has_lod && !t.has_grad;
+  gpu::SamplerState state = unit ? unit->sampler : gpu::SamplerState{};
+  if (t.shadow) state.compare = true;
+  for (int l = 0; l < L; ++l) {
+    float lod = 0.0f;
+    if (t.has_lod) {
+      lod = lanef(TexLanes::kLod, l);
+    } else if (t.has_grad && !cube) {
+      const glm::vec3 dx(lanef(TexLanes::kDx, l), spatial >= 2 ? lanef(TexLanes::kDx + 1, l) : 0.0f,
+                         d3 ? lanef(TexLanes::kDx + 2, l) : 0.0f);
+      const glm::vec3 dy(lanef(TexLanes::kDy, l), spatial >= 2 ? lanef(TexLanes::kDy + 1, l) : 0.0f,
+                         d3 ? lanef(TexLanes::kDy + 2, l) : 0.0f);
+      lod = d3 ? gpu::detail::lod_from_derivatives_3d(dx, dy, {w, h, d})
+               : gpu::detail::lod_from_derivatives(dx.x, dx.y, dy.x, dy.y, w, h);
+    } else if (implicit && in_.fragment) {
+      // One LOD per 2x2 quad, from its origin and its x and y neighbours.
+      const int q = l & ~3;
+      const glm::vec3 o(c[0][q], c[1][q], c[2][q]), rx(c[0][q | 1], c[1][q | 1], c[2][q | 1]),
+          ry(c[0][q | 2], c[1][q | 2], c[2][q | 2]);
+      if (cube) lod = gpu::detail::cube_quad_lod(o, rx, ry, w);
+      else if (d3) lod = gpu::detail::lod_from_derivatives_3d(rx - o, ry - o, {w, h, d});
+      else lod = gpu::detail::lod_from_derivatives(rx.x - o.x, rx.y - o.y, ry.x - o.x, ry.y - o.y, w, h);
+    }
+    if (t.has_bias) lod += lanef(TexLanes::kLod, l);
+    if (cube) {
+      const float v = gpu::detail::sample_cube_compare({tc, state}, c[0][l], c[1][l], c[2][l], c[3][l], lod);
+      put(l, glm::vec4(v, v, v, 1.0f));
+    } else if (d3) {
+      put(l, gpu::detail::sample_3d({t3, state}, c[0][l], c[1][l], c[2][l], lod, {t.offset[0], t.offset[1], t.offset[2]}));
+    } else if (t.shadow) {
+      const float v = gpu::detail::sample_2d_array_compare({ta, state}, c[0][l], c[1][l], c[2][l], c[3][l], lod,
+                                                           {t.offset[0], t.offset[1]});
+      put(l, glm::vec4(v, v, v, 1.0f));
+    } else {
+      put(l, gpu::detail::sample_2d_array({ta, state}, c[0][l], c[1][l], c[2][l], lod, {t.offset[0], t.offset[1]}));
+    }
+  }
+}
+
 }  // namespace
 
 void run_texture(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl) {
@@ -384,6 +484,11 @@ void run_texture(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl) {
       for (int k = 0; k < 4; ++k) tl.out[k][l] = op.result == 0 ? u(v[k]) : uint32_t(op.result == 1 ? f2i(v[k]) : f2u(v[k]));
     };
     const TextureUnit* unit = unit_of(t, in_);
+    if (t.dim == ir::SamplerDim::D3 || t.dim == ir::SamplerDim::Buffer || t.array ||
+        (t.dim == ir::SamplerDim::Cube && t.shadow)) {
+      run_texture_layered(t, unit, in_, tl);
+      return;
+    }
     const gpu::Texture2D* tex2 = unit ? unit->texture_2d : nullptr;
     const gpu::TextureCube* cube = unit ? unit->texture_cube : nullptr;
     const glm::vec4 missing(0.0f, 0.0f, 0.0f, 1.0f);

@@ -15,6 +15,9 @@ struct TextureUnit {
   const gpu::Texture2D* texture_2d = nullptr;
   const gpu::TextureCube* texture_cube = nullptr;
   gpu::SamplerState sampler;
+  const gpu::Texture3D* texture_3d = nullptr;
+  const gpu::Texture2DArray* texture_2d_array = nullptr;
+  const gpu::TextureBuffer* texture_buffer = nullptr;
 };
 
 struct alignas(64) LaneReg {

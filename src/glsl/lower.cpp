@@ -969,6 +969,13 @@ class Lowerer {
     TIntermTyped* x = u->getOperand();
     const TType& xt = x->getType();
     const Base xb = base_or_float(xt);
+    if (op == glslang::EOpTextureQuerySize) {  // textureSize(samplerBuffer): no level argument
+      TIntermAggregate call(op);
+      call.getSequence().push_back(x);
+      call.setType(u->getType());
+      call.setLoc(u->getLoc());
+      return texture(&call);
+    }
     switch (op) {
       case glslang::EOpTextureQuerySize: {
         // textureSize of a sampler without levels (sampler2DRect) has one argument, so

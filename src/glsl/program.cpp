@@ -656,7 +656,7 @@ std::shared_ptr<const gpu::RuntimeShader> Program::bind(std::span<const TextureB
   if (!m.ok) throw gpu::Error("draw: the program is not linked: " + m.log);
   std::vector<TextureUnit> u;
   u.reserve(units.size());
-  for (const TextureBinding& b : units) u.push_back({b.texture_2d, b.texture_cube, b.sampler});
+  for (const TextureBinding& b : units) u.push_back({b.texture_2d, b.texture_cube, b.sampler, b.texture_3d, b.texture_2d_array, b.texture_buffer});
   std::vector<uint32_t> values = m.values;
   for (size_t i = 0; i < m.blocks.size(); ++i) {
     const UniformBlockLayout& bl = m.layout.blocks[i];

@@ -887,3 +887,5 @@ glm::ivec2 textureSize(const Sampler2D& s, int level) {
 }
 
 }  // namespace tessel::gpu
+
+#include "texture_layered.inc"

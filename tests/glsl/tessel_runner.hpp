@@ -84,9 +84,15 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
     else if (!u.u.empty()) done = try_set(u.u.data(), u.u.size());
     if (!done) r.log += "uniform '" + u.name + "' could not be set\n";
   }
-  // Textures (2D and cube faces, RGBA32F data).
+  // Textures: 1D and rectangle ones as 2D, 1D arrays as height-1 2D arrays, buffer textures
+  // as views of a buffer of RGBA32F texels (integer formats hold their values as floats, which
+  // the isampler/usampler lookups convert back).
   std::vector<std::unique_ptr<gpu::Texture2D>> textures;
   std::vector<std::unique_ptr<gpu::TextureCube>> cubes;
+  std::vector<std::unique_ptr<gpu::Texture3D>> volumes;
+  std::vector<std::unique_ptr<gpu::Texture2DArray>> arrays;
+  std::vector<std::unique_ptr<gpu::Buffer>> texel_buffers;
+  std::vector<std::unique_ptr<gpu::TextureBuffer>> buffer_textures;
   std::vector<glsl::TextureBinding> units(16);
   for (const auto& t : spec.textures) {
     gpu::SamplerState st;
@@ -98,27 +104,51 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
     if (!t.mipmaps) st.max_lod = 0.0f;
     const bool depth = t.internal_format == 0x8CAC;  // GL_DEPTH_COMPONENT32F
     const gpu::Format fmt = depth ? gpu::Format::Depth32F : t.internal_format == 0x8058 ? gpu::Format::RGBA8 : gpu::Format::RGBA32F;
-    if (t.target == 0x8513) {  // cube
-      cubes.push_back(std::make_unique<gpu::TextureCube>(fmt, t.width, t.mipmaps ? 0 : 1));
-      for (int f = 0; f < 6; ++f) {
-        const float* d = t.data.data() + size_t(f) * size_t(t.width * t.height * 4);
-        cubes.back()->face(f).upload_rgba32f(0, d, size_t(t.width * t.height * 16));
-      }
-      if (t.mipmaps) cubes.back()->generate_mipmaps();
-      units.at(size_t(t.unit)).texture_cube = cubes.back().get();
-    } else {
-      textures.push_back(std::make_unique<gpu::Texture2D>(fmt, t.width, t.height, t.mipmaps ? 0 : 1));
-      if (depth) {
-        std::vector<float> rgba(size_t(t.width * t.height) * 4);
-        for (size_t i = 0; i < size_t(t.width * t.height); ++i) rgba[i * 4] = t.data[i];
-        textures.back()->upload_rgba32f(0, rgba.data(), rgba.size() * 4);
-      } else {
-        textures.back()->upload_rgba32f(0, t.data.data(), t.data.size() * 4);
-      }
-      if (t.mipmaps) textures.back()->generate_mipmaps();
-      units.at(size_t(t.unit)).texture_2d = textures.back().get();
+    // The data as RGBA floats (depth textures give one float per texel).
+    std::vector<float> rgba = t.data;
+    if (depth) {
+      rgba.assign(t.data.size() * 4, 0.0f);
+      for (size_t i = 0; i < t.data.size(); ++i) rgba[i * 4] = t.data[i];
     }
-    units.at(size_t(t.unit)).sampler = st;
+    const int levels = t.mipmaps ? 0 : 1;
+    glsl::TextureBinding& unit = units.at(size_t(t.unit));
+    switch (t.target) {
+      case 0x8513: {  // GL_TEXTURE_CUBE_MAP
+        cubes.push_back(std::make_unique<gpu::TextureCube>(fmt, t.width, levels));
+        const size_t face = size_t(t.width * t.height * 4);
+        for (int f = 0; f < 6; ++f) cubes.back()->face(f).upload_rgba32f(0, rgba.data() + size_t(f) * face, face * 4);
+        if (t.mipmaps) cubes.back()->generate_mipmaps();
+        unit.texture_cube = cubes.back().get();
+        break;
+      }
+      case 0x806F:  // GL_TEXTURE_3D
+        volumes.push_back(std::make_unique<gpu::Texture3D>(fmt, t.width, t.height, t.depth, levels));
+        volumes.back()->upload_rgba32f(0, rgba.data(), size_t(t.width * t.height * t.depth) * 16);
+        if (t.mipmaps) volumes.back()->generate_mipmaps();
+        unit.texture_3d = volumes.back().get();
+        break;
+      case 0x8C1A:    // GL_TEXTURE_2D_ARRAY
+      case 0x8C18: {  // GL_TEXTURE_1D_ARRAY: height is the layer count
+        const bool one = t.target == 0x8C18;
+        arrays.push_back(std::make_unique<gpu::Texture2DArray>(fmt, t.width, one ? 1 : t.height, one ? t.height : t.depth, levels));
+        arrays.back()->upload_rgba32f(0, rgba.data(), size_t(t.width * t.height * (one ? 1 : t.depth)) * 16);
+        if (t.mipmaps) arrays.back()->generate_mipmaps();
+        unit.texture_2d_array = arrays.back().get();
+        break;
+      }
+      case 0x8C2A:  // GL_TEXTURE_BUFFER
+        texel_buffers.push_back(std::make_unique<gpu::Buffer>(rgba.data(), size_t(t.width) * 16));
+        buffer_textures.push_back(std::make_unique<gpu::TextureBuffer>(gpu::Format::RGBA32F, *texel_buffers.back()));
+        unit.texture_buffer = buffer_textures.back().get();
+        break;
+      default:
+        textures.push_back(std::make_unique<gpu::Texture2D>(fmt, t.width, t.height, levels));
+        textures.back()->upload_rgba32f(0, rgba.data(), size_t(t.width * t.height) * 16);
+        if (t.mipmaps) textures.back()->generate_mipmaps();
+        unit.texture_2d = textures.back().get();
+        break;
+    }
+    unit.sampler = st;
   }
   // Targets.
   std::vector<std::unique_ptr<gpu::Texture2D>> colors;

@@ -609,6 +609,7 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
       case GL_TEXTURE_CUBE_MAP:
         texels = size_t(t.width) * size_t(t.height) * 6;
         break;
+      case GL_TEXTURE_BUFFER: texels = size_t(t.width); break;
       default:
         problems.add(tname + "unsupported target " + hex(t.target));
         continue;
@@ -657,6 +658,17 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
       case GL_TEXTURE_3D: case GL_TEXTURE_2D_ARRAY:
         glTexImage3D(t.target, 0, ifmt, t.width, t.height, t.depth, 0, format, type, pixels);
         break;
+      case GL_TEXTURE_BUFFER: {
+        // The texels as they are laid out in memory, in a buffer object the texture reads.
+        GLuint buf = 0;
+        glGenBuffers(1, &buf);
+        obj.vbos.push_back(buf);  // deleted with the run's other buffers
+        glBindBuffer(GL_TEXTURE_BUFFER, buf);
+        glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(texels * texel_bytes), pixels, GL_STATIC_DRAW);
+        glTexBuffer(GL_TEXTURE_BUFFER, GLenum(ifmt), buf);
+        glBindBuffer(GL_TEXTURE_BUFFER, 0);
+        break;
+      }
       case GL_TEXTURE_CUBE_MAP: {
         // GL_TEXTURE_CUBE_MAP_POSITIVE_X + i runs +X -X +Y -Y +Z -Z, the order of the data.
         const size_t face_bytes = size_t(t.width) * size_t(t.height) * texel_bytes;
@@ -666,6 +678,10 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
                        static_cast<const char*>(pixels) + face_bytes * size_t(face));
         break;
       }
+    }
+    if (t.target == GL_TEXTURE_BUFFER) {  // no sampler state, no levels
+      check_gl(("uploading " + tname.substr(0, tname.size() - 2)).c_str(), &problems);
+      continue;
     }
     const bool rect = t.target == GL_TEXTURE_RECTANGLE;
     glTexParameteri(t.target, GL_TEXTURE_BASE_LEVEL, 0);

@@ -65,7 +65,10 @@ struct GlslTexture {
   int unit = 0;  // texture image unit (the sampler uniform must be set to it by the caller)
   // GL_TEXTURE_2D; also GL_TEXTURE_1D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP (6 faces stacked
   // in data, +X -X +Y -Y +Z -Z), GL_TEXTURE_2D_ARRAY (depth = layers), GL_TEXTURE_1D_ARRAY
-  // (height = layers), GL_TEXTURE_RECTANGLE.
+  // (height = layers), GL_TEXTURE_RECTANGLE, GL_TEXTURE_BUFFER (width texels, uploaded with
+  // glBufferData, 16 bytes each, so the internal format must be GL_RGBA32F, GL_RGBA32I or
+  // GL_RGBA32UI; read with glTexBuffer; it has no sampler state, so the fields below the data
+  // are ignored). Depth formats work for 2D, 1D, array and cube targets.
   uint32_t target = 0x0DE1;
   int width = 1, height = 1, depth = 1;
   // GL_RGBA32F; also GL_RGBA8 (the floats are converted by GL), any other float or

@@ -60,10 +60,18 @@ struct LinkOptions {
 };
 
 // A texture unit as the program's samplers see it.
+// Each sampler type reads the texture of its kind: sampler1D/2D/2DRect and their shadow
+// forms texture_2d, samplerCube(Shadow) texture_cube, sampler3D texture_3d, sampler2DArray,
+// sampler1DArray (a height-1 array) and their shadow forms texture_2d_array, samplerBuffer
+// texture_buffer (which the sampler state does not apply to). isampler/usampler read the
+// same textures, their values converted to integers.
 struct TextureBinding {
   const gpu::Texture2D* texture_2d = nullptr;
   const gpu::TextureCube* texture_cube = nullptr;
   gpu::SamplerState sampler;
+  const gpu::Texture3D* texture_3d = nullptr;
+  const gpu::Texture2DArray* texture_2d_array = nullptr;
+  const gpu::TextureBuffer* texture_buffer = nullptr;
 };
 
 // A range of a buffer bound to a uniform buffer binding point (glBindBufferRange).

@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "tessel/gpu/buffer.hpp"
 #include "tessel/gpu/format.hpp"
 #include "tessel/gpu/resource.hpp"
 #include "tessel/gpu/vec.hpp"
@@ -127,6 +128,113 @@ class TextureCube : public Resource {
   std::array<std::unique_ptr<Texture2D>, 6> faces_;
 };
 
+// --- 3D, array and buffer textures ------------------------------------------------------
+// The limits llvmpipe reports (GL_MAX_3D_TEXTURE_SIZE, GL_MAX_ARRAY_TEXTURE_LAYERS,
+// GL_MAX_TEXTURE_BUFFER_SIZE), and a bound on the bytes of one texture's levels so that a
+// huge request is an Error instead of an exhausted machine.
+inline constexpr int kMax3DTextureSize = 2048;
+inline constexpr int kMaxArrayTextureLayers = 2048;
+inline constexpr size_t kMaxTextureBufferTexels = size_t(1) << 27;
+inline constexpr size_t kMaxTextureBytes = size_t(1) << 32;
+
+// One mip level of a 3D or array texture: `depth` slices (or layers) of width x height
+// texels, each stored as a 2D Level is (rows bottom-up), slice 0 first, tightly packed.
+struct Level3D {
+  int width = 0, height = 0, depth = 0;
+  std::vector<std::byte> data;
+  size_t slice_bytes() const { return depth > 0 ? data.size() / size_t(depth) : 0; }
+};
+
+// A 3D texture (GL_TEXTURE_3D): levels halve all three sizes down to 1x1x1 (GL 4.6 §8.14.3).
+// Colour formats only (GL has no 3D depth textures).
+class Texture3D : public Resource {
+ public:
+  // levels = 0: the full chain. Throws Error for a size outside [1, kMax3DTextureSize], a
+  // depth format, too many levels or more than kMaxTextureBytes in all.
+  Texture3D(Format format, int width, int height, int depth, int levels = 1);
+  Texture3D(Texture3D&&) = default;
+  ~Texture3D() override { flush_before_destruction(); }
+
+  Format format() const { return format_; }
+  int width(int level = 0) const { return levels_.at(size_t(level)).width; }
+  int height(int level = 0) const { return levels_.at(size_t(level)).height; }
+  int depth(int level = 0) const { return levels_.at(size_t(level)).depth; }
+  int levels() const { return int(levels_.size()); }
+  const Level3D& level(int i) const { return levels_.at(size_t(i)); }
+
+  // A whole level from tightly packed texels of the texture's format (glTexImage3D's order:
+  // rows bottom-up, slices front to back); or from RGBA floats, converted.
+  void upload(int level, const void* data, size_t bytes);
+  void upload_rgba32f(int level, const float* rgba, size_t bytes);
+  // Levels 1.. from level 0 by 2x2x2 box filtering (odd sizes weighted as Texture2D does).
+  void generate_mipmaps();
+  // One texel as floats (as Texture2D::fetch); Error outside the level.
+  glm::vec4 fetch(int level, int x, int y, int z) const;
+  void store(int level, int x, int y, int z, const glm::vec4& value);
+
+ private:
+  Format format_;
+  std::vector<Level3D> levels_;
+};
+
+// A 2D array texture (GL_TEXTURE_2D_ARRAY), and a 1D array texture (GL_TEXTURE_1D_ARRAY) as
+// one of height 1: `layers` images of one size; levels halve width and height, never the
+// layer count. Depth formats are allowed (sampler2DArrayShadow, sampler1DArrayShadow).
+class Texture2DArray : public Resource {
+ public:
+  // levels = 0: the full chain. Throws Error for a size outside [1, kMaxTextureSize], layers
+  // outside [1, kMaxArrayTextureLayers], too many levels or more than kMaxTextureBytes.
+  Texture2DArray(Format format, int width, int height, int layers, int levels = 1);
+  Texture2DArray(Texture2DArray&&) = default;
+  ~Texture2DArray() override { flush_before_destruction(); }
+
+  Format format() const { return format_; }
+  int width(int level = 0) const { return levels_.at(size_t(level)).width; }
+  int height(int level = 0) const { return levels_.at(size_t(level)).height; }
+  int layers() const { return levels_[0].depth; }
+  int levels() const { return int(levels_.size()); }
+  const Level3D& level(int i) const { return levels_.at(size_t(i)); }
+
+  // A whole level, every layer (layer 0 first, as glTexImage3D takes them), or one layer.
+  void upload(int level, const void* data, size_t bytes);
+  void upload_rgba32f(int level, const float* rgba, size_t bytes);
+  void upload_layer(int level, int layer, const void* data, size_t bytes);
+  // Levels 1.. of every layer from level 0 (each layer as Texture2D::generate_mipmaps).
+  void generate_mipmaps();
+  glm::vec4 fetch(int level, int x, int y, int layer) const;
+  void store(int level, int x, int y, int layer, const glm::vec4& value);
+
+ private:
+  Format format_;
+  std::vector<Level3D> levels_;
+};
+
+// A buffer texture (GL_TEXTURE_BUFFER, glTexBuffer / glTexBufferRange): texels of `format`
+// read straight from a Buffer, which must outlive the view. Not filtered, no levels: shaders
+// read it with texelFetch (samplerBuffer). With size kWholeBuffer the view follows the
+// buffer's size as it changes; a range is read only as far as the buffer still reaches.
+class TextureBuffer {
+ public:
+  static constexpr size_t kWholeBuffer = ~size_t(0);
+  // Throws Error for a depth format, an offset not a multiple of the texel size, a range
+  // past the buffer's end, or more than kMaxTextureBufferTexels texels.
+  TextureBuffer(Format format, const Buffer& buffer, size_t offset = 0, size_t size = kWholeBuffer);
+  Format format() const { return format_; }
+  const Buffer& buffer() const { return *buffer_; }
+  size_t offset() const { return offset_; }
+  // The texels readable now (textureSize): whole texels of the range that the buffer holds,
+  // at most kMaxTextureBufferTexels.
+  int size() const;
+  // Texel i as floats (as Texture2D::fetch); (0, 0, 0, 0) outside [0, size()), as GL's
+  // robust buffer access and llvmpipe give.
+  glm::vec4 fetch(int i) const;
+
+ private:
+  Format format_;
+  const Buffer* buffer_;
+  size_t offset_, size_;
+};
+
 // What a shader's uniforms hold to sample a texture.
 struct Sampler2D {
   const Texture2D* texture = nullptr;
@@ -145,6 +253,16 @@ struct Sampler2DShadow {
                      .compare = true};
 };
 
+struct Sampler3D {
+  const Texture3D* texture = nullptr;
+  SamplerState state;
+};
+// 2D and 1D arrays; with state.compare a depth array compares (sampler2DArrayShadow).
+struct Sampler2DArray {
+  const Texture2DArray* texture = nullptr;
+  SamplerState state;
+};
+
 // --- the sampling functions (texture.cpp has the scalar core; these apply it per lane) ----
 namespace detail {
 // One texel of format f at p as floats (as Texture2D::fetch), and back (as Texture2D::store,
@@ -158,6 +276,30 @@ float sample_2d_compare(const Sampler2DShadow& s, float u, float v, float ref, f
 // LOD from the derivatives of the texture coordinates (GL 4.6 §8.14.1, equations 8.5-8.7).
 float lod_from_derivatives(float dudx, float dvdx, float dudy, float dvdy, int width, int height);
 glm::vec4 texel_fetch(const Texture2D* t, int x, int y, int level);
+
+// 3D, array and cube-compare lookups at an explicit LOD; `offset` is a constant texel offset
+// (textureOffset), added in the selected level's texel space. A missing texture samples as
+// (0,0,0,1), a missing shadow texture as 0.
+glm::vec4 sample_3d(const Sampler3D& s, float u, float v, float w, float lod, glm::ivec3 offset = {});
+// The layer is round(layer) clamped to [0, layers - 1] (array_layer).
+glm::vec4 sample_2d_array(const Sampler2DArray& s, float u, float v, float layer, float lod, glm::ivec2 offset = {});
+// state.compare on: the filtered fraction of texels that pass the comparison with ref.
+float sample_2d_array_compare(const Sampler2DArray& s, float u, float v, float layer, float ref, float lod,
+                              glm::ivec2 offset = {});
+// samplerCubeShadow: the face is selected first, then its texels are compared and filtered.
+float sample_cube_compare(const SamplerCube& s, float x, float y, float z, float ref, float lod);
+// The array layer of a coordinate: round to nearest (ties to even, as llvmpipe rounds), then
+// clamped to [0, layers - 1] (GL 4.6 §8.14.2).
+int array_layer(float layer, int layers);
+// The LOD from the derivatives of three coordinates (GL 4.6 eq. 8.7 with the 3D rho).
+float lod_from_derivatives_3d(const glm::vec3& ddx, const glm::vec3& ddy, const glm::ivec3& size);
+// The LOD of a cube lookup in a 2x2 quad from its origin lane and its x and y neighbours,
+// all projected on the origin's face (as texture(SamplerCube) takes it).
+float cube_quad_lod(const glm::vec3& origin, const glm::vec3& right, const glm::vec3& up, int size);
+// texelFetch: (0, 0, 0, 0) outside the level (and for a missing level), (0,0,0,1) without a texture.
+glm::vec4 texel_fetch(const Texture3D* t, int x, int y, int z, int level);
+glm::vec4 texel_fetch(const Texture2DArray* t, int x, int y, int layer, int level);
+glm::vec4 texel_fetch(const TextureBuffer* t, int i);
 }  // namespace detail
 
 // Implicit-LOD sampling. On eight lanes the LOD is taken per 2x2 quad from its derivatives;
@@ -187,6 +329,18 @@ template <class F> F textureProj(const Sampler2DShadow& s, const Vec4<F>& p) {
 Vec4<float> texelFetch(const Sampler2D& s, int x, int y, int level);
 Vec4<Float8> texelFetch(const Sampler2D& s, Int8 x, Int8 y, int level);
 glm::ivec2 textureSize(const Sampler2D& s, int level);
+
+// The GLSL functions of 3D and array textures, one lane (no neighbours: implicit LOD is the
+// base level plus bias). The glsl layer's programs sample them lane by lane with these cores.
+Vec4<float> texture(const Sampler3D& s, const Vec3<float>& uvw);
+Vec4<float> textureLod(const Sampler3D& s, const Vec3<float>& uvw, float lod);
+Vec4<float> texelFetch(const Sampler3D& s, int x, int y, int z, int level);
+glm::ivec3 textureSize(const Sampler3D& s, int level);
+// (u, v, layer); a 1D array texture is a height-1 one read at v = 0.5.
+Vec4<float> texture(const Sampler2DArray& s, const Vec3<float>& uvl);
+Vec4<float> textureLod(const Sampler2DArray& s, const Vec3<float>& uvl, float lod);
+Vec4<float> texelFetch(const Sampler2DArray& s, int x, int y, int layer, int level);
+glm::ivec3 textureSize(const Sampler2DArray& s, int level);  // (width, height, layers)
 
 // Sixteen lanes (two 4x2 groups side by side) sample as their two halves of eight; trilinear
 // RGBA8 has a path of its own for sixteen lanes (detail/texture_simd.hpp), with the same result.
