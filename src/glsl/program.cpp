@@ -77,19 +77,11 @@ namespace {
 
 // llvmpipe runs its shaders with the SSE control register's flush-to-zero and
 // denormals-are-zero bits set (denormal results become zero of the same sign, denormal
-// operands read as zero), and GLSL allows it. Both tiers run under the same bits for the
-// time of a shader call, so their results agree with llvmpipe's and with each other through
-// denormals; the C++ shaders and the rest of the pipeline keep IEEE denormals.
-class DenormalsFlushed {
- public:
-#if defined(__SSE__) || defined(_M_X64)
-  DenormalsFlushed() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }  // FTZ | DAZ
-  ~DenormalsFlushed() { _mm_setcsr(saved_); }
-
- private:
-  unsigned saved_;
-#endif
-};
+// operands read as zero), and GLSL allows it. Both tiers run under the same bits, so their
+// results agree with llvmpipe's and with each other through denormals. In a draw the pipeline
+// sets them once around the program's work (RuntimeShape::flush_denormals: its vertex batches
+// and its raster loop, interpolation included, as llvmpipe's are one piece of generated
+// code); a direct call sets them for the call. C++ shaders keep IEEE denormals.
 
 class Bound final : public gpu::RuntimeShader {
  public:
@@ -100,7 +92,7 @@ class Bound final : public gpu::RuntimeShader {
   const gpu::RuntimeShape& shape() const override { return l_->shape; }
 
   void vertex(gpu::VertexLanes& lanes) const override {
-    const DenormalsFlushed ftz;
+    const gpu::ScopedDenormalFlush ftz(true);  // a no-op inside the pipeline's draw
     if (l_->jit) {
       const RunInputs in = inputs(false);
       l_->jit->function(0)(&lanes, uniforms_.data(), uint32_t(uniforms_.size()), &in, 0xFFFFu);
@@ -115,7 +107,7 @@ class Bound final : public gpu::RuntimeShader {
   }
 
   void fragment(gpu::FragmentLanes& lanes) const override {
-    const DenormalsFlushed ftz;
+    const gpu::ScopedDenormalFlush ftz(true);  // a no-op inside the pipeline's draw
     if (l_->jit) {
       const RunInputs in = inputs(true);
       lanes.killed = l_->jit->function(1)(&lanes, uniforms_.data(), uint32_t(uniforms_.size()), &in, 0xFFFFu);
@@ -398,6 +390,7 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
   linked->shape.discards = fs.ir.discards;
   linked->shape.writes_depth = fs.ir.writes_depth;
   linked->shape.lanes_independent = !fs.ir.uses_derivatives;
+  linked->shape.flush_denormals = true;
   if (!errors.empty()) {
     m.log = errors;
     return p;

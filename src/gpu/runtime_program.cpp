@@ -32,6 +32,7 @@ template <int K, bool Packed> struct RuntimeBridge {
   static constexpr bool writes_depth = !Packed;
   static constexpr bool lanes_independent = Packed;
   static constexpr int outputs = Packed ? 1 : kMaxColorAttachments;
+  static ScopedDenormalFlush float_mode(const Uniforms& u) { return ScopedDenormalFlush(u->shape().flush_denormals); }
 
   template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
     constexpr int N = lane_width<F>;

@@ -17,6 +17,9 @@
 #pragma once
 
 #include <cstdint>
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 #include "tessel/gpu/shader.hpp"
 #include "tessel/gpu/state.hpp"
@@ -35,6 +38,38 @@ struct RuntimeShape {
   bool lanes_independent = false; // no derivatives and no implicit-LOD sampling
   int outputs = 1;                // colour outputs 0..outputs-1 (MRT)
   uint32_t attributes = 0;        // attribute locations the vertex stage reads
+  // The shader's float arithmetic runs with denormals flushed (SSE flush-to-zero and
+  // denormals-are-zero), as llvmpipe runs GLSL: the pipeline sets the mode around its work
+  // for the draw (the shading loop and everything in it), not per call.
+  bool flush_denormals = false;
+};
+
+// Sets the SSE flush-to-zero and denormals-are-zero bits for the life of the object when
+// `on` (and they are not set already), and restores the caller's mode after.
+class ScopedDenormalFlush {
+ public:
+#if defined(__SSE__)
+  explicit ScopedDenormalFlush(bool on) {
+    if (!on) return;
+    saved_ = _mm_getcsr();
+    if ((saved_ & kBits) != kBits) {
+      _mm_setcsr(saved_ | kBits);
+      changed_ = true;
+    }
+  }
+  ~ScopedDenormalFlush() {
+    if (changed_) _mm_setcsr(saved_);
+  }
+
+ private:
+  static constexpr unsigned kBits = 0x8040u;  // FTZ | DAZ
+  unsigned saved_ = 0;
+  bool changed_ = false;
+#else
+  explicit ScopedDenormalFlush(bool) {}
+#endif
+  ScopedDenormalFlush(const ScopedDenormalFlush&) = delete;
+  ScopedDenormalFlush& operator=(const ScopedDenormalFlush&) = delete;
 };
 
 struct VertexLanes {

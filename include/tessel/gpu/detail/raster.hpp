@@ -14,6 +14,14 @@ namespace tessel::gpu::detail {
 
 template <class S> class Program final : public ProgramBase {
  public:
+  // The floating-point mode of the program's work: a run-time shader may ask for denormals
+  // flushed (RuntimeShape::flush_denormals), set once per call here rather than per lane
+  // group; C++ shaders run in the caller's mode.
+  struct NoMode {};
+  auto float_mode() const {
+    if constexpr (shader_runtime<S>()) return S::float_mode(uniforms_);
+    else return NoMode{};
+  }
   using Uniforms = typename S::Uniforms;
   template <class F> using Varyings = typename S::template Varyings<F>;
 
@@ -28,6 +36,7 @@ template <class S> class Program final : public ProgramBase {
 
   void shade_vertices(const DrawRecord& d, const uint32_t* ids, int n, uint32_t instance,
                       glm::vec4* pos, float* vars, float* soa) const override {
+    [[maybe_unused]] const auto mode = float_mode();
     constexpr int K = varying_count<S>();
     VertexIn<Float8> in;  // the constant locations are written by the first batch only
     for (int base = 0; base < n; base += kLanes) {
@@ -54,6 +63,7 @@ template <class S> class Program final : public ProgramBase {
 
   void raster(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0, int y0, int x1,
               int y1, Counters& counters) const override {
+    [[maybe_unused]] const auto mode = float_mode();
     // Fragment counts are kept in registers here and added to the worker's counters once.
     FragmentCounts c;
     // Covered 4x2 groups are shaded two at a time as sixteen lanes (two independent halves
