@@ -477,7 +477,30 @@ void run_texture_layered(const ir::TexOp& t, const TextureUnit* unit, const RunI
 
 }  // namespace
 
+// The most common lookup, texture(sampler2D, vec2) with an implicit LOD in a fragment shader
+// and a float result: the coordinate rows go to the sixteen-lane sampler and its results to
+// the result rows without a pass over single lanes. flatten: the sampler (texture_simd.hpp)
+// is inlined here whole, as it is into a C++ shader; run_texture's size kept GCC from it.
+__attribute__((flatten, noinline)) static void texture_2d_rows(const gpu::Sampler2D& s2, TexLanes& tl) {
+  const gpu::Vec4<gpu::Float16> r =
+      gpu::texture(s2, gpu::Vec2<gpu::Float16>(gpu::Float16::load(reinterpret_cast<const float*>(tl.in[0])),
+                                               gpu::Float16::load(reinterpret_cast<const float*>(tl.in[1]))));
+  r.x.store(reinterpret_cast<float*>(tl.out[0]));
+  r.y.store(reinterpret_cast<float*>(tl.out[1]));
+  r.z.store(reinterpret_cast<float*>(tl.out[2]));
+  r.w.store(reinterpret_cast<float*>(tl.out[3]));
+}
+
 void run_texture(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl) {
+  if (t.kind == ir::TexKind::Sample && t.dim == ir::SamplerDim::D2 && !t.array && !t.shadow && !t.proj && !t.has_lod &&
+      !t.has_bias && !t.has_grad && t.result == 0 && in_.fragment && t.offset[0] == 0 && t.offset[1] == 0 &&
+      t.offset_reg[0] == ir::TexOp::kNone && t.offset_reg[1] == ir::TexOp::kNone) {
+    const TextureUnit* unit = unit_of(t, in_);
+    if (unit && unit->texture_2d) {
+      texture_2d_rows(gpu::Sampler2D{unit->texture_2d, unit->sampler}, tl);
+      return;
+    }
+  }
     auto lanef = [&](int k, int l) { return f(tl.in[k][l]); };
     auto lanei = [&](int k, int l) { return s(tl.in[k][l]); };
     auto put = [&](const ir::TexOp& op, int l, const glm::vec4& v) {
