@@ -15,7 +15,6 @@
 #include <set>
 #include <string_view>
 #if defined(__SSE__) || defined(_M_X64)
-#include <xmmintrin.h>
 #endif
 
 #include "front.hpp"
@@ -78,10 +77,12 @@ namespace {
 // llvmpipe runs its shaders with the SSE control register's flush-to-zero and
 // denormals-are-zero bits set (denormal results become zero of the same sign, denormal
 // operands read as zero), and GLSL allows it. Both tiers run under the same bits, so their
-// results agree with llvmpipe's and with each other through denormals. In a draw the pipeline
-// sets them once around the program's work (RuntimeShape::flush_denormals: its vertex batches
-// and its raster loop, interpolation included, as llvmpipe's are one piece of generated
-// code); a direct call sets them for the call. C++ shaders keep IEEE denormals.
+// results agree with llvmpipe's and with each other through denormals. shape().flush_denormals
+// asks for them: in a draw the pipeline sets them once around the program's work (its vertex
+// batches and its raster loop, interpolation included, as llvmpipe's are one piece of
+// generated code), and a direct caller of vertex()/fragment() sets them with
+// gpu::ScopedDenormalFlush (reading the control register in every call cost 8% of a
+// fill-bound frame). C++ shaders keep IEEE denormals.
 
 class Bound final : public gpu::RuntimeShader {
  public:
@@ -92,7 +93,6 @@ class Bound final : public gpu::RuntimeShader {
   const gpu::RuntimeShape& shape() const override { return l_->shape; }
 
   void vertex(gpu::VertexLanes& lanes) const override {
-    const gpu::ScopedDenormalFlush ftz(true);  // a no-op inside the pipeline's draw
     if (l_->jit) {
       const RunInputs in = inputs(false);
       l_->jit->function(0)(&lanes, uniforms_.data(), uint32_t(uniforms_.size()), &in, 0xFFFFu);
@@ -107,7 +107,6 @@ class Bound final : public gpu::RuntimeShader {
   }
 
   void fragment(gpu::FragmentLanes& lanes) const override {
-    const gpu::ScopedDenormalFlush ftz(true);  // a no-op inside the pipeline's draw
     if (l_->jit) {
       const RunInputs in = inputs(true);
       lanes.killed = l_->jit->function(1)(&lanes, uniforms_.data(), uint32_t(uniforms_.size()), &in, 0xFFFFu);

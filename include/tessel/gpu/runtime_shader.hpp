@@ -38,9 +38,10 @@ struct RuntimeShape {
   bool lanes_independent = false; // no derivatives and no implicit-LOD sampling
   int outputs = 1;                // colour outputs 0..outputs-1 (MRT)
   uint32_t attributes = 0;        // attribute locations the vertex stage reads
-  // The shader's float arithmetic runs with denormals flushed (SSE flush-to-zero and
-  // denormals-are-zero), as llvmpipe runs GLSL: the pipeline sets the mode around its work
-  // for the draw (the shading loop and everything in it), not per call.
+  // The shader's float arithmetic must run with denormals flushed (SSE flush-to-zero and
+  // denormals-are-zero), as llvmpipe runs GLSL. vertex() and fragment() do not set the mode
+  // themselves: the pipeline sets it around its work for the draw (the shading loops and
+  // everything in them), and a direct caller with ScopedDenormalFlush.
   bool flush_denormals = false;
 };
 
