@@ -1,5 +1,6 @@
 #include "bench.hpp"
 
+#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,7 +12,6 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 #include "fixed_gl.hpp"
 #include "scene_phong.hpp"
@@ -36,9 +36,9 @@ struct Run {
   double peak_rss_mb = 0;
   uint64_t triangles = 0, fragments = 0;
   std::string image;
-  std::vector<uint8_t> rgba;  // bottom-up
-  double compile_ms = -1;     // GLSL: source to linked program (compile, link, JIT)
-  double first_frame_ms = -1; // GLSL: source to the first frame finished
+  std::vector<uint8_t> rgba;   // bottom-up
+  double compile_ms = -1;      // GLSL: source to linked program (compile, link, JIT)
+  double first_frame_ms = -1;  // GLSL: source to the first frame finished
 };
 
 double median(std::vector<double> v) {
@@ -114,7 +114,8 @@ struct SceneTargets {
 
   static std::vector<float> per_instance(const scenes::Scene& s) {
     std::vector<float> v;
-    for (const scenes::Draw& d : s.draws) v.insert(v.end(), {d.offset.x, d.offset.y, d.offset.z, d.albedo.x, d.albedo.y, d.albedo.z});
+    for (const scenes::Draw& d : s.draws)
+      v.insert(v.end(), {d.offset.x, d.offset.y, d.offset.z, d.albedo.x, d.albedo.y, d.albedo.z});
     return v;
   }
   SceneTargets(const scenes::Scene& s, int threads, bool want_instanced)
@@ -157,7 +158,8 @@ Run run_tessel_glsl(const scenes::Scene& s, int threads, int frames, int warmup,
   const bool textured = s.textured;
   auto vs = glsl::Shader::compile(glsl::Stage::Vertex, scenes::scene_vertex_glsl(textured, instanced));
   auto fs = glsl::Shader::compile(glsl::Stage::Fragment, scenes::scene_fragment_glsl(textured, instanced));
-  if (!vs->ok() || !fs->ok()) throw std::runtime_error("GLSL compile failed: " + vs->info_log() + fs->info_log());
+  if (!vs->ok() || !fs->ok())
+    throw std::runtime_error("GLSL compile failed: " + vs->info_log() + fs->info_log());
   auto prog = glsl::Program::link(*vs, *fs);
   if (!prog->ok()) throw std::runtime_error("GLSL link failed: " + prog->info_log());
   r.compile_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
@@ -181,7 +183,10 @@ Run run_tessel_glsl(const scenes::Scene& s, int threads, int frames, int warmup,
     if (instanced) {
       const scenes::Draw& d = s.draws.front();
       prog->draw(ctx, g.layout, g.state,
-                 {.topology = Topology::Triangles, .first = d.first_index, .count = d.index_count, .index_buffer = &g.ibo,
+                 {.topology = Topology::Triangles,
+                  .first = d.first_index,
+                  .count = d.index_count,
+                  .index_buffer = &g.ibo,
                   .instance_count = uint32_t(s.draws.size())},
                  units);
     } else {
@@ -189,7 +194,10 @@ Run run_tessel_glsl(const scenes::Scene& s, int threads, int frames, int warmup,
         prog->set_uniform(loc_offset, &d.offset.x, 3);
         prog->set_uniform(loc_albedo, &d.albedo.x, 3);
         prog->draw(ctx, g.layout, g.state,
-                   {.topology = Topology::Triangles, .first = d.first_index, .count = d.index_count, .index_buffer = &g.ibo},
+                   {.topology = Topology::Triangles,
+                    .first = d.first_index,
+                    .count = d.index_count,
+                    .index_buffer = &g.ibo},
                    units);
       }
     }
@@ -212,7 +220,8 @@ Run run_tessel_glsl(const scenes::Scene& s, int threads, int frames, int warmup,
 }
 
 // One scene on Tessel: `warmup` frames, then `frames` timed frames of clear + draws + finish.
-Run run_tessel(const scenes::Scene& s, int threads, int frames, int warmup, bool instanced, bool glsl_shaders) {
+Run run_tessel(const scenes::Scene& s, int threads, int frames, int warmup, bool instanced,
+               bool glsl_shaders) {
   if (s.fixed_function) return run_tessel_fixed(s, threads, frames, warmup);
   if (glsl_shaders) return run_tessel_glsl(s, threads, frames, warmup, instanced);
   reset_peak_rss();
@@ -237,23 +246,31 @@ Run run_tessel(const scenes::Scene& s, int threads, int frames, int warmup, bool
     if constexpr (I) {
       const scenes::Draw& d = s.draws.front();
       ctx.draw(ScenePhong<T, I>{}, u, layout, state,
-               {.topology = Topology::Triangles, .first = d.first_index, .count = d.index_count,
-                .index_buffer = &ibo, .instance_count = uint32_t(s.draws.size())});
+               {.topology = Topology::Triangles,
+                .first = d.first_index,
+                .count = d.index_count,
+                .index_buffer = &ibo,
+                .instance_count = uint32_t(s.draws.size())});
     } else {
       for (const scenes::Draw& d : s.draws) {
         u.offset = d.offset;
         u.albedo = d.albedo;
         ctx.draw(ScenePhong<T, I>{}, u, layout, state,
-                 {.topology = Topology::Triangles, .first = d.first_index, .count = d.index_count,
+                 {.topology = Topology::Triangles,
+                  .first = d.first_index,
+                  .count = d.index_count,
                   .index_buffer = &ibo});
       }
     }
     ctx.finish();
   };
   auto one = [&] {
-    if (s.textured) frame.template operator()<true, false>();
-    else if (instanced) frame.template operator()<false, true>();
-    else frame.template operator()<false, false>();
+    if (s.textured)
+      frame.template operator()<true, false>();
+    else if (instanced)
+      frame.template operator()<false, true>();
+    else
+      frame.template operator()<false, false>();
   };
 
   for (int i = 0; i < warmup; ++i) one();
@@ -301,7 +318,8 @@ std::string find_peer(const BenchOptions& o) {
   std::error_code ec;
   const fs::path self = fs::canonical("/proc/self/exe", ec);
   if (!ec) {
-    for (const fs::path& p : {self.parent_path() / "tessel_peer", self.parent_path().parent_path() / "bench/peer/tessel_peer"})
+    for (const fs::path& p :
+         {self.parent_path() / "tessel_peer", self.parent_path().parent_path() / "bench/peer/tessel_peer"})
       if (fs::exists(p, ec)) return p.string();
   }
   return "tessel_peer";  // from PATH
@@ -349,7 +367,9 @@ uint64_t count_differing(const std::vector<uint8_t>& a, const std::vector<uint8_
 }
 
 double mtris(const Run& r) { return r.ms_median > 0 ? double(r.triangles) / (r.ms_median * 1e3) : 0; }
-double mpix(const Run& r, uint64_t fragments) { return r.ms_median > 0 ? double(fragments) / (r.ms_median * 1e3) : 0; }
+double mpix(const Run& r, uint64_t fragments) {
+  return r.ms_median > 0 ? double(fragments) / (r.ms_median * 1e3) : 0;
+}
 
 std::string cpu_flags() {
   std::ifstream in("/proc/cpuinfo");
@@ -361,8 +381,8 @@ std::string cpu_flags() {
   std::string simd;
   std::istringstream fs(flags);
   for (std::string f; fs >> f;)
-    if (f == "sse4_2" || f == "avx" || f == "avx2" || f == "fma" || f == "f16c" || f == "avx512f" || f == "avx512bw" ||
-        f == "avx512vl")
+    if (f == "sse4_2" || f == "avx" || f == "avx2" || f == "fma" || f == "f16c" || f == "avx512f" ||
+        f == "avx512bw" || f == "avx512vl")
       simd += (simd.empty() ? "" : " ") + f;
   return model + " [" + simd + "]";
 }
@@ -380,7 +400,8 @@ int run_bench(const BenchOptions& o) {
 
   if (!o.json.empty()) {
     const fs::path parent = fs::absolute(fs::path(o.json)).parent_path();
-    if (!fs::is_directory(parent)) throw std::runtime_error("--json " + o.json + ": folder " + parent.string() + " does not exist");
+    if (!fs::is_directory(parent))
+      throw std::runtime_error("--json " + o.json + ": folder " + parent.string() + " does not exist");
   }
   std::string image_dir = o.images, temp_dir;
   if (o.peer && image_dir.empty()) {
@@ -391,14 +412,16 @@ int run_bench(const BenchOptions& o) {
   if (!image_dir.empty()) fs::create_directories(image_dir);
   const std::string peer = o.peer ? find_peer(o) : "";
 
-  if (o.shaders != "cpp" && o.shaders != "glsl") throw std::runtime_error("--shaders must be cpp or glsl, not " + o.shaders);
+  if (o.shaders != "cpp" && o.shaders != "glsl")
+    throw std::runtime_error("--shaders must be cpp or glsl, not " + o.shaders);
   const bool glsl_shaders = o.shaders == "glsl";
   std::printf("CPU: %s\n", cpu_flags().c_str());
-  if (glsl_shaders) std::printf("Tessel runs the peer's GLSL (tessel::glsl); fixed-100k stays fixed function\n");
+  if (glsl_shaders)
+    std::printf("Tessel runs the peer's GLSL (tessel::glsl); fixed-100k stays fixed function\n");
   std::printf("%d frames after %d warm-up frames; ms = median per frame\n\n", o.frames, o.warmup);
   if (o.peer)
-    std::printf("%-13s %9s %3s | %9s %7s %8s %7s | %9s %7s | %6s %7s %9s\n", "scene", "size", "thr", "tessel ms",
-                "Mtri/s", "Mpix/s", "MB", "llvmp ms", "MB", "speed", "diff>2", "diff %");
+    std::printf("%-13s %9s %3s | %9s %7s %8s %7s | %9s %7s | %6s %7s %9s\n", "scene", "size", "thr",
+                "tessel ms", "Mtri/s", "Mpix/s", "MB", "llvmp ms", "MB", "speed", "diff>2", "diff %");
   else
     std::printf("%-13s %9s %3s | %9s %7s %8s %7s\n", "scene", "size", "thr", "ms", "Mtri/s", "Mpix/s", "MB");
 
@@ -408,9 +431,11 @@ int run_bench(const BenchOptions& o) {
   auto add_json = [&](const Run& r, uint64_t fragments, const std::string& extra) {
     json << (first_json ? "" : ",\n") << "  {\"renderer\": \"" << r.renderer << "\", \"scene\": \"" << r.scene
          << "\", \"width\": " << r.width << ", \"height\": " << r.height << ", \"threads\": " << r.threads
-         << ", \"ms_median\": " << r.ms_median << ", \"mtris_s\": " << mtris(r) << ", \"mpix_s\": " << mpix(r, fragments)
-         << ", \"peak_rss_mb\": " << r.peak_rss_mb << ", \"image\": \"" << r.image << "\"";
-    if (r.compile_ms >= 0) json << ", \"glsl_compile_ms\": " << r.compile_ms << ", \"glsl_first_frame_ms\": " << r.first_frame_ms;
+         << ", \"ms_median\": " << r.ms_median << ", \"mtris_s\": " << mtris(r)
+         << ", \"mpix_s\": " << mpix(r, fragments) << ", \"peak_rss_mb\": " << r.peak_rss_mb
+         << ", \"image\": \"" << r.image << "\"";
+    if (r.compile_ms >= 0)
+      json << ", \"glsl_compile_ms\": " << r.compile_ms << ", \"glsl_first_frame_ms\": " << r.first_frame_ms;
     json << extra << "}";
     first_json = false;
   };
@@ -429,11 +454,13 @@ int run_bench(const BenchOptions& o) {
         }
         char size[32];
         std::snprintf(size, sizeof size, "%dx%d", w, h);
-        std::printf("%-13s %9s %3d | %9.2f %7.3g %8.1f %7.1f", name.c_str(), size, t, mine.ms_median, mtris(mine),
-                    mpix(mine, mine.fragments), mine.peak_rss_mb);
+        std::printf("%-13s %9s %3d | %9.2f %7.3g %8.1f %7.1f", name.c_str(), size, t, mine.ms_median,
+                    mtris(mine), mpix(mine, mine.fragments), mine.peak_rss_mb);
         if (mine.compile_ms >= 0)
-          std::fprintf(stderr, "  (%s: GLSL compiled and linked in %.1f ms, first frame done %.1f ms after the source)\n",
-                       name.c_str(), mine.compile_ms, mine.first_frame_ms);
+          std::fprintf(
+              stderr,
+              "  (%s: GLSL compiled and linked in %.1f ms, first frame done %.1f ms after the source)\n",
+              name.c_str(), mine.compile_ms, mine.first_frame_ms);
         if (!o.peer) {
           std::printf("\n");
           std::fflush(stdout);
@@ -456,7 +483,9 @@ int run_bench(const BenchOptions& o) {
         const double pct = 100.0 * double(diff) / (double(w) * h);
         const double speed = mine.ms_median > 0 ? theirs.ms_median / mine.ms_median : 0;
         if (o.max_diff_percent >= 0 && pct > o.max_diff_percent) {
-          std::fprintf(stderr, "tessel bench: %s %dx%d: %.3f%% of the pixels differ from llvmpipe by more than 2/255 (limit %.3f%%)\n",
+          std::fprintf(stderr,
+                       "tessel bench: %s %dx%d: %.3f%% of the pixels differ from llvmpipe by more than 2/255 "
+                       "(limit %.3f%%)\n",
                        name.c_str(), w, h, pct, o.max_diff_percent);
           ++failures;
         }

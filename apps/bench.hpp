@@ -9,17 +9,17 @@
 namespace tessel::apps {
 
 struct BenchOptions {
-  std::vector<std::string> scenes;           // empty: all
-  std::vector<std::pair<int, int>> sizes;    // empty: 1920x1080 and 640x480
-  std::vector<int> threads;                  // empty: 1 and 2
+  std::vector<std::string> scenes;         // empty: all
+  std::vector<std::pair<int, int>> sizes;  // empty: 1920x1080 and 640x480
+  std::vector<int> threads;                // empty: 1 and 2
   int frames = 10, warmup = 3;
   bool instanced = false;
   bool peer = false;
-  std::string peer_path;  // the tessel_peer program; empty: next to this program, then PATH
-  std::string json;       // write results here
-  std::string images;     // write images into this folder
+  std::string peer_path;         // the tessel_peer program; empty: next to this program, then PATH
+  std::string json;              // write results here
+  std::string images;            // write images into this folder
   double max_diff_percent = -1;  // with peer: fail when more pixels than this differ by > 2/255
-  std::string shaders = "cpp";    // "cpp": the C++ shader; "glsl": the peer's GLSL through tessel::glsl
+  std::string shaders = "cpp";   // "cpp": the C++ shader; "glsl": the peer's GLSL through tessel::glsl
 };
 
 // Runs the benchmark and prints its table; returns the process exit code. Throws on errors

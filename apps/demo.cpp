@@ -37,7 +37,8 @@ std::shared_ptr<Texture2D> make_floor_texture() {
   return t;
 }
 
-std::shared_ptr<scene::Material> material(glm::vec3 albedo, float ambient, float diffuse, float specular, float shininess) {
+std::shared_ptr<scene::Material> material(glm::vec3 albedo, float ambient, float diffuse, float specular,
+                                          float shininess) {
   auto m = std::make_shared<scene::Material>();
   m->ka = albedo * ambient;
   m->kd = albedo * diffuse;
@@ -73,8 +74,8 @@ scene::Scene demo_scene(float aspect) {
   auto tiles = material(glm::vec3(1.0f), 0.15f, 0.8f, 0.1f, 16.0f);
   tiles->texture = make_floor_texture();
 
-  auto add = [&](std::shared_ptr<const scene::Geometry> g, std::shared_ptr<const scene::Material> m, glm::vec3 pos,
-                 float scale) -> scene::Object& {
+  auto add = [&](std::shared_ptr<const scene::Geometry> g, std::shared_ptr<const scene::Material> m,
+                 glm::vec3 pos, float scale) -> scene::Object& {
     auto& o = s.add(std::make_unique<scene::Object>(std::move(g), std::move(m), phong));
     o.transform.position = pos;
     o.transform.scale = glm::vec3(scale);

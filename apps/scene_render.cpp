@@ -27,9 +27,9 @@ std::string frame_path(const std::string& out, int frame) {
 
 // A JSON object with the counters (more members may be added after them).
 nlohmann::ordered_json counters_json(const gpu::Stats& c) {
-  return {{"triangles_in", c.primitives_in},         {"culled", c.primitives_culled},
-          {"clipped", c.primitives_clipped},         {"triangles_set_up", c.triangles_setup},
-          {"vertices_shaded", c.vertices_shaded},    {"fragments_shaded", c.fragments_shaded},
+  return {{"triangles_in", c.primitives_in},          {"culled", c.primitives_culled},
+          {"clipped", c.primitives_clipped},          {"triangles_set_up", c.triangles_setup},
+          {"vertices_shaded", c.vertices_shaded},     {"fragments_shaded", c.fragments_shaded},
           {"fragments_written", c.fragments_written}, {"fragments_rejected_by_depth", c.fragments_rejected}};
 }
 
@@ -48,10 +48,11 @@ int render_scene(const SceneRenderOptions& o) {
     file = scene::load_scene_file(o.scene);
     if (!o.shading.empty()) {
       const auto shader = o.shading.rfind("glsl-", 0) == 0 ? scene::glsl_shader_by_name(o.shading)
-                                                          : scene::shader_by_name(o.shading);
+                                                           : scene::shader_by_name(o.shading);
       if (!shader) {
         std::fprintf(stderr,
-                     "tessel render: --shading '%s': expected gouraud, phong, normalmap, npr, depth, normal, or the GLSL "
+                     "tessel render: --shading '%s': expected gouraud, phong, normalmap, npr, depth, normal, "
+                     "or the GLSL "
                      "glsl-gouraud, glsl-phong, glsl-normalmap, glsl-npr, glsl-depth, glsl-normal\n",
                      o.shading.c_str());
         return 2;
@@ -85,7 +86,8 @@ int render_scene(const SceneRenderOptions& o) {
       const auto t0 = std::chrono::steady_clock::now();
       s.Render(ctx, o.stats ? &passes : nullptr);
       ctx.finish();
-      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      const double ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       const std::string path = o.frames ? frame_path(o.output, f) : o.output;
       gpu::write_png(path, color);
       if (o.stats) {
@@ -99,15 +101,17 @@ int render_scene(const SceneRenderOptions& o) {
         }
         std::printf("%s\n  %s", f == o.first_frame ? "" : ",", frame.dump().c_str());
       } else if (!o.frames) {
-        std::printf("rendered %s (%d triangles, %dx%d) to %s in %.1f ms\n", o.scene.c_str(), s.triangles(), w, h, path.c_str(), ms);
+        std::printf("rendered %s (%d triangles, %dx%d) to %s in %.1f ms\n", o.scene.c_str(), s.triangles(), w,
+                    h, path.c_str(), ms);
       }
       if (o.frames && total > 1) progress(f - o.first_frame + 1, total);
       s.Animate(dt);
     }
-    if (o.stats) std::printf("\n]}\n");
+    if (o.stats)
+      std::printf("\n]}\n");
     else if (o.frames)
-      std::printf("rendered frames %d..%d of %s (%dx%d) to %s\n", o.first_frame, o.last_frame, o.scene.c_str(), w, h,
-                  frame_path(o.output, o.first_frame).c_str());
+      std::printf("rendered frames %d..%d of %s (%dx%d) to %s\n", o.first_frame, o.last_frame,
+                  o.scene.c_str(), w, h, frame_path(o.output, o.first_frame).c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tessel render: %s\n", e.what());
     return 1;

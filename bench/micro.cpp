@@ -28,30 +28,44 @@ using PhongShader = tessel::scenes::ScenePhong<false, false>;
 // Clip position straight through, a constant colour out: no shading work. (Varyings cannot
 // be empty: one flat float, which the shader ignores.)
 struct ConstShader {
-  struct Uniforms { glm::vec4 color{0.2f, 0.4f, 0.6f, 0.5f}; };
-  template <class F> struct Varyings { F unused; };
+  struct Uniforms {
+    glm::vec4 color{0.2f, 0.4f, 0.6f, 0.5f};
+  };
+  template <class F>
+  struct Varyings {
+    F unused;
+  };
   static constexpr uint64_t flat = 0b1;
   static constexpr uint32_t attributes = 0b1;
-  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
     out.unused = F(0.0f);
     return in.attr[0];
   }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>&, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>&, Fragment<F>& f) const {
     f.color[0] = Vec4<F>(u.color);
   }
 };
 
 // K perspective-correct varyings (made from the colour and uv), summed into the colour: the
 // cost per pixel is interpolation.
-template <int K> struct VaryingsShader {
+template <int K>
+struct VaryingsShader {
   struct Uniforms {};
-  template <class F> struct Varyings { F v[K]; };
+  template <class F>
+  struct Varyings {
+    F v[K];
+  };
   static constexpr uint32_t attributes = 0b111;
-  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
-    for (int k = 0; k < K; ++k) out.v[k] = in.attr[1].x * F(float(k + 1)) + in.attr[2].y * F(1.0f / float(k + 1));
+  template <class F>
+  Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
+    for (int k = 0; k < K; ++k)
+      out.v[k] = in.attr[1].x * F(float(k + 1)) + in.attr[2].y * F(1.0f / float(k + 1));
     return in.attr[0];
   }
-  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
     F s = v.v[0];
     for (int k = 1; k < K; ++k) s = s + v.v[k];
     f.color[0] = Vec4<F>(s * F(1.0f / K), F(0.5f), F(0.5f), F(1.0f));
@@ -73,7 +87,10 @@ std::vector<TestVertex> random_triangles(int n, float size, int w, int h, uint32
       // Counter-clockwise around the centre.
       const float a = 2.0943951f * k + u(rng) * 0.5f;
       clip_from_window(cx + size * std::cos(a), cy + size * std::sin(a), u(rng) * 2 - 1, 1.0f, w, h, t.pos);
-      t.color[0] = u(rng); t.color[1] = u(rng); t.color[2] = u(rng); t.color[3] = 1.0f;
+      t.color[0] = u(rng);
+      t.color[1] = u(rng);
+      t.color[2] = u(rng);
+      t.color[3] = 1.0f;
       v.push_back(t);
     }
   }
@@ -81,15 +98,23 @@ std::vector<TestVertex> random_triangles(int n, float size, int w, int h, uint32
 }
 
 // n quads covering the whole viewport (two triangles each), quad i at NDC depth z(i).
-template <class Z> std::vector<TestVertex> fullscreen_quads(int n, Z z) {
+template <class Z>
+std::vector<TestVertex> fullscreen_quads(int n, Z z) {
   std::vector<TestVertex> v;
   for (int i = 0; i < n; ++i) {
     const float zi = z(i);
     auto at = [&](float x, float y) {
       TestVertex t{};
-      t.pos[0] = x; t.pos[1] = y; t.pos[2] = zi; t.pos[3] = 1.0f;
-      t.color[0] = 0.5f * (x + 1.0f); t.color[1] = 0.5f * (y + 1.0f); t.color[2] = 0.5f; t.color[3] = 1.0f;
-      t.uv[0] = 0.5f * (x + 1.0f); t.uv[1] = 0.5f * (y + 1.0f);
+      t.pos[0] = x;
+      t.pos[1] = y;
+      t.pos[2] = zi;
+      t.pos[3] = 1.0f;
+      t.color[0] = 0.5f * (x + 1.0f);
+      t.color[1] = 0.5f * (y + 1.0f);
+      t.color[2] = 0.5f;
+      t.color[3] = 1.0f;
+      t.uv[0] = 0.5f * (x + 1.0f);
+      t.uv[1] = 0.5f * (y + 1.0f);
       return t;
     };
     for (const auto& p : {at(-1, -1), at(1, -1), at(1, 1), at(-1, -1), at(1, 1), at(-1, 1)}) v.push_back(p);
@@ -122,7 +147,10 @@ struct GridMesh {
       }
     std::vector<bool> seen(size_t(N) * N);
     for (uint32_t id : indices)
-      if (!seen[id]) { seen[id] = true; ids.push_back(id); }
+      if (!seen[id]) {
+        seen[id] = true;
+        ids.push_back(id);
+      }
     vbo.assign(vertices.data(), vertices.size() * sizeof(float));
     const uint32_t stride = 8 * sizeof(float);
     layout.attrib(0, vbo, 3, AttribType::F32, stride, 0);
@@ -133,11 +161,16 @@ struct GridMesh {
 
 // A DrawRecord with the viewport, render area and guard band of a W x H target, as
 // Context::submit derives them for the default state (see tests/gpu/test_clip.cpp).
-template <class S> DrawRecord record_for(const S& shader = S{}, const typename S::Uniforms& u = {}) {
+template <class S>
+DrawRecord record_for(const S& shader = S{}, const typename S::Uniforms& u = {}) {
   DrawRecord d;
   d.program = std::make_unique<Program<S>>(shader, u);
-  d.vp_scale[0] = W * 0.5f; d.vp_scale[1] = H * 0.5f; d.vp_scale[2] = 0.5f;
-  d.vp_offset[0] = W * 0.5f; d.vp_offset[1] = H * 0.5f; d.vp_offset[2] = 0.5f;
+  d.vp_scale[0] = W * 0.5f;
+  d.vp_scale[1] = H * 0.5f;
+  d.vp_scale[2] = 0.5f;
+  d.vp_offset[0] = W * 0.5f;
+  d.vp_offset[1] = H * 0.5f;
+  d.vp_offset[2] = 0.5f;
   d.area_x0 = d.area_y0 = 0;
   d.area_x1 = W;
   d.area_y1 = H;
@@ -244,7 +277,8 @@ void BM_ClipPolygon(benchmark::State& state) {
       ClipVert& v = tris[size_t(t) * 3 + size_t(k)];
       const float w = uw(rng);
       const bool behind = k == 0 || (t % 2 == 1 && k == 1);
-      v.pos = {u(rng) * w, u(rng) * w, behind ? -1.5f * w - 0.5f * w * std::fabs(u(rng)) : 0.9f * u(rng) * w, w};
+      v.pos = {u(rng) * w, u(rng) * w, behind ? -1.5f * w - 0.5f * w * std::fabs(u(rng)) : 0.9f * u(rng) * w,
+               w};
       for (int i = 0; i < K; ++i) v.var[i] = u(rng);
       mask |= clip_code(planes, v.pos);
     }
@@ -267,7 +301,8 @@ void BM_ClipPolygon(benchmark::State& state) {
     }
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * n);
-  state.counters["out_verts_per_tri"] = double(out_verts) / double(std::max<int64_t>(1, int64_t(state.iterations()) * n));
+  state.counters["out_verts_per_tri"] =
+      double(out_verts) / double(std::max<int64_t>(1, int64_t(state.iterations()) * n));
 }
 BENCHMARK(BM_ClipPolygon);
 
@@ -303,7 +338,8 @@ void BM_TriangleSetup(benchmark::State& state) {
     arena.reset();
     for (int t = 0; t < n; ++t) {
       const WinVert* v = &verts[size_t(t) * 3];
-      Prim* p = setup_triangle(d, v[0], v[1], v[2], v[2].var, uint32_t(t), Facing::FromArea, false, arena, c, nullptr);
+      Prim* p = setup_triangle(d, v[0], v[1], v[2], v[2].var, uint32_t(t), Facing::FromArea, false, arena, c,
+                               nullptr);
       kept += p != nullptr;
       benchmark::DoNotOptimize(p);
     }
@@ -318,7 +354,8 @@ BENCHMARK(BM_TriangleSetup);
 // Runs clear + `draw()` + finish per iteration; reports `pixels` per iteration as items (and
 // 4 bytes of colour each), or the fragments shaded when pixels is 0. The clear is part of
 // every frame (as in BM_Triangles); BM_Clear shows its cost.
-template <class Draw> void run_frames(benchmark::State& state, Scene& s, int64_t pixels, Draw draw) {
+template <class Draw>
+void run_frames(benchmark::State& state, Scene& s, int64_t pixels, Draw draw) {
   s.ctx.reset_stats();
   for (auto _ : state) {
     s.ctx.clear({.color = {0, 0, 0, 1}});
@@ -361,14 +398,16 @@ void BM_Coverage(benchmark::State& state) {
   const int threads = int(state.range(0));
   Scene s(threads);
   const Mesh m(random_triangles(64, 400.0f, W, H, 2));
-  run_frames(state, s, 0, [&] { s.ctx.draw(ConstShader{}, {}, m.layout, RenderState{}, {.count = m.count}); });
+  run_frames(state, s, 0,
+             [&] { s.ctx.draw(ConstShader{}, {}, m.layout, RenderState{}, {.count = m.count}); });
   state.counters["threads"] = threads;
 }
 BENCHMARK(BM_Coverage)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Interpolation: 4 full-screen quads with K varyings summed in the shader (compare K = 4
 // with K = 16 for the cost of a varying). Items are pixels.
-template <int K> void BM_Interpolation(benchmark::State& state) {
+template <int K>
+void BM_Interpolation(benchmark::State& state) {
   constexpr int quads = 4;
   Scene s(1);
   const Mesh m(fullscreen_quads(quads, [](int) { return 0.0f; }));
@@ -388,14 +427,16 @@ void BM_Shading(benchmark::State& state) {
   std::vector<float> v;
   for (int q = 0; q < quads; ++q)
     for (const auto& [x, y] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}})
-      v.insert(v.end(), {float(x), float(y), 0.0f, 0.3f * float(x), 0.3f * float(y), 1.0f, 0.5f * (x + 1.0f), 0.5f * (y + 1.0f)});
+      v.insert(v.end(), {float(x), float(y), 0.0f, 0.3f * float(x), 0.3f * float(y), 1.0f, 0.5f * (x + 1.0f),
+                         0.5f * (y + 1.0f)});
   const Buffer vbo(v);
   VertexLayout layout;
   layout.attrib(0, vbo, 3, AttribType::F32, 8 * sizeof(float), 0);
   layout.attrib(1, vbo, 3, AttribType::F32, 8 * sizeof(float), 3 * sizeof(float));
   layout.attrib(2, vbo, 2, AttribType::F32, 8 * sizeof(float), 6 * sizeof(float));
-  run_frames(state, s, int64_t(quads) * W * H,
-             [&] { s.ctx.draw(PhongShader{}, {}, layout, RenderState{}, {.count = uint32_t(v.size() / 8)}); });
+  run_frames(state, s, int64_t(quads) * W * H, [&] {
+    s.ctx.draw(PhongShader{}, {}, layout, RenderState{}, {.count = uint32_t(v.size() / 8)});
+  });
 }
 BENCHMARK(BM_Shading)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -406,7 +447,8 @@ void BM_DepthTest(benchmark::State& state) {
   constexpr int quads = 8;
   const bool back_to_front = state.range(0) != 0;
   Scene s(1);
-  const Mesh m(fullscreen_quads(quads, [&](int i) { return back_to_front ? 0.8f - 0.2f * i : -0.8f + 0.2f * i; }));
+  const Mesh m(
+      fullscreen_quads(quads, [&](int i) { return back_to_front ? 0.8f - 0.2f * i : -0.8f + 0.2f * i; }));
   RenderState st;
   st.depth_test = true;
   run_frames(state, s, int64_t(quads) * W * H,
@@ -422,9 +464,13 @@ void BM_Blending(benchmark::State& state) {
   Scene s(1);
   const Mesh m(fullscreen_quads(quads, [](int) { return 0.0f; }));
   RenderState st;
-  st.blend[0] = {.enabled = true, .src_rgb = BlendFactor::SrcAlpha, .dst_rgb = BlendFactor::OneMinusSrcAlpha,
-                 .src_alpha = BlendFactor::SrcAlpha, .dst_alpha = BlendFactor::OneMinusSrcAlpha};
-  run_frames(state, s, int64_t(quads) * W * H, [&] { s.ctx.draw(ConstShader{}, {}, m.layout, st, {.count = m.count}); });
+  st.blend[0] = {.enabled = true,
+                 .src_rgb = BlendFactor::SrcAlpha,
+                 .dst_rgb = BlendFactor::OneMinusSrcAlpha,
+                 .src_alpha = BlendFactor::SrcAlpha,
+                 .dst_alpha = BlendFactor::OneMinusSrcAlpha};
+  run_frames(state, s, int64_t(quads) * W * H,
+             [&] { s.ctx.draw(ConstShader{}, {}, m.layout, st, {.count = m.count}); });
 }
 BENCHMARK(BM_Blending)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -433,7 +479,8 @@ BENCHMARK(BM_Blending)->Unit(benchmark::kMillisecond)->UseRealTime();
 // texture() over a 512x512-pixel screen region in 4x2 groups, on a 1024x1024 RGBA8 texture
 // with its mip chain. Arg: 0 nearest (1 texel/pixel), 1 bilinear (1 texel/pixel), 2 trilinear
 // (1.5 texels/pixel, LOD ~0.58, two levels blended). Items are samples.
-template <class F> void BM_TextureSampling(benchmark::State& state) {
+template <class F>
+void BM_TextureSampling(benchmark::State& state) {
   constexpr int N = lane_width<F>;
   static const Texture2D* tex = [] {
     auto* t = new Texture2D(Format::RGBA8, 1024, 1024, 0);
@@ -494,10 +541,14 @@ void BM_Triangles(benchmark::State& state) {
   state.counters["threads"] = threads;
 }
 BENCHMARK(BM_Triangles)
-    ->Args({128, 600, 1})->Args({128, 600, 2})      // large triangles: fill rate
-    ->Args({8192, 8, 1})->Args({8192, 8, 2})        // ~100 px triangles
-    ->Args({262144, 1, 1})->Args({262144, 1, 2})    // tiny triangles: geometry rate
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Args({128, 600, 1})
+    ->Args({128, 600, 2})  // large triangles: fill rate
+    ->Args({8192, 8, 1})
+    ->Args({8192, 8, 2})  // ~100 px triangles
+    ->Args({262144, 1, 1})
+    ->Args({262144, 1, 2})  // tiny triangles: geometry rate
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // Full-screen clears only.
 void BM_Clear(benchmark::State& state) {

@@ -1,8 +1,8 @@
 // Puts PNG images side by side in a grid (for docs/scenes.png): montage OUT COLUMNS FILE...
-#include "tessel/gpu/image.hpp"
 #include <cstdio>
 #include <string>
 #include <vector>
+#include "tessel/gpu/image.hpp"
 int main(int argc, char** argv) {
   // montage OUT COLS file...
   const std::string out = argv[1];
@@ -16,7 +16,8 @@ int main(int argc, char** argv) {
     const int cx = (i % cols) * (w + gap), cy = (rows - 1 - i / cols) * (h + gap);  // bottom-up rows
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
-        for (int c = 0; c < 4; ++c) px[(size_t(cy + y) * W + size_t(cx + x)) * 4 + c] = ims[i].pixels[(size_t(y) * w + x) * 4 + c];
+        for (int c = 0; c < 4; ++c)
+          px[(size_t(cy + y) * W + size_t(cx + x)) * 4 + c] = ims[i].pixels[(size_t(y) * w + x) * 4 + c];
   }
   tessel::gpu::write_png(out, W, H, 4, px.data());
 }

@@ -32,14 +32,22 @@ std::string hex(uint32_t v) {
 
 const char* gl_error_name(uint32_t e) {
   switch (e) {
-    case 0x0500: return "GL_INVALID_ENUM";
-    case 0x0501: return "GL_INVALID_VALUE";
-    case 0x0502: return "GL_INVALID_OPERATION";
-    case 0x0506: return "GL_INVALID_FRAMEBUFFER_OPERATION";
-    case 0x0505: return "GL_OUT_OF_MEMORY";
-    case 0x0503: return "GL_STACK_OVERFLOW";
-    case 0x0504: return "GL_STACK_UNDERFLOW";
-    default: return "unknown GL error";
+    case 0x0500:
+      return "GL_INVALID_ENUM";
+    case 0x0501:
+      return "GL_INVALID_VALUE";
+    case 0x0502:
+      return "GL_INVALID_OPERATION";
+    case 0x0506:
+      return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case 0x0505:
+      return "GL_OUT_OF_MEMORY";
+    case 0x0503:
+      return "GL_STACK_OVERFLOW";
+    case 0x0504:
+      return "GL_STACK_UNDERFLOW";
+    default:
+      return "unknown GL error";
   }
 }
 
@@ -47,22 +55,38 @@ namespace {
 
 const char* egl_error_name(EGLint e) {
   switch (e) {
-    case EGL_SUCCESS: return "EGL_SUCCESS";
-    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-    case EGL_BAD_CURRENT_SURFACE: return "EGL_BAD_CURRENT_SURFACE";
-    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-    case EGL_BAD_NATIVE_PIXMAP: return "EGL_BAD_NATIVE_PIXMAP";
-    case EGL_BAD_NATIVE_WINDOW: return "EGL_BAD_NATIVE_WINDOW";
-    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-    case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
-    case EGL_CONTEXT_LOST: return "EGL_CONTEXT_LOST";
-    default: return "unknown EGL error";
+    case EGL_SUCCESS:
+      return "EGL_SUCCESS";
+    case EGL_NOT_INITIALIZED:
+      return "EGL_NOT_INITIALIZED";
+    case EGL_BAD_ACCESS:
+      return "EGL_BAD_ACCESS";
+    case EGL_BAD_ALLOC:
+      return "EGL_BAD_ALLOC";
+    case EGL_BAD_ATTRIBUTE:
+      return "EGL_BAD_ATTRIBUTE";
+    case EGL_BAD_CONFIG:
+      return "EGL_BAD_CONFIG";
+    case EGL_BAD_CONTEXT:
+      return "EGL_BAD_CONTEXT";
+    case EGL_BAD_CURRENT_SURFACE:
+      return "EGL_BAD_CURRENT_SURFACE";
+    case EGL_BAD_DISPLAY:
+      return "EGL_BAD_DISPLAY";
+    case EGL_BAD_MATCH:
+      return "EGL_BAD_MATCH";
+    case EGL_BAD_NATIVE_PIXMAP:
+      return "EGL_BAD_NATIVE_PIXMAP";
+    case EGL_BAD_NATIVE_WINDOW:
+      return "EGL_BAD_NATIVE_WINDOW";
+    case EGL_BAD_PARAMETER:
+      return "EGL_BAD_PARAMETER";
+    case EGL_BAD_SURFACE:
+      return "EGL_BAD_SURFACE";
+    case EGL_CONTEXT_LOST:
+      return "EGL_CONTEXT_LOST";
+    default:
+      return "unknown EGL error";
   }
 }
 
@@ -102,8 +126,8 @@ EGLDisplay acquire_display(std::string* why, std::string* platform) {
   setenv("GALLIUM_DRIVER", "llvmpipe", 0);
 
   const char* client_exts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-  auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  auto get_platform_display =
+      reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
   std::string errors;
 
   auto try_init = [&](EGLDisplay d, const char* name, const char* get_call) -> bool {
@@ -124,18 +148,16 @@ EGLDisplay acquire_display(std::string* why, std::string* platform) {
   bool ok = false;
   // 1. EGL_MESA_platform_surfaceless: no window system, no GPU needed.
   if (get_platform_display && has_ext(client_exts, "EGL_MESA_platform_surfaceless")) {
-    ok = try_init(get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
-                                       nullptr),
+    ok = try_init(get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr),
                   "surfaceless", "eglGetPlatformDisplay");
   } else {
     errors += "EGL_MESA_platform_surfaceless not advertised; ";
   }
   // 2. EGL_EXT_platform_device with Mesa's software device (EGL_MESA_device_software).
   if (!ok && get_platform_display && has_ext(client_exts, "EGL_EXT_platform_device")) {
-    auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(
-        eglGetProcAddress("eglQueryDevicesEXT"));
-    auto query_device_string = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
-        eglGetProcAddress("eglQueryDeviceStringEXT"));
+    auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+    auto query_device_string =
+        reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
     EGLDeviceEXT devices[16];
     EGLint count = 0;
     if (query_devices && query_device_string && query_devices(16, devices, &count)) {
@@ -178,8 +200,7 @@ std::string gl_string(GLenum name) {
 
 }  // namespace
 
-std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string* why,
-                                                         const HeadlessOptions& options) {
+std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string* why, const HeadlessOptions& options) {
   std::string dummy;
   if (!why) why = &dummy;
   why->clear();
@@ -214,8 +235,10 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string* why,
 
     // Desktop GL 3.3 core (not forward-compatible, so wide lines stay legal); optionally a
     // compatibility-profile context if core is refused.
-    const EGLint core_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3,
-                                   EGL_CONTEXT_MINOR_VERSION, 3,
+    const EGLint core_attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                   3,
+                                   EGL_CONTEXT_MINOR_VERSION,
+                                   3,
                                    EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                    EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                    EGL_NONE};
@@ -238,8 +261,10 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string* why,
         *why = core_err;
         return nullptr;
       }
-      const EGLint compat_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3,
-                                       EGL_CONTEXT_MINOR_VERSION, 3,
+      const EGLint compat_attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                       3,
+                                       EGL_CONTEXT_MINOR_VERSION,
+                                       3,
                                        EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                        EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
                                        EGL_NONE};

@@ -33,8 +33,7 @@ class HeadlessContext {
   // EGL display routes, in order: EGL_MESA_platform_surfaceless; EGL_EXT_platform_device with
   // an EGL_MESA_device_software device; eglGetDisplay(EGL_DEFAULT_DISPLAY) with
   // EGL_PLATFORM=surfaceless.
-  static std::unique_ptr<HeadlessContext> create(std::string* why,
-                                                 const HeadlessOptions& options = {});
+  static std::unique_ptr<HeadlessContext> create(std::string* why, const HeadlessOptions& options = {});
   ~HeadlessContext();  // releases the context, and the display with the last context
   HeadlessContext(const HeadlessContext&) = delete;
   HeadlessContext& operator=(const HeadlessContext&) = delete;

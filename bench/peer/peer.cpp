@@ -63,8 +63,8 @@ int parse_int(const std::string& s, int lo, int hi, const std::string& what) {
   int v = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (s.empty() || ec != std::errc() || end != s.data() + s.size() || v < lo || v > hi)
-    throw UsageError(what + " must be an integer in [" + std::to_string(lo) + ", " +
-                     std::to_string(hi) + "], got '" + s + "'");
+    throw UsageError(what + " must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                     "], got '" + s + "'");
   return v;
 }
 
@@ -118,22 +118,28 @@ void check_gl(const char* what) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "GL error 0x%04X", unsigned(e));
   std::string msg = std::string(buf) + " after " + what;
-  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {}
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
+  }
   throw std::runtime_error(msg);
 }
 
 std::string json_string(const std::string& s) {
   std::string out = "\"";
   for (const unsigned char c : s) {
-    if (c == '"') out += "\\\"";
-    else if (c == '\\') out += "\\\\";
-    else if (c == '\n') out += "\\n";
-    else if (c == '\t') out += "\\t";
+    if (c == '"')
+      out += "\\\"";
+    else if (c == '\\')
+      out += "\\\\";
+    else if (c == '\n')
+      out += "\\n";
+    else if (c == '\t')
+      out += "\\t";
     else if (c < 0x20) {
       char buf[8];
       std::snprintf(buf, sizeof buf, "\\u%04x", unsigned(c));
       out += buf;
-    } else out += char(c);
+    } else
+      out += char(c);
   }
   return out + "\"";
 }
@@ -202,8 +208,7 @@ int measure(const Options& opt, const scenes::Scene& scene, const std::string& r
     }
     if (std::rename(tmp.c_str(), opt.image.c_str()) != 0) {
       std::remove(tmp.c_str());
-      throw std::runtime_error("cannot rename " + tmp + " to " + opt.image + ": " +
-                               std::strerror(errno));
+      throw std::runtime_error("cannot rename " + tmp + " to " + opt.image + ": " + std::strerror(errno));
     }
   }
 
@@ -213,16 +218,14 @@ int measure(const Options& opt, const scenes::Scene& scene, const std::string& r
     if (!ms_list.empty()) ms_list += ',';
     ms_list += fmt(v);
   }
-  std::string json = "{\"scene\":" + json_string(scene.name) +
-                     ",\"width\":" + std::to_string(W) + ",\"height\":" + std::to_string(H) +
-                     ",\"threads\":" + std::to_string(opt.threads) +
-                     ",\"instanced\":" + (instanced ? "true" : "false") +
-                     ",\"frames\":" + std::to_string(opt.frames) +
-                     ",\"ms_median\":" + fmt(median) + ",\"ms_min\":" + fmt(sorted.front()) +
-                     ",\"ms\":[" + ms_list + "],\"peak_rss_mb\":" + fmt(peak_rss_mb(), "%.1f") +
-                     ",\"triangles\":" + std::to_string(scene.triangles()) +
-                     ",\"renderer\":" + json_string(renderer) +
-                     ",\"image\":" + json_string(opt.image) + "}\n";
+  std::string json =
+      "{\"scene\":" + json_string(scene.name) + ",\"width\":" + std::to_string(W) +
+      ",\"height\":" + std::to_string(H) + ",\"threads\":" + std::to_string(opt.threads) +
+      ",\"instanced\":" + (instanced ? "true" : "false") + ",\"frames\":" + std::to_string(opt.frames) +
+      ",\"ms_median\":" + fmt(median) + ",\"ms_min\":" + fmt(sorted.front()) + ",\"ms\":[" + ms_list +
+      "],\"peak_rss_mb\":" + fmt(peak_rss_mb(), "%.1f") +
+      ",\"triangles\":" + std::to_string(scene.triangles()) + ",\"renderer\":" + json_string(renderer) +
+      ",\"image\":" + json_string(opt.image) + "}\n";
   std::fputs(json.c_str(), stdout);
   std::fflush(stdout);
   return 0;
@@ -297,11 +300,9 @@ int run(const Options& opt, const scenes::Scene& scene) {
   if (instanced) {
     std::vector<float> inst;
     for (const scenes::Draw& d : scene.draws)
-      inst.insert(inst.end(), {d.offset.x, d.offset.y, d.offset.z, d.albedo.x, d.albedo.y,
-                               d.albedo.z});
+      inst.insert(inst.end(), {d.offset.x, d.offset.y, d.offset.z, d.albedo.x, d.albedo.y, d.albedo.z});
     glBindBuffer(GL_ARRAY_BUFFER, buf[2]);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(inst.size() * sizeof(float)), inst.data(),
-                 GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(inst.size() * sizeof(float)), inst.data(), GL_STATIC_DRAW);
     glVertexAttribPointer(3, 3, GL_FLOAT, GL_FALSE, 24, byte_offset(0));
     glVertexAttribPointer(4, 3, GL_FLOAT, GL_FALSE, 24, byte_offset(12));
     for (GLuint a = 3; a < 5; ++a) {
@@ -319,8 +320,8 @@ int run(const Options& opt, const scenes::Scene& scene) {
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, tex);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, scenes::kTextureSize, scenes::kTextureSize, 0,
-                 GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, scenes::kTextureSize, scenes::kTextureSize, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, texels.data());
     glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -333,8 +334,7 @@ int run(const Options& opt, const scenes::Scene& scene) {
   const GLuint prog = build_program(scene.textured, instanced);
   glUseProgram(prog);
   const glm::mat4 viewproj = scene.projection * scene.view;
-  glUniformMatrix4fv(glGetUniformLocation(prog, "u_viewproj"), 1, GL_FALSE,
-                     glm::value_ptr(viewproj));
+  glUniformMatrix4fv(glGetUniformLocation(prog, "u_viewproj"), 1, GL_FALSE, glm::value_ptr(viewproj));
   glUniform3fv(glGetUniformLocation(prog, "u_light"), 1, glm::value_ptr(scene.light));
   glUniform3fv(glGetUniformLocation(prog, "u_eye"), 1, glm::value_ptr(scene.eye));
   if (scene.textured) glUniform1i(glGetUniformLocation(prog, "u_tex"), 0);

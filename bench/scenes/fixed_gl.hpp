@@ -59,7 +59,8 @@ inline void fixed_frame(const Scene& s) {
     const GLfloat diffuse[4] = {kDiffuse * d.albedo.x, kDiffuse * d.albedo.y, kDiffuse * d.albedo.z, 1.0f};
     glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, ambient);
     glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse);
-    glDrawElements(GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT, s.mesh.indices.data() + d.first_index);
+    glDrawElements(GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
+                   s.mesh.indices.data() + d.first_index);
     glPopMatrix();
   }
 }

@@ -82,14 +82,18 @@ std::string header(bool textured, bool instanced) {
   std::string head = "#version 330 core\n";
   if (textured) head += "#define TEXTURED 1\n";
   if (instanced) head += "#define INSTANCED 1\n";
-  head += "#define K_AMBIENT " + f(kAmbient) + "\n#define K_DIFFUSE " + f(kDiffuse) + "\n#define K_SPECULAR " +
-          f(kSpecular) + "\n#define K_SHININESS " + f(kShininess) + "\n";
+  head += "#define K_AMBIENT " + f(kAmbient) + "\n#define K_DIFFUSE " + f(kDiffuse) +
+          "\n#define K_SPECULAR " + f(kSpecular) + "\n#define K_SHININESS " + f(kShininess) + "\n";
   return head;
 }
 
 }  // namespace
 
-std::string scene_vertex_glsl(bool textured, bool instanced) { return header(textured, instanced) + kVertexShader; }
-std::string scene_fragment_glsl(bool textured, bool instanced) { return header(textured, instanced) + kFragmentShader; }
+std::string scene_vertex_glsl(bool textured, bool instanced) {
+  return header(textured, instanced) + kVertexShader;
+}
+std::string scene_fragment_glsl(bool textured, bool instanced) {
+  return header(textured, instanced) + kFragmentShader;
+}
 
 }  // namespace tessel::scenes

@@ -30,9 +30,12 @@ void add_sphere(Mesh& m, int slices, int stacks) {
   for (int k = 0; k < stacks; ++k)
     for (int j = 0; j < slices; ++j) {
       const uint32_t a = id(k, j), b = id(k + 1, j), c = id(k + 1, j + 1), d = id(k, j + 1);
-      if (k == 0) m.indices.insert(m.indices.end(), {a, b, c});
-      else if (k == stacks - 1) m.indices.insert(m.indices.end(), {a, b, d});
-      else m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
+      if (k == 0)
+        m.indices.insert(m.indices.end(), {a, b, c});
+      else if (k == stacks - 1)
+        m.indices.insert(m.indices.end(), {a, b, d});
+      else
+        m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
     }
 }
 
@@ -96,7 +99,8 @@ uint64_t Scene::triangles() const {
 }
 
 const std::vector<std::string>& scene_names() {
-  static const std::vector<std::string> names = {"spheres-100k", "spheres-1m", "fill", "textured", "fixed-100k"};
+  static const std::vector<std::string> names = {"spheres-100k", "spheres-1m", "fill", "textured",
+                                                 "fixed-100k"};
   return names;
 }
 
@@ -110,9 +114,12 @@ Scene make_scene(const std::string& name, int width, int height) {
   if (width < 1 || height < 1) throw std::invalid_argument("scene size must be at least 1x1");
   const float aspect = float(width) / float(height);
   Scene s;
-  if (name == "spheres-100k") s = spheres(25, 21);
-  else if (name == "spheres-1m") s = spheres(100, 51);
-  else if (name == "fill") s = fill(aspect);
+  if (name == "spheres-100k")
+    s = spheres(25, 21);
+  else if (name == "spheres-1m")
+    s = spheres(100, 51);
+  else if (name == "fill")
+    s = fill(aspect);
   else if (name == "textured") {
     s = fill(aspect);
     s.textured = true;

@@ -23,8 +23,8 @@
  *       0  red light (GL_LIGHT0) on/off     1  white light (GL_LIGHT1) on/off
  *       q, Esc  quit
  */
-#include <stdlib.h>
 #include <GL/glut.h>
+#include <stdlib.h>
 
 /* light 0: the notes' red light */
 GLfloat diffuse0[] = {1.0, 0.0, 0.0, 1.0};
@@ -59,127 +59,134 @@ GLfloat floor_shininess = 0.0;
 int smooth = 1;
 int light0_on = 1, light1_on = 1;
 
-void setMaterial(GLfloat *ambient, GLfloat *diffuse, GLfloat *specular, GLfloat shininess)
-{
-    glMaterialfv(GL_FRONT, GL_AMBIENT, ambient);
-    glMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
-    glMaterialfv(GL_FRONT, GL_SPECULAR, specular);
-    glMaterialf(GL_FRONT, GL_SHININESS, shininess);
+void setMaterial(GLfloat* ambient, GLfloat* diffuse, GLfloat* specular, GLfloat shininess) {
+  glMaterialfv(GL_FRONT, GL_AMBIENT, ambient);
+  glMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
+  glMaterialfv(GL_FRONT, GL_SPECULAR, specular);
+  glMaterialf(GL_FRONT, GL_SHININESS, shininess);
 }
 
 /* the floor: a 10 x 10 grid of quads at y = -1, so the point lights fall off across it */
-void drawFloor(void)
-{
-    int i, j;
-    const GLfloat s = 0.8f;
-    glNormal3f(0.0, 1.0, 0.0);
-    glBegin(GL_QUADS);
-    for (i = -5; i < 5; i++)
-        for (j = -5; j < 5; j++) {
-            glVertex3f(i * s, -1.0f, (j + 1) * s);
-            glVertex3f((i + 1) * s, -1.0f, (j + 1) * s);
-            glVertex3f((i + 1) * s, -1.0f, j * s);
-            glVertex3f(i * s, -1.0f, j * s);
-        }
-    glEnd();
-}
-
-void display(void)
-{
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glShadeModel(smooth ? GL_SMOOTH : GL_FLAT);
-
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    gluLookAt(0.0, 2.5, 7.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
-
-    /* light positions are given here, after the camera, so they stay fixed in the world */
-    glLightfv(GL_LIGHT0, GL_POSITION, light0_pos);
-    glLightfv(GL_LIGHT1, GL_POSITION, light1_pos);
-
-    setMaterial(floor_ambient, floor_diffuse, floor_specular, floor_shininess);
-    drawFloor();
-
-    glPushMatrix();
-    glTranslatef(-1.3f, 0.0f, 0.0f);
-    setMaterial(sphere_ambient, sphere_diffuse, sphere_specular, sphere_shininess);
-    glutSolidSphere(1.0, 24, 16);
-    glPopMatrix();
-
-    glPushMatrix();
-    glTranslatef(1.4f, -0.05f, 0.0f);
-    glRotatef(-35.0f, 0.0f, 1.0f, 0.0f);
-    setMaterial(torus_ambient, torus_diffuse, torus_specular, torus_shininess);
-    glutSolidTorus(0.3, 0.65, 16, 32);
-    glPopMatrix();
-
-    glutSwapBuffers();
-}
-
-void reshape(int w, int h)
-{
-    if (h == 0) h = 1;
-    glViewport(0, 0, w, h);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    gluPerspective(40.0, (GLdouble)w / h, 1.0, 50.0);
-    glMatrixMode(GL_MODELVIEW);
-}
-
-void keyboard(unsigned char key, int x, int y)
-{
-    (void)x; (void)y;
-    switch (key) {
-    case 's': case 'S': smooth = !smooth; break;
-    case '0':
-        light0_on = !light0_on;
-        if (light0_on) glEnable(GL_LIGHT0); else glDisable(GL_LIGHT0);
-        break;
-    case '1':
-        light1_on = !light1_on;
-        if (light1_on) glEnable(GL_LIGHT1); else glDisable(GL_LIGHT1);
-        break;
-    case 'q': case 'Q': case 27: exit(0);
-    default: return;
+void drawFloor(void) {
+  int i, j;
+  const GLfloat s = 0.8f;
+  glNormal3f(0.0, 1.0, 0.0);
+  glBegin(GL_QUADS);
+  for (i = -5; i < 5; i++)
+    for (j = -5; j < 5; j++) {
+      glVertex3f(i * s, -1.0f, (j + 1) * s);
+      glVertex3f((i + 1) * s, -1.0f, (j + 1) * s);
+      glVertex3f((i + 1) * s, -1.0f, j * s);
+      glVertex3f(i * s, -1.0f, j * s);
     }
-    glutPostRedisplay();
+  glEnd();
 }
 
-void init(void)
-{
-    glClearColor(0.05, 0.05, 0.08, 1.0);
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_NORMALIZE);
+void display(void) {
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glShadeModel(smooth ? GL_SMOOTH : GL_FLAT);
 
-    glEnable(GL_LIGHTING);
-    glEnable(GL_LIGHT0);
-    glLightfv(GL_LIGHT0, GL_POSITION, light0_pos);
-    glLightfv(GL_LIGHT0, GL_AMBIENT, ambient0);   /* def ambient */
-    glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse0);   /* def diffuse */
-    glLightfv(GL_LIGHT0, GL_SPECULAR, specular0); /* def spec */
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  gluLookAt(0.0, 2.5, 7.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
 
-    glEnable(GL_LIGHT1);
-    glLightfv(GL_LIGHT1, GL_POSITION, light1_pos);
-    glLightfv(GL_LIGHT1, GL_AMBIENT, ambient1);
-    glLightfv(GL_LIGHT1, GL_DIFFUSE, diffuse1);
-    glLightfv(GL_LIGHT1, GL_SPECULAR, specular1);
+  /* light positions are given here, after the camera, so they stay fixed in the world */
+  glLightfv(GL_LIGHT0, GL_POSITION, light0_pos);
+  glLightfv(GL_LIGHT1, GL_POSITION, light1_pos);
 
-    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, global_ambient);
-    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_TRUE);
+  setMaterial(floor_ambient, floor_diffuse, floor_specular, floor_shininess);
+  drawFloor();
 
-    glShadeModel(GL_SMOOTH); /* Gouraud shading */
+  glPushMatrix();
+  glTranslatef(-1.3f, 0.0f, 0.0f);
+  setMaterial(sphere_ambient, sphere_diffuse, sphere_specular, sphere_shininess);
+  glutSolidSphere(1.0, 24, 16);
+  glPopMatrix();
+
+  glPushMatrix();
+  glTranslatef(1.4f, -0.05f, 0.0f);
+  glRotatef(-35.0f, 0.0f, 1.0f, 0.0f);
+  setMaterial(torus_ambient, torus_diffuse, torus_specular, torus_shininess);
+  glutSolidTorus(0.3, 0.65, 16, 32);
+  glPopMatrix();
+
+  glutSwapBuffers();
 }
 
-int main(int argc, char **argv)
-{
-    glutInit(&argc, argv);
-    glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
-    glutInitWindowSize(600, 450);
-    glutCreateWindow("lit");
-    init();
-    glutDisplayFunc(display);
-    glutReshapeFunc(reshape);
-    glutKeyboardFunc(keyboard);
-    glutMainLoop();
-    return 0;
+void reshape(int w, int h) {
+  if (h == 0) h = 1;
+  glViewport(0, 0, w, h);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  gluPerspective(40.0, (GLdouble)w / h, 1.0, 50.0);
+  glMatrixMode(GL_MODELVIEW);
+}
+
+void keyboard(unsigned char key, int x, int y) {
+  (void)x;
+  (void)y;
+  switch (key) {
+    case 's':
+    case 'S':
+      smooth = !smooth;
+      break;
+    case '0':
+      light0_on = !light0_on;
+      if (light0_on)
+        glEnable(GL_LIGHT0);
+      else
+        glDisable(GL_LIGHT0);
+      break;
+    case '1':
+      light1_on = !light1_on;
+      if (light1_on)
+        glEnable(GL_LIGHT1);
+      else
+        glDisable(GL_LIGHT1);
+      break;
+    case 'q':
+    case 'Q':
+    case 27:
+      exit(0);
+    default:
+      return;
+  }
+  glutPostRedisplay();
+}
+
+void init(void) {
+  glClearColor(0.05, 0.05, 0.08, 1.0);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_NORMALIZE);
+
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glLightfv(GL_LIGHT0, GL_POSITION, light0_pos);
+  glLightfv(GL_LIGHT0, GL_AMBIENT, ambient0);   /* def ambient */
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse0);   /* def diffuse */
+  glLightfv(GL_LIGHT0, GL_SPECULAR, specular0); /* def spec */
+
+  glEnable(GL_LIGHT1);
+  glLightfv(GL_LIGHT1, GL_POSITION, light1_pos);
+  glLightfv(GL_LIGHT1, GL_AMBIENT, ambient1);
+  glLightfv(GL_LIGHT1, GL_DIFFUSE, diffuse1);
+  glLightfv(GL_LIGHT1, GL_SPECULAR, specular1);
+
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, global_ambient);
+  glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_TRUE);
+
+  glShadeModel(GL_SMOOTH); /* Gouraud shading */
+}
+
+int main(int argc, char** argv) {
+  glutInit(&argc, argv);
+  glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
+  glutInitWindowSize(600, 450);
+  glutCreateWindow("lit");
+  init();
+  glutDisplayFunc(display);
+  glutReshapeFunc(reshape);
+  glutKeyboardFunc(keyboard);
+  glutMainLoop();
+  return 0;
 }

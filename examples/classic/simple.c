@@ -12,23 +12,21 @@
  */
 #include <GL/glut.h>
 
-void mydisplay(void)
-{
-    glClear(GL_COLOR_BUFFER_BIT);
-    glBegin(GL_POLYGON);
-    glVertex2f(-0.5, -0.5);
-    glVertex2f(-0.5, 0.5);
-    glVertex2f(0.5, 0.5);
-    glVertex2f(0.5, -0.5);
-    glEnd();
-    glFlush();
+void mydisplay(void) {
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBegin(GL_POLYGON);
+  glVertex2f(-0.5, -0.5);
+  glVertex2f(-0.5, 0.5);
+  glVertex2f(0.5, 0.5);
+  glVertex2f(0.5, -0.5);
+  glEnd();
+  glFlush();
 }
 
-int main(int argc, char **argv)
-{
-    glutInit(&argc, argv);
-    glutCreateWindow("simple");
-    glutDisplayFunc(mydisplay);
-    glutMainLoop();
-    return 0;
+int main(int argc, char** argv) {
+  glutInit(&argc, argv);
+  glutCreateWindow("simple");
+  glutDisplayFunc(mydisplay);
+  glutMainLoop();
+  return 0;
 }

@@ -90,7 +90,9 @@ int main(int argc, char** argv) {
   set_mat("MVP", proj * view * model);
   set_mat("M", model);
   set_mat("Minv", glm::inverse(model));
-  auto set3 = [&](const char* name, glm::vec3 x) { prog->set_uniform(prog->uniform_location(name), &x.x, 3); };
+  auto set3 = [&](const char* name, glm::vec3 x) {
+    prog->set_uniform(prog->uniform_location(name), &x.x, 3);
+  };
   set3("wEye", eye);
   set3("wLiPos", glm::vec3(2, 3, 4));
   set3("kd", glm::vec3(0.8f, 0.3f, 0.2f));

@@ -18,31 +18,30 @@
 
 #include "context.hpp"
 
-#define GL_CONTEXT(...)                   \
+#define GL_CONTEXT(...)                                  \
   ::tessel::gl::Context* ctx_ = ::tessel::gl::current(); \
-  if (ctx_ == nullptr) return __VA_ARGS__; \
+  if (ctx_ == nullptr) return __VA_ARGS__;               \
   ::tessel::gl::Context& c = *ctx_
 
-#define GL_LISTED(...)                                                        \
-  do {                                                                        \
-    if (c.compiling_list != 0 &&                                              \
-        !c.record([=]() {                                                     \
-          if (::tessel::gl::Context* rec_ = ::tessel::gl::current()) {        \
-            [[maybe_unused]] ::tessel::gl::Context& c = *rec_;                \
-            __VA_ARGS__;                                                      \
-          }                                                                   \
-        }))                                                                   \
-      return;                                                                 \
+#define GL_LISTED(...)                                                 \
+  do {                                                                 \
+    if (c.compiling_list != 0 && !c.record([=]() {                     \
+          if (::tessel::gl::Context* rec_ = ::tessel::gl::current()) { \
+            [[maybe_unused]] ::tessel::gl::Context& c = *rec_;         \
+            __VA_ARGS__;                                               \
+          }                                                            \
+        }))                                                            \
+      return;                                                          \
   } while (0)
 
 // Commands other than vertex attributes, glMaterial, glArrayElement and glCallList(s) are
 // errors between glBegin and glEnd (GL 2.1 §2.6.3).
-#define GL_OUTSIDE_BEGIN(...)            \
-  do {                                   \
-    if (c.in_begin) {                    \
-      c.error(GL_INVALID_OPERATION);     \
-      return __VA_ARGS__;                \
-    }                                    \
+#define GL_OUTSIDE_BEGIN(...)        \
+  do {                               \
+    if (c.in_begin) {                \
+      c.error(GL_INVALID_OPERATION); \
+      return __VA_ARGS__;            \
+    }                                \
   } while (0)
 
 namespace tessel::gl {

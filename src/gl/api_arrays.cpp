@@ -15,29 +15,64 @@ namespace {
 int component_bytes(GLenum type) {
   switch (type) {
     case GL_BYTE:
-    case GL_UNSIGNED_BYTE: return 1;
+    case GL_UNSIGNED_BYTE:
+      return 1;
     case GL_SHORT:
-    case GL_UNSIGNED_SHORT: return 2;
+    case GL_UNSIGNED_SHORT:
+      return 2;
     case GL_INT:
     case GL_UNSIGNED_INT:
-    case GL_FLOAT: return 4;
-    case GL_DOUBLE: return 8;
-    default: return 0;
+    case GL_FLOAT:
+      return 4;
+    case GL_DOUBLE:
+      return 8;
+    default:
+      return 0;
   }
 }
 
 // One component as float; `normalized` maps integers as GL 2.1 Table 2.9 does for colours and normals.
 float read(const uint8_t* p, GLenum type, bool normalized) {
   switch (type) {
-    case GL_BYTE: { int8_t v; std::memcpy(&v, p, 1); return normalized ? (2.0f * v + 1.0f) / 255.0f : float(v); }
-    case GL_UNSIGNED_BYTE: return normalized ? float(*p) / 255.0f : float(*p);
-    case GL_SHORT: { int16_t v; std::memcpy(&v, p, 2); return normalized ? (2.0f * v + 1.0f) / 65535.0f : float(v); }
-    case GL_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return normalized ? float(v) / 65535.0f : float(v); }
-    case GL_INT: { int32_t v; std::memcpy(&v, p, 4); return normalized ? float((2.0 * v + 1.0) / 4294967295.0) : float(v); }
-    case GL_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return normalized ? float(v / 4294967295.0) : float(v); }
-    case GL_FLOAT: { float v; std::memcpy(&v, p, 4); return v; }
-    case GL_DOUBLE: { double v; std::memcpy(&v, p, 8); return float(v); }
-    default: return 0.0f;
+    case GL_BYTE: {
+      int8_t v;
+      std::memcpy(&v, p, 1);
+      return normalized ? (2.0f * v + 1.0f) / 255.0f : float(v);
+    }
+    case GL_UNSIGNED_BYTE:
+      return normalized ? float(*p) / 255.0f : float(*p);
+    case GL_SHORT: {
+      int16_t v;
+      std::memcpy(&v, p, 2);
+      return normalized ? (2.0f * v + 1.0f) / 65535.0f : float(v);
+    }
+    case GL_UNSIGNED_SHORT: {
+      uint16_t v;
+      std::memcpy(&v, p, 2);
+      return normalized ? float(v) / 65535.0f : float(v);
+    }
+    case GL_INT: {
+      int32_t v;
+      std::memcpy(&v, p, 4);
+      return normalized ? float((2.0 * v + 1.0) / 4294967295.0) : float(v);
+    }
+    case GL_UNSIGNED_INT: {
+      uint32_t v;
+      std::memcpy(&v, p, 4);
+      return normalized ? float(v / 4294967295.0) : float(v);
+    }
+    case GL_FLOAT: {
+      float v;
+      std::memcpy(&v, p, 4);
+      return v;
+    }
+    case GL_DOUBLE: {
+      double v;
+      std::memcpy(&v, p, 8);
+      return float(v);
+    }
+    default:
+      return 0.0f;
   }
 }
 
@@ -119,7 +154,8 @@ std::vector<uint8_t> array_key(const Context& c, GLuint lo, GLuint hi) {
 }
 
 // The bytes of elements lo..hi of every enabled array, in order.
-template <class Fn> void for_each_source(const Context& c, GLuint lo, GLuint hi, Fn&& fn) {
+template <class Fn>
+void for_each_source(const Context& c, GLuint lo, GLuint hi, Fn&& fn) {
   for (const ArrayPointer* a : {&c.c.vertex, &c.c.normal, &c.c.color, &c.c.tex, &c.c.edge}) {
     if (!a->enabled || !a->pointer) continue;
     const int n = a == &c.c.edge ? 1 : a == &c.c.normal ? 3 : a->size;
@@ -163,13 +199,20 @@ void set_pointer(Context& c, ArrayPointer& a, GLint size, GLenum type, GLsizei s
 
 ArrayPointer* client_array(Context& c, GLenum cap) {
   switch (cap) {
-    case GL_VERTEX_ARRAY: return &c.c.vertex;
-    case GL_NORMAL_ARRAY: return &c.c.normal;
-    case GL_COLOR_ARRAY: return &c.c.color;
-    case GL_TEXTURE_COORD_ARRAY: return &c.c.tex;
-    case GL_EDGE_FLAG_ARRAY: return &c.c.edge;
-    case GL_INDEX_ARRAY: return &c.c.index;
-    default: return nullptr;
+    case GL_VERTEX_ARRAY:
+      return &c.c.vertex;
+    case GL_NORMAL_ARRAY:
+      return &c.c.normal;
+    case GL_COLOR_ARRAY:
+      return &c.c.color;
+    case GL_TEXTURE_COORD_ARRAY:
+      return &c.c.tex;
+    case GL_EDGE_FLAG_ARRAY:
+      return &c.c.edge;
+    case GL_INDEX_ARRAY:
+      return &c.c.index;
+    default:
+      return nullptr;
   }
 }
 
@@ -246,8 +289,9 @@ void GLAPIENTRY glNormalPointer(GLenum type, GLsizei stride, const GLvoid* ptr) 
 }
 void GLAPIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
   GL_CONTEXT();
-  set_pointer(c, c.c.color, size, type, stride, ptr, {3, 4},
-              {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE});
+  set_pointer(
+      c, c.c.color, size, type, stride, ptr, {3, 4},
+      {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE});
 }
 void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
   GL_CONTEXT();
@@ -259,7 +303,8 @@ void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid* ptr) {
 }
 void GLAPIENTRY glIndexPointer(GLenum type, GLsizei stride, const GLvoid* ptr) {
   GL_CONTEXT();
-  set_pointer(c, c.c.index, 1, type, stride, ptr, {1}, {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+  set_pointer(c, c.c.index, 1, type, stride, ptr, {1},
+              {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 void GLAPIENTRY glEnableClientState(GLenum cap) {
   GL_CONTEXT();
@@ -280,13 +325,27 @@ void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid** out) {
   GL_OUTSIDE_BEGIN();
   if (!out) return;
   switch (pname) {
-    case GL_VERTEX_ARRAY_POINTER: *out = const_cast<void*>(c.c.vertex.pointer); break;
-    case GL_NORMAL_ARRAY_POINTER: *out = const_cast<void*>(c.c.normal.pointer); break;
-    case GL_COLOR_ARRAY_POINTER: *out = const_cast<void*>(c.c.color.pointer); break;
-    case GL_TEXTURE_COORD_ARRAY_POINTER: *out = const_cast<void*>(c.c.tex.pointer); break;
-    case GL_EDGE_FLAG_ARRAY_POINTER: *out = const_cast<void*>(c.c.edge.pointer); break;
-    case GL_INDEX_ARRAY_POINTER: *out = const_cast<void*>(c.c.index.pointer); break;
-    default: c.error(GL_INVALID_ENUM); break;
+    case GL_VERTEX_ARRAY_POINTER:
+      *out = const_cast<void*>(c.c.vertex.pointer);
+      break;
+    case GL_NORMAL_ARRAY_POINTER:
+      *out = const_cast<void*>(c.c.normal.pointer);
+      break;
+    case GL_COLOR_ARRAY_POINTER:
+      *out = const_cast<void*>(c.c.color.pointer);
+      break;
+    case GL_TEXTURE_COORD_ARRAY_POINTER:
+      *out = const_cast<void*>(c.c.tex.pointer);
+      break;
+    case GL_EDGE_FLAG_ARRAY_POINTER:
+      *out = const_cast<void*>(c.c.edge.pointer);
+      break;
+    case GL_INDEX_ARRAY_POINTER:
+      *out = const_cast<void*>(c.c.index.pointer);
+      break;
+    default:
+      c.error(GL_INVALID_ENUM);
+      break;
   }
 }
 
@@ -306,7 +365,8 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
   std::vector<GLuint> ids(static_cast<size_t>(count));
   const auto* b = static_cast<const uint8_t*>(indices);
   for (GLsizei i = 0; i < count; ++i) {
-    if (type == GL_UNSIGNED_BYTE) ids[size_t(i)] = b[i];
+    if (type == GL_UNSIGNED_BYTE)
+      ids[size_t(i)] = b[i];
     else if (type == GL_UNSIGNED_SHORT) {
       uint16_t v;
       std::memcpy(&v, b + 2 * i, 2);
@@ -337,7 +397,8 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
           if (verts.size() == range.size()) {
             cache.key = std::move(key);
             cache.source = source_bytes(c, lo, hi);
-            cache.vertices = std::make_shared<const tessel::gpu::Buffer>(verts.data(), verts.size() * sizeof(FFVertex));
+            cache.vertices =
+                std::make_shared<const tessel::gpu::Buffer>(verts.data(), verts.size() * sizeof(FFVertex));
           } else {
             cache.vertices.reset();
           }

@@ -14,14 +14,18 @@ int light_param_count(GLenum pname) {
     case GL_AMBIENT:
     case GL_DIFFUSE:
     case GL_SPECULAR:
-    case GL_POSITION: return 4;
-    case GL_SPOT_DIRECTION: return 3;
+    case GL_POSITION:
+      return 4;
+    case GL_SPOT_DIRECTION:
+      return 3;
     case GL_SPOT_EXPONENT:
     case GL_SPOT_CUTOFF:
     case GL_CONSTANT_ATTENUATION:
     case GL_LINEAR_ATTENUATION:
-    case GL_QUADRATIC_ATTENUATION: return 1;
-    default: return 0;
+    case GL_QUADRATIC_ATTENUATION:
+      return 1;
+    default:
+      return 0;
   }
 }
 
@@ -31,10 +35,14 @@ int material_param_count(GLenum pname) {
     case GL_DIFFUSE:
     case GL_SPECULAR:
     case GL_EMISSION:
-    case GL_AMBIENT_AND_DIFFUSE: return 4;
-    case GL_SHININESS: return 1;
-    case GL_COLOR_INDEXES: return 3;
-    default: return 0;
+    case GL_AMBIENT_AND_DIFFUSE:
+      return 4;
+    case GL_SHININESS:
+      return 1;
+    case GL_COLOR_INDEXES:
+      return 3;
+    default:
+      return 0;
   }
 }
 
@@ -61,27 +69,47 @@ void light(Context& c, GLenum which, GLenum pname, Vec4Arg p) {
     case GL_QUADRATIC_ATTENUATION:
       if (p[0] < 0.0f) return c.error(GL_INVALID_VALUE);
       break;
-    default: break;
+    default:
+      break;
   }
   c.touch();
   switch (pname) {
-    case GL_AMBIENT: L.ambient = v; break;
-    case GL_DIFFUSE: L.diffuse = v; break;
-    case GL_SPECULAR: L.specular = v; break;
+    case GL_AMBIENT:
+      L.ambient = v;
+      break;
+    case GL_DIFFUSE:
+      L.diffuse = v;
+      break;
+    case GL_SPECULAR:
+      L.specular = v;
+      break;
     // Positions and directions are stored in eye coordinates, transformed by the model-view
     // matrix current when they are specified (GL 2.1 §2.14.2).
-    case GL_POSITION: L.position = c.modelview() * v; break;
-    case GL_SPOT_DIRECTION: L.spot_direction = glm::mat3(c.modelview()) * glm::vec3(v); break;
-    case GL_SPOT_EXPONENT: L.spot_exponent = p[0]; break;
+    case GL_POSITION:
+      L.position = c.modelview() * v;
+      break;
+    case GL_SPOT_DIRECTION:
+      L.spot_direction = glm::mat3(c.modelview()) * glm::vec3(v);
+      break;
+    case GL_SPOT_EXPONENT:
+      L.spot_exponent = p[0];
+      break;
     case GL_SPOT_CUTOFF:
       c.s.light.spot_cutoff[i] = p[0];
       L.spot = p[0] != 180.0f;
       L.spot_cos_cutoff = std::cos(p[0] * float(M_PI / 180.0));
       break;
-    case GL_CONSTANT_ATTENUATION: L.k0 = p[0]; break;
-    case GL_LINEAR_ATTENUATION: L.k1 = p[0]; break;
-    case GL_QUADRATIC_ATTENUATION: L.k2 = p[0]; break;
-    default: break;
+    case GL_CONSTANT_ATTENUATION:
+      L.k0 = p[0];
+      break;
+    case GL_LINEAR_ATTENUATION:
+      L.k1 = p[0];
+      break;
+    case GL_QUADRATIC_ATTENUATION:
+      L.k2 = p[0];
+      break;
+    default:
+      break;
   }
 }
 
@@ -89,20 +117,30 @@ void light_model(Context& c, GLenum pname, Vec4Arg p) {
   GL_OUTSIDE_BEGIN();
   c.touch();
   switch (pname) {
-    case GL_LIGHT_MODEL_AMBIENT: c.s.light.model_ambient = glm::vec4(p[0], p[1], p[2], p[3]); break;
-    case GL_LIGHT_MODEL_LOCAL_VIEWER: c.s.light.local_viewer = p[0] != 0.0f; break;
-    case GL_LIGHT_MODEL_TWO_SIDE: c.s.light.two_side = p[0] != 0.0f; break;
-    case GL_LIGHT_MODEL_COLOR_CONTROL:
-      if (p[0] != float(GL_SINGLE_COLOR) && p[0] != float(GL_SEPARATE_SPECULAR_COLOR)) c.error(GL_INVALID_ENUM);
+    case GL_LIGHT_MODEL_AMBIENT:
+      c.s.light.model_ambient = glm::vec4(p[0], p[1], p[2], p[3]);
       break;
-    default: c.error(GL_INVALID_ENUM); break;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER:
+      c.s.light.local_viewer = p[0] != 0.0f;
+      break;
+    case GL_LIGHT_MODEL_TWO_SIDE:
+      c.s.light.two_side = p[0] != 0.0f;
+      break;
+    case GL_LIGHT_MODEL_COLOR_CONTROL:
+      if (p[0] != float(GL_SINGLE_COLOR) && p[0] != float(GL_SEPARATE_SPECULAR_COLOR))
+        c.error(GL_INVALID_ENUM);
+      break;
+    default:
+      c.error(GL_INVALID_ENUM);
+      break;
   }
 }
 
 // glMaterial is allowed between glBegin and glEnd; the primitive then takes the material
 // current at glEnd.
 void material(Context& c, GLenum face, GLenum pname, Vec4Arg p) {
-  if ((face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) || material_param_count(pname) == 0) {
+  if ((face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) ||
+      material_param_count(pname) == 0) {
     c.error(GL_INVALID_ENUM);
     return;
   }
@@ -116,13 +154,26 @@ void material(Context& c, GLenum face, GLenum pname, Vec4Arg p) {
     if ((f == 0 && face == GL_BACK) || (f == 1 && face == GL_FRONT)) continue;
     FFMaterial& m = c.s.light.material[size_t(f)];
     switch (pname) {
-      case GL_AMBIENT: m.ambient = v; break;
-      case GL_DIFFUSE: m.diffuse = v; break;
-      case GL_SPECULAR: m.specular = v; break;
-      case GL_EMISSION: m.emission = v; break;
-      case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = v; break;
-      case GL_SHININESS: m.shininess = p[0]; break;
-      default: break;  // colour indexes: no colour-index mode
+      case GL_AMBIENT:
+        m.ambient = v;
+        break;
+      case GL_DIFFUSE:
+        m.diffuse = v;
+        break;
+      case GL_SPECULAR:
+        m.specular = v;
+        break;
+      case GL_EMISSION:
+        m.emission = v;
+        break;
+      case GL_AMBIENT_AND_DIFFUSE:
+        m.ambient = m.diffuse = v;
+        break;
+      case GL_SHININESS:
+        m.shininess = p[0];
+        break;
+      default:
+        break;  // colour indexes: no colour-index mode
     }
   }
 }
@@ -163,18 +214,31 @@ void fog(Context& c, GLenum pname, Vec4Arg p) {
       c.touch();
       f.density = p[0];
       break;
-    case GL_FOG_START: c.touch(); f.start = p[0]; break;
-    case GL_FOG_END: c.touch(); f.end = p[0]; break;
-    case GL_FOG_COLOR: c.touch(); f.color = glm::clamp(glm::vec4(p[0], p[1], p[2], p[3]), 0.0f, 1.0f); break;
-    case GL_FOG_INDEX: break;
-    default: c.error(GL_INVALID_ENUM); break;
+    case GL_FOG_START:
+      c.touch();
+      f.start = p[0];
+      break;
+    case GL_FOG_END:
+      c.touch();
+      f.end = p[0];
+      break;
+    case GL_FOG_COLOR:
+      c.touch();
+      f.color = glm::clamp(glm::vec4(p[0], p[1], p[2], p[3]), 0.0f, 1.0f);
+      break;
+    case GL_FOG_INDEX:
+      break;
+    default:
+      c.error(GL_INVALID_ENUM);
+      break;
   }
 }
 
 int fog_param_count(GLenum pname) { return pname == GL_FOG_COLOR ? 4 : 1; }
 int light_model_count(GLenum pname) { return pname == GL_LIGHT_MODEL_AMBIENT ? 4 : 1; }
 
-template <class T> Vec4Arg take(const T* v, int n) {
+template <class T>
+Vec4Arg take(const T* v, int n) {
   Vec4Arg a{0.0f, 0.0f, 0.0f, 0.0f};
   if (v)
     for (int i = 0; i < n && i < 4; ++i) a[size_t(i)] = float(v[i]);
@@ -197,8 +261,8 @@ bool is_color_param(GLenum pname) {
 
 using namespace tessel::gl;
 
-#define LIGHT_CALL(fn, ...)  \
-  GL_CONTEXT();              \
+#define LIGHT_CALL(fn, ...)      \
+  GL_CONTEXT();                  \
   GL_LISTED(fn(c, __VA_ARGS__)); \
   fn(c, __VA_ARGS__)
 

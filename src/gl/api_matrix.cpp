@@ -38,7 +38,9 @@ void load_matrix(Context& c, const glm::mat4& m) {
 void push_matrix(Context& c) {
   GL_OUTSIDE_BEGIN();
   auto& stack = c.matrices[size_t(c.matrix_index())];
-  const int depth = c.matrix_index() == 0 ? kModelviewDepth : c.matrix_index() == 1 ? kProjectionDepth : kTextureDepth;
+  const int depth = c.matrix_index() == 0   ? kModelviewDepth
+                    : c.matrix_index() == 1 ? kProjectionDepth
+                                            : kTextureDepth;
   if (int(stack.size()) >= depth) {
     c.error(GL_STACK_OVERFLOW);
     return;
@@ -124,7 +126,8 @@ void depth_range(Context& c, double n, double f) {
   c.s.viewport.far_ = std::clamp(f, 0.0, 1.0);
 }
 
-template <class T> glm::mat4 mat_from(const T* m) {
+template <class T>
+glm::mat4 mat_from(const T* m) {
   glm::mat4 r;
   for (int i = 0; i < 16; ++i) glm::value_ptr(r)[i] = float(m[i]);
   return r;
@@ -178,10 +181,13 @@ void GLAPIENTRY glTranslatef(GLfloat x, GLfloat y, GLfloat z) {
   GL_LISTED(mult_matrix(c, m));
   mult_matrix(c, m);
 }
-void GLAPIENTRY glTranslated(GLdouble x, GLdouble y, GLdouble z) { glTranslatef(float(x), float(y), float(z)); }
+void GLAPIENTRY glTranslated(GLdouble x, GLdouble y, GLdouble z) {
+  glTranslatef(float(x), float(y), float(z));
+}
 void GLAPIENTRY glScalef(GLfloat x, GLfloat y, GLfloat z) {
   GL_CONTEXT();
-  const glm::mat4 m(glm::vec4(x, 0, 0, 0), glm::vec4(0, y, 0, 0), glm::vec4(0, 0, z, 0), glm::vec4(0, 0, 0, 1));
+  const glm::mat4 m(glm::vec4(x, 0, 0, 0), glm::vec4(0, y, 0, 0), glm::vec4(0, 0, z, 0),
+                    glm::vec4(0, 0, 0, 1));
   GL_LISTED(mult_matrix(c, m));
   mult_matrix(c, m);
 }

@@ -29,17 +29,20 @@ struct PixelRect {
     gpu::CompareFunc alpha_func = gpu::CompareFunc::Always;
     float alpha_ref = 0.0f;
   };
-  template <class F> struct Varyings {
+  template <class F>
+  struct Varyings {
     gpu::Vec2<F> uv;
   };
   static constexpr bool discards = true;
   static constexpr uint32_t attributes = 0b11;
-  template <class F> gpu::Vec4<F> vertex(const Uniforms& u, const gpu::VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  gpu::Vec4<F> vertex(const Uniforms& u, const gpu::VertexIn<F>& in, Varyings<F>& out) const {
     out.uv = in.attr[1].xy();
-    return gpu::Vec4<F>(in.attr[0].x * F(u.scale.x) + F(u.offset.x), in.attr[0].y * F(u.scale.y) + F(u.offset.y),
-                        F(u.z), F(1.0f));
+    return gpu::Vec4<F>(in.attr[0].x * F(u.scale.x) + F(u.offset.x),
+                        in.attr[0].y * F(u.scale.y) + F(u.offset.y), F(u.z), F(1.0f));
   }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, gpu::Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>& v, gpu::Fragment<F>& f) const {
     gpu::Vec4<F> c = texture(u.image, v.uv);
     if (u.bitmap) {
       f.discard(c.w == F(0.0f));
@@ -113,21 +116,30 @@ void pixel_store(Context& c, GLenum pname, float v) {
     case GL_PACK_ROW_LENGTH:
     case GL_PACK_SKIP_ROWS:
     case GL_PACK_SKIP_PIXELS:
-    case GL_PACK_ALIGNMENT: ps = &c.c.pack; break;
+    case GL_PACK_ALIGNMENT:
+      ps = &c.c.pack;
+      break;
     case GL_UNPACK_SWAP_BYTES:
     case GL_UNPACK_LSB_FIRST:
     case GL_UNPACK_ROW_LENGTH:
     case GL_UNPACK_SKIP_ROWS:
     case GL_UNPACK_SKIP_PIXELS:
-    case GL_UNPACK_ALIGNMENT: ps = &c.c.unpack; break;
-    default: return c.error(GL_INVALID_ENUM);
+    case GL_UNPACK_ALIGNMENT:
+      ps = &c.c.unpack;
+      break;
+    default:
+      return c.error(GL_INVALID_ENUM);
   }
   const GLint i = GLint(std::lround(v));
   switch (pname) {
     case GL_PACK_SWAP_BYTES:
-    case GL_UNPACK_SWAP_BYTES: ps->swap_bytes = v != 0.0f; break;
+    case GL_UNPACK_SWAP_BYTES:
+      ps->swap_bytes = v != 0.0f;
+      break;
     case GL_PACK_LSB_FIRST:
-    case GL_UNPACK_LSB_FIRST: ps->lsb_first = v != 0.0f; break;
+    case GL_UNPACK_LSB_FIRST:
+      ps->lsb_first = v != 0.0f;
+      break;
     case GL_PACK_ALIGNMENT:
     case GL_UNPACK_ALIGNMENT:
       if (i != 1 && i != 2 && i != 4 && i != 8) return c.error(GL_INVALID_VALUE);
@@ -135,9 +147,12 @@ void pixel_store(Context& c, GLenum pname, float v) {
       break;
     default:
       if (i < 0) return c.error(GL_INVALID_VALUE);
-      if (pname == GL_PACK_ROW_LENGTH || pname == GL_UNPACK_ROW_LENGTH) ps->row_length = i;
-      else if (pname == GL_PACK_SKIP_ROWS || pname == GL_UNPACK_SKIP_ROWS) ps->skip_rows = i;
-      else ps->skip_pixels = i;
+      if (pname == GL_PACK_ROW_LENGTH || pname == GL_UNPACK_ROW_LENGTH)
+        ps->row_length = i;
+      else if (pname == GL_PACK_SKIP_ROWS || pname == GL_UNPACK_SKIP_ROWS)
+        ps->skip_rows = i;
+      else
+        ps->skip_pixels = i;
       break;
   }
 }
@@ -152,21 +167,51 @@ void pixel_transfer(Context& c, GLenum pname, float v) {
   GL_OUTSIDE_BEGIN();
   PixelModeState& p = c.s.pixel;
   switch (pname) {
-    case GL_MAP_COLOR: p.map_color = v != 0.0f; break;
-    case GL_MAP_STENCIL: p.map_stencil = v != 0.0f; break;
-    case GL_INDEX_SHIFT: p.index_shift = GLint(v); break;
-    case GL_INDEX_OFFSET: p.index_offset = GLint(v); break;
-    case GL_RED_SCALE: p.red_scale = v; break;
-    case GL_RED_BIAS: p.red_bias = v; break;
-    case GL_GREEN_SCALE: p.green_scale = v; break;
-    case GL_GREEN_BIAS: p.green_bias = v; break;
-    case GL_BLUE_SCALE: p.blue_scale = v; break;
-    case GL_BLUE_BIAS: p.blue_bias = v; break;
-    case GL_ALPHA_SCALE: p.alpha_scale = v; break;
-    case GL_ALPHA_BIAS: p.alpha_bias = v; break;
-    case GL_DEPTH_SCALE: p.depth_scale = v; break;
-    case GL_DEPTH_BIAS: p.depth_bias = v; break;
-    default: c.error(GL_INVALID_ENUM); break;
+    case GL_MAP_COLOR:
+      p.map_color = v != 0.0f;
+      break;
+    case GL_MAP_STENCIL:
+      p.map_stencil = v != 0.0f;
+      break;
+    case GL_INDEX_SHIFT:
+      p.index_shift = GLint(v);
+      break;
+    case GL_INDEX_OFFSET:
+      p.index_offset = GLint(v);
+      break;
+    case GL_RED_SCALE:
+      p.red_scale = v;
+      break;
+    case GL_RED_BIAS:
+      p.red_bias = v;
+      break;
+    case GL_GREEN_SCALE:
+      p.green_scale = v;
+      break;
+    case GL_GREEN_BIAS:
+      p.green_bias = v;
+      break;
+    case GL_BLUE_SCALE:
+      p.blue_scale = v;
+      break;
+    case GL_BLUE_BIAS:
+      p.blue_bias = v;
+      break;
+    case GL_ALPHA_SCALE:
+      p.alpha_scale = v;
+      break;
+    case GL_ALPHA_BIAS:
+      p.alpha_bias = v;
+      break;
+    case GL_DEPTH_SCALE:
+      p.depth_scale = v;
+      break;
+    case GL_DEPTH_BIAS:
+      p.depth_bias = v;
+      break;
+    default:
+      c.error(GL_INVALID_ENUM);
+      break;
   }
 }
 
@@ -197,8 +242,10 @@ void draw_pixels(Context& c, GLsizei w, GLsizei h, GLenum format, const std::sha
         if (x < 0 || y < 0 || x >= d->width() || y >= d->height()) continue;
         glm::vec4 t = d->fetch(0, x, y);
         const float v = data->px[size_t(j) * size_t(w) + size_t(i)].x;
-        if (format == GL_DEPTH_COMPONENT) t.x = std::clamp(v * c.s.pixel.depth_scale + c.s.pixel.depth_bias, 0.0f, 1.0f);
-        else t.y = float(uint8_t(std::lround(v)));
+        if (format == GL_DEPTH_COMPONENT)
+          t.x = std::clamp(v * c.s.pixel.depth_scale + c.s.pixel.depth_bias, 0.0f, 1.0f);
+        else
+          t.y = float(uint8_t(std::lround(v)));
         d->store(0, x, y, t);
       }
     return;
@@ -226,8 +273,8 @@ void bitmap(Context& c, GLsizei w, GLsizei h, float xo, float yo, float xm, floa
     // GL 2.1 §3.7: the lower-left corner is (floor(xr - xo), floor(yr - yo)); with Mesa's
     // 1e-4 before the floor, so a raster position that should be 6 and is 5.9999943 after
     // the transforms still lands on 6.
-    c.draw_pixels_rgba(std::floor(cur.raster_pos.x - xo + 1e-4f), std::floor(cur.raster_pos.y - yo + 1e-4f), w, h,
-                       rgba, 1.0f, 1.0f, &cur.raster_color);
+    c.draw_pixels_rgba(std::floor(cur.raster_pos.x - xo + 1e-4f), std::floor(cur.raster_pos.y - yo + 1e-4f),
+                       w, h, rgba, 1.0f, 1.0f, &cur.raster_color);
   }
   cur.raster_pos.x += xm;
   cur.raster_pos.y += ym;
@@ -250,7 +297,11 @@ void copy_pixels(Context& c, GLint x, GLint y, GLsizei w, GLsizei h, GLenum type
         if (type == GL_STENCIL) v.x = v.y;
         data->px[size_t(j) * size_t(w) + size_t(i)] = v;
       }
-  draw_pixels(c, w, h, type == GL_COLOR ? GL_RGBA : type == GL_DEPTH ? GL_DEPTH_COMPONENT : GL_STENCIL_INDEX, data);
+  draw_pixels(c, w, h,
+              type == GL_COLOR   ? GL_RGBA
+              : type == GL_DEPTH ? GL_DEPTH_COMPONENT
+                                 : GL_STENCIL_INDEX,
+              data);
 }
 
 }  // namespace
@@ -277,7 +328,8 @@ void GLAPIENTRY glPixelTransferf(GLenum pname, GLfloat v) {
 }
 void GLAPIENTRY glPixelTransferi(GLenum pname, GLint v) { glPixelTransferf(pname, float(v)); }
 
-void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, GLvoid* pixels) {
+void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type,
+                             GLvoid* pixels) {
   GL_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (w < 0 || h < 0) return c.error(GL_INVALID_VALUE);
@@ -313,7 +365,8 @@ void GLAPIENTRY glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, c
   GL_CONTEXT();
   if (w < 0 || h < 0) return c.error(GL_INVALID_VALUE);
   if (!valid_pixel_format(format) || !valid_pixel_type(type)) return c.error(GL_INVALID_ENUM);
-  if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX) return c.error(GL_INVALID_ENUM);
+  if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
+    return c.error(GL_INVALID_ENUM);
   if (format == GL_COLOR_INDEX) return c.error(GL_INVALID_OPERATION);  // RGBA mode only
   std::shared_ptr<Pixels> data;
   if (pixels && w > 0 && h > 0) {
@@ -332,7 +385,8 @@ void GLAPIENTRY glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type
   copy_pixels(c, x, y, w, h, type);
 }
 
-void GLAPIENTRY glBitmap(GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym, const GLubyte* b) {
+void GLAPIENTRY glBitmap(GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym,
+                         const GLubyte* b) {
   GL_CONTEXT();
   std::shared_ptr<std::vector<uint8_t>> bits;
   if (b && w > 0 && h > 0) {

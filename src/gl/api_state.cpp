@@ -21,34 +21,62 @@ bool* capability(Context& c, GLenum cap) {
   if (cap >= GL_MAP1_COLOR_4 && cap <= GL_MAP1_VERTEX_4) return &s.eval.map1_enabled[cap - GL_MAP1_COLOR_4];
   if (cap >= GL_MAP2_COLOR_4 && cap <= GL_MAP2_VERTEX_4) return &s.eval.map2_enabled[cap - GL_MAP2_COLOR_4];
   switch (cap) {
-    case GL_AUTO_NORMAL: return &s.eval.auto_normal;
-    case GL_LIGHTING: return &s.light.lighting;
-    case GL_COLOR_MATERIAL: return &s.light.color_material;
-    case GL_FOG: return &s.fog.enabled;
-    case GL_ALPHA_TEST: return &s.color.alpha_test;
-    case GL_BLEND: return &s.color.blend;
-    case GL_DITHER: return &s.color.dither;
-    case GL_COLOR_LOGIC_OP: return &s.color.logic_op;
-    case GL_DEPTH_TEST: return &s.depth.test;
-    case GL_STENCIL_TEST: return &s.stencil.test;
-    case GL_SCISSOR_TEST: return &s.scissor.test;
-    case GL_CULL_FACE: return &s.polygon.cull;
-    case GL_POLYGON_OFFSET_FILL: return &s.polygon.offset_fill;
-    case GL_POLYGON_OFFSET_LINE: return &s.polygon.offset_line;
-    case GL_POLYGON_OFFSET_POINT: return &s.polygon.offset_point;
-    case GL_POLYGON_SMOOTH: return &s.polygon.smooth;
-    case GL_POLYGON_STIPPLE: return &s.polygon.stipple;
-    case GL_LINE_SMOOTH: return &s.line.smooth;
-    case GL_LINE_STIPPLE: return &s.line.stipple;
-    case GL_POINT_SMOOTH: return &s.point.smooth;
-    case GL_NORMALIZE: return &s.transform.normalize;
-    case GL_RESCALE_NORMAL: return &s.transform.rescale_normal;
-    case GL_TEXTURE_2D: return &s.texture.enabled_2d;
-    case GL_TEXTURE_GEN_S: return &s.texture.gen_enabled[0];
-    case GL_TEXTURE_GEN_T: return &s.texture.gen_enabled[1];
-    case GL_TEXTURE_GEN_R: return &s.texture.gen_enabled[2];
-    case GL_TEXTURE_GEN_Q: return &s.texture.gen_enabled[3];
-    default: return nullptr;
+    case GL_AUTO_NORMAL:
+      return &s.eval.auto_normal;
+    case GL_LIGHTING:
+      return &s.light.lighting;
+    case GL_COLOR_MATERIAL:
+      return &s.light.color_material;
+    case GL_FOG:
+      return &s.fog.enabled;
+    case GL_ALPHA_TEST:
+      return &s.color.alpha_test;
+    case GL_BLEND:
+      return &s.color.blend;
+    case GL_DITHER:
+      return &s.color.dither;
+    case GL_COLOR_LOGIC_OP:
+      return &s.color.logic_op;
+    case GL_DEPTH_TEST:
+      return &s.depth.test;
+    case GL_STENCIL_TEST:
+      return &s.stencil.test;
+    case GL_SCISSOR_TEST:
+      return &s.scissor.test;
+    case GL_CULL_FACE:
+      return &s.polygon.cull;
+    case GL_POLYGON_OFFSET_FILL:
+      return &s.polygon.offset_fill;
+    case GL_POLYGON_OFFSET_LINE:
+      return &s.polygon.offset_line;
+    case GL_POLYGON_OFFSET_POINT:
+      return &s.polygon.offset_point;
+    case GL_POLYGON_SMOOTH:
+      return &s.polygon.smooth;
+    case GL_POLYGON_STIPPLE:
+      return &s.polygon.stipple;
+    case GL_LINE_SMOOTH:
+      return &s.line.smooth;
+    case GL_LINE_STIPPLE:
+      return &s.line.stipple;
+    case GL_POINT_SMOOTH:
+      return &s.point.smooth;
+    case GL_NORMALIZE:
+      return &s.transform.normalize;
+    case GL_RESCALE_NORMAL:
+      return &s.transform.rescale_normal;
+    case GL_TEXTURE_2D:
+      return &s.texture.enabled_2d;
+    case GL_TEXTURE_GEN_S:
+      return &s.texture.gen_enabled[0];
+    case GL_TEXTURE_GEN_T:
+      return &s.texture.gen_enabled[1];
+    case GL_TEXTURE_GEN_R:
+      return &s.texture.gen_enabled[2];
+    case GL_TEXTURE_GEN_Q:
+      return &s.texture.gen_enabled[3];
+    default:
+      return nullptr;
   }
 }
 
@@ -57,10 +85,14 @@ bool* capability(Context& c, GLenum cap) {
 bool* inert_capability(GLenum cap) {
   static bool inert[4] = {};
   switch (cap) {
-    case GL_TEXTURE_1D: return &inert[0];
-    case GL_INDEX_LOGIC_OP: return &inert[1];
-    case GL_MULTISAMPLE: return &inert[2];
-    default: return nullptr;
+    case GL_TEXTURE_1D:
+      return &inert[0];
+    case GL_INDEX_LOGIC_OP:
+      return &inert[1];
+    case GL_MULTISAMPLE:
+      return &inert[2];
+    default:
+      return nullptr;
   }
 }
 
@@ -79,13 +111,17 @@ bool valid_blend(GLenum f, bool src) {
     case GL_SRC_ALPHA:
     case GL_ONE_MINUS_SRC_ALPHA:
     case GL_DST_ALPHA:
-    case GL_ONE_MINUS_DST_ALPHA: return true;
+    case GL_ONE_MINUS_DST_ALPHA:
+      return true;
     case GL_DST_COLOR:
     case GL_ONE_MINUS_DST_COLOR:
     case GL_SRC_COLOR:
-    case GL_ONE_MINUS_SRC_COLOR: return true;
-    case GL_SRC_ALPHA_SATURATE: return src;
-    default: return false;
+    case GL_ONE_MINUS_SRC_COLOR:
+      return true;
+    case GL_SRC_ALPHA_SATURATE:
+      return src;
+    default:
+      return false;
   }
 }
 
@@ -105,7 +141,8 @@ void depth_func(Context& c, GLenum f) {
 }
 
 bool valid_stencil_op(GLenum op) {
-  return op == GL_KEEP || op == GL_ZERO || op == GL_REPLACE || op == GL_INCR || op == GL_DECR || op == GL_INVERT;
+  return op == GL_KEEP || op == GL_ZERO || op == GL_REPLACE || op == GL_INCR || op == GL_DECR ||
+         op == GL_INVERT;
 }
 
 void stencil_func(Context& c, GLenum f, GLint ref, GLuint mask) {
@@ -119,7 +156,8 @@ void stencil_func(Context& c, GLenum f, GLint ref, GLuint mask) {
 
 void stencil_op(Context& c, GLenum fail, GLenum zfail, GLenum zpass) {
   GL_OUTSIDE_BEGIN();
-  if (!valid_stencil_op(fail) || !valid_stencil_op(zfail) || !valid_stencil_op(zpass)) return c.error(GL_INVALID_ENUM);
+  if (!valid_stencil_op(fail) || !valid_stencil_op(zfail) || !valid_stencil_op(zpass))
+    return c.error(GL_INVALID_ENUM);
   c.touch();
   c.s.stencil.fail = fail;
   c.s.stencil.zfail = zfail;
@@ -223,7 +261,8 @@ void stencil_mask(Context& c, GLuint m) {
 
 void clear(Context& c, GLbitfield mask) {
   GL_OUTSIDE_BEGIN();
-  if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT))
+  if (mask &
+      ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT))
     return c.error(GL_INVALID_VALUE);
   c.clear(mask);
   if (mask & GL_ACCUM_BUFFER_BIT) clear_accum_buffer(c);
@@ -234,13 +273,26 @@ void hint(Context& c, GLenum target, GLenum mode) {
   if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) return c.error(GL_INVALID_ENUM);
   HintState& h = c.s.hint;
   switch (target) {
-    case GL_PERSPECTIVE_CORRECTION_HINT: h.perspective = mode; break;
-    case GL_POINT_SMOOTH_HINT: h.point = mode; break;
-    case GL_LINE_SMOOTH_HINT: h.line = mode; break;
-    case GL_POLYGON_SMOOTH_HINT: h.polygon = mode; break;
-    case GL_FOG_HINT: h.fog = mode; break;
-    case GL_GENERATE_MIPMAP_HINT: break;
-    default: c.error(GL_INVALID_ENUM); break;
+    case GL_PERSPECTIVE_CORRECTION_HINT:
+      h.perspective = mode;
+      break;
+    case GL_POINT_SMOOTH_HINT:
+      h.point = mode;
+      break;
+    case GL_LINE_SMOOTH_HINT:
+      h.line = mode;
+      break;
+    case GL_POLYGON_SMOOTH_HINT:
+      h.polygon = mode;
+      break;
+    case GL_FOG_HINT:
+      h.fog = mode;
+      break;
+    case GL_GENERATE_MIPMAP_HINT:
+      break;
+    default:
+      c.error(GL_INVALID_ENUM);
+      break;
   }
 }
 
@@ -261,15 +313,14 @@ void draw_buffer(Context& c, GLenum b) {
 
 void read_buffer(Context& c, GLenum b) {
   GL_OUTSIDE_BEGIN();
-  if (b != GL_FRONT && b != GL_BACK && b != GL_LEFT && b != GL_FRONT_LEFT && b != GL_BACK_LEFT && b != GL_RIGHT &&
-      b != GL_FRONT_RIGHT && b != GL_BACK_RIGHT && b != GL_AUX0)
+  if (b != GL_FRONT && b != GL_BACK && b != GL_LEFT && b != GL_FRONT_LEFT && b != GL_BACK_LEFT &&
+      b != GL_RIGHT && b != GL_FRONT_RIGHT && b != GL_BACK_RIGHT && b != GL_AUX0)
     return c.error(GL_INVALID_ENUM);
   if (!c.color_buffer(b)) return c.error(GL_INVALID_OPERATION);
   c.s.pixel.read_buffer = b;
 }
 
 // --- display lists (GL 2.1 §5.4) ---
-
 
 void new_list(Context& c, GLuint list, GLenum mode) {
   GL_OUTSIDE_BEGIN();
@@ -395,9 +446,9 @@ void pop_attrib(Context& c) {
 
 using namespace tessel::gl;
 
-#define SIMPLE(fn, ...)            \
-  GL_CONTEXT();                    \
-  GL_LISTED(fn(c, __VA_ARGS__));   \
+#define SIMPLE(fn, ...)          \
+  GL_CONTEXT();                  \
+  GL_LISTED(fn(c, __VA_ARGS__)); \
   fn(c, __VA_ARGS__)
 
 extern "C" {
@@ -418,11 +469,17 @@ const GLubyte* GLAPIENTRY glGetString(GLenum name) {
     return nullptr;
   }
   switch (name) {
-    case GL_VENDOR: return reinterpret_cast<const GLubyte*>("Tessel");
-    case GL_RENDERER: return reinterpret_cast<const GLubyte*>("Tessel software rasterizer (CPU)");
-    case GL_VERSION: return reinterpret_cast<const GLubyte*>("1.1 Tessel 0.1");
-    case GL_EXTENSIONS: return reinterpret_cast<const GLubyte*>("");
-    default: c.error(GL_INVALID_ENUM); return nullptr;
+    case GL_VENDOR:
+      return reinterpret_cast<const GLubyte*>("Tessel");
+    case GL_RENDERER:
+      return reinterpret_cast<const GLubyte*>("Tessel software rasterizer (CPU)");
+    case GL_VERSION:
+      return reinterpret_cast<const GLubyte*>("1.1 Tessel 0.1");
+    case GL_EXTENSIONS:
+      return reinterpret_cast<const GLubyte*>("");
+    default:
+      c.error(GL_INVALID_ENUM);
+      return nullptr;
   }
 }
 
@@ -436,13 +493,21 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap) {
   if (!flag) {
     // Client-state arrays are queried with glIsEnabled too.
     switch (cap) {
-      case GL_VERTEX_ARRAY: return c.c.vertex.enabled;
-      case GL_NORMAL_ARRAY: return c.c.normal.enabled;
-      case GL_COLOR_ARRAY: return c.c.color.enabled;
-      case GL_TEXTURE_COORD_ARRAY: return c.c.tex.enabled;
-      case GL_EDGE_FLAG_ARRAY: return c.c.edge.enabled;
-      case GL_INDEX_ARRAY: return c.c.index.enabled;
-      default: c.error(GL_INVALID_ENUM); return GL_FALSE;
+      case GL_VERTEX_ARRAY:
+        return c.c.vertex.enabled;
+      case GL_NORMAL_ARRAY:
+        return c.c.normal.enabled;
+      case GL_COLOR_ARRAY:
+        return c.c.color.enabled;
+      case GL_TEXTURE_COORD_ARRAY:
+        return c.c.tex.enabled;
+      case GL_EDGE_FLAG_ARRAY:
+        return c.c.edge.enabled;
+      case GL_INDEX_ARRAY:
+        return c.c.index.enabled;
+      default:
+        c.error(GL_INVALID_ENUM);
+        return GL_FALSE;
     }
   }
   return *flag ? GL_TRUE : GL_FALSE;
@@ -453,7 +518,9 @@ void GLAPIENTRY glBlendFunc(GLenum s, GLenum d) { SIMPLE(blend_func, s, d); }
 void GLAPIENTRY glDepthFunc(GLenum f) { SIMPLE(depth_func, f); }
 void GLAPIENTRY glDepthMask(GLboolean m) { SIMPLE(depth_mask, m != GL_FALSE); }
 void GLAPIENTRY glStencilFunc(GLenum f, GLint ref, GLuint mask) { SIMPLE(stencil_func, f, ref, mask); }
-void GLAPIENTRY glStencilOp(GLenum fail, GLenum zfail, GLenum zpass) { SIMPLE(stencil_op, fail, zfail, zpass); }
+void GLAPIENTRY glStencilOp(GLenum fail, GLenum zfail, GLenum zpass) {
+  SIMPLE(stencil_op, fail, zfail, zpass);
+}
 void GLAPIENTRY glStencilMask(GLuint m) { SIMPLE(stencil_mask, m); }
 void GLAPIENTRY glScissor(GLint x, GLint y, GLsizei w, GLsizei h) { SIMPLE(scissor, x, y, w, h); }
 void GLAPIENTRY glCullFace(GLenum mode) { SIMPLE(cull_face, mode); }
@@ -489,8 +556,10 @@ void GLAPIENTRY glGetPolygonStipple(GLubyte* mask) {
       const int bit = x + c.c.pack.skip_pixels;
       const int shift = c.c.pack.lsb_first ? (bit % 8) : (7 - bit % 8);
       uint8_t& b = row[bit / 8];
-      if ((c.s.polygon_stipple[size_t(y)] >> x) & 1u) b = uint8_t(b | (1u << shift));
-      else b = uint8_t(b & ~(1u << shift));
+      if ((c.s.polygon_stipple[size_t(y)] >> x) & 1u)
+        b = uint8_t(b | (1u << shift));
+      else
+        b = uint8_t(b & ~(1u << shift));
     }
   }
 }
@@ -595,22 +664,55 @@ void GLAPIENTRY glCallLists(GLsizei n, GLenum type, const GLvoid* lists) {
   const auto* b = static_cast<const uint8_t*>(lists);
   auto at = [&](int i, int k) { return GLuint(b[i * k]); };
   switch (type) {
-    case GL_BYTE: for (int i = 0; i < n; ++i) names.push_back(GLuint(GLint(int8_t(b[i])))); break;
-    case GL_UNSIGNED_BYTE: for (int i = 0; i < n; ++i) names.push_back(b[i]); break;
-    case GL_SHORT: for (int i = 0; i < n; ++i) { int16_t v; std::memcpy(&v, b + 2 * i, 2); names.push_back(GLuint(GLint(v))); } break;
-    case GL_UNSIGNED_SHORT: for (int i = 0; i < n; ++i) { uint16_t v; std::memcpy(&v, b + 2 * i, 2); names.push_back(v); } break;
+    case GL_BYTE:
+      for (int i = 0; i < n; ++i) names.push_back(GLuint(GLint(int8_t(b[i]))));
+      break;
+    case GL_UNSIGNED_BYTE:
+      for (int i = 0; i < n; ++i) names.push_back(b[i]);
+      break;
+    case GL_SHORT:
+      for (int i = 0; i < n; ++i) {
+        int16_t v;
+        std::memcpy(&v, b + 2 * i, 2);
+        names.push_back(GLuint(GLint(v)));
+      }
+      break;
+    case GL_UNSIGNED_SHORT:
+      for (int i = 0; i < n; ++i) {
+        uint16_t v;
+        std::memcpy(&v, b + 2 * i, 2);
+        names.push_back(v);
+      }
+      break;
     case GL_INT:
-    case GL_UNSIGNED_INT: for (int i = 0; i < n; ++i) { uint32_t v; std::memcpy(&v, b + 4 * i, 4); names.push_back(v); } break;
-    case GL_FLOAT: for (int i = 0; i < n; ++i) { float v; std::memcpy(&v, b + 4 * i, 4); names.push_back(GLuint(GLint(v))); } break;
-    case GL_2_BYTES: for (int i = 0; i < n; ++i) names.push_back(at(2 * i, 1) * 256 + at(2 * i + 1, 1)); break;
+    case GL_UNSIGNED_INT:
+      for (int i = 0; i < n; ++i) {
+        uint32_t v;
+        std::memcpy(&v, b + 4 * i, 4);
+        names.push_back(v);
+      }
+      break;
+    case GL_FLOAT:
+      for (int i = 0; i < n; ++i) {
+        float v;
+        std::memcpy(&v, b + 4 * i, 4);
+        names.push_back(GLuint(GLint(v)));
+      }
+      break;
+    case GL_2_BYTES:
+      for (int i = 0; i < n; ++i) names.push_back(at(2 * i, 1) * 256 + at(2 * i + 1, 1));
+      break;
     case GL_3_BYTES:
-      for (int i = 0; i < n; ++i) names.push_back((at(3 * i, 1) << 16) + (at(3 * i + 1, 1) << 8) + at(3 * i + 2, 1));
+      for (int i = 0; i < n; ++i)
+        names.push_back((at(3 * i, 1) << 16) + (at(3 * i + 1, 1) << 8) + at(3 * i + 2, 1));
       break;
     case GL_4_BYTES:
       for (int i = 0; i < n; ++i)
-        names.push_back((at(4 * i, 1) << 24) + (at(4 * i + 1, 1) << 16) + (at(4 * i + 2, 1) << 8) + at(4 * i + 3, 1));
+        names.push_back((at(4 * i, 1) << 24) + (at(4 * i + 1, 1) << 16) + (at(4 * i + 2, 1) << 8) +
+                        at(4 * i + 3, 1));
       break;
-    default: return c.error(GL_INVALID_ENUM);
+    default:
+      return c.error(GL_INVALID_ENUM);
   }
   auto run = [names](Context& c) {
     for (GLuint name : names) call_list(c, name + c.s.list_base);

@@ -73,8 +73,8 @@ void mark_changed(Context& c, TextureObject& t) {
 }
 
 bool check_image_args(Context& c, GLint level, GLsizei w, GLsizei h, GLint border) {
-  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || w > kMaxTextureSize || h > kMaxTextureSize ||
-      border != 0) {
+  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || w > kMaxTextureSize ||
+      h > kMaxTextureSize || border != 0) {
     c.error(GL_INVALID_VALUE);
     return false;
   }
@@ -100,8 +100,10 @@ void tex_image_2d(Context& c, GLenum target, GLint level, GLint internal, GLsize
   img.height = h;
   img.base = base;
   img.internal_format = GLenum(internal);
-  if (data) to_texture_rgba8(data->px, base, img.rgba);
-  else img.rgba.assign(size_t(w) * size_t(h) * 4, 0);
+  if (data)
+    to_texture_rgba8(data->px, base, img.rgba);
+  else
+    img.rgba.assign(size_t(w) * size_t(h) * 4, 0);
 }
 
 void tex_sub_image_2d(Context& c, GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h,
@@ -112,14 +114,15 @@ void tex_sub_image_2d(Context& c, GLenum target, GLint level, GLint x, GLint y, 
   if (level < 0 || level >= kMaxTextureLevels) return c.error(GL_INVALID_VALUE);
   TextureImage& img = t->levels[size_t(level)];
   if (!img.defined()) return c.error(GL_INVALID_OPERATION);
-  if (x < 0 || y < 0 || w < 0 || h < 0 || x + w > img.width || y + h > img.height) return c.error(GL_INVALID_VALUE);
+  if (x < 0 || y < 0 || w < 0 || h < 0 || x + w > img.width || y + h > img.height)
+    return c.error(GL_INVALID_VALUE);
   if (!data || w == 0 || h == 0) return;
   mark_changed(c, *t);
   std::vector<uint8_t> rgba;
   to_texture_rgba8(data->px, img.base, rgba);
   for (int j = 0; j < h; ++j)
-    std::memcpy(&img.rgba[(size_t(y + j) * size_t(img.width) + size_t(x)) * 4], &rgba[size_t(j) * size_t(w) * 4],
-                size_t(w) * 4);
+    std::memcpy(&img.rgba[(size_t(y + j) * size_t(img.width) + size_t(x)) * 4],
+                &rgba[size_t(j) * size_t(w) * 4], size_t(w) * 4);
 }
 
 // Pixels of the read buffer as floats, rows bottom-up (for glCopyTex*).
@@ -150,8 +153,8 @@ void copy_tex_image_2d(Context& c, GLenum target, GLint level, GLenum internal, 
   tex_image_2d(c, target, level, GLint(internal), w, h, border, data);
 }
 
-void copy_tex_sub_image_2d(Context& c, GLenum target, GLint level, GLint xo, GLint yo, GLint x, GLint y, GLsizei w,
-                           GLsizei h) {
+void copy_tex_sub_image_2d(Context& c, GLenum target, GLint level, GLint xo, GLint yo, GLint x, GLint y,
+                           GLsizei w, GLsizei h) {
   GL_OUTSIDE_BEGIN();
   auto data = std::make_shared<ImageData>();
   data->px = read_color(c, x, y, std::max(w, 0), std::max(h, 0));
@@ -159,8 +162,8 @@ void copy_tex_sub_image_2d(Context& c, GLenum target, GLint level, GLint xo, GLi
 }
 
 bool valid_min_filter(GLenum f) {
-  return f == GL_NEAREST || f == GL_LINEAR || f == GL_NEAREST_MIPMAP_NEAREST || f == GL_LINEAR_MIPMAP_NEAREST ||
-         f == GL_NEAREST_MIPMAP_LINEAR || f == GL_LINEAR_MIPMAP_LINEAR;
+  return f == GL_NEAREST || f == GL_LINEAR || f == GL_NEAREST_MIPMAP_NEAREST ||
+         f == GL_LINEAR_MIPMAP_NEAREST || f == GL_NEAREST_MIPMAP_LINEAR || f == GL_LINEAR_MIPMAP_LINEAR;
 }
 bool valid_wrap(GLenum w) { return w == GL_REPEAT || w == GL_CLAMP || w == GL_CLAMP_TO_EDGE; }
 
@@ -191,7 +194,9 @@ void tex_parameter(Context& c, GLenum target, GLenum pname, Vec4Arg p) {
       c.touch();
       t->border = glm::clamp(glm::vec4(p[0], p[1], p[2], p[3]), 0.0f, 1.0f);
       break;
-    case GL_TEXTURE_PRIORITY: t->priority = std::clamp(p[0], 0.0f, 1.0f); break;
+    case GL_TEXTURE_PRIORITY:
+      t->priority = std::clamp(p[0], 0.0f, 1.0f);
+      break;
     case GL_TEXTURE_BASE_LEVEL:
       if (p[0] < 0.0f) return c.error(GL_INVALID_VALUE);
       mark_changed(c, *t);
@@ -202,8 +207,12 @@ void tex_parameter(Context& c, GLenum target, GLenum pname, Vec4Arg p) {
       mark_changed(c, *t);
       t->max_level = int(p[0]);
       break;
-    case GL_GENERATE_MIPMAP: t->generate_mipmap = p[0] != 0.0f; break;
-    default: c.error(GL_INVALID_ENUM); break;
+    case GL_GENERATE_MIPMAP:
+      t->generate_mipmap = p[0] != 0.0f;
+      break;
+    default:
+      c.error(GL_INVALID_ENUM);
+      break;
   }
 }
 
@@ -223,7 +232,9 @@ void tex_env(Context& c, GLenum target, GLenum pname, Vec4Arg p) {
       c.touch();
       c.s.texture.env_color = glm::clamp(glm::vec4(p[0], p[1], p[2], p[3]), 0.0f, 1.0f);
       break;
-    default: c.error(GL_INVALID_ENUM); break;
+    default:
+      c.error(GL_INVALID_ENUM);
+      break;
   }
 }
 
@@ -249,18 +260,22 @@ void tex_gen(Context& c, GLenum coord, GLenum pname, Vec4Arg p) {
       // GL 2.1 §2.12.4: (p1 p2 p3 p4) M^-1 with M the model-view matrix when specified.
       c.s.texture.eye_plane[i] = glm::vec4(p[0], p[1], p[2], p[3]) * glm::inverse(c.modelview());
       break;
-    default: c.error(GL_INVALID_ENUM); break;
+    default:
+      c.error(GL_INVALID_ENUM);
+      break;
   }
 }
 
-template <class T> Vec4Arg take(const T* v, int n) {
+template <class T>
+Vec4Arg take(const T* v, int n) {
   Vec4Arg a{0.0f, 0.0f, 0.0f, 0.0f};
   if (v)
     for (int i = 0; i < n; ++i) a[size_t(i)] = float(v[i]);
   return a;
 }
 
-std::shared_ptr<ImageData> unpack(Context& c, GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels) {
+std::shared_ptr<ImageData> unpack(Context& c, GLsizei w, GLsizei h, GLenum format, GLenum type,
+                                  const void* pixels) {
   if (!pixels || w <= 0 || h <= 0) return nullptr;
   auto d = std::make_shared<ImageData>();
   unpack_pixels(c.c.unpack, w, h, format, type, pixels, d->px);
@@ -365,8 +380,8 @@ void GLAPIENTRY glTexImage2D(GLenum target, GLint level, GLint internal, GLsizei
   GL_LISTED(tex_image_2d(c, target, level, internal, w, h, border, data));
   tex_image_2d(c, target, level, internal, w, h, border, data);
 }
-void GLAPIENTRY glTexImage1D(GLenum target, GLint level, GLint internal, GLsizei w, GLint border, GLenum format,
-                             GLenum type, const GLvoid*) {
+void GLAPIENTRY glTexImage1D(GLenum target, GLint level, GLint internal, GLsizei w, GLint border,
+                             GLenum format, GLenum type, const GLvoid*) {
   GL_CONTEXT();
   GL_OUTSIDE_BEGIN();
   BaseFormat base;
@@ -374,28 +389,29 @@ void GLAPIENTRY glTexImage1D(GLenum target, GLint level, GLint internal, GLsizei
   if (!check_format_type(c, format, type)) return;
   if (!base_format_of(internal, base) || !check_image_args(c, level, w, 1, border)) return;
 }
-void GLAPIENTRY glTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
-                                GLenum type, const GLvoid* pixels) {
+void GLAPIENTRY glTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h,
+                                GLenum format, GLenum type, const GLvoid* pixels) {
   GL_CONTEXT();
   if (!check_format_type(c, format, type)) return;
   const auto data = unpack(c, w, h, format, type, pixels);
   GL_LISTED(tex_sub_image_2d(c, target, level, x, y, w, h, data));
   tex_sub_image_2d(c, target, level, x, y, w, h, data);
 }
-void GLAPIENTRY glTexSubImage1D(GLenum target, GLint, GLint, GLsizei, GLenum format, GLenum type, const GLvoid*) {
+void GLAPIENTRY glTexSubImage1D(GLenum target, GLint, GLint, GLsizei, GLenum format, GLenum type,
+                                const GLvoid*) {
   GL_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (target != GL_TEXTURE_1D) return c.error(GL_INVALID_ENUM);
   check_format_type(c, format, type);
 }
-void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h,
-                                 GLint border) {
+void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w,
+                                 GLsizei h, GLint border) {
   GL_CONTEXT();
   GL_LISTED(copy_tex_image_2d(c, target, level, internal, x, y, w, h, border));
   copy_tex_image_2d(c, target, level, internal, x, y, w, h, border);
 }
-void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xo, GLint yo, GLint x, GLint y, GLsizei w,
-                                    GLsizei h) {
+void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xo, GLint yo, GLint x, GLint y,
+                                    GLsizei w, GLsizei h) {
   GL_CONTEXT();
   GL_LISTED(copy_tex_sub_image_2d(c, target, level, xo, yo, x, y, w, h));
   copy_tex_sub_image_2d(c, target, level, xo, yo, x, y, w, h);
@@ -418,7 +434,9 @@ void GLAPIENTRY glTexParameterf(GLenum target, GLenum pname, GLfloat v) {
   GL_LISTED(tex_parameter(c, target, pname, a));
   tex_parameter(c, target, pname, a);
 }
-void GLAPIENTRY glTexParameteri(GLenum target, GLenum pname, GLint v) { glTexParameterf(target, pname, float(v)); }
+void GLAPIENTRY glTexParameteri(GLenum target, GLenum pname, GLint v) {
+  glTexParameterf(target, pname, float(v));
+}
 void GLAPIENTRY glTexParameterfv(GLenum target, GLenum pname, const GLfloat* v) {
   GL_CONTEXT();
   const Vec4Arg a = take(v, pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1);
@@ -439,17 +457,39 @@ void GLAPIENTRY glGetTexParameterfv(GLenum target, GLenum pname, GLfloat* out) {
   TextureObject* t = target_texture(c, target);
   if (!t || !out) return;
   switch (pname) {
-    case GL_TEXTURE_MIN_FILTER: out[0] = float(t->min_filter); break;
-    case GL_TEXTURE_MAG_FILTER: out[0] = float(t->mag_filter); break;
-    case GL_TEXTURE_WRAP_S: out[0] = float(t->wrap_s); break;
-    case GL_TEXTURE_WRAP_T: out[0] = float(t->wrap_t); break;
-    case GL_TEXTURE_BORDER_COLOR: for (int i = 0; i < 4; ++i) out[i] = t->border[i]; break;
-    case GL_TEXTURE_PRIORITY: out[0] = t->priority; break;
-    case GL_TEXTURE_RESIDENT: out[0] = 1.0f; break;
-    case GL_TEXTURE_BASE_LEVEL: out[0] = float(t->base_level); break;
-    case GL_TEXTURE_MAX_LEVEL: out[0] = float(t->max_level); break;
-    case GL_GENERATE_MIPMAP: out[0] = t->generate_mipmap ? 1.0f : 0.0f; break;
-    default: c.error(GL_INVALID_ENUM); break;
+    case GL_TEXTURE_MIN_FILTER:
+      out[0] = float(t->min_filter);
+      break;
+    case GL_TEXTURE_MAG_FILTER:
+      out[0] = float(t->mag_filter);
+      break;
+    case GL_TEXTURE_WRAP_S:
+      out[0] = float(t->wrap_s);
+      break;
+    case GL_TEXTURE_WRAP_T:
+      out[0] = float(t->wrap_t);
+      break;
+    case GL_TEXTURE_BORDER_COLOR:
+      for (int i = 0; i < 4; ++i) out[i] = t->border[i];
+      break;
+    case GL_TEXTURE_PRIORITY:
+      out[0] = t->priority;
+      break;
+    case GL_TEXTURE_RESIDENT:
+      out[0] = 1.0f;
+      break;
+    case GL_TEXTURE_BASE_LEVEL:
+      out[0] = float(t->base_level);
+      break;
+    case GL_TEXTURE_MAX_LEVEL:
+      out[0] = float(t->max_level);
+      break;
+    case GL_GENERATE_MIPMAP:
+      out[0] = t->generate_mipmap ? 1.0f : 0.0f;
+      break;
+    default:
+      c.error(GL_INVALID_ENUM);
+      break;
   }
 }
 void GLAPIENTRY glGetTexParameteriv(GLenum target, GLenum pname, GLint* out) {
@@ -471,19 +511,35 @@ void GLAPIENTRY glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pnam
   const bool d = img.defined();
   auto bits = [&](bool has) { return d && has ? 8.0f : 0.0f; };
   switch (pname) {
-    case GL_TEXTURE_WIDTH: out[0] = float(img.width); break;
-    case GL_TEXTURE_HEIGHT: out[0] = float(img.height); break;
-    case GL_TEXTURE_BORDER: out[0] = 0.0f; break;
-    case GL_TEXTURE_INTERNAL_FORMAT: out[0] = d ? float(img.internal_format) : 1.0f; break;
+    case GL_TEXTURE_WIDTH:
+      out[0] = float(img.width);
+      break;
+    case GL_TEXTURE_HEIGHT:
+      out[0] = float(img.height);
+      break;
+    case GL_TEXTURE_BORDER:
+      out[0] = 0.0f;
+      break;
+    case GL_TEXTURE_INTERNAL_FORMAT:
+      out[0] = d ? float(img.internal_format) : 1.0f;
+      break;
     case GL_TEXTURE_RED_SIZE:
     case GL_TEXTURE_GREEN_SIZE:
-    case GL_TEXTURE_BLUE_SIZE: out[0] = bits(b == BaseFormat::RGB || b == BaseFormat::RGBA); break;
+    case GL_TEXTURE_BLUE_SIZE:
+      out[0] = bits(b == BaseFormat::RGB || b == BaseFormat::RGBA);
+      break;
     case GL_TEXTURE_ALPHA_SIZE:
       out[0] = bits(b == BaseFormat::Alpha || b == BaseFormat::LuminanceAlpha || b == BaseFormat::RGBA);
       break;
-    case GL_TEXTURE_LUMINANCE_SIZE: out[0] = bits(b == BaseFormat::Luminance || b == BaseFormat::LuminanceAlpha); break;
-    case GL_TEXTURE_INTENSITY_SIZE: out[0] = bits(b == BaseFormat::Intensity); break;
-    default: c.error(GL_INVALID_ENUM); break;
+    case GL_TEXTURE_LUMINANCE_SIZE:
+      out[0] = bits(b == BaseFormat::Luminance || b == BaseFormat::LuminanceAlpha);
+      break;
+    case GL_TEXTURE_INTENSITY_SIZE:
+      out[0] = bits(b == BaseFormat::Intensity);
+      break;
+    default:
+      c.error(GL_INVALID_ENUM);
+      break;
   }
 }
 void GLAPIENTRY glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint* out) {
@@ -539,10 +595,12 @@ void GLAPIENTRY glGetTexEnvfv(GLenum target, GLenum pname, GLfloat* out) {
   GL_OUTSIDE_BEGIN();
   if (target != GL_TEXTURE_ENV) return c.error(GL_INVALID_ENUM);
   if (!out) return;
-  if (pname == GL_TEXTURE_ENV_MODE) out[0] = float(c.s.texture.env_mode);
+  if (pname == GL_TEXTURE_ENV_MODE)
+    out[0] = float(c.s.texture.env_mode);
   else if (pname == GL_TEXTURE_ENV_COLOR)
     for (int i = 0; i < 4; ++i) out[i] = c.s.texture.env_color[i];
-  else c.error(GL_INVALID_ENUM);
+  else
+    c.error(GL_INVALID_ENUM);
 }
 void GLAPIENTRY glGetTexEnviv(GLenum target, GLenum pname, GLint* out) {
   GLfloat f[4] = {0, 0, 0, 0};
@@ -550,7 +608,8 @@ void GLAPIENTRY glGetTexEnviv(GLenum target, GLenum pname, GLint* out) {
   if (!out) return;
   if (pname == GL_TEXTURE_ENV_COLOR)
     for (int i = 0; i < 4; ++i) out[i] = GLint(std::lround(double(f[i]) * 2147483647.0));
-  else out[0] = GLint(f[0]);
+  else
+    out[0] = GLint(f[0]);
 }
 
 void GLAPIENTRY glTexGenf(GLenum coord, GLenum pname, GLfloat v) {
@@ -587,10 +646,18 @@ void GLAPIENTRY glGetTexGenfv(GLenum coord, GLenum pname, GLfloat* out) {
   if (!out) return;
   const size_t i = coord - GL_S;
   switch (pname) {
-    case GL_TEXTURE_GEN_MODE: out[0] = float(c.s.texture.gen_mode[i]); break;
-    case GL_OBJECT_PLANE: for (int k = 0; k < 4; ++k) out[k] = c.s.texture.object_plane[i][k]; break;
-    case GL_EYE_PLANE: for (int k = 0; k < 4; ++k) out[k] = c.s.texture.eye_plane[i][k]; break;
-    default: c.error(GL_INVALID_ENUM); break;
+    case GL_TEXTURE_GEN_MODE:
+      out[0] = float(c.s.texture.gen_mode[i]);
+      break;
+    case GL_OBJECT_PLANE:
+      for (int k = 0; k < 4; ++k) out[k] = c.s.texture.object_plane[i][k];
+      break;
+    case GL_EYE_PLANE:
+      for (int k = 0; k < 4; ++k) out[k] = c.s.texture.eye_plane[i][k];
+      break;
+    default:
+      c.error(GL_INVALID_ENUM);
+      break;
   }
 }
 void GLAPIENTRY glGetTexGeniv(GLenum coord, GLenum pname, GLint* out) {

@@ -45,10 +45,18 @@ void accum(Context& c, GLenum op, float value) {
     for (int x = x0; x < x1; ++x) {
       glm::vec4& v = a.px[size_t(y) * size_t(a.width) + size_t(x)];
       switch (op) {
-        case GL_ACCUM: if (read) v += read->fetch(0, x, y) * value; break;
-        case GL_LOAD: if (read) v = read->fetch(0, x, y) * value; break;
-        case GL_MULT: v *= value; break;
-        case GL_ADD: v += glm::vec4(value); break;
+        case GL_ACCUM:
+          if (read) v += read->fetch(0, x, y) * value;
+          break;
+        case GL_LOAD:
+          if (read) v = read->fetch(0, x, y) * value;
+          break;
+        case GL_MULT:
+          v *= value;
+          break;
+        case GL_ADD:
+          v += glm::vec4(value);
+          break;
         case GL_RETURN:
           if (draw) {
             glm::vec4 out = glm::clamp(v * value, 0.0f, 1.0f);
@@ -58,7 +66,8 @@ void accum(Context& c, GLenum op, float value) {
             draw->store(0, x, y, out);
           }
           break;
-        default: break;
+        default:
+          break;
       }
     }
 }
@@ -74,7 +83,6 @@ std::map<GLenum, std::vector<float>>& pixel_maps() {
   return maps;
 }
 bool valid_map(GLenum m) { return m >= GL_PIXEL_MAP_I_TO_I && m <= GL_PIXEL_MAP_A_TO_A; }
-
 
 }  // namespace
 
@@ -130,8 +138,10 @@ void GLAPIENTRY glGetPixelMapfv(GLenum map, GLfloat* values) {
   if (!valid_map(map)) return c.error(GL_INVALID_ENUM);
   const auto it = pixel_maps().find(map);
   if (!values) return;
-  if (it == pixel_maps().end()) values[0] = 0.0f;
-  else std::copy(it->second.begin(), it->second.end(), values);
+  if (it == pixel_maps().end())
+    values[0] = 0.0f;
+  else
+    std::copy(it->second.begin(), it->second.end(), values);
 }
 void GLAPIENTRY glGetPixelMapuiv(GLenum map, GLuint* values) {
   GLfloat tmp[256] = {};

@@ -50,9 +50,11 @@ void raster_pos(Context& c, float x, float y, float z, float w) {
   const glm::vec4 eye = c.modelview() * glm::vec4(x, y, z, w);
   const glm::vec4 clip = c.projection() * eye;
   CurrentState& cur = c.s.current;
-  bool valid = clip.w != 0.0f && std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w && std::abs(clip.z) <= clip.w;
+  bool valid = clip.w != 0.0f && std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w &&
+               std::abs(clip.z) <= clip.w;
   for (int i = 0; i < kMaxClipPlanes && valid; ++i)
-    if (c.s.transform.clip_enabled[size_t(i)] && glm::dot(glm::dvec4(eye), c.s.transform.clip_plane[size_t(i)]) < 0.0)
+    if (c.s.transform.clip_enabled[size_t(i)] &&
+        glm::dot(glm::dvec4(eye), c.s.transform.clip_plane[size_t(i)]) < 0.0)
       valid = false;
   cur.raster_valid = valid;
   if (!valid) return;
@@ -77,7 +79,8 @@ void raster_pos(Context& c, float x, float y, float z, float w) {
     u.local_viewer = c.s.light.local_viewer;
     for (int i = 0; i < kMaxLights; ++i)
       if (c.s.light.enabled[size_t(i)]) u.lights[size_t(u.light_count++)] = c.s.light.light[size_t(i)];
-    const glm::vec3 n = glm::normalize(glm::transpose(glm::inverse(glm::mat3(c.modelview()))) * c.s.current.normal);
+    const glm::vec3 n =
+        glm::normalize(glm::transpose(glm::inverse(glm::mat3(c.modelview()))) * c.s.current.normal);
     const gpu::Vec4<float> col(cur.color.r, cur.color.g, cur.color.b, cur.color.a);
     const gpu::Vec4<float> lit = ffdetail::light_face<float>(u, 0, gpu::Vec3<float>(eye.x, eye.y, eye.z),
                                                              gpu::Vec3<float>(n.x, n.y, n.z), col);
@@ -90,10 +93,10 @@ void raster_pos(Context& c, float x, float y, float z, float w) {
 
 using namespace tessel::gl;
 
-#define VERTEX4(x, y, z, w)                                           \
-  GL_CONTEXT();                                                       \
+#define VERTEX4(x, y, z, w)                                                   \
+  GL_CONTEXT();                                                               \
   const float vx_ = float(x), vy_ = float(y), vz_ = float(z), vw_ = float(w); \
-  GL_LISTED(vertex(c, vx_, vy_, vz_, vw_));                           \
+  GL_LISTED(vertex(c, vx_, vy_, vz_, vw_));                                   \
   vertex(c, vx_, vy_, vz_, vw_)
 
 extern "C" {
@@ -134,10 +137,10 @@ void GLAPIENTRY glVertex4fv(const GLfloat* v) { VERTEX4(v[0], v[1], v[2], v[3]);
 void GLAPIENTRY glVertex4iv(const GLint* v) { VERTEX4(v[0], v[1], v[2], v[3]); }
 void GLAPIENTRY glVertex4sv(const GLshort* v) { VERTEX4(v[0], v[1], v[2], v[3]); }
 
-#define COLOR4(r, g, b, a)                                                 \
-  GL_CONTEXT();                                                            \
-  const float cr_ = (r), cg_ = (g), cb_ = (b), ca_ = (a);                  \
-  GL_LISTED(set_color(c, cr_, cg_, cb_, ca_));                             \
+#define COLOR4(r, g, b, a)                                \
+  GL_CONTEXT();                                           \
+  const float cr_ = (r), cg_ = (g), cb_ = (b), ca_ = (a); \
+  GL_LISTED(set_color(c, cr_, cg_, cb_, ca_));            \
   set_color(c, cr_, cg_, cb_, ca_)
 
 void GLAPIENTRY glColor3b(GLbyte r, GLbyte g, GLbyte b) { COLOR4(sb(r), sb(g), sb(b), 1.0f); }
@@ -157,7 +160,9 @@ void GLAPIENTRY glColor4i(GLint r, GLint g, GLint b, GLint a) { COLOR4(si(r), si
 void GLAPIENTRY glColor4s(GLshort r, GLshort g, GLshort b, GLshort a) { COLOR4(ss(r), ss(g), ss(b), ss(a)); }
 void GLAPIENTRY glColor4ub(GLubyte r, GLubyte g, GLubyte b, GLubyte a) { COLOR4(ub(r), ub(g), ub(b), ub(a)); }
 void GLAPIENTRY glColor4ui(GLuint r, GLuint g, GLuint b, GLuint a) { COLOR4(ui(r), ui(g), ui(b), ui(a)); }
-void GLAPIENTRY glColor4us(GLushort r, GLushort g, GLushort b, GLushort a) { COLOR4(us(r), us(g), us(b), us(a)); }
+void GLAPIENTRY glColor4us(GLushort r, GLushort g, GLushort b, GLushort a) {
+  COLOR4(us(r), us(g), us(b), us(a));
+}
 void GLAPIENTRY glColor3bv(const GLbyte* v) { COLOR4(sb(v[0]), sb(v[1]), sb(v[2]), 1.0f); }
 void GLAPIENTRY glColor3dv(const GLdouble* v) { COLOR4(float(v[0]), float(v[1]), float(v[2]), 1.0f); }
 void GLAPIENTRY glColor3fv(const GLfloat* v) { COLOR4(v[0], v[1], v[2], 1.0f); }
@@ -175,10 +180,10 @@ void GLAPIENTRY glColor4ubv(const GLubyte* v) { COLOR4(ub(v[0]), ub(v[1]), ub(v[
 void GLAPIENTRY glColor4uiv(const GLuint* v) { COLOR4(ui(v[0]), ui(v[1]), ui(v[2]), ui(v[3])); }
 void GLAPIENTRY glColor4usv(const GLushort* v) { COLOR4(us(v[0]), us(v[1]), us(v[2]), us(v[3])); }
 
-#define NORMAL3(x, y, z)                                \
-  GL_CONTEXT();                                         \
-  const float nx_ = (x), ny_ = (y), nz_ = (z);          \
-  GL_LISTED(set_normal(c, nx_, ny_, nz_));              \
+#define NORMAL3(x, y, z)                       \
+  GL_CONTEXT();                                \
+  const float nx_ = (x), ny_ = (y), nz_ = (z); \
+  GL_LISTED(set_normal(c, nx_, ny_, nz_));     \
   set_normal(c, nx_, ny_, nz_)
 
 void GLAPIENTRY glNormal3b(GLbyte x, GLbyte y, GLbyte z) { NORMAL3(sb(x), sb(y), sb(z)); }
@@ -192,10 +197,10 @@ void GLAPIENTRY glNormal3fv(const GLfloat* v) { NORMAL3(v[0], v[1], v[2]); }
 void GLAPIENTRY glNormal3iv(const GLint* v) { NORMAL3(si(v[0]), si(v[1]), si(v[2])); }
 void GLAPIENTRY glNormal3sv(const GLshort* v) { NORMAL3(ss(v[0]), ss(v[1]), ss(v[2])); }
 
-#define TEX4(s, t, r, q)                                                   \
-  GL_CONTEXT();                                                            \
+#define TEX4(s, t, r, q)                                                      \
+  GL_CONTEXT();                                                               \
   const float ts_ = float(s), tt_ = float(t), tr_ = float(r), tq_ = float(q); \
-  GL_LISTED(set_tex(c, ts_, tt_, tr_, tq_));                               \
+  GL_LISTED(set_tex(c, ts_, tt_, tr_, tq_));                                  \
   set_tex(c, ts_, tt_, tr_, tq_)
 
 void GLAPIENTRY glTexCoord1d(GLdouble s) { TEX4(s, 0, 0, 1); }
@@ -248,19 +253,19 @@ void GLAPIENTRY glEdgeFlag(GLboolean flag) {
 void GLAPIENTRY glEdgeFlagv(const GLboolean* flag) { glEdgeFlag(*flag); }
 
 // glRect: a polygon (x1,y1), (x2,y1), (x2,y2), (x1,y2) in z = 0 (GL 2.1 §2.10).
-#define RECT(x1, y1, x2, y2)                                            \
-  GL_CONTEXT();                                                         \
+#define RECT(x1, y1, x2, y2)                                                      \
+  GL_CONTEXT();                                                                   \
   const float ax_ = float(x1), ay_ = float(y1), bx_ = float(x2), by_ = float(y2); \
-  auto rect_ = [=](Context& c) {                                        \
-    GL_OUTSIDE_BEGIN();                                                 \
-    begin(c, GL_POLYGON);                                               \
-    vertex(c, ax_, ay_, 0, 1);                                          \
-    vertex(c, bx_, ay_, 0, 1);                                          \
-    vertex(c, bx_, by_, 0, 1);                                          \
-    vertex(c, ax_, by_, 0, 1);                                          \
-    c.end();                                                            \
-  };                                                                    \
-  GL_LISTED(rect_(c));                                                  \
+  auto rect_ = [=](Context& c) {                                                  \
+    GL_OUTSIDE_BEGIN();                                                           \
+    begin(c, GL_POLYGON);                                                         \
+    vertex(c, ax_, ay_, 0, 1);                                                    \
+    vertex(c, bx_, ay_, 0, 1);                                                    \
+    vertex(c, bx_, by_, 0, 1);                                                    \
+    vertex(c, ax_, by_, 0, 1);                                                    \
+    c.end();                                                                      \
+  };                                                                              \
+  GL_LISTED(rect_(c));                                                            \
   rect_(c)
 
 void GLAPIENTRY glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2) { RECT(x1, y1, x2, y2); }
@@ -272,10 +277,10 @@ void GLAPIENTRY glRectfv(const GLfloat* a, const GLfloat* b) { RECT(a[0], a[1], 
 void GLAPIENTRY glRectiv(const GLint* a, const GLint* b) { RECT(a[0], a[1], b[0], b[1]); }
 void GLAPIENTRY glRectsv(const GLshort* a, const GLshort* b) { RECT(a[0], a[1], b[0], b[1]); }
 
-#define RASTER4(x, y, z, w)                                                    \
-  GL_CONTEXT();                                                                \
-  const float rx_ = float(x), ry_ = float(y), rz_ = float(z), rw_ = float(w);  \
-  GL_LISTED(raster_pos(c, rx_, ry_, rz_, rw_));                                \
+#define RASTER4(x, y, z, w)                                                   \
+  GL_CONTEXT();                                                               \
+  const float rx_ = float(x), ry_ = float(y), rz_ = float(z), rw_ = float(w); \
+  GL_LISTED(raster_pos(c, rx_, ry_, rz_, rw_));                               \
   raster_pos(c, rx_, ry_, rz_, rw_)
 
 void GLAPIENTRY glRasterPos2d(GLdouble x, GLdouble y) { RASTER4(x, y, 0, 1); }

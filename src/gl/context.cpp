@@ -16,54 +16,82 @@ thread_local Context* g_current = nullptr;
 
 gpu::StencilOp stencil_op_of(GLenum op) {
   switch (op) {
-    case GL_ZERO: return gpu::StencilOp::Zero;
-    case GL_REPLACE: return gpu::StencilOp::Replace;
-    case GL_INCR: return gpu::StencilOp::Incr;
-    case GL_DECR: return gpu::StencilOp::Decr;
-    case GL_INVERT: return gpu::StencilOp::Invert;
-    default: return gpu::StencilOp::Keep;
+    case GL_ZERO:
+      return gpu::StencilOp::Zero;
+    case GL_REPLACE:
+      return gpu::StencilOp::Replace;
+    case GL_INCR:
+      return gpu::StencilOp::Incr;
+    case GL_DECR:
+      return gpu::StencilOp::Decr;
+    case GL_INVERT:
+      return gpu::StencilOp::Invert;
+    default:
+      return gpu::StencilOp::Keep;
   }
 }
 
 gpu::BlendFactor blend_of(GLenum f) {
   using B = gpu::BlendFactor;
   switch (f) {
-    case GL_ZERO: return B::Zero;
-    case GL_ONE: return B::One;
-    case GL_SRC_COLOR: return B::SrcColor;
-    case GL_ONE_MINUS_SRC_COLOR: return B::OneMinusSrcColor;
-    case GL_DST_COLOR: return B::DstColor;
-    case GL_ONE_MINUS_DST_COLOR: return B::OneMinusDstColor;
-    case GL_SRC_ALPHA: return B::SrcAlpha;
-    case GL_ONE_MINUS_SRC_ALPHA: return B::OneMinusSrcAlpha;
-    case GL_DST_ALPHA: return B::DstAlpha;
-    case GL_ONE_MINUS_DST_ALPHA: return B::OneMinusDstAlpha;
-    case GL_SRC_ALPHA_SATURATE: return B::SrcAlphaSaturate;
-    default: return B::One;
+    case GL_ZERO:
+      return B::Zero;
+    case GL_ONE:
+      return B::One;
+    case GL_SRC_COLOR:
+      return B::SrcColor;
+    case GL_ONE_MINUS_SRC_COLOR:
+      return B::OneMinusSrcColor;
+    case GL_DST_COLOR:
+      return B::DstColor;
+    case GL_ONE_MINUS_DST_COLOR:
+      return B::OneMinusDstColor;
+    case GL_SRC_ALPHA:
+      return B::SrcAlpha;
+    case GL_ONE_MINUS_SRC_ALPHA:
+      return B::OneMinusSrcAlpha;
+    case GL_DST_ALPHA:
+      return B::DstAlpha;
+    case GL_ONE_MINUS_DST_ALPHA:
+      return B::OneMinusDstAlpha;
+    case GL_SRC_ALPHA_SATURATE:
+      return B::SrcAlphaSaturate;
+    default:
+      return B::One;
   }
 }
 
 gpu::PolygonMode polygon_mode_of(GLenum m) {
-  return m == GL_LINE ? gpu::PolygonMode::Line : m == GL_POINT ? gpu::PolygonMode::Point : gpu::PolygonMode::Fill;
+  return m == GL_LINE    ? gpu::PolygonMode::Line
+         : m == GL_POINT ? gpu::PolygonMode::Point
+                         : gpu::PolygonMode::Fill;
 }
 
 gpu::Filter filter_of(GLenum f) {
   switch (f) {
-    case GL_NEAREST: return gpu::Filter::Nearest;
-    case GL_LINEAR: return gpu::Filter::Linear;
-    case GL_NEAREST_MIPMAP_NEAREST: return gpu::Filter::NearestMipmapNearest;
-    case GL_LINEAR_MIPMAP_NEAREST: return gpu::Filter::LinearMipmapNearest;
-    case GL_NEAREST_MIPMAP_LINEAR: return gpu::Filter::NearestMipmapLinear;
-    default: return gpu::Filter::LinearMipmapLinear;
+    case GL_NEAREST:
+      return gpu::Filter::Nearest;
+    case GL_LINEAR:
+      return gpu::Filter::Linear;
+    case GL_NEAREST_MIPMAP_NEAREST:
+      return gpu::Filter::NearestMipmapNearest;
+    case GL_LINEAR_MIPMAP_NEAREST:
+      return gpu::Filter::LinearMipmapNearest;
+    case GL_NEAREST_MIPMAP_LINEAR:
+      return gpu::Filter::NearestMipmapLinear;
+    default:
+      return gpu::Filter::LinearMipmapLinear;
   }
 }
 
-
 gpu::Wrap wrap_of(GLenum w) {
   switch (w) {
-    case GL_CLAMP: return gpu::Wrap::Clamp;
-    case GL_CLAMP_TO_EDGE: return gpu::Wrap::ClampToEdge;
-    default: return gpu::Wrap::Repeat;
+    case GL_CLAMP:
+      return gpu::Wrap::Clamp;
+    case GL_CLAMP_TO_EDGE:
+      return gpu::Wrap::ClampToEdge;
+    default:
+      return gpu::Wrap::Repeat;
   }
 }
 
@@ -75,14 +103,22 @@ void make_current(Context* c) { g_current = c; }
 
 gpu::CompareFunc compare_of(GLenum f) {
   switch (f) {
-    case GL_NEVER: return gpu::CompareFunc::Never;
-    case GL_LESS: return gpu::CompareFunc::Less;
-    case GL_EQUAL: return gpu::CompareFunc::Equal;
-    case GL_LEQUAL: return gpu::CompareFunc::LessEqual;
-    case GL_GREATER: return gpu::CompareFunc::Greater;
-    case GL_NOTEQUAL: return gpu::CompareFunc::NotEqual;
-    case GL_GEQUAL: return gpu::CompareFunc::GreaterEqual;
-    default: return gpu::CompareFunc::Always;
+    case GL_NEVER:
+      return gpu::CompareFunc::Never;
+    case GL_LESS:
+      return gpu::CompareFunc::Less;
+    case GL_EQUAL:
+      return gpu::CompareFunc::Equal;
+    case GL_LEQUAL:
+      return gpu::CompareFunc::LessEqual;
+    case GL_GREATER:
+      return gpu::CompareFunc::Greater;
+    case GL_NOTEQUAL:
+      return gpu::CompareFunc::NotEqual;
+    case GL_GEQUAL:
+      return gpu::CompareFunc::GreaterEqual;
+    default:
+      return gpu::CompareFunc::Always;
   }
 }
 
@@ -151,10 +187,13 @@ gpu::Texture2D* Context::color_buffer(GLenum which) {
     case GL_FRONT:
     case GL_FRONT_LEFT:
     case GL_LEFT:
-    case GL_FRONT_AND_BACK: return color_[0].get();
+    case GL_FRONT_AND_BACK:
+      return color_[0].get();
     case GL_BACK:
-    case GL_BACK_LEFT: return double_buffer_ ? color_[1].get() : nullptr;
-    default: return nullptr;
+    case GL_BACK_LEFT:
+      return double_buffer_ ? color_[1].get() : nullptr;
+    default:
+      return nullptr;
   }
 }
 
@@ -252,8 +291,10 @@ void Context::emit_mode(GLenum mode, std::vector<FFVertex>&& v) {
       break;
     case GL_TRIANGLE_STRIP:
       for (uint32_t i = 0; i + 2 < n; ++i) {
-        if (i % 2 == 0) tri(i, i + 1, i + 2);
-        else tri(i + 1, i, i + 2);
+        if (i % 2 == 0)
+          tri(i, i + 1, i + 2);
+        else
+          tri(i + 1, i, i + 2);
       }
       break;
     case GL_TRIANGLE_FAN:
@@ -312,7 +353,8 @@ void Context::emit_mode(GLenum mode, std::vector<FFVertex>&& v) {
       v = std::move(out);
       break;
     }
-    default: return;
+    default:
+      return;
   }
   if (idx.empty()) return;
   emit(cls, std::move(v), std::move(idx));
@@ -365,7 +407,8 @@ bool Context::outside_view_volume(const FFVertex& v) const {
   const glm::vec4 c = projection() * eye;
   if (c.x < -c.w || c.x > c.w || c.y < -c.w || c.y > c.w || c.z < -c.w || c.z > c.w) return true;
   for (int i = 0; i < kMaxClipPlanes; ++i)
-    if (s.transform.clip_enabled[size_t(i)] && glm::dot(glm::dvec4(eye), s.transform.clip_plane[size_t(i)]) < 0.0)
+    if (s.transform.clip_enabled[size_t(i)] &&
+        glm::dot(glm::dvec4(eye), s.transform.clip_plane[size_t(i)]) < 0.0)
       return true;
   return false;
 }
@@ -387,8 +430,10 @@ void Context::emit(PrimClass cls, std::vector<FFVertex>&& verts, std::vector<uin
   close_quad_run();  // earlier quads go first
   if (render_mode_ != GL_RENDER) {
     // Selection and feedback modes report primitives instead of drawing them.
-    if (render_mode_ == GL_SELECT) select_primitives(cls, verts, indices);
-    else feedback_primitives(cls, verts, indices);
+    if (render_mode_ == GL_SELECT)
+      select_primitives(cls, verts, indices);
+    else
+      feedback_primitives(cls, verts, indices);
     return;
   }
   if (!batch_.indices.empty() && batch_.cls != cls) send_batch();
@@ -448,11 +493,21 @@ void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
     if (L.color_material) {
       uint8_t bits = 0;
       switch (L.color_material_mode) {
-        case GL_AMBIENT: bits = kTrackAmbient; break;
-        case GL_DIFFUSE: bits = kTrackDiffuse; break;
-        case GL_SPECULAR: bits = kTrackSpecular; break;
-        case GL_EMISSION: bits = kTrackEmission; break;
-        default: bits = kTrackAmbient | kTrackDiffuse; break;
+        case GL_AMBIENT:
+          bits = kTrackAmbient;
+          break;
+        case GL_DIFFUSE:
+          bits = kTrackDiffuse;
+          break;
+        case GL_SPECULAR:
+          bits = kTrackSpecular;
+          break;
+        case GL_EMISSION:
+          bits = kTrackEmission;
+          break;
+        default:
+          bits = kTrackAmbient | kTrackDiffuse;
+          break;
       }
       if (L.color_material_face != GL_BACK) u.track[0] = bits;
       if (L.color_material_face != GL_FRONT) u.track[1] = bits;
@@ -468,11 +523,21 @@ void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
     st.border_color = tex->border;
     u.base_format = tex->levels[size_t(std::clamp(tex->base_level, 0, kMaxTextureLevels - 1))].base;
     switch (s.texture.env_mode) {
-      case GL_REPLACE: u.env = TexEnv::Replace; break;
-      case GL_DECAL: u.env = TexEnv::Decal; break;
-      case GL_BLEND: u.env = TexEnv::Blend; break;
-      case GL_ADD: u.env = TexEnv::Add; break;
-      default: u.env = TexEnv::Modulate; break;
+      case GL_REPLACE:
+        u.env = TexEnv::Replace;
+        break;
+      case GL_DECAL:
+        u.env = TexEnv::Decal;
+        break;
+      case GL_BLEND:
+        u.env = TexEnv::Blend;
+        break;
+      case GL_ADD:
+        u.env = TexEnv::Add;
+        break;
+      default:
+        u.env = TexEnv::Modulate;
+        break;
     }
     u.env_color = s.texture.env_color;
     const glm::mat4& tm = matrices[2].back();
@@ -490,7 +555,9 @@ void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
   }
   u.fog = s.fog.enabled;
   if (u.fog) {
-    u.fog_mode = s.fog.mode == GL_LINEAR ? FogMode::Linear : s.fog.mode == GL_EXP2 ? FogMode::Exp2 : FogMode::Exp;
+    u.fog_mode = s.fog.mode == GL_LINEAR ? FogMode::Linear
+                 : s.fog.mode == GL_EXP2 ? FogMode::Exp2
+                                         : FogMode::Exp;
     u.fog_start = s.fog.start;
     u.fog_end = s.fog.end;
     u.fog_density = s.fog.density;
@@ -512,9 +579,10 @@ gpu::RenderState Context::render_state(bool for_clear) const {
   r.scissor = {s.scissor.x, s.scissor.y, s.scissor.width, s.scissor.height};
   if (!for_clear) {
     const PolygonState& p = s.polygon;
-    if (p.cull) r.cull = p.cull_face == GL_FRONT ? gpu::CullMode::Front
-                         : p.cull_face == GL_BACK ? gpu::CullMode::Back
-                                                  : gpu::CullMode::FrontAndBack;
+    if (p.cull)
+      r.cull = p.cull_face == GL_FRONT  ? gpu::CullMode::Front
+               : p.cull_face == GL_BACK ? gpu::CullMode::Back
+                                        : gpu::CullMode::FrontAndBack;
     r.front_face = p.front_face == GL_CW ? gpu::FrontFace::CW : gpu::FrontFace::CCW;
     r.polygon_mode = polygon_mode_of(p.mode_front);
     r.polygon_mode_per_face = p.mode_back != p.mode_front;
@@ -561,20 +629,21 @@ gpu::RenderState Context::render_state(bool for_clear) const {
 
 namespace {
 template <bool Flat, bool Textured, bool Discards>
-void draw_ff(gpu::Context& g, const FFUniforms& u, const gpu::VertexLayout& layout, const gpu::RenderState& rs,
-             const gpu::DrawCall& call) {
+void draw_ff(gpu::Context& g, const FFUniforms& u, const gpu::VertexLayout& layout,
+             const gpu::RenderState& rs, const gpu::DrawCall& call) {
   g.draw(FixedFunction<Flat, Textured, Discards>{}, u, layout, rs, call);
 }
 template <bool Flat, bool Discards>
-void draw_lean(gpu::Context& g, const FFUniforms& u, const gpu::VertexLayout& layout, const gpu::RenderState& rs,
-               const gpu::DrawCall& call) {
+void draw_lean(gpu::Context& g, const FFUniforms& u, const gpu::VertexLayout& layout,
+               const gpu::RenderState& rs, const gpu::DrawCall& call) {
   g.draw(FixedFunction<Flat, false, Discards, true>{}, u, layout, rs, call);
 }
 using DrawFn = void (*)(gpu::Context&, const FFUniforms&, const gpu::VertexLayout&, const gpu::RenderState&,
                         const gpu::DrawCall&);
 constexpr DrawFn kDraw[8] = {
-    draw_ff<false, false, false>, draw_ff<false, false, true>, draw_ff<false, true, false>, draw_ff<false, true, true>,
-    draw_ff<true, false, false>,  draw_ff<true, false, true>,  draw_ff<true, true, false>,  draw_ff<true, true, true>,
+    draw_ff<false, false, false>, draw_ff<false, false, true>, draw_ff<false, true, false>,
+    draw_ff<false, true, true>,   draw_ff<true, false, false>, draw_ff<true, false, true>,
+    draw_ff<true, true, false>,   draw_ff<true, true, true>,
 };
 // Draws that need only the front colour (no texture, fog, two-sided lighting or edges).
 constexpr DrawFn kDrawLean[4] = {draw_lean<false, false>, draw_lean<false, true>, draw_lean<true, false>,
@@ -608,7 +677,7 @@ void Context::send_batch_unchecked() {
   gpu::RenderState rs = render_state(false);
   rs.edge_flag_varying = kEdgeFlagVarying;
   gpu::DrawCall call;
-  call.topology = b.cls == PrimClass::Points ? gpu::Topology::Points
+  call.topology = b.cls == PrimClass::Points  ? gpu::Topology::Points
                   : b.cls == PrimClass::Lines ? gpu::Topology::Lines
                                               : gpu::Topology::Triangles;
   call.count = uint32_t(b.indices.size());
@@ -617,16 +686,18 @@ void Context::send_batch_unchecked() {
   const bool flat = s.light.shade_model == GL_FLAT;
   const bool discards = u->alpha_test || (u->stipple && b.cls == PrimClass::Triangles);
   if (b.cls != PrimClass::Triangles) u->stipple = false;
-  const bool lean = !tex && !u->fog && !(u->lighting && u->two_side) &&
-                    (b.cls != PrimClass::Triangles ||
-                     (s.polygon.mode_front == GL_FILL && s.polygon.mode_back == GL_FILL));
+  const bool lean =
+      !tex && !u->fog && !(u->lighting && u->two_side) &&
+      (b.cls != PrimClass::Triangles || (s.polygon.mode_front == GL_FILL && s.polygon.mode_back == GL_FILL));
   if (lean) rs.edge_flag_varying = -1;
   const DrawFn draw = lean ? kDrawLean[(flat ? 2 : 0) + (discards ? 1 : 0)]
                            : kDraw[(flat ? 4 : 0) + (tex ? 2 : 0) + (discards ? 1 : 0)];
   draw(*gpu_, *u, layout, rs, call);
   transient_bytes_ += vbuf.size() + ib->size();
-  if (own) transient_buffers_.push_back(std::move(own));
-  else transient_shared_.push_back(b.shared);
+  if (own)
+    transient_buffers_.push_back(std::move(own));
+  else
+    transient_shared_.push_back(b.shared);
   transient_buffers_.push_back(std::move(ib));
   if (transient_bytes_ > kTransientFlushBytes) {
     gpu_->finish();
@@ -711,8 +782,10 @@ void Context::send_stippled_lines(const std::vector<FFVertex>& verts, const std:
     bool visible = true;
     auto clip = [&](float da, float db) {
       if (da < 0.0f && db < 0.0f) return false;
-      if (da < 0.0f) t0 = std::max(t0, da / (da - db));
-      else if (db < 0.0f) t1 = std::min(t1, da / (da - db));
+      if (da < 0.0f)
+        t0 = std::max(t0, da / (da - db));
+      else if (db < 0.0f)
+        t1 = std::min(t1, da / (da - db));
       return t0 <= t1;
     };
     for (int p = 0; p < 6 && visible; ++p) {

@@ -12,8 +12,8 @@
 
 #include <array>
 #include <cstdint>
-#include <functional>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <new>
 #include <unordered_map>
@@ -166,8 +166,10 @@ struct TextureUnitState {
   glm::vec4 env_color{0.0f};
   std::array<bool, 4> gen_enabled{};  // S, T, R, Q
   std::array<GLenum, 4> gen_mode{GL_EYE_LINEAR, GL_EYE_LINEAR, GL_EYE_LINEAR, GL_EYE_LINEAR};
-  std::array<glm::vec4, 4> object_plane{glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0.0f), glm::vec4(0.0f)};
-  std::array<glm::vec4, 4> eye_plane{glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0.0f), glm::vec4(0.0f)};
+  std::array<glm::vec4, 4> object_plane{glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0.0f),
+                                        glm::vec4(0.0f)};
+  std::array<glm::vec4, 4> eye_plane{glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0.0f),
+                                     glm::vec4(0.0f)};
 };
 
 struct HintState {
@@ -277,7 +279,10 @@ class Context {
   bool double_buffered() const { return double_buffer_; }
   void swap_buffers();
   // The image a viewer sees (the front buffer), RGBA8 rows bottom-up; runs queued work first.
-  const gpu::Texture2D& front() { finish(); return *color_[0]; }
+  const gpu::Texture2D& front() {
+    finish();
+    return *color_[0];
+  }
   void finish();
   gpu::Texture2D* color_buffer(GLenum which);  // GL_FRONT / GL_BACK (nullptr if none)
   gpu::Texture2D* depth_buffer() { return depth_.get(); }
@@ -384,7 +389,8 @@ class Context {
   void send_batch_unchecked();
   // The gpu layer reports what it cannot do by exceptions; a GL program sees them as
   // GL_OUT_OF_MEMORY (no memory) or GL_INVALID_OPERATION (anything else), never as a crash.
-  template <class Fn> void guarded(Fn&& fn) {
+  template <class Fn>
+  void guarded(Fn&& fn) {
     try {
       fn();
     } catch (const std::bad_alloc&) {
@@ -395,7 +401,8 @@ class Context {
   }
   void send_stippled_lines(const std::vector<FFVertex>& verts, const std::vector<uint32_t>& indices);
   FFPostVertex post_vertex(const FFVertex& v, const FFUniforms& u, bool textured) const;
-  void feedback_primitives(PrimClass cls, const std::vector<FFVertex>& verts, const std::vector<uint32_t>& idx);
+  void feedback_primitives(PrimClass cls, const std::vector<FFVertex>& verts,
+                           const std::vector<uint32_t>& idx);
   void feedback_value(float v);
   void close_quad_run();
   void split_quads(const FFVertex* v, uint32_t n, bool along_v1v3, std::vector<FFVertex>& out,

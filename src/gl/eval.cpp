@@ -253,10 +253,11 @@ std::shared_ptr<MapData> copy1(Context& c, GLenum target, GLint stride, GLint or
 }
 
 template <class T>
-std::shared_ptr<MapData> copy2(Context& c, GLenum target, GLint ustride, GLint uorder, GLint vstride, GLint vorder,
-                               const T* points) {
+std::shared_ptr<MapData> copy2(Context& c, GLenum target, GLint ustride, GLint uorder, GLint vstride,
+                               GLint vorder, const T* points) {
   const int i = map_index(target, GL_MAP2_COLOR_4);
-  if (i < 0 || uorder < 1 || uorder > kMaxOrder || vorder < 1 || vorder > kMaxOrder || !points) return nullptr;
+  if (i < 0 || uorder < 1 || uorder > kMaxOrder || vorder < 1 || vorder > kMaxOrder || !points)
+    return nullptr;
   const int k = kComponents[i];
   if (ustride < k || vstride < k) {
     c.error(GL_INVALID_VALUE);
@@ -265,7 +266,8 @@ std::shared_ptr<MapData> copy2(Context& c, GLenum target, GLint ustride, GLint u
   auto d = std::make_shared<MapData>();
   for (int j = 0; j < vorder; ++j)
     for (int o = 0; o < uorder; ++o)
-      for (int comp = 0; comp < k; ++comp) d->points.push_back(double(points[j * vstride + o * ustride + comp]));
+      for (int comp = 0; comp < k; ++comp)
+        d->points.push_back(double(points[j * vstride + o * ustride + comp]));
   return d;
 }
 
@@ -326,7 +328,8 @@ void eval_mesh2(Context& c, GLenum mode, int i1, int i2, int j1, int j2) {
   }
 }
 
-template <class T> void get_map(GLenum target, GLenum query, T* out) {
+template <class T>
+void get_map(GLenum target, GLenum query, T* out) {
   GL_CONTEXT();
   GL_OUTSIDE_BEGIN();
   Evaluators& e = evaluators(c);
@@ -336,14 +339,18 @@ template <class T> void get_map(GLenum target, GLenum query, T* out) {
   if (!out) return;
   if (i1 >= 0) {
     const Map1& m = e.map1[size_t(i1)];
-    if (query == GL_ORDER) out[0] = T(m.order);
-    else if (query == GL_DOMAIN) out[0] = T(m.u1), out[1] = T(m.u2);
+    if (query == GL_ORDER)
+      out[0] = T(m.order);
+    else if (query == GL_DOMAIN)
+      out[0] = T(m.u1), out[1] = T(m.u2);
     else
       for (size_t k = 0; k < m.points.size(); ++k) out[k] = T(m.points[k]);
   } else {
     const Map2& m = e.map2[size_t(i2)];
-    if (query == GL_ORDER) out[0] = T(m.uorder), out[1] = T(m.vorder);
-    else if (query == GL_DOMAIN) out[0] = T(m.u1), out[1] = T(m.u2), out[2] = T(m.v1), out[3] = T(m.v2);
+    if (query == GL_ORDER)
+      out[0] = T(m.uorder), out[1] = T(m.vorder);
+    else if (query == GL_DOMAIN)
+      out[0] = T(m.u1), out[1] = T(m.u2), out[2] = T(m.v1), out[3] = T(m.v2);
     else
       for (size_t k = 0; k < m.points.size(); ++k) out[k] = T(m.points[k]);
   }
@@ -356,7 +363,8 @@ using namespace tessel::gl;
 
 extern "C" {
 
-void GLAPIENTRY glMap1d(GLenum target, GLdouble u1, GLdouble u2, GLint stride, GLint order, const GLdouble* p) {
+void GLAPIENTRY glMap1d(GLenum target, GLdouble u1, GLdouble u2, GLint stride, GLint order,
+                        const GLdouble* p) {
   GL_CONTEXT();
   const auto d = copy1(c, target, stride, order, p);
   GL_LISTED(map1(c, target, u1, u2, order, d));
@@ -368,15 +376,15 @@ void GLAPIENTRY glMap1f(GLenum target, GLfloat u1, GLfloat u2, GLint stride, GLi
   GL_LISTED(map1(c, target, u1, u2, order, d));
   map1(c, target, u1, u2, order, d);
 }
-void GLAPIENTRY glMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint us, GLint uo, GLdouble v1, GLdouble v2, GLint vs,
-                        GLint vo, const GLdouble* p) {
+void GLAPIENTRY glMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint us, GLint uo, GLdouble v1, GLdouble v2,
+                        GLint vs, GLint vo, const GLdouble* p) {
   GL_CONTEXT();
   const auto d = copy2(c, target, us, uo, vs, vo, p);
   GL_LISTED(map2(c, target, u1, u2, uo, v1, v2, vo, d));
   map2(c, target, u1, u2, uo, v1, v2, vo, d);
 }
-void GLAPIENTRY glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint us, GLint uo, GLfloat v1, GLfloat v2, GLint vs,
-                        GLint vo, const GLfloat* p) {
+void GLAPIENTRY glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint us, GLint uo, GLfloat v1, GLfloat v2,
+                        GLint vs, GLint vo, const GLfloat* p) {
   GL_CONTEXT();
   const auto d = copy2(c, target, us, uo, vs, vo, p);
   GL_LISTED(map2(c, target, u1, u2, uo, v1, v2, vo, d));

@@ -13,7 +13,6 @@ namespace tessel::gl {
 
 namespace {
 
-
 float dot4(const glm::vec4& p, const float* v) { return p.x * v[0] + p.y * v[1] + p.z * v[2] + p.w * v[3]; }
 
 }  // namespace
@@ -32,7 +31,8 @@ void Context::pass_through(float token) {
   feedback_value(token);
 }
 
-void Context::feedback_primitives(PrimClass cls, const std::vector<FFVertex>& verts, const std::vector<uint32_t>& idx) {
+void Context::feedback_primitives(PrimClass cls, const std::vector<FFVertex>& verts,
+                                  const std::vector<uint32_t>& idx) {
   TextureObject* tex = texture_for_draw();
   FFUniforms u;
   build_uniforms(u, tex);

@@ -39,7 +39,7 @@ enum class TexGenMode : uint8_t { ObjectLinear, EyeLinear, SphereMap };
 enum class FogMode : uint8_t { Linear, Exp, Exp2 };
 
 struct FFLight {
-  glm::vec4 position{0.0f, 0.0f, 1.0f, 0.0f};  // eye space (transformed when set)
+  glm::vec4 position{0.0f, 0.0f, 1.0f, 0.0f};   // eye space (transformed when set)
   glm::vec3 spot_direction{0.0f, 0.0f, -1.0f};  // eye space
   float spot_exponent = 0.0f;
   float spot_cos_cutoff = -1.0f;  // cos(cutoff); cutoff 180 gives no spot at all
@@ -108,7 +108,8 @@ struct FFPostVertex {
   float edge, fog;
 };
 
-template <class F> struct FFVaryings {
+template <class F>
+struct FFVaryings {
   gpu::Vec4<F> front, back;  // lit (or current) colour for front and back faces
   gpu::Vec4<F> tex;          // s, t, r, q after texgen and the texture matrix
   F fog;                     // eye distance |z_e| for fog
@@ -118,14 +119,16 @@ inline constexpr int kEdgeFlagVarying = 13;  // offset of FFVaryings::edge in fl
 
 // The varyings of draws that need only the front colour (no texture, fog, two-sided
 // lighting or polygon-mode edges): a quarter of the interpolation and setup work.
-template <class F> struct FFLeanVaryings {
+template <class F>
+struct FFLeanVaryings {
   gpu::Vec4<F> front;
 };
 
 namespace ffdetail {
 using namespace ::tessel::gpu;
 
-template <class F> Vec4<F> pick(bool tracked, const Vec4<F>& color, const glm::vec4& fixed) {
+template <class F>
+Vec4<F> pick(bool tracked, const Vec4<F>& color, const glm::vec4& fixed) {
   return tracked ? color : Vec4<F>(fixed);
 }
 
@@ -140,8 +143,10 @@ Vec4<F> light_face(const FFUniforms& u, int face, const Vec3<F>& V, const Vec3<F
   const Vec4<F> me = pick(tr & kTrackEmission, color, m.emission);
   Vec3<F> c = me.xyz() + ma.xyz() * Vec3<F>(glm::vec3(u.model_ambient));
   Vec3<F> eye_dir;  // VP_e
-  if (u.local_viewer) eye_dir = normalize(-V);
-  else eye_dir = Vec3<F>(F(0.0f), F(0.0f), F(1.0f));
+  if (u.local_viewer)
+    eye_dir = normalize(-V);
+  else
+    eye_dir = Vec3<F>(F(0.0f), F(0.0f), F(1.0f));
   const F zero(0.0f), one(1.0f);
   for (int i = 0; i < u.light_count; ++i) {
     const FFLight& L = u.lights[size_t(i)];
@@ -166,34 +171,43 @@ Vec4<F> light_face(const FFUniforms& u, int face, const Vec3<F>& V, const Vec3<F
     const Vec3<F> h = normalize(vp + eye_dir);
     const F ndh = max(dot(n, h), zero);
     const F spec = select(ndl > zero, pow(ndh, F(m.shininess)), zero);
-    const Vec3<F> term = ma.xyz() * Vec3<F>(glm::vec3(L.ambient)) + md.xyz() * Vec3<F>(glm::vec3(L.diffuse)) * ndl +
+    const Vec3<F> term = ma.xyz() * Vec3<F>(glm::vec3(L.ambient)) +
+                         md.xyz() * Vec3<F>(glm::vec3(L.diffuse)) * ndl +
                          ms.xyz() * Vec3<F>(glm::vec3(L.specular)) * spec;
     c = c + term * att;
   }
   return Vec4<F>(clamp(c.x, zero, one), clamp(c.y, zero, one), clamp(c.z, zero, one), clamp(md.w, zero, one));
 }
 
-template <class F> F texgen_coord(const FFUniforms& u, int i, const Vec4<F>& obj, const Vec4<F>& eye, const Vec3<F>& sphere,
-                                  F given) {
+template <class F>
+F texgen_coord(const FFUniforms& u, int i, const Vec4<F>& obj, const Vec4<F>& eye, const Vec3<F>& sphere,
+               F given) {
   if (!u.texgen[size_t(i)]) return given;
   switch (u.texgen_mode[size_t(i)]) {
-    case TexGenMode::ObjectLinear: return dot(obj, Vec4<F>(u.object_plane[size_t(i)]));
-    case TexGenMode::EyeLinear: return dot(eye, Vec4<F>(u.eye_plane[size_t(i)]));
-    case TexGenMode::SphereMap: return i == 0 ? sphere.x : i == 1 ? sphere.y : F(0.0f);
+    case TexGenMode::ObjectLinear:
+      return dot(obj, Vec4<F>(u.object_plane[size_t(i)]));
+    case TexGenMode::EyeLinear:
+      return dot(eye, Vec4<F>(u.eye_plane[size_t(i)]));
+    case TexGenMode::SphereMap:
+      return i == 0 ? sphere.x : i == 1 ? sphere.y : F(0.0f);
   }
   return given;
 }
 }  // namespace ffdetail
 
-template <bool Flat, bool Textured, bool Discards, bool Lean = false> struct FixedFunction {
+template <bool Flat, bool Textured, bool Discards, bool Lean = false>
+struct FixedFunction {
   static_assert(!(Lean && Textured), "a textured draw needs its texture coordinates");
   using Uniforms = FFUniforms;
-  template <class F> using Varyings = std::conditional_t<Lean, FFLeanVaryings<F>, FFVaryings<F>>;
-  static constexpr uint64_t flat = Flat ? (Lean ? 0xFull : 0xFFull) : 0;  // the colours take the provoking vertex
+  template <class F>
+  using Varyings = std::conditional_t<Lean, FFLeanVaryings<F>, FFVaryings<F>>;
+  static constexpr uint64_t flat =
+      Flat ? (Lean ? 0xFull : 0xFFull) : 0;  // the colours take the provoking vertex
   static constexpr bool discards = Discards;
   static constexpr uint32_t attributes = 0b11111;
 
-  template <class F> gpu::Vec4<F> vertex(const Uniforms& u, const gpu::VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  gpu::Vec4<F> vertex(const Uniforms& u, const gpu::VertexIn<F>& in, Varyings<F>& out) const {
     using namespace ffdetail;
     if constexpr (!Lean) {
       if (u.pretransformed) {
@@ -208,21 +222,26 @@ template <bool Flat, bool Textured, bool Discards, bool Lean = false> struct Fix
     const Vec4<F>& pos = in.attr[0];
     const Vec4<F>& color = in.attr[2];
     const Vec4<F> eye = u.modelview * pos;
-    const bool need_normal = u.lighting || (Textured && (u.texgen[0] || u.texgen[1]) &&
-                                            (u.texgen_mode[0] == TexGenMode::SphereMap ||
-                                             u.texgen_mode[1] == TexGenMode::SphereMap));
+    const bool need_normal =
+        u.lighting ||
+        (Textured && (u.texgen[0] || u.texgen[1]) &&
+         (u.texgen_mode[0] == TexGenMode::SphereMap || u.texgen_mode[1] == TexGenMode::SphereMap));
     Vec3<F> n;
     if (need_normal) {
       n = u.normal_matrix * in.attr[1].xyz();
-      if (u.normalize) n = normalize(n);
-      else if (u.rescale != 1.0f) n = n * F(u.rescale);
+      if (u.normalize)
+        n = normalize(n);
+      else if (u.rescale != 1.0f)
+        n = n * F(u.rescale);
     }
     if (u.lighting) {
       const Vec3<F> V = eye.xyz();
       out.front = light_face<F>(u, 0, V, n, color);
       if constexpr (!Lean) {
-        if (u.two_side) out.back = light_face<F>(u, 1, V, -n, color);
-        else out.back = out.front;
+        if (u.two_side)
+          out.back = light_face<F>(u, 1, V, -n, color);
+        else
+          out.back = out.front;
       }
     } else {
       const F zero(0.0f), one(1.0f);
@@ -244,8 +263,9 @@ template <bool Flat, bool Textured, bool Discards, bool Lean = false> struct Fix
           const F m = F(2.0f) * sqrt(r.x * r.x + r.y * r.y + (r.z + F(1.0f)) * (r.z + F(1.0f)));
           sphere = Vec3<F>(r.x / m + F(0.5f), r.y / m + F(0.5f), F(0.0f));
         }
-        t = Vec4<F>(texgen_coord<F>(u, 0, pos, eye, sphere, t.x), texgen_coord<F>(u, 1, pos, eye, sphere, t.y),
-                    texgen_coord<F>(u, 2, pos, eye, sphere, t.z), texgen_coord<F>(u, 3, pos, eye, sphere, t.w));
+        t = Vec4<F>(
+            texgen_coord<F>(u, 0, pos, eye, sphere, t.x), texgen_coord<F>(u, 1, pos, eye, sphere, t.y),
+            texgen_coord<F>(u, 2, pos, eye, sphere, t.z), texgen_coord<F>(u, 3, pos, eye, sphere, t.w));
       }
       if (!u.identity_texture_matrix) t = u.texture_matrix * t;
       out.tex = t;
@@ -259,7 +279,8 @@ template <bool Flat, bool Textured, bool Discards, bool Lean = false> struct Fix
     return u.mvp * pos;
   }
 
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, gpu::Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>& v, gpu::Fragment<F>& f) const {
     using namespace ffdetail;
     const F zero(0.0f), one(1.0f);
     Vec4<F> c = v.front;
@@ -280,8 +301,12 @@ template <bool Flat, bool Textured, bool Discards, bool Lean = false> struct Fix
       if (u.fog) {
         F fac;
         switch (u.fog_mode) {
-          case FogMode::Linear: fac = (F(u.fog_end) - v.fog) * F(1.0f / (u.fog_end - u.fog_start)); break;
-          case FogMode::Exp: fac = exp(-F(u.fog_density) * v.fog); break;
+          case FogMode::Linear:
+            fac = (F(u.fog_end) - v.fog) * F(1.0f / (u.fog_end - u.fog_start));
+            break;
+          case FogMode::Exp:
+            fac = exp(-F(u.fog_density) * v.fog);
+            break;
           default: {
             const F d = F(u.fog_density) * v.fog;
             fac = exp(-(d * d));
@@ -314,13 +339,14 @@ template <bool Flat, bool Textured, bool Discards, bool Lean = false> struct Fix
  private:
   // GL 1.5 Tables 3.22 and 3.23: how the texture colour (Ct, At) combines with the fragment's
   // (Cf, Af) for each base format.
-  template <class F> static gpu::Vec4<F> apply_env(const Uniforms& u, const gpu::Vec4<F>& cf, const gpu::Vec4<F>& t) {
+  template <class F>
+  static gpu::Vec4<F> apply_env(const Uniforms& u, const gpu::Vec4<F>& cf, const gpu::Vec4<F>& t) {
     using namespace ffdetail;
     const F one(1.0f), zero(0.0f);
     const BaseFormat b = u.base_format;
     const bool has_color = b != BaseFormat::Alpha;
-    const bool has_alpha = b == BaseFormat::Alpha || b == BaseFormat::LuminanceAlpha || b == BaseFormat::Intensity ||
-                           b == BaseFormat::RGBA;
+    const bool has_alpha = b == BaseFormat::Alpha || b == BaseFormat::LuminanceAlpha ||
+                           b == BaseFormat::Intensity || b == BaseFormat::RGBA;
     const Vec3<F> Cf = cf.xyz(), Ct = t.xyz();
     const F Af = cf.w, At = t.w;
     Vec3<F> C = Cf;
@@ -335,20 +361,26 @@ template <bool Flat, bool Textured, bool Discards, bool Lean = false> struct Fix
         if (has_alpha) A = Af * At;
         break;
       case TexEnv::Decal:
-        if (b == BaseFormat::RGB) C = Ct;
-        else if (b == BaseFormat::RGBA) C = Cf * (one - At) + Ct * At;
+        if (b == BaseFormat::RGB)
+          C = Ct;
+        else if (b == BaseFormat::RGBA)
+          C = Cf * (one - At) + Ct * At;
         break;
       case TexEnv::Blend: {
         const Vec3<F> Cc(glm::vec3(u.env_color));
         if (has_color) C = Cf * (Vec3<F>(one) - Ct) + Cc * Ct;
-        if (b == BaseFormat::Intensity) A = Af * (one - At) + F(u.env_color.w) * At;
-        else if (has_alpha) A = Af * At;
+        if (b == BaseFormat::Intensity)
+          A = Af * (one - At) + F(u.env_color.w) * At;
+        else if (has_alpha)
+          A = Af * At;
         break;
       }
       case TexEnv::Add:
         if (has_color) C = Cf + Ct;
-        if (b == BaseFormat::Intensity) A = Af + At;
-        else if (has_alpha) A = Af * At;
+        if (b == BaseFormat::Intensity)
+          A = Af + At;
+        else if (has_alpha)
+          A = Af * At;
         break;
     }
     return Vec4<F>(clamp(C.x, zero, one), clamp(C.y, zero, one), clamp(C.z, zero, one), clamp(A, zero, one));

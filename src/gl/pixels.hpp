@@ -33,8 +33,8 @@ void unpack_pixels(const PixelStore& ps, int w, int h, GLenum format, GLenum typ
 // A bitmap (GL_BITMAP, GL_COLOR_INDEX in 1 bit): out[y * w + x] = bit set.
 void unpack_bitmap(const PixelStore& ps, int w, int h, const void* data, std::vector<uint8_t>& out);
 // Writes RGBA floats (already clamped for unsigned normalized types) as `format`/`type`.
-void pack_pixels(const PixelStore& ps, int w, int h, GLenum format, GLenum type, const std::vector<glm::vec4>& in,
-                 void* data);
+void pack_pixels(const PixelStore& ps, int w, int h, GLenum format, GLenum type,
+                 const std::vector<glm::vec4>& in, void* data);
 
 // The base internal format of a glTexImage internal format; false when it is not one.
 bool base_format_of(GLint internal_format, BaseFormat& base);

@@ -36,12 +36,13 @@ void clip_against(std::vector<glm::vec4>& poly, const glm::vec4& plane) {
 }  // namespace
 
 std::vector<glm::vec4> Context::clip_space_planes() const {
-  std::vector<glm::vec4> planes = {glm::vec4(1, 0, 0, 1), glm::vec4(-1, 0, 0, 1), glm::vec4(0, 1, 0, 1),
-                                   glm::vec4(0, -1, 0, 1), glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, -1, 1)};
+  std::vector<glm::vec4> planes = {glm::vec4(1, 0, 0, 1),  glm::vec4(-1, 0, 0, 1), glm::vec4(0, 1, 0, 1),
+                                   glm::vec4(0, -1, 0, 1), glm::vec4(0, 0, 1, 1),  glm::vec4(0, 0, -1, 1)};
   // User planes are kept in eye space; in clip space they are p_eye * P^-1.
   const glm::mat4 inv_p = glm::inverse(projection());
   for (int i = 0; i < kMaxClipPlanes; ++i)
-    if (s.transform.clip_enabled[size_t(i)]) planes.push_back(glm::vec4(s.transform.clip_plane[size_t(i)]) * inv_p);
+    if (s.transform.clip_enabled[size_t(i)])
+      planes.push_back(glm::vec4(s.transform.clip_plane[size_t(i)]) * inv_p);
   return planes;
 }
 
@@ -85,7 +86,8 @@ void Context::select_hit(float z) {
 
 // The primitives of one emission, tested instead of drawn: culled as they would be, clipped
 // against the view volume and the user planes; what is left is a hit at its window depths.
-void Context::select_primitives(PrimClass cls, const std::vector<FFVertex>& verts, const std::vector<uint32_t>& idx) {
+void Context::select_primitives(PrimClass cls, const std::vector<FFVertex>& verts,
+                                const std::vector<uint32_t>& idx) {
   const glm::mat4& mv = modelview();
   const glm::mat4 mvp = projection() * mv;
   const size_t per = cls == PrimClass::Points ? 1 : cls == PrimClass::Lines ? 2 : 3;
@@ -112,8 +114,10 @@ void Context::select_primitives(PrimClass cls, const std::vector<FFVertex>& vert
             poly.clear();
             break;
           }
-          if (da < 0.0f) poly[0] = poly[0] + (poly[1] - poly[0]) * (da / (da - db));
-          else if (db < 0.0f) poly[1] = poly[0] + (poly[1] - poly[0]) * (da / (da - db));
+          if (da < 0.0f)
+            poly[0] = poly[0] + (poly[1] - poly[0]) * (da / (da - db));
+          else if (db < 0.0f)
+            poly[1] = poly[0] + (poly[1] - poly[0]) * (da / (da - db));
         } else {
           clip_against(poly, p);
           if (poly.empty()) break;
@@ -134,7 +138,7 @@ namespace {
 void name_op(Context& c, int op, GLuint name) {
   GL_OUTSIDE_BEGIN();
   if (c.render_mode() != GL_SELECT) return;  // the name stack is ignored outside selection mode
-  c.touch();                                  // quads still waiting to be cut are tested first
+  c.touch();                                 // quads still waiting to be cut are tested first
   auto& names = c.name_stack();
   switch (op) {
     case 0:  // glInitNames

@@ -49,8 +49,8 @@ bool front_compile(int stage, const std::string& source, std::string& log) {
   }
 }
 
-bool front_link(const std::string& vertex, const std::string& fragment, UniformLayout& layout, LoweredStage& vs,
-                LoweredStage& fs, std::string& log) {
+bool front_link(const std::string& vertex, const std::string& fragment, UniformLayout& layout,
+                LoweredStage& vs, LoweredStage& fs, std::string& log) {
   init_glslang();
   std::lock_guard lock(glslang_mutex());
   try {

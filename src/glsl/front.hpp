@@ -13,7 +13,7 @@ bool front_compile(int stage, const std::string& source, std::string& log);
 
 // Parses and links both stages and lowers them into `vs` and `fs` (uniforms into `layout`);
 // false with the info log when glslang or the lowering refuses.
-bool front_link(const std::string& vertex, const std::string& fragment, UniformLayout& layout, LoweredStage& vs,
-                LoweredStage& fs, std::string& log);
+bool front_link(const std::string& vertex, const std::string& fragment, UniformLayout& layout,
+                LoweredStage& vs, LoweredStage& fs, std::string& log);
 
 }  // namespace tessel::glsl

@@ -44,7 +44,8 @@ void run_texture(const ir::TexOp& op, const RunInputs& in, TexLanes& lanes);
 
 // One of the library operations (bit fields, frexp/ldexp, halves, carries) on
 // sixteen lanes: t = op(a, b, c, e).
-void lane_math(ir::Op op, uint32_t* t, const uint32_t* a, const uint32_t* b, const uint32_t* c, const uint32_t* e);
+void lane_math(ir::Op op, uint32_t* t, const uint32_t* a, const uint32_t* b, const uint32_t* c,
+               const uint32_t* e);
 
 // Runs `stage` on the registers `regs` (at least stage.registers of them, inputs already
 // copied in) for the lanes in `mask`; fills constants, uniforms and zeroes variables first.

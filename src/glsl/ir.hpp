@@ -45,19 +45,87 @@ enum class Op : uint8_t {
 
   // float, lane-wise
   // (transcendental functions are sequences of these: lower_math.inc)
-  FAdd, FSub, FMul, FDiv, FNeg, FAbs, FSign, FMin, FMax, FFma, FFloor, FCeil, FTrunc, FRoundEven, FFract,
-  FMod, FSqrt, FRsq, FLdexp, FFrexpMant, FFrexpExp,
-  FLt, FLe, FGt, FGe, FEq, FNe, FIsNan, FIsInf,
+  FAdd,
+  FSub,
+  FMul,
+  FDiv,
+  FNeg,
+  FAbs,
+  FSign,
+  FMin,
+  FMax,
+  FFma,
+  FFloor,
+  FCeil,
+  FTrunc,
+  FRoundEven,
+  FFract,
+  FMod,
+  FSqrt,
+  FRsq,
+  FLdexp,
+  FFrexpMant,
+  FFrexpExp,
+  FLt,
+  FLe,
+  FGt,
+  FGe,
+  FEq,
+  FNe,
+  FIsNan,
+  FIsInf,
   // integer (two's complement 32 bits); division and shifts are defined for every input
-  IAdd, ISub, IMul, IDiv, UDiv, UMod, INeg, IAbs, ISign, IMin, IMax, UMin, UMax,
-  And, Or, Xor, Not, Shl, ShrA, ShrL,
-  ILt, ILe, IGt, IGe, ULt, ULe, UGt, UGe, IEq, INe,
-  BitCount, FindLSB, IFindMSB, UFindMSB, BitReverse, IBitExtract, UBitExtract, BitInsert,
-  UAddCarry, USubBorrow,
+  IAdd,
+  ISub,
+  IMul,
+  IDiv,
+  UDiv,
+  UMod,
+  INeg,
+  IAbs,
+  ISign,
+  IMin,
+  IMax,
+  UMin,
+  UMax,
+  And,
+  Or,
+  Xor,
+  Not,
+  Shl,
+  ShrA,
+  ShrL,
+  ILt,
+  ILe,
+  IGt,
+  IGe,
+  ULt,
+  ULe,
+  UGt,
+  UGe,
+  IEq,
+  INe,
+  BitCount,
+  FindLSB,
+  IFindMSB,
+  UFindMSB,
+  BitReverse,
+  IBitExtract,
+  UBitExtract,
+  BitInsert,
+  UAddCarry,
+  USubBorrow,
   // conversions
-  I2F, U2F, F2I, F2U, PackHalf, UnpackHalfLo, UnpackHalfHi,
+  I2F,
+  U2F,
+  F2I,
+  F2U,
+  PackHalf,
+  UnpackHalfLo,
+  UnpackHalfHi,
   // derivatives inside each 2x2 quad (fragment stage)
-  Ddx, Ddy,
+  Ddx,
+  Ddy,
   // texture access: imm indexes Stage::textures
   Texture,
 };
@@ -78,16 +146,16 @@ struct TexOp {
   SamplerDim dim = SamplerDim::D2;
   bool array = false, shadow = false, proj = false;
   bool has_lod = false, has_bias = false, has_grad = false;
-  int sampler = 0;               // uniform word that holds the texture unit
-  int coords = 0;                // coordinate components given (including array layer and ref)
+  int sampler = 0;  // uniform word that holds the texture unit
+  int coords = 0;   // coordinate components given (including array layer and ref)
   Reg coord[5] = {kNone, kNone, kNone, kNone, kNone};
-  Reg ref = kNone;               // depth reference of a shadow lookup
-  Reg lod = kNone;               // explicit LOD, bias, or the level of texelFetch/textureSize
+  Reg ref = kNone;  // depth reference of a shadow lookup
+  Reg lod = kNone;  // explicit LOD, bias, or the level of texelFetch/textureSize
   Reg dx[3] = {kNone, kNone, kNone}, dy[3] = {kNone, kNone, kNone};
-  int offset[3] = {0, 0, 0};     // constant texel offset
+  int offset[3] = {0, 0, 0};  // constant texel offset
   Reg offset_reg[3] = {kNone, kNone, kNone};
   Reg dst[4] = {kNone, kNone, kNone, kNone};
-  int result = 0;                // 0 float, 1 int, 2 uint
+  int result = 0;  // 0 float, 1 int, 2 uint
 };
 
 struct Node;

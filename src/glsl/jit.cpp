@@ -8,18 +8,18 @@
 // them, so both tiers compute the same lanes.
 #include "jit.hpp"
 
+#include <llvm/Config/llvm-config.h>
 #include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
 #include <llvm/ExecutionEngine/Orc/ObjectTransformLayer.h>
-#include <llvm/Config/llvm-config.h>
-#include <llvm/Support/Host.h>
-#include <llvm/Support/MemoryBuffer.h>
 #include <llvm/IR/IRBuilder.h>
 #include <llvm/IR/Intrinsics.h>
 #include <llvm/IR/LLVMContext.h>
 #include <llvm/IR/Module.h>
 #include <llvm/IR/Verifier.h>
 #include <llvm/Passes/PassBuilder.h>
+#include <llvm/Support/Host.h>
+#include <llvm/Support/MemoryBuffer.h>
 #include <llvm/Support/TargetSelect.h>
 
 #include <cstdio>
@@ -28,8 +28,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <mutex>
+#include <sstream>
 
 namespace tessel::glsl {
 namespace {
@@ -44,8 +44,8 @@ constexpr int L = ir::kLanes;
 extern "C" void tessel_glsl_texture(uint32_t op, const RunInputs* in, TexLanes* lanes) {
   run_texture(in->textures[op], *in, *lanes);
 }
-extern "C" void tessel_glsl_lane_math(uint32_t op, uint32_t* t, const uint32_t* a, const uint32_t* b, const uint32_t* c,
-                                      const uint32_t* e) {
+extern "C" void tessel_glsl_lane_math(uint32_t op, uint32_t* t, const uint32_t* a, const uint32_t* b,
+                                      const uint32_t* c, const uint32_t* e) {
   lane_math(ir::Op(op), t, a, b, c, e);
 }
 
@@ -88,7 +88,8 @@ class Codegen {
     for (const auto& [r, w] : st_.uniforms) store(r, b_.CreateVectorSplat(L, uniform_word(b_.getInt32(w))));
     for (const auto& [r, n] : st_.variables)
       for (uint32_t k = 0; k < n; ++k) store(r + k, llvm::Constant::getNullValue(vi_));
-    for (const auto& [r, off] : io_.in) store(r, b_.CreateAlignedLoad(vi_, byte_ptr(lanes_, off), llvm::MaybeAlign(4)));
+    for (const auto& [r, off] : io_.in)
+      store(r, b_.CreateAlignedLoad(vi_, byte_ptr(lanes_, off), llvm::MaybeAlign(4)));
     for (const auto& [r, off] : io_.in_mask) {
       llvm::Value* bits = b_.CreateLoad(i32_, byte_ptr(lanes_, off));
       store(r, b_.CreateSExt(to_mask(bits), vi_));
@@ -105,7 +106,8 @@ class Codegen {
     // of stores outside control flow.
     (void)mask_arg;
     block(st_.body, llvm::Constant::getAllOnesValue(vm_));
-    for (const auto& [r, off] : io_.out) b_.CreateAlignedStore(load(r), byte_ptr(lanes_, off), llvm::MaybeAlign(4));
+    for (const auto& [r, off] : io_.out)
+      b_.CreateAlignedStore(load(r), byte_ptr(lanes_, off), llvm::MaybeAlign(4));
     llvm::Value* killed = b_.CreateLoad(vm_, kill_);
     b_.CreateRet(b_.CreateZExt(b_.CreateBitCast(killed, b_.getInt16Ty()), i32_));
     return fn_;
@@ -139,11 +141,21 @@ class Codegen {
     llvm::IRBuilder<> eb(entry_, entry_->begin());
     return eb.CreateAlloca(t, count, name);
   }
-  llvm::Value* byte_ptr(llvm::Value* base, uint64_t off) { return b_.CreateGEP(b_.getInt8Ty(), base, b_.getInt64(off)); }
-  llvm::Value* splat(uint32_t bits) { return llvm::ConstantVector::getSplat(llvm::ElementCount::getFixed(L), b_.getInt32(bits)); }
-  llvm::Value* splatf(float x) { return llvm::ConstantVector::getSplat(llvm::ElementCount::getFixed(L), llvm::ConstantFP::get(f32_, x)); }
-  llvm::Value* to_mask(llvm::Value* bits32) { return b_.CreateBitCast(b_.CreateTrunc(bits32, b_.getInt16Ty()), vm_); }
-  llvm::Value* any(llvm::Value* m) { return b_.CreateICmpNE(b_.CreateBitCast(m, b_.getInt16Ty()), b_.getInt16(0)); }
+  llvm::Value* byte_ptr(llvm::Value* base, uint64_t off) {
+    return b_.CreateGEP(b_.getInt8Ty(), base, b_.getInt64(off));
+  }
+  llvm::Value* splat(uint32_t bits) {
+    return llvm::ConstantVector::getSplat(llvm::ElementCount::getFixed(L), b_.getInt32(bits));
+  }
+  llvm::Value* splatf(float x) {
+    return llvm::ConstantVector::getSplat(llvm::ElementCount::getFixed(L), llvm::ConstantFP::get(f32_, x));
+  }
+  llvm::Value* to_mask(llvm::Value* bits32) {
+    return b_.CreateBitCast(b_.CreateTrunc(bits32, b_.getInt16Ty()), vm_);
+  }
+  llvm::Value* any(llvm::Value* m) {
+    return b_.CreateICmpNE(b_.CreateBitCast(m, b_.getInt16Ty()), b_.getInt16(0));
+  }
 
   // Registers read by LoadIndexed or written by StoreIndexed are grouped into arrays: the
   // range [b, last] of each such access joins the array of its variable.
@@ -168,8 +180,10 @@ class Codegen {
     std::sort(ranges.begin(), ranges.end());
     std::vector<std::pair<uint32_t, uint32_t>> merged;
     for (auto rg : ranges) {
-      if (!merged.empty() && rg.first <= merged.back().second) merged.back().second = std::max(merged.back().second, rg.second);
-      else merged.push_back(rg);
+      if (!merged.empty() && rg.first <= merged.back().second)
+        merged.back().second = std::max(merged.back().second, rg.second);
+      else
+        merged.push_back(rg);
     }
     for (auto [lo, hi] : merged) {
       llvm::Value* arr = slot(vi_, "arr", b_.getInt32(hi - lo + 1));
@@ -186,7 +200,8 @@ class Codegen {
 
   // The lanes of `live` still in a loop: not returned, broken out or discarded.
   llvm::Value* in_loop(llvm::Value* live) {
-    llvm::Value* out = b_.CreateOr(b_.CreateOr(b_.CreateLoad(vm_, ret_), b_.CreateLoad(vm_, brk_)), b_.CreateLoad(vm_, kill_));
+    llvm::Value* out = b_.CreateOr(b_.CreateOr(b_.CreateLoad(vm_, ret_), b_.CreateLoad(vm_, brk_)),
+                                   b_.CreateLoad(vm_, kill_));
     return b_.CreateAnd(live, b_.CreateNot(out));
   }
 
@@ -279,8 +294,9 @@ class Codegen {
         b_.SetInsertPoint(head);
         b_.CreateStore(llvm::Constant::getNullValue(vm_), cont_);
         llvm::Value* in = in_loop(live);
-        llvm::Value* more = b_.CreateAnd(b_.CreateICmpSLT(b_.CreateLoad(i32_, iter), b_.getInt32(ir::kMaxLoopIterations)),
-                                         b_.CreateICmpULT(b_.CreateLoad(i32_, budget_), b_.getInt32(ir::kMaxTotalLoopIterations)));
+        llvm::Value* more = b_.CreateAnd(
+            b_.CreateICmpSLT(b_.CreateLoad(i32_, iter), b_.getInt32(ir::kMaxLoopIterations)),
+            b_.CreateICmpULT(b_.CreateLoad(i32_, budget_), b_.getInt32(ir::kMaxTotalLoopIterations)));
         b_.CreateCondBr(b_.CreateAnd(more, any(in)), body, exit);
         b_.SetInsertPoint(body);
         block(n.a, in);
@@ -299,10 +315,18 @@ class Codegen {
         b_.CreateStore(saved_cont, cont_);
         break;
       }
-      case K::Break: b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, brk_), live), brk_); break;
-      case K::Continue: b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, cont_), live), cont_); break;
-      case K::Return: b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, ret_), live), ret_); break;
-      case K::Discard: b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, kill_), live), kill_); break;
+      case K::Break:
+        b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, brk_), live), brk_);
+        break;
+      case K::Continue:
+        b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, cont_), live), cont_);
+        break;
+      case K::Return:
+        b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, ret_), live), ret_);
+        break;
+      case K::Discard:
+        b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, kill_), live), kill_);
+        break;
       case K::Function: {
         llvm::Value* saved = b_.CreateLoad(vm_, ret_);
         block(n.a, live);
@@ -322,7 +346,9 @@ class Codegen {
   // A library operation through the interpreter's own code (lane_math).
   void call_math(const Inst& i) {
     if (!math_lanes_) math_lanes_ = slot(llvm::ArrayType::get(vi_, 5), "math");
-    auto row = [&](int k) { return b_.CreateGEP(llvm::ArrayType::get(vi_, 5), math_lanes_, {b_.getInt32(0), b_.getInt32(k)}); };
+    auto row = [&](int k) {
+      return b_.CreateGEP(llvm::ArrayType::get(vi_, 5), math_lanes_, {b_.getInt32(0), b_.getInt32(k)});
+    };
     b_.CreateStore(load(i.a), row(1));
     b_.CreateStore(load(i.b), row(2));
     b_.CreateStore(load(i.c), row(3));
@@ -367,8 +393,12 @@ class Codegen {
     auto setf = [&](llvm::Value* v) { store(i.dst, v); };
     auto zero = llvm::Constant::getNullValue(vi_);
     switch (i.op) {
-      case Op::Mov: store(i.dst, load(i.a)); break;
-      case Op::Store: store(i.dst, b_.CreateSelect(live, load(i.a), load(i.dst))); break;
+      case Op::Mov:
+        store(i.dst, load(i.a));
+        break;
+      case Op::Store:
+        store(i.dst, b_.CreateSelect(live, load(i.a), load(i.dst)));
+        break;
       case Op::UniformIndexed: {
         llvm::Value* a = I(i.a);
         llvm::Value* r = zero;
@@ -402,37 +432,65 @@ class Codegen {
           e = b_.CreateSub(e, b_.getInt32(h.first));
           llvm::Value* p = lane_ptr(h, e, l);
           llvm::Value* old = b_.CreateLoad(i32_, p);
-          b_.CreateStore(b_.CreateSelect(b_.CreateExtractElement(live, b_.getInt32(l)), b_.CreateExtractElement(v, b_.getInt32(l)), old), p);
+          b_.CreateStore(b_.CreateSelect(b_.CreateExtractElement(live, b_.getInt32(l)),
+                                         b_.CreateExtractElement(v, b_.getInt32(l)), old),
+                         p);
         }
         break;
       }
-      case Op::Select: store(i.dst, b_.CreateSelect(mask_of(i.a), I(i.b), I(i.c))); break;
-      case Op::FAdd: setf(b_.CreateFAdd(F(i.a), F(i.b))); break;
-      case Op::FSub: setf(b_.CreateFSub(F(i.a), F(i.b))); break;
-      case Op::FMul: setf(b_.CreateFMul(F(i.a), F(i.b))); break;
-      case Op::FDiv: setf(b_.CreateFDiv(F(i.a), F(i.b))); break;
-      case Op::FNeg: setf(b_.CreateFNeg(F(i.a))); break;
-      case Op::FAbs: setf(intrinsic(llvm::Intrinsic::fabs, {F(i.a)})); break;
+      case Op::Select:
+        store(i.dst, b_.CreateSelect(mask_of(i.a), I(i.b), I(i.c)));
+        break;
+      case Op::FAdd:
+        setf(b_.CreateFAdd(F(i.a), F(i.b)));
+        break;
+      case Op::FSub:
+        setf(b_.CreateFSub(F(i.a), F(i.b)));
+        break;
+      case Op::FMul:
+        setf(b_.CreateFMul(F(i.a), F(i.b)));
+        break;
+      case Op::FDiv:
+        setf(b_.CreateFDiv(F(i.a), F(i.b)));
+        break;
+      case Op::FNeg:
+        setf(b_.CreateFNeg(F(i.a)));
+        break;
+      case Op::FAbs:
+        setf(intrinsic(llvm::Intrinsic::fabs, {F(i.a)}));
+        break;
       case Op::FSign: {
         llvm::Value* x = F(i.a);
-        setf(b_.CreateSelect(b_.CreateFCmpOGT(x, splatf(0.0f)), splatf(1.0f),
-                             b_.CreateSelect(b_.CreateFCmpOLT(x, splatf(0.0f)), splatf(-1.0f), splatf(0.0f))));
+        setf(
+            b_.CreateSelect(b_.CreateFCmpOGT(x, splatf(0.0f)), splatf(1.0f),
+                            b_.CreateSelect(b_.CreateFCmpOLT(x, splatf(0.0f)), splatf(-1.0f), splatf(0.0f))));
         break;
       }
       case Op::FMin:
       case Op::FMax: {
         // x < y ? x : y (or >), and a NaN operand gives the other one: the interpreter's rule.
         llvm::Value *x = F(i.a), *y = F(i.b);
-        llvm::Value* r = b_.CreateSelect(i.op == Op::FMin ? b_.CreateFCmpOLT(x, y) : b_.CreateFCmpOGT(x, y), x, y);
+        llvm::Value* r =
+            b_.CreateSelect(i.op == Op::FMin ? b_.CreateFCmpOLT(x, y) : b_.CreateFCmpOGT(x, y), x, y);
         r = b_.CreateSelect(b_.CreateFCmpUNO(x, x), y, r);
         setf(b_.CreateSelect(b_.CreateFCmpUNO(y, y), x, r));
         break;
       }
-      case Op::FFma: setf(intrinsic(llvm::Intrinsic::fma, {F(i.a), F(i.b), F(i.c)})); break;
-      case Op::FFloor: setf(intrinsic(llvm::Intrinsic::floor, {F(i.a)})); break;
-      case Op::FCeil: setf(intrinsic(llvm::Intrinsic::ceil, {F(i.a)})); break;
-      case Op::FTrunc: setf(intrinsic(llvm::Intrinsic::trunc, {F(i.a)})); break;
-      case Op::FRoundEven: setf(intrinsic(llvm::Intrinsic::nearbyint, {F(i.a)})); break;
+      case Op::FFma:
+        setf(intrinsic(llvm::Intrinsic::fma, {F(i.a), F(i.b), F(i.c)}));
+        break;
+      case Op::FFloor:
+        setf(intrinsic(llvm::Intrinsic::floor, {F(i.a)}));
+        break;
+      case Op::FCeil:
+        setf(intrinsic(llvm::Intrinsic::ceil, {F(i.a)}));
+        break;
+      case Op::FTrunc:
+        setf(intrinsic(llvm::Intrinsic::trunc, {F(i.a)}));
+        break;
+      case Op::FRoundEven:
+        setf(intrinsic(llvm::Intrinsic::nearbyint, {F(i.a)}));
+        break;
       case Op::FFract: {
         llvm::Value* x = F(i.a);
         setf(b_.CreateFSub(x, intrinsic(llvm::Intrinsic::floor, {x})));
@@ -443,14 +501,30 @@ class Codegen {
         setf(b_.CreateFSub(x, b_.CreateFMul(y, intrinsic(llvm::Intrinsic::floor, {b_.CreateFDiv(x, y)}))));
         break;
       }
-      case Op::FSqrt: setf(intrinsic(llvm::Intrinsic::sqrt, {F(i.a)})); break;
-      case Op::FRsq: setf(b_.CreateFDiv(splatf(1.0f), intrinsic(llvm::Intrinsic::sqrt, {F(i.a)}))); break;
-      case Op::FLt: setf(sext(b_.CreateFCmpOLT(F(i.a), F(i.b)))); break;
-      case Op::FLe: setf(sext(b_.CreateFCmpOLE(F(i.a), F(i.b)))); break;
-      case Op::FGt: setf(sext(b_.CreateFCmpOGT(F(i.a), F(i.b)))); break;
-      case Op::FGe: setf(sext(b_.CreateFCmpOGE(F(i.a), F(i.b)))); break;
-      case Op::FEq: setf(sext(b_.CreateFCmpOEQ(F(i.a), F(i.b)))); break;
-      case Op::FNe: setf(sext(b_.CreateFCmpUNE(F(i.a), F(i.b)))); break;
+      case Op::FSqrt:
+        setf(intrinsic(llvm::Intrinsic::sqrt, {F(i.a)}));
+        break;
+      case Op::FRsq:
+        setf(b_.CreateFDiv(splatf(1.0f), intrinsic(llvm::Intrinsic::sqrt, {F(i.a)})));
+        break;
+      case Op::FLt:
+        setf(sext(b_.CreateFCmpOLT(F(i.a), F(i.b))));
+        break;
+      case Op::FLe:
+        setf(sext(b_.CreateFCmpOLE(F(i.a), F(i.b))));
+        break;
+      case Op::FGt:
+        setf(sext(b_.CreateFCmpOGT(F(i.a), F(i.b))));
+        break;
+      case Op::FGe:
+        setf(sext(b_.CreateFCmpOGE(F(i.a), F(i.b))));
+        break;
+      case Op::FEq:
+        setf(sext(b_.CreateFCmpOEQ(F(i.a), F(i.b))));
+        break;
+      case Op::FNe:
+        setf(sext(b_.CreateFCmpUNE(F(i.a), F(i.b))));
+        break;
       case Op::FIsNan: {
         llvm::Value* x = F(i.a);
         setf(sext(b_.CreateFCmpUNO(x, x)));
@@ -459,9 +533,15 @@ class Codegen {
       case Op::FIsInf:
         setf(sext(b_.CreateFCmpOEQ(intrinsic(llvm::Intrinsic::fabs, {F(i.a)}), splatf(INFINITY))));
         break;
-      case Op::IAdd: setf(b_.CreateAdd(I(i.a), I(i.b))); break;
-      case Op::ISub: setf(b_.CreateSub(I(i.a), I(i.b))); break;
-      case Op::IMul: setf(b_.CreateMul(I(i.a), I(i.b))); break;
+      case Op::IAdd:
+        setf(b_.CreateAdd(I(i.a), I(i.b)));
+        break;
+      case Op::ISub:
+        setf(b_.CreateSub(I(i.a), I(i.b)));
+        break;
+      case Op::IMul:
+        setf(b_.CreateMul(I(i.a), I(i.b)));
+        break;
       case Op::IDiv: {
         // A quotient by 0 is 0; dividing by -1 negates (wrapping): no lane can trap.
         llvm::Value *x = I(i.a), *d = I(i.b);
@@ -480,7 +560,9 @@ class Codegen {
         setf(b_.CreateSelect(z, splat(~0u), q));
         break;
       }
-      case Op::INeg: setf(b_.CreateSub(zero, I(i.a))); break;
+      case Op::INeg:
+        setf(b_.CreateSub(zero, I(i.a)));
+        break;
       case Op::IAbs: {
         llvm::Value* x = I(i.a);
         setf(b_.CreateSelect(b_.CreateICmpSLT(x, zero), b_.CreateSub(zero, x), x));
@@ -488,43 +570,100 @@ class Codegen {
       }
       case Op::ISign: {
         llvm::Value* x = I(i.a);
-        setf(b_.CreateSelect(b_.CreateICmpSGT(x, zero), splat(1), b_.CreateSelect(b_.CreateICmpSLT(x, zero), splat(~0u), zero)));
+        setf(b_.CreateSelect(b_.CreateICmpSGT(x, zero), splat(1),
+                             b_.CreateSelect(b_.CreateICmpSLT(x, zero), splat(~0u), zero)));
         break;
       }
-      case Op::IMin: { llvm::Value *x = I(i.a), *y = I(i.b); setf(b_.CreateSelect(b_.CreateICmpSLT(y, x), y, x)); break; }
-      case Op::IMax: { llvm::Value *x = I(i.a), *y = I(i.b); setf(b_.CreateSelect(b_.CreateICmpSLT(x, y), y, x)); break; }
-      case Op::UMin: { llvm::Value *x = I(i.a), *y = I(i.b); setf(b_.CreateSelect(b_.CreateICmpULT(y, x), y, x)); break; }
-      case Op::UMax: { llvm::Value *x = I(i.a), *y = I(i.b); setf(b_.CreateSelect(b_.CreateICmpULT(x, y), y, x)); break; }
-      case Op::And: setf(b_.CreateAnd(I(i.a), I(i.b))); break;
-      case Op::Or: setf(b_.CreateOr(I(i.a), I(i.b))); break;
-      case Op::Xor: setf(b_.CreateXor(I(i.a), I(i.b))); break;
-      case Op::Not: setf(b_.CreateNot(I(i.a))); break;
-      case Op::Shl: setf(b_.CreateShl(I(i.a), b_.CreateAnd(I(i.b), splat(31)))); break;
-      case Op::ShrA: setf(b_.CreateAShr(I(i.a), b_.CreateAnd(I(i.b), splat(31)))); break;
-      case Op::ShrL: setf(b_.CreateLShr(I(i.a), b_.CreateAnd(I(i.b), splat(31)))); break;
-      case Op::ILt: setf(sext(b_.CreateICmpSLT(I(i.a), I(i.b)))); break;
-      case Op::ILe: setf(sext(b_.CreateICmpSLE(I(i.a), I(i.b)))); break;
-      case Op::IGt: setf(sext(b_.CreateICmpSGT(I(i.a), I(i.b)))); break;
-      case Op::IGe: setf(sext(b_.CreateICmpSGE(I(i.a), I(i.b)))); break;
-      case Op::ULt: setf(sext(b_.CreateICmpULT(I(i.a), I(i.b)))); break;
-      case Op::ULe: setf(sext(b_.CreateICmpULE(I(i.a), I(i.b)))); break;
-      case Op::UGt: setf(sext(b_.CreateICmpUGT(I(i.a), I(i.b)))); break;
-      case Op::UGe: setf(sext(b_.CreateICmpUGE(I(i.a), I(i.b)))); break;
-      case Op::IEq: setf(sext(b_.CreateICmpEQ(I(i.a), I(i.b)))); break;
-      case Op::INe: setf(sext(b_.CreateICmpNE(I(i.a), I(i.b)))); break;
-      case Op::I2F: setf(b_.CreateSIToFP(I(i.a), vf_)); break;
-      case Op::U2F: setf(b_.CreateUIToFP(I(i.a), vf_)); break;
+      case Op::IMin: {
+        llvm::Value *x = I(i.a), *y = I(i.b);
+        setf(b_.CreateSelect(b_.CreateICmpSLT(y, x), y, x));
+        break;
+      }
+      case Op::IMax: {
+        llvm::Value *x = I(i.a), *y = I(i.b);
+        setf(b_.CreateSelect(b_.CreateICmpSLT(x, y), y, x));
+        break;
+      }
+      case Op::UMin: {
+        llvm::Value *x = I(i.a), *y = I(i.b);
+        setf(b_.CreateSelect(b_.CreateICmpULT(y, x), y, x));
+        break;
+      }
+      case Op::UMax: {
+        llvm::Value *x = I(i.a), *y = I(i.b);
+        setf(b_.CreateSelect(b_.CreateICmpULT(x, y), y, x));
+        break;
+      }
+      case Op::And:
+        setf(b_.CreateAnd(I(i.a), I(i.b)));
+        break;
+      case Op::Or:
+        setf(b_.CreateOr(I(i.a), I(i.b)));
+        break;
+      case Op::Xor:
+        setf(b_.CreateXor(I(i.a), I(i.b)));
+        break;
+      case Op::Not:
+        setf(b_.CreateNot(I(i.a)));
+        break;
+      case Op::Shl:
+        setf(b_.CreateShl(I(i.a), b_.CreateAnd(I(i.b), splat(31))));
+        break;
+      case Op::ShrA:
+        setf(b_.CreateAShr(I(i.a), b_.CreateAnd(I(i.b), splat(31))));
+        break;
+      case Op::ShrL:
+        setf(b_.CreateLShr(I(i.a), b_.CreateAnd(I(i.b), splat(31))));
+        break;
+      case Op::ILt:
+        setf(sext(b_.CreateICmpSLT(I(i.a), I(i.b))));
+        break;
+      case Op::ILe:
+        setf(sext(b_.CreateICmpSLE(I(i.a), I(i.b))));
+        break;
+      case Op::IGt:
+        setf(sext(b_.CreateICmpSGT(I(i.a), I(i.b))));
+        break;
+      case Op::IGe:
+        setf(sext(b_.CreateICmpSGE(I(i.a), I(i.b))));
+        break;
+      case Op::ULt:
+        setf(sext(b_.CreateICmpULT(I(i.a), I(i.b))));
+        break;
+      case Op::ULe:
+        setf(sext(b_.CreateICmpULE(I(i.a), I(i.b))));
+        break;
+      case Op::UGt:
+        setf(sext(b_.CreateICmpUGT(I(i.a), I(i.b))));
+        break;
+      case Op::UGe:
+        setf(sext(b_.CreateICmpUGE(I(i.a), I(i.b))));
+        break;
+      case Op::IEq:
+        setf(sext(b_.CreateICmpEQ(I(i.a), I(i.b))));
+        break;
+      case Op::INe:
+        setf(sext(b_.CreateICmpNE(I(i.a), I(i.b))));
+        break;
+      case Op::I2F:
+        setf(b_.CreateSIToFP(I(i.a), vf_));
+        break;
+      case Op::U2F:
+        setf(b_.CreateUIToFP(I(i.a), vf_));
+        break;
       case Op::F2I: {
         // As cvttps2dq: NaN and out of range give INT_MIN.
         llvm::Value* x = F(i.a);
-        llvm::Value* in = b_.CreateAnd(b_.CreateFCmpOGT(x, splatf(-2147483904.0f)), b_.CreateFCmpOLT(x, splatf(2147483648.0f)));
+        llvm::Value* in = b_.CreateAnd(b_.CreateFCmpOGT(x, splatf(-2147483904.0f)),
+                                       b_.CreateFCmpOLT(x, splatf(2147483648.0f)));
         llvm::Value* v = b_.CreateFPToSI(b_.CreateSelect(in, x, splatf(0.0f)), vi_);
         setf(b_.CreateSelect(in, v, splat(0x80000000u)));
         break;
       }
       case Op::F2U: {
         llvm::Value* x = F(i.a);
-        llvm::Value* ok = b_.CreateAnd(b_.CreateFCmpOGT(x, splatf(-1.0f)), b_.CreateFCmpOLT(x, splatf(4294967296.0f)));
+        llvm::Value* ok =
+            b_.CreateAnd(b_.CreateFCmpOGT(x, splatf(-1.0f)), b_.CreateFCmpOLT(x, splatf(4294967296.0f)));
         llvm::Value* v = b_.CreateFPToUI(b_.CreateSelect(ok, x, splatf(0.0f)), vi_);
         setf(b_.CreateSelect(ok, v, splat(~0u)));
         break;
@@ -541,8 +680,12 @@ class Codegen {
         setf(b_.CreateFSub(b_.CreateShuffleVector(x, hi), b_.CreateShuffleVector(x, lo)));
         break;
       }
-      case Op::Texture: texture(i); break;
-      default: call_math(i); break;
+      case Op::Texture:
+        texture(i);
+        break;
+      default:
+        call_math(i);
+        break;
     }
   }
 };
@@ -591,7 +734,8 @@ struct Hasher {
       u32(t.has_lod), u32(t.has_bias), u32(t.has_grad), u32(uint32_t(t.sampler)), u32(uint32_t(t.coords));
       for (Reg r : t.coord) u32(r);
       u32(t.ref), u32(t.lod);
-      for (int k = 0; k < 3; ++k) u32(t.dx[k]), u32(t.dy[k]), u32(uint32_t(t.offset[k])), u32(t.offset_reg[k]);
+      for (int k = 0; k < 3; ++k)
+        u32(t.dx[k]), u32(t.dy[k]), u32(uint32_t(t.offset[k])), u32(t.offset_reg[k]);
       for (Reg r : t.dst) u32(r);
       u32(uint32_t(t.result));
     }
@@ -604,7 +748,8 @@ struct Hasher {
 
 // What a cached object was made for: the code generator's version, this format, the CPU.
 std::string host_id() {
-  std::string id = std::string("tessel-jit-3 llvm-") + LLVM_VERSION_STRING + " " + llvm::sys::getHostCPUName().str();
+  std::string id =
+      std::string("tessel-jit-3 llvm-") + LLVM_VERSION_STRING + " " + llvm::sys::getHostCPUName().str();
   llvm::StringMap<bool> features;
   if (llvm::sys::getHostCPUFeatures(features)) {
     std::vector<std::string> on;
@@ -649,7 +794,8 @@ bool cache_read(const std::string& path, const std::string& host, std::string& o
   char magic[8];
   uint32_t host_len = 0;
   uint64_t size = 0, sum = 0;
-  if (!take(magic, 8) || std::memcmp(magic, kMagic, 8) != 0 || !take(&host_len, 4) || host_len > 65536) return false;
+  if (!take(magic, 8) || std::memcmp(magic, kMagic, 8) != 0 || !take(&host_len, 4) || host_len > 65536)
+    return false;
   if (at + host_len > f.size() || f.compare(at, host_len, host) != 0 || host_len != host.size()) return false;
   at += host_len;
   if (!take(&size, 8) || !take(&sum, 8) || size != f.size() - at) return false;
@@ -698,13 +844,13 @@ llvm::Expected<std::unique_ptr<llvm::orc::LLJIT>> make_jit(llvm::orc::JITTargetM
   if (!jit) return jit.takeError();
   auto& es = (*jit)->getExecutionSession();
   llvm::orc::SymbolMap syms;
-  syms[es.intern("tessel_glsl_texture")] = llvm::JITEvaluatedSymbol(llvm::pointerToJITTargetAddress(&tessel_glsl_texture),
-                                                                     llvm::JITSymbolFlags::Exported);
+  syms[es.intern("tessel_glsl_texture")] = llvm::JITEvaluatedSymbol(
+      llvm::pointerToJITTargetAddress(&tessel_glsl_texture), llvm::JITSymbolFlags::Exported);
   syms[es.intern("tessel_glsl_lane_math")] = llvm::JITEvaluatedSymbol(
       llvm::pointerToJITTargetAddress(&tessel_glsl_lane_math), llvm::JITSymbolFlags::Exported);
   if (auto e = (*jit)->getMainJITDylib().define(llvm::orc::absoluteSymbols(syms))) return e;
-  auto process =
-      llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess((*jit)->getDataLayout().getGlobalPrefix());
+  auto process = llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess(
+      (*jit)->getDataLayout().getGlobalPrefix());
   if (!process) return process.takeError();
   (*jit)->getMainJITDylib().addGenerator(std::move(*process));
   return jit;
@@ -724,8 +870,8 @@ bool find_functions(LlvmCode& code) {
 
 }  // namespace
 
-std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, const ir::Stage& fs, const StageIO& fio,
-                                     std::string* error) {
+std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, const ir::Stage& fs,
+                                     const StageIO& fio, std::string* error) {
   init_llvm();
   auto fail = [&](const std::string& e) -> std::unique_ptr<JitCode> {
     if (error) *error = e;
@@ -754,7 +900,8 @@ std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, co
         auto code = std::make_unique<LlvmCode>();
         code->jit = std::move(*jit);
         code->from_cache = true;
-        if (!code->jit->addObjectFile(llvm::MemoryBuffer::getMemBufferCopy(object, path)) && find_functions(*code))
+        if (!code->jit->addObjectFile(llvm::MemoryBuffer::getMemBufferCopy(object, path)) &&
+            find_functions(*code))
           return code;
       } else {
         llvm::consumeError(jit.takeError());
@@ -788,7 +935,8 @@ std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, co
     mpm.run(*mod, mam);
   }
   // TESSEL_GLSL_DUMP=1 prints the optimized LLVM IR of each program on stderr.
-  if (const char* dump = std::getenv("TESSEL_GLSL_DUMP"); dump && *dump == '1') mod->print(llvm::errs(), nullptr);
+  if (const char* dump = std::getenv("TESSEL_GLSL_DUMP"); dump && *dump == '1')
+    mod->print(llvm::errs(), nullptr);
   auto jit = make_jit(*jtmb);
   if (!jit) return fail("cannot create the JIT: " + llvm::toString(jit.takeError()));
   auto code = std::make_unique<LlvmCode>();
@@ -797,7 +945,8 @@ std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, co
   std::string object;
   if (!path.empty())
     code->jit->getObjTransformLayer().setTransform(
-        [&object](std::unique_ptr<llvm::MemoryBuffer> obj) -> llvm::Expected<std::unique_ptr<llvm::MemoryBuffer>> {
+        [&object](
+            std::unique_ptr<llvm::MemoryBuffer> obj) -> llvm::Expected<std::unique_ptr<llvm::MemoryBuffer>> {
           object = obj->getBuffer().str();
           return obj;
         });

@@ -25,14 +25,14 @@ struct StageIO {
 
 // Runs the stage on all sixteen lanes of `lanes` (`mask` must be 0xFFFF); returns the lanes
 // discarded.
-using StageFn = uint32_t (*)(void* lanes, const uint32_t* uniforms, uint32_t uniform_words, const RunInputs* in,
-                             uint32_t mask);
+using StageFn = uint32_t (*)(void* lanes, const uint32_t* uniforms, uint32_t uniform_words,
+                             const RunInputs* in, uint32_t mask);
 
 class JitCode {
  public:
   virtual ~JitCode() = default;
   virtual StageFn function(int stage) const = 0;  // 0 vertex, 1 fragment
-  bool from_cache = false;  // loaded from the disk cache rather than compiled
+  bool from_cache = false;                        // loaded from the disk cache rather than compiled
 };
 
 // Compiles both stages; nullptr (and *error) when LLVM cannot. Compiled code is kept in a disk
@@ -40,7 +40,7 @@ class JitCode {
 // $XDG_CACHE_HOME/tessel, else ~/.cache/tessel (TESSEL_SHADER_CACHE=0 turns it off). A file is
 // used only when its header, size, checksum and the machine it was made for all match.
 
-std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, const ir::Stage& fs, const StageIO& fio,
-                                     std::string* error);
+std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, const ir::Stage& fs,
+                                     const StageIO& fio, std::string* error);
 
 }  // namespace tessel::glsl

@@ -56,13 +56,20 @@ struct LowerError : std::runtime_error {
 
 Base base_of(const TType& t, const TIntermNode* where) {
   switch (t.getBasicType()) {
-    case glslang::EbtFloat: return Base::Float;
-    case glslang::EbtInt: return Base::Int;
-    case glslang::EbtUint: return Base::Uint;
-    case glslang::EbtBool: return Base::Bool;
-    case glslang::EbtSampler: return Base::Int;
-    case glslang::EbtDouble: fail(where, "double precision is not supported");
-    default: fail(where, "type '" + std::string(t.getBasicTypeString().c_str()) + "' is not supported");
+    case glslang::EbtFloat:
+      return Base::Float;
+    case glslang::EbtInt:
+      return Base::Int;
+    case glslang::EbtUint:
+      return Base::Uint;
+    case glslang::EbtBool:
+      return Base::Bool;
+    case glslang::EbtSampler:
+      return Base::Int;
+    case glslang::EbtDouble:
+      fail(where, "double precision is not supported");
+    default:
+      fail(where, "type '" + std::string(t.getBasicTypeString().c_str()) + "' is not supported");
   }
 }
 
@@ -179,7 +186,8 @@ uint32_t std140_layout(const TType& t, uint32_t at, bool row_major, std::vector<
 
 class Lowerer {
  public:
-  Lowerer(const glslang::TIntermediate& in, int stage, UniformLayout& u) : in_(in), stage_(stage), uniforms_(u) {}
+  Lowerer(const glslang::TIntermediate& in, int stage, UniformLayout& u)
+      : in_(in), stage_(stage), uniforms_(u) {}
 
   LoweredStage run() {
     TIntermNode* root = in_.getTreeRoot();
@@ -299,13 +307,15 @@ class Lowerer {
   static std::string name_of(const TIntermSymbol* s) { return std::string(s->getName().c_str()); }
 
   // Adds the default-block slots of a uniform of type t named `name` from word w.
-  void add_uniform_slots(const TType& t, const std::string& name, uint32_t& w, bool builtin, const TIntermNode* where) {
+  void add_uniform_slots(const TType& t, const std::string& name, uint32_t& w, bool builtin,
+                         const TIntermNode* where) {
     if (t.isStruct()) {
       const int n = t.isArray() ? array_length(t) : 1;
       for (int i = 0; i < n; ++i) {
         const std::string el = t.isArray() ? name + "[" + std::to_string(i) + "]" : name;
         for (const auto& m : *t.getStruct())
-          add_uniform_slots(*m.type, el + "." + std::string(m.type->getFieldName().c_str()), w, builtin, where);
+          add_uniform_slots(*m.type, el + "." + std::string(m.type->getFieldName().c_str()), w, builtin,
+                            where);
       }
       return;
     }
@@ -324,13 +334,26 @@ class Lowerer {
       s.shadow = smp.isShadow();
       s.array = smp.isArrayed();
       switch (smp.dim) {
-        case glslang::Esd1D: s.dim = ir::SamplerDim::D1; break;
-        case glslang::Esd2D: s.dim = ir::SamplerDim::D2; break;
-        case glslang::Esd3D: s.dim = ir::SamplerDim::D3; break;
-        case glslang::EsdCube: s.dim = ir::SamplerDim::Cube; break;
-        case glslang::EsdRect: s.dim = ir::SamplerDim::Rect; break;
-        case glslang::EsdBuffer: s.dim = ir::SamplerDim::Buffer; break;
-        default: fail(where, "sampler type not supported");
+        case glslang::Esd1D:
+          s.dim = ir::SamplerDim::D1;
+          break;
+        case glslang::Esd2D:
+          s.dim = ir::SamplerDim::D2;
+          break;
+        case glslang::Esd3D:
+          s.dim = ir::SamplerDim::D3;
+          break;
+        case glslang::EsdCube:
+          s.dim = ir::SamplerDim::Cube;
+          break;
+        case glslang::EsdRect:
+          s.dim = ir::SamplerDim::Rect;
+          break;
+        case glslang::EsdBuffer:
+          s.dim = ir::SamplerDim::Buffer;
+          break;
+        default:
+          fail(where, "sampler type not supported");
       }
       s.base = Base::Int;
     } else {
@@ -361,7 +384,8 @@ class Lowerer {
     for (int i = 0; i < n; ++i) p.comps.push_back(uint32_t(i));
     p.sampler = t.getBasicType() == glslang::EbtSampler;
     // Mark every slot of this variable active.
-    for (size_t i = it->second; i < uniforms_.slots.size() && uniforms_.slots[i].word < first.word + uint32_t(n); ++i)
+    for (size_t i = it->second;
+         i < uniforms_.slots.size() && uniforms_.slots[i].word < first.word + uint32_t(n); ++i)
       uniforms_.slots[i].active = true;
     return p;
   }
@@ -491,7 +515,8 @@ class Lowerer {
         p = uniform_place(s);
         globals_[id] = p;
         return p;
-      case glslang::EvqBuffer: fail(s, "buffer blocks are not supported");
+      case glslang::EvqBuffer:
+        fail(s, "buffer blocks are not supported");
       case glslang::EvqConst: {
         // A constant that glslang did not fold (a const array indexed at run time).
         const int n = count(t);
@@ -500,7 +525,8 @@ class Lowerer {
         std::vector<Base> bases;
         component_bases(t, bases, s);
         const Reg r = fresh(n);
-        for (int i = 0; i < n; ++i) out_.ir.constants.push_back({r + Reg(i), const_bits(c[i], bases[size_t(i)])});
+        for (int i = 0; i < n; ++i)
+          out_.ir.constants.push_back({r + Reg(i), const_bits(c[i], bases[size_t(i)])});
         p = var_place(r, n);
         globals_[id] = p;
         return p;
@@ -538,7 +564,8 @@ class Lowerer {
         globals_[id] = p;
         return p;
       }
-      default: break;
+      default:
+        break;
     }
     // A local variable (or parameter) of the current inlined function.
     const int n = count(t);
@@ -555,17 +582,37 @@ class Lowerer {
     bool b = false;
     switch (c.getType()) {
       case glslang::EbtFloat:
-      case glslang::EbtDouble: d = c.getDConst(); i = int64_t(d); b = d != 0; break;
-      case glslang::EbtInt: i = c.getIConst(); d = double(i); b = i != 0; break;
-      case glslang::EbtUint: i = c.getUConst(); d = double(c.getUConst()); b = i != 0; break;
-      case glslang::EbtBool: b = c.getBConst(); i = b; d = b; break;
-      default: break;
+      case glslang::EbtDouble:
+        d = c.getDConst();
+        i = int64_t(d);
+        b = d != 0;
+        break;
+      case glslang::EbtInt:
+        i = c.getIConst();
+        d = double(i);
+        b = i != 0;
+        break;
+      case glslang::EbtUint:
+        i = c.getUConst();
+        d = double(c.getUConst());
+        b = i != 0;
+        break;
+      case glslang::EbtBool:
+        b = c.getBConst();
+        i = b;
+        d = b;
+        break;
+      default:
+        break;
     }
     switch (want) {
-      case Base::Float: return fbits(float(d));
+      case Base::Float:
+        return fbits(float(d));
       case Base::Int:
-      case Base::Uint: return uint32_t(i);
-      case Base::Bool: return b ? ~0u : 0u;
+      case Base::Uint:
+        return uint32_t(i);
+      case Base::Bool:
+        return b ? ~0u : 0u;
     }
     return 0;
   }
@@ -576,11 +623,15 @@ class Lowerer {
     v.reserve(p.comps.size());
     for (uint32_t c : p.comps) {
       if (p.where == Place::Where::Regs) {
-        if (p.dyn == kNone) v.push_back(p.base + c);
-        else v.push_back(emit(Op::LoadIndexed, p.dyn, p.base + c, 0, p.base + p.size - 1));
+        if (p.dyn == kNone)
+          v.push_back(p.base + c);
+        else
+          v.push_back(emit(Op::LoadIndexed, p.dyn, p.base + c, 0, p.base + p.size - 1));
       } else {
-        if (p.dyn == kNone) v.push_back(uniform_word(p.base + c));
-        else v.push_back(emit(Op::UniformIndexed, p.dyn, 0, 0, p.base + c));
+        if (p.dyn == kNone)
+          v.push_back(uniform_word(p.base + c));
+        else
+          v.push_back(emit(Op::UniformIndexed, p.dyn, 0, 0, p.base + c));
       }
     }
     return v;
@@ -607,7 +658,8 @@ class Lowerer {
       for (Reg& r : v) {
         if (r >= p.base && r < p.base + p.size) r = emit(Op::Mov, r);
       }
-      for (size_t i = 0; i < v.size(); ++i) emit_to(Op::StoreIndexed, p.base + p.comps[i], p.dyn, v[i], 0, p.base + p.size - 1);
+      for (size_t i = 0; i < v.size(); ++i)
+        emit_to(Op::StoreIndexed, p.base + p.comps[i], p.dyn, v[i], 0, p.base + p.size - 1);
     }
   }
 
@@ -615,8 +667,8 @@ class Lowerer {
     if (TIntermSymbol* s = n->getAsSymbolNode()) return lookup(s);
     if (TIntermBinary* b = n->getAsBinaryNode()) {
       const auto op = b->getOp();
-      if (op == glslang::EOpIndexDirect || op == glslang::EOpIndexIndirect || op == glslang::EOpIndexDirectStruct ||
-          op == glslang::EOpVectorSwizzle) {
+      if (op == glslang::EOpIndexDirect || op == glslang::EOpIndexIndirect ||
+          op == glslang::EOpIndexDirectStruct || op == glslang::EOpVectorSwizzle) {
         Place p = place(b->getLeft());
         const TType& lt = b->getLeft()->getType();
         if (op == glslang::EOpVectorSwizzle) {
@@ -649,7 +701,8 @@ class Lowerer {
         bool uniform_stride = true;
         for (int e = 0; e < elems && uniform_stride; ++e)
           for (int c = 0; c < esize; ++c)
-            if (int(p.comps[size_t(e * esize + c)]) != int(p.comps[size_t(c)]) + e * stride) uniform_stride = false;
+            if (int(p.comps[size_t(e * esize + c)]) != int(p.comps[size_t(c)]) + e * stride)
+              uniform_stride = false;
         if (!uniform_stride) fail(b, "run-time index into a swizzle is not supported");
         Reg i = emit(Op::IMax, idx[0], iconst(0));
         i = emit(Op::IMin, i, iconst(elems - 1));
@@ -666,8 +719,8 @@ class Lowerer {
     if (n->getAsSymbolNode()) return true;
     if (TIntermBinary* b = n->getAsBinaryNode()) {
       const auto op = b->getOp();
-      if (op == glslang::EOpIndexDirect || op == glslang::EOpIndexIndirect || op == glslang::EOpIndexDirectStruct ||
-          op == glslang::EOpVectorSwizzle)
+      if (op == glslang::EOpIndexDirect || op == glslang::EOpIndexIndirect ||
+          op == glslang::EOpIndexDirectStruct || op == glslang::EOpVectorSwizzle)
         return is_access_chain(b->getLeft());
     }
     return false;
@@ -684,8 +737,8 @@ class Lowerer {
     }
     if (TIntermUnary* u = n->getAsUnaryNode()) {
       const auto op = u->getOp();
-      if (op == glslang::EOpPostIncrement || op == glslang::EOpPostDecrement || op == glslang::EOpPreIncrement ||
-          op == glslang::EOpPreDecrement)
+      if (op == glslang::EOpPostIncrement || op == glslang::EOpPostDecrement ||
+          op == glslang::EOpPreIncrement || op == glslang::EOpPreDecrement)
         return true;
       return has_effects(u->getOperand());
     }
@@ -696,7 +749,8 @@ class Lowerer {
       return false;
     }
     if (TIntermSelection* s = n->getAsSelectionNode())
-      return has_effects(s->getCondition()) || has_effects(s->getTrueBlock()) || has_effects(s->getFalseBlock());
+      return has_effects(s->getCondition()) || has_effects(s->getTrueBlock()) ||
+             has_effects(s->getFalseBlock());
     return false;
   }
 
@@ -732,7 +786,8 @@ class Lowerer {
 
   // --- expressions ----------------------------------------------------------------------
   Val value(TIntermTyped* n) {
-    if (TIntermConstantUnion* c = n->getAsConstantUnion()) return constant(c->getConstArray(), c->getType(), c);
+    if (TIntermConstantUnion* c = n->getAsConstantUnion())
+      return constant(c->getConstArray(), c->getType(), c);
     if (TIntermSymbol* s = n->getAsSymbolNode()) {
       if (s->getType().getQualifier().storage == glslang::EvqConst && s->getConstArray().size() > 0 &&
           !s->getType().isArray())
@@ -748,10 +803,14 @@ class Lowerer {
 
   static Base base_or_float(const TType& t) {
     switch (t.getBasicType()) {
-      case glslang::EbtInt: return Base::Int;
-      case glslang::EbtUint: return Base::Uint;
-      case glslang::EbtBool: return Base::Bool;
-      default: return Base::Float;
+      case glslang::EbtInt:
+        return Base::Int;
+      case glslang::EbtUint:
+        return Base::Uint;
+      case glslang::EbtBool:
+        return Base::Bool;
+      default:
+        return Base::Float;
     }
   }
 
@@ -772,22 +831,44 @@ class Lowerer {
   Op arith_op(glslang::TOperator op, Base b, TIntermNode* where) {
     const bool f = b == Base::Float, u = b == Base::Uint;
     switch (op) {
-      case glslang::EOpAdd: case glslang::EOpAddAssign: return f ? Op::FAdd : Op::IAdd;
-      case glslang::EOpSub: case glslang::EOpSubAssign: return f ? Op::FSub : Op::ISub;
-      case glslang::EOpMul: case glslang::EOpMulAssign: case glslang::EOpVectorTimesScalar:
-      case glslang::EOpVectorTimesScalarAssign: case glslang::EOpMatrixTimesScalar:
+      case glslang::EOpAdd:
+      case glslang::EOpAddAssign:
+        return f ? Op::FAdd : Op::IAdd;
+      case glslang::EOpSub:
+      case glslang::EOpSubAssign:
+        return f ? Op::FSub : Op::ISub;
+      case glslang::EOpMul:
+      case glslang::EOpMulAssign:
+      case glslang::EOpVectorTimesScalar:
+      case glslang::EOpVectorTimesScalarAssign:
+      case glslang::EOpMatrixTimesScalar:
       case glslang::EOpMatrixTimesScalarAssign:
         return f ? Op::FMul : Op::IMul;
-      case glslang::EOpDiv: case glslang::EOpDivAssign: return f ? Op::FDiv : u ? Op::UDiv : Op::IDiv;
+      case glslang::EOpDiv:
+      case glslang::EOpDivAssign:
+        return f ? Op::FDiv : u ? Op::UDiv : Op::IDiv;
       // GLSL leaves % undefined for negative operands; Mesa takes the remainder of the bits
       // as unsigned, and so does Tessel.
-      case glslang::EOpMod: case glslang::EOpModAssign: return f ? Op::FMod : Op::UMod;
-      case glslang::EOpAnd: case glslang::EOpAndAssign: return Op::And;
-      case glslang::EOpInclusiveOr: case glslang::EOpInclusiveOrAssign: return Op::Or;
-      case glslang::EOpExclusiveOr: case glslang::EOpExclusiveOrAssign: return Op::Xor;
-      case glslang::EOpLeftShift: case glslang::EOpLeftShiftAssign: return Op::Shl;
-      case glslang::EOpRightShift: case glslang::EOpRightShiftAssign: return u ? Op::ShrL : Op::ShrA;
-      default: fail(where, "operator not supported");
+      case glslang::EOpMod:
+      case glslang::EOpModAssign:
+        return f ? Op::FMod : Op::UMod;
+      case glslang::EOpAnd:
+      case glslang::EOpAndAssign:
+        return Op::And;
+      case glslang::EOpInclusiveOr:
+      case glslang::EOpInclusiveOrAssign:
+        return Op::Or;
+      case glslang::EOpExclusiveOr:
+      case glslang::EOpExclusiveOrAssign:
+        return Op::Xor;
+      case glslang::EOpLeftShift:
+      case glslang::EOpLeftShiftAssign:
+        return Op::Shl;
+      case glslang::EOpRightShift:
+      case glslang::EOpRightShiftAssign:
+        return u ? Op::ShrL : Op::ShrA;
+      default:
+        fail(where, "operator not supported");
     }
   }
 
@@ -797,15 +878,16 @@ class Lowerer {
     for (int c = 0; c < b_cols; ++c) {
       for (int row = 0; row < a_rows; ++row) {
         Reg acc = emit(Op::FMul, a[size_t(row)], b[size_t(c * a_cols)]);
-        for (int k = 1; k < a_cols; ++k) acc = mad(a[size_t(k * a_rows + row)], b[size_t(c * a_cols + k)], acc);
+        for (int k = 1; k < a_cols; ++k)
+          acc = mad(a[size_t(k * a_rows + row)], b[size_t(c * a_cols + k)], acc);
         r.push_back(acc);
       }
     }
     return r;
   }
 
-  Val arithmetic(glslang::TOperator op, const TType& rt, TIntermTyped* l, const Val& a, TIntermTyped* r, const Val& b,
-                 TIntermNode* where) {
+  Val arithmetic(glslang::TOperator op, const TType& rt, TIntermTyped* l, const Val& a, TIntermTyped* r,
+                 const Val& b, TIntermNode* where) {
     const TType& lt = l->getType();
     const TType& tt = r->getType();
     switch (op) {
@@ -819,10 +901,12 @@ class Lowerer {
         // v * M: component c is dot(v, column c).
         const int rows = tt.getMatrixRows(), cols = tt.getMatrixCols();
         Val out;
-        for (int c = 0; c < cols; ++c) out.push_back(dot(a, Val(b.begin() + c * rows, b.begin() + (c + 1) * rows)));
+        for (int c = 0; c < cols; ++c)
+          out.push_back(dot(a, Val(b.begin() + c * rows, b.begin() + (c + 1) * rows)));
         return out;
       }
-      default: break;
+      default:
+        break;
     }
     const Base base = base_or_float(lt.getBasicType() == glslang::EbtBool ? tt : lt);
     const size_t n = size_t(count(rt));
@@ -838,12 +922,18 @@ class Lowerer {
   static Op compare_op(glslang::TOperator op, Base b) {
     const bool f = b == Base::Float, u = b == Base::Uint;
     switch (op) {
-      case glslang::EOpVectorEqual: return f ? Op::FEq : Op::IEq;
-      case glslang::EOpVectorNotEqual: return f ? Op::FNe : Op::INe;
-      case glslang::EOpLessThan: return f ? Op::FLt : u ? Op::ULt : Op::ILt;
-      case glslang::EOpGreaterThan: return f ? Op::FGt : u ? Op::UGt : Op::IGt;
-      case glslang::EOpLessThanEqual: return f ? Op::FLe : u ? Op::ULe : Op::ILe;
-      default: return f ? Op::FGe : u ? Op::UGe : Op::IGe;
+      case glslang::EOpVectorEqual:
+        return f ? Op::FEq : Op::IEq;
+      case glslang::EOpVectorNotEqual:
+        return f ? Op::FNe : Op::INe;
+      case glslang::EOpLessThan:
+        return f ? Op::FLt : u ? Op::ULt : Op::ILt;
+      case glslang::EOpGreaterThan:
+        return f ? Op::FGt : u ? Op::UGt : Op::IGt;
+      case glslang::EOpLessThanEqual:
+        return f ? Op::FLe : u ? Op::ULe : Op::ILe;
+      default:
+        return f ? Op::FGe : u ? Op::UGe : Op::IGe;
     }
   }
 
@@ -874,11 +964,20 @@ class Lowerer {
         write(p, v, b);
         return read(p);
       }
-      case glslang::EOpAddAssign: case glslang::EOpSubAssign: case glslang::EOpMulAssign: case glslang::EOpDivAssign:
-      case glslang::EOpModAssign: case glslang::EOpAndAssign: case glslang::EOpInclusiveOrAssign:
-      case glslang::EOpExclusiveOrAssign: case glslang::EOpLeftShiftAssign: case glslang::EOpRightShiftAssign:
-      case glslang::EOpVectorTimesMatrixAssign: case glslang::EOpVectorTimesScalarAssign:
-      case glslang::EOpMatrixTimesScalarAssign: case glslang::EOpMatrixTimesMatrixAssign: {
+      case glslang::EOpAddAssign:
+      case glslang::EOpSubAssign:
+      case glslang::EOpMulAssign:
+      case glslang::EOpDivAssign:
+      case glslang::EOpModAssign:
+      case glslang::EOpAndAssign:
+      case glslang::EOpInclusiveOrAssign:
+      case glslang::EOpExclusiveOrAssign:
+      case glslang::EOpLeftShiftAssign:
+      case glslang::EOpRightShiftAssign:
+      case glslang::EOpVectorTimesMatrixAssign:
+      case glslang::EOpVectorTimesScalarAssign:
+      case glslang::EOpMatrixTimesScalarAssign:
+      case glslang::EOpMatrixTimesMatrixAssign: {
         const Place p = place(b->getLeft());
         const Val cur = read(p);
         const Val rhs = value(b->getRight());
@@ -915,14 +1014,17 @@ class Lowerer {
         (void)value(b->getLeft());
         return value(b->getRight());
       }
-      default: break;
+      default:
+        break;
     }
     const Val a = value(b->getLeft());
     const Val c = value(b->getRight());
     const TType& lt = b->getLeft()->getType();
     switch (op) {
-      case glslang::EOpEqual: return compare_all(true, lt, a, c, b);
-      case glslang::EOpNotEqual: return compare_all(false, lt, a, c, b);
+      case glslang::EOpEqual:
+        return compare_all(true, lt, a, c, b);
+      case glslang::EOpNotEqual:
+        return compare_all(false, lt, a, c, b);
       case glslang::EOpVectorEqual:
       case glslang::EOpVectorNotEqual:
       case glslang::EOpLessThan:
@@ -931,7 +1033,8 @@ class Lowerer {
       case glslang::EOpGreaterThanEqual: {
         return componentwise(compare_op(op, base_or_float(lt)), a, c, std::max(a.size(), c.size()));
       }
-      default: return arithmetic(op, b->getType(), b->getLeft(), a, b->getRight(), c, b);
+      default:
+        return arithmetic(op, b->getType(), b->getLeft(), a, b->getRight(), c, b);
     }
   }
 
@@ -942,7 +1045,8 @@ class Lowerer {
     const TType& lt = b->getLeft()->getType();
     if (op == glslang::EOpVectorSwizzle) {
       Val r;
-      for (TIntermNode* s : b->getRight()->getAsAggregate()->getSequence()) r.push_back(v.at(size_t(const_index(s->getAsTyped()))));
+      for (TIntermNode* s : b->getRight()->getAsAggregate()->getSequence())
+        r.push_back(v.at(size_t(const_index(s->getAsTyped()))));
       return r;
     }
     if (op == glslang::EOpIndexDirectStruct) {
@@ -959,7 +1063,8 @@ class Lowerer {
     Val r(v.begin(), v.begin() + esize);
     for (int e = 1; e < elems; ++e) {
       const Reg m = emit(Op::IEq, idx[0], iconst(e));
-      for (int c = 0; c < esize; ++c) r[size_t(c)] = emit(Op::Select, m, v[size_t(e * esize + c)], r[size_t(c)]);
+      for (int c = 0; c < esize; ++c)
+        r[size_t(c)] = emit(Op::Select, m, v[size_t(e * esize + c)], r[size_t(c)]);
     }
     return r;
   }
@@ -996,12 +1101,15 @@ class Lowerer {
         const bool inc = op == glslang::EOpPostIncrement || op == glslang::EOpPreIncrement;
         const Reg one = xb == Base::Float ? fconst(1.0f) : iconst(1);
         Val nv;
-        for (Reg r : old) nv.push_back(emit(xb == Base::Float ? (inc ? Op::FAdd : Op::FSub) : (inc ? Op::IAdd : Op::ISub), r, one));
+        for (Reg r : old)
+          nv.push_back(
+              emit(xb == Base::Float ? (inc ? Op::FAdd : Op::FSub) : (inc ? Op::IAdd : Op::ISub), r, one));
         write(p, nv, u);
         if (op == glslang::EOpPostIncrement || op == glslang::EOpPostDecrement) return old;
         return read(p);
       }
-      default: break;
+      default:
+        break;
     }
     const Val a = value(x);
     auto each = [&](Op o) {
@@ -1016,50 +1124,89 @@ class Lowerer {
     };
     const Base rb = base_or_float(u->getType());
     switch (op) {
-      case glslang::EOpNegative: return each(xb == Base::Float ? Op::FNeg : Op::INeg);
+      case glslang::EOpNegative:
+        return each(xb == Base::Float ? Op::FNeg : Op::INeg);
       case glslang::EOpLogicalNot:
       case glslang::EOpVectorLogicalNot:
-      case glslang::EOpBitwiseNot: return each(Op::Not);
-      case glslang::EOpCopyObject: return a;
-      case glslang::EOpRadians: return each_f([&](Reg c) { return emit(Op::FMul, c, fconst(0.017453292519943295f)); });
-      case glslang::EOpDegrees: return each_f([&](Reg c) { return emit(Op::FMul, c, fconst(57.29577951308232f)); });
-      case glslang::EOpSin: return each_f([&](Reg c) { return mesa_sincos(c, false); });
-      case glslang::EOpCos: return each_f([&](Reg c) { return mesa_sincos(c, true); });
-      case glslang::EOpTan: return each_f([&](Reg c) { return mesa_tan(c); });
-      case glslang::EOpAsin: return each_f([&](Reg c) { return mesa_asin(c); });
-      case glslang::EOpAcos: return each_f([&](Reg c) { return mesa_acos(c); });
-      case glslang::EOpAtan: return each_f([&](Reg c) { return mesa_atan(c); });
-      case glslang::EOpSinh: return each_f([&](Reg c) { return mesa_sinh(c); });
-      case glslang::EOpCosh: return each_f([&](Reg c) { return mesa_cosh(c); });
-      case glslang::EOpTanh: return each_f([&](Reg c) { return mesa_tanh(c); });
-      case glslang::EOpAsinh: return each_f([&](Reg c) { return mesa_asinh(c); });
-      case glslang::EOpAcosh: return each_f([&](Reg c) { return mesa_acosh(c); });
-      case glslang::EOpAtanh: return each_f([&](Reg c) { return mesa_atanh(c); });
-      case glslang::EOpExp: return each_f([&](Reg c) { return mesa_exp(c); });
-      case glslang::EOpLog: return each_f([&](Reg c) { return mesa_log(c); });
-      case glslang::EOpExp2: return each_f([&](Reg c) { return mesa_exp2(c); });
-      case glslang::EOpLog2: return each_f([&](Reg c) { return mesa_log2(c); });
-      case glslang::EOpSqrt: return each(Op::FSqrt);
-      case glslang::EOpInverseSqrt: return each(Op::FRsq);
-      case glslang::EOpAbs: return each(xb == Base::Float ? Op::FAbs : Op::IAbs);
-      case glslang::EOpSign: return each(xb == Base::Float ? Op::FSign : Op::ISign);
-      case glslang::EOpFloor: return each(Op::FFloor);
-      case glslang::EOpTrunc: return each(Op::FTrunc);
-      case glslang::EOpRound: return each(Op::FRoundEven);  // GLSL leaves .5 to the implementation; Mesa rounds to even
-      case glslang::EOpRoundEven: return each(Op::FRoundEven);
-      case glslang::EOpCeil: return each(Op::FCeil);
-      case glslang::EOpFract: return each(Op::FFract);
-      case glslang::EOpIsNan: return each(Op::FIsNan);
-      case glslang::EOpIsInf: return each(Op::FIsInf);
+      case glslang::EOpBitwiseNot:
+        return each(Op::Not);
+      case glslang::EOpCopyObject:
+        return a;
+      case glslang::EOpRadians:
+        return each_f([&](Reg c) { return emit(Op::FMul, c, fconst(0.017453292519943295f)); });
+      case glslang::EOpDegrees:
+        return each_f([&](Reg c) { return emit(Op::FMul, c, fconst(57.29577951308232f)); });
+      case glslang::EOpSin:
+        return each_f([&](Reg c) { return mesa_sincos(c, false); });
+      case glslang::EOpCos:
+        return each_f([&](Reg c) { return mesa_sincos(c, true); });
+      case glslang::EOpTan:
+        return each_f([&](Reg c) { return mesa_tan(c); });
+      case glslang::EOpAsin:
+        return each_f([&](Reg c) { return mesa_asin(c); });
+      case glslang::EOpAcos:
+        return each_f([&](Reg c) { return mesa_acos(c); });
+      case glslang::EOpAtan:
+        return each_f([&](Reg c) { return mesa_atan(c); });
+      case glslang::EOpSinh:
+        return each_f([&](Reg c) { return mesa_sinh(c); });
+      case glslang::EOpCosh:
+        return each_f([&](Reg c) { return mesa_cosh(c); });
+      case glslang::EOpTanh:
+        return each_f([&](Reg c) { return mesa_tanh(c); });
+      case glslang::EOpAsinh:
+        return each_f([&](Reg c) { return mesa_asinh(c); });
+      case glslang::EOpAcosh:
+        return each_f([&](Reg c) { return mesa_acosh(c); });
+      case glslang::EOpAtanh:
+        return each_f([&](Reg c) { return mesa_atanh(c); });
+      case glslang::EOpExp:
+        return each_f([&](Reg c) { return mesa_exp(c); });
+      case glslang::EOpLog:
+        return each_f([&](Reg c) { return mesa_log(c); });
+      case glslang::EOpExp2:
+        return each_f([&](Reg c) { return mesa_exp2(c); });
+      case glslang::EOpLog2:
+        return each_f([&](Reg c) { return mesa_log2(c); });
+      case glslang::EOpSqrt:
+        return each(Op::FSqrt);
+      case glslang::EOpInverseSqrt:
+        return each(Op::FRsq);
+      case glslang::EOpAbs:
+        return each(xb == Base::Float ? Op::FAbs : Op::IAbs);
+      case glslang::EOpSign:
+        return each(xb == Base::Float ? Op::FSign : Op::ISign);
+      case glslang::EOpFloor:
+        return each(Op::FFloor);
+      case glslang::EOpTrunc:
+        return each(Op::FTrunc);
+      case glslang::EOpRound:
+        return each(Op::FRoundEven);  // GLSL leaves .5 to the implementation; Mesa rounds to even
+      case glslang::EOpRoundEven:
+        return each(Op::FRoundEven);
+      case glslang::EOpCeil:
+        return each(Op::FCeil);
+      case glslang::EOpFract:
+        return each(Op::FFract);
+      case glslang::EOpIsNan:
+        return each(Op::FIsNan);
+      case glslang::EOpIsInf:
+        return each(Op::FIsInf);
       case glslang::EOpFloatBitsToInt:
       case glslang::EOpFloatBitsToUint:
       case glslang::EOpIntBitsToFloat:
-      case glslang::EOpUintBitsToFloat: return a;
-      case glslang::EOpBitFieldReverse: return each(Op::BitReverse);
-      case glslang::EOpBitCount: return each(Op::BitCount);
-      case glslang::EOpFindLSB: return each(Op::FindLSB);
-      case glslang::EOpFindMSB: return each(xb == Base::Uint ? Op::UFindMSB : Op::IFindMSB);
-      case glslang::EOpLength: return {length(a)};
+      case glslang::EOpUintBitsToFloat:
+        return a;
+      case glslang::EOpBitFieldReverse:
+        return each(Op::BitReverse);
+      case glslang::EOpBitCount:
+        return each(Op::BitCount);
+      case glslang::EOpFindLSB:
+        return each(Op::FindLSB);
+      case glslang::EOpFindMSB:
+        return each(xb == Base::Uint ? Op::UFindMSB : Op::IFindMSB);
+      case glslang::EOpLength:
+        return {length(a)};
       case glslang::EOpNormalize: {
         if (a.size() == 1) return {fsign(a[0])};
         const Reg inv = emit(Op::FRsq, dot(a, a));
@@ -1078,26 +1225,37 @@ class Lowerer {
           for (int k = 0; k < cols; ++k) r.push_back(a[size_t(k * rows + c)]);
         return r;
       }
-      case glslang::EOpDeterminant: return {determinant(a, xt.getMatrixCols())};
-      case glslang::EOpMatrixInverse: return inverse(a, xt.getMatrixCols());
-      case glslang::EOpDPdx: case glslang::EOpDPdxFine: case glslang::EOpDPdxCoarse:
+      case glslang::EOpDeterminant:
+        return {determinant(a, xt.getMatrixCols())};
+      case glslang::EOpMatrixInverse:
+        return inverse(a, xt.getMatrixCols());
+      case glslang::EOpDPdx:
+      case glslang::EOpDPdxFine:
+      case glslang::EOpDPdxCoarse:
         out_.ir.uses_derivatives = true;
         return each(Op::Ddx);
-      case glslang::EOpDPdy: case glslang::EOpDPdyFine: case glslang::EOpDPdyCoarse:
+      case glslang::EOpDPdy:
+      case glslang::EOpDPdyFine:
+      case glslang::EOpDPdyCoarse:
         out_.ir.uses_derivatives = true;
         return each(Op::Ddy);
-      case glslang::EOpFwidth: case glslang::EOpFwidthFine: case glslang::EOpFwidthCoarse:
+      case glslang::EOpFwidth:
+      case glslang::EOpFwidthFine:
+      case glslang::EOpFwidthCoarse:
         out_.ir.uses_derivatives = true;
         return each_f([&](Reg c) {
           return emit(Op::FAdd, emit(Op::FAbs, emit(Op::Ddx, c)), emit(Op::FAbs, emit(Op::Ddy, c)));
         });
-      case glslang::EOpPackHalf2x16: return {emit(Op::PackHalf, a[0], a[1])};
-      case glslang::EOpUnpackHalf2x16: return {emit(Op::UnpackHalfLo, a[0]), emit(Op::UnpackHalfHi, a[0])};
+      case glslang::EOpPackHalf2x16:
+        return {emit(Op::PackHalf, a[0], a[1])};
+      case glslang::EOpUnpackHalf2x16:
+        return {emit(Op::UnpackHalfLo, a[0]), emit(Op::UnpackHalfHi, a[0])};
       case glslang::EOpNoise: {
         Val r(size_t(count(u->getType())), fconst(0.0f));
         return r;
       }
-      default: break;
+      default:
+        break;
     }
     // Conversions: glslang names them EOpConv<From>To<To>.
     if (op >= glslang::EOpConvInt8ToBool && op <= glslang::EOpConvDoubleToFloat) {
@@ -1137,8 +1295,10 @@ class Lowerer {
         for (int rr = 0; rr < 4; ++rr)
           if (rr != r) sub.push_back(at(c, rr));
       Reg t = emit(Op::FMul, at(0, r), determinant(sub, 3));
-      if (acc == kNone) acc = t;
-      else acc = emit((r & 1) ? Op::FSub : Op::FAdd, acc, t);
+      if (acc == kNone)
+        acc = t;
+      else
+        acc = emit((r & 1) ? Op::FSub : Op::FAdd, acc, t);
     }
     return acc;
   }
@@ -1170,8 +1330,10 @@ class Lowerer {
         adj[size_t(c * n + row)] = v;
       }
     Reg det;
-    if (n == 2) det = det2(at(0, 0), at(1, 0), at(0, 1), at(1, 1));
-    else if (n == 3) det = det3_by_column(at);
+    if (n == 2)
+      det = det2(at(0, 0), at(1, 0), at(0, 1), at(1, 1));
+    else if (n == 3)
+      det = det3_by_column(at);
     else {  // m00 adj00 + (m01 adj10 + (m02 adj20 + m03 adj30))
       det = emit(Op::FMul, at(0, 3), adj[size_t(3 * n)]);
       for (int k = 2; k >= 0; --k) det = emit(Op::FAdd, emit(Op::FMul, at(0, k), adj[size_t(k * n)]), det);
@@ -1189,7 +1351,8 @@ class Lowerer {
     if (!has_effects(t) && !has_effects(f)) {
       const Val a = value(t), b = value(f);
       Val r;
-      for (size_t i = 0; i < a.size(); ++i) r.push_back(a[i] == b[i] ? a[i] : emit(Op::Select, c[0], a[i], b[i]));
+      for (size_t i = 0; i < a.size(); ++i)
+        r.push_back(a[i] == b[i] ? a[i] : emit(Op::Select, c[0], a[i], b[i]));
       return r;
     }
     const int n = count(s->getType());
@@ -1349,8 +1512,10 @@ class Lowerer {
     if (op == glslang::EOpSequence || op == glslang::EOpComma) {
       Val last;
       for (TIntermNode* n : a->getSequence()) {
-        if (TIntermTyped* t = n->getAsTyped()) last = value(t);
-        else statement(n);
+        if (TIntermTyped* t = n->getAsTyped())
+          last = value(t);
+        else
+          statement(n);
       }
       return last;
     }
@@ -1362,11 +1527,14 @@ class Lowerer {
     std::vector<TIntermTyped*> x;
     // modf/frexp write through their last argument.
     const bool last_out = op == glslang::EOpModf || op == glslang::EOpFrexp || op == glslang::EOpAddCarry ||
-                          op == glslang::EOpSubBorrow || op == glslang::EOpUMulExtended || op == glslang::EOpIMulExtended;
+                          op == glslang::EOpSubBorrow || op == glslang::EOpUMulExtended ||
+                          op == glslang::EOpIMulExtended;
     for (size_t i = 0; i < s.size(); ++i) {
       x.push_back(s[i]->getAsTyped());
-      if (last_out && i + 1 == s.size()) v.emplace_back();
-      else v.push_back(value(x.back()));
+      if (last_out && i + 1 == s.size())
+        v.emplace_back();
+      else
+        v.push_back(value(x.back()));
     }
     const size_t n = size_t(count(a->getType()));
     const Base b = s.empty() ? Base::Float : base_or_float(x[0]->getType());
@@ -1394,15 +1562,23 @@ class Lowerer {
           return mesa_pow(b, e);
         });
       }
-      case glslang::EOpAtan: return per([&](size_t i) { return mesa_atan2(arg(0, i), arg(1, i)); });
-      case glslang::EOpMod: return per([&](size_t i) { return emit(Op::FMod, arg(0, i), arg(1, i)); });
+      case glslang::EOpAtan:
+        return per([&](size_t i) { return mesa_atan2(arg(0, i), arg(1, i)); });
+      case glslang::EOpMod:
+        return per([&](size_t i) { return emit(Op::FMod, arg(0, i), arg(1, i)); });
       case glslang::EOpMin:
         return per([&](size_t i) {
-          return emit(b == Base::Float ? Op::FMin : b == Base::Uint ? Op::UMin : Op::IMin, arg(0, i), arg(1, i));
+          return emit(b == Base::Float  ? Op::FMin
+                      : b == Base::Uint ? Op::UMin
+                                        : Op::IMin,
+                      arg(0, i), arg(1, i));
         });
       case glslang::EOpMax:
         return per([&](size_t i) {
-          return emit(b == Base::Float ? Op::FMax : b == Base::Uint ? Op::UMax : Op::IMax, arg(0, i), arg(1, i));
+          return emit(b == Base::Float  ? Op::FMax
+                      : b == Base::Uint ? Op::UMax
+                                        : Op::IMax,
+                      arg(0, i), arg(1, i));
         });
       case glslang::EOpClamp:
         return per([&](size_t i) {
@@ -1423,9 +1599,8 @@ class Lowerer {
         return per([&](size_t i) { return mad(arg(2, i), emit(Op::FSub, arg(1, i), arg(0, i)), arg(0, i)); });
       }
       case glslang::EOpStep:
-        return per([&](size_t i) {
-          return emit(Op::And, emit(Op::FGe, arg(1, i), arg(0, i)), fconst(1.0f));
-        });
+        return per(
+            [&](size_t i) { return emit(Op::And, emit(Op::FGe, arg(1, i), arg(0, i)), fconst(1.0f)); });
       case glslang::EOpSmoothStep:
         return per([&](size_t i) {
           Reg t = emit(Op::FDiv, emit(Op::FSub, arg(2, i), arg(0, i)), emit(Op::FSub, arg(1, i), arg(0, i)));
@@ -1434,8 +1609,10 @@ class Lowerer {
           return f_mul(t, f_mul(t, f_sub(fconst(3.0f), f_mul(fconst(2.0f), t))));
         });
       // llvmpipe does not fuse GLSL's fma() (NIR lowers it to a * b + c).
-      case glslang::EOpFma: return per([&](size_t i) { return mad(arg(0, i), arg(1, i), arg(2, i)); });
-      case glslang::EOpLdexp: return per([&](size_t i) { return emit(Op::FLdexp, arg(0, i), arg(1, i)); });
+      case glslang::EOpFma:
+        return per([&](size_t i) { return mad(arg(0, i), arg(1, i), arg(2, i)); });
+      case glslang::EOpLdexp:
+        return per([&](size_t i) { return emit(Op::FLdexp, arg(0, i), arg(1, i)); });
       case glslang::EOpModf: {
         const Place p = place(x[1]);
         Val whole, fr;
@@ -1463,7 +1640,8 @@ class Lowerer {
         if (d.size() == 1) return {emit(Op::FAbs, d[0])};
         return {length(d)};
       }
-      case glslang::EOpDot: return {v[0].size() == 1 ? emit(Op::FMul, v[0][0], v[1][0]) : dot(v[0], v[1])};
+      case glslang::EOpDot:
+        return {v[0].size() == 1 ? emit(Op::FMul, v[0][0], v[1][0]) : dot(v[0], v[1])};
       case glslang::EOpCross: {
         const Val& p = v[0];
         const Val& q = v[1];
@@ -1504,8 +1682,12 @@ class Lowerer {
       }
       case glslang::EOpMul:  // matrixCompMult
         return per([&](size_t i) { return emit(Op::FMul, arg(0, i), arg(1, i)); });
-      case glslang::EOpLessThan: case glslang::EOpGreaterThan: case glslang::EOpLessThanEqual:
-      case glslang::EOpGreaterThanEqual: case glslang::EOpVectorEqual: case glslang::EOpVectorNotEqual: {
+      case glslang::EOpLessThan:
+      case glslang::EOpGreaterThan:
+      case glslang::EOpLessThanEqual:
+      case glslang::EOpGreaterThanEqual:
+      case glslang::EOpVectorEqual:
+      case glslang::EOpVectorNotEqual: {
         const Op o = compare_op(op, b);
         return per([&](size_t i) { return emit(o, arg(0, i), arg(1, i)); });
       }
@@ -1525,15 +1707,19 @@ class Lowerer {
         Val carry, r;
         for (size_t i = 0; i < n; ++i) {
           r.push_back(emit(op == glslang::EOpAddCarry ? Op::IAdd : Op::ISub, arg(0, i), arg(1, i)));
-          carry.push_back(emit(op == glslang::EOpAddCarry ? Op::UAddCarry : Op::USubBorrow, arg(0, i), arg(1, i)));
+          carry.push_back(
+              emit(op == glslang::EOpAddCarry ? Op::UAddCarry : Op::USubBorrow, arg(0, i), arg(1, i)));
         }
         write(p, carry, a);
         return r;
       }
       case glslang::EOpUMulExtended:
-      case glslang::EOpIMulExtended: fail(a, "umulExtended/imulExtended are not supported");
-      case glslang::EOpFtransform: fail(a, "ftransform() is not supported yet");
-      default: break;
+      case glslang::EOpIMulExtended:
+        fail(a, "umulExtended/imulExtended are not supported");
+      case glslang::EOpFtransform:
+        fail(a, "ftransform() is not supported yet");
+      default:
+        break;
     }
     fail(a, "built-in function '" + std::string(a->getName().c_str()) + "' (" + std::to_string(int(op)) +
                 ") is not supported");
@@ -1614,8 +1800,12 @@ class Lowerer {
           node.kind = Kind::Discard;
           out_.ir.discards = true;
           break;
-        case glslang::EOpBreak: node.kind = Kind::Break; break;
-        case glslang::EOpContinue: node.kind = Kind::Continue; break;
+        case glslang::EOpBreak:
+          node.kind = Kind::Break;
+          break;
+        case glslang::EOpContinue:
+          node.kind = Kind::Continue;
+          break;
         case glslang::EOpReturn:
           if (b->getExpression() && !frames_.empty() && !frames_.back().ret.empty()) {
             const Val v = value(b->getExpression());
@@ -1623,7 +1813,8 @@ class Lowerer {
           }
           node.kind = Kind::Return;
           break;
-        default: fail(b, "statement not supported");
+        default:
+          fail(b, "statement not supported");
       }
       blocks_.back()->push_back(std::move(node));
       return;
@@ -1680,8 +1871,10 @@ class Lowerer {
       if (b && (b->getFlowOp() == glslang::EOpCase || b->getFlowOp() == glslang::EOpDefault)) {
         flush();
         Reg m;
-        if (b->getFlowOp() == glslang::EOpCase) m = emit(Op::IEq, sel[0], value(b->getExpression())[0]);
-        else m = none_match;
+        if (b->getFlowOp() == glslang::EOpCase)
+          m = emit(Op::IEq, sel[0], value(b->getExpression())[0]);
+        else
+          m = none_match;
         emit_to(Op::Store, taken, emit(Op::Or, taken, m));
         continue;
       }
@@ -1691,7 +1884,6 @@ class Lowerer {
     blocks_.pop_back();
     blocks_.back()->push_back(std::move(node));
   }
-
 };
 
 #include "lower_texture.inc"

@@ -40,7 +40,7 @@ struct Interface {
   int array_size = 0;  // 0: not an array
   uint32_t gl_type = 0;
   Base base = Base::Float;
-  int location = -1;   // layout(location), or -1
+  int location = -1;  // layout(location), or -1
   bool flat = false, noperspective = false;
   bool builtin = false;  // gl_Position, gl_FragCoord, gl_Vertex, ...
   bool read = false, written = false;

@@ -9,9 +9,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdlib>
 #include <cstring>
 #include <mutex>
-#include <cstdlib>
 #include <set>
 #include <string_view>
 #if defined(__SSE__) || defined(_M_X64)
@@ -46,14 +46,14 @@ std::shared_ptr<Shader> Shader::compile(Stage stage, std::string source) {
 
 struct Linked {
   ir::Stage vs, fs;
-  std::vector<Copy> vs_in;                    // attribute rows, vertex and instance ids
-  std::vector<Copy> vs_out;                   // position and varyings
-  std::vector<Copy> fs_in;                    // varyings, coord, primitive id
-  std::vector<ir::Reg> fs_front_facing;       // registers that get gl_FrontFacing
+  std::vector<Copy> vs_in;                      // attribute rows, vertex and instance ids
+  std::vector<Copy> vs_out;                     // position and varyings
+  std::vector<Copy> fs_in;                      // varyings, coord, primitive id
+  std::vector<ir::Reg> fs_front_facing;         // registers that get gl_FrontFacing
   std::vector<std::pair<ir::Reg, int>> fs_out;  // register, byte offset (colour or depth rows)
-  std::vector<ir::Reg> frag_color;            // gl_FragColor's four registers (written to every output)
+  std::vector<ir::Reg> frag_color;              // gl_FragColor's four registers (written to every output)
   gpu::RuntimeShape shape;
-  std::unique_ptr<JitCode> jit;               // native code, when LLVM compiled it
+  std::unique_ptr<JitCode> jit;  // native code, when LLVM compiled it
 };
 
 struct Program::Impl {
@@ -122,7 +122,8 @@ class Bound final : public gpu::RuntimeShader {
     for (const auto& [reg, off] : l_->fs_out) std::memcpy(out + off, r + reg, sizeof(LaneReg));
     if (!l_->frag_color.empty()) {
       for (int o = 0; o < l_->shape.outputs; ++o)
-        for (int c = 0; c < 4; ++c) std::memcpy(lanes.color[o][c], r[l_->frag_color[size_t(c)]].u, sizeof(LaneReg));
+        for (int c = 0; c < 4; ++c)
+          std::memcpy(lanes.color[o][c], r[l_->frag_color[size_t(c)]].u, sizeof(LaneReg));
     }
   }
 
@@ -150,8 +151,10 @@ class Bound final : public gpu::RuntimeShader {
 
 int locations_of(const Interface& f) {
   // An attribute takes a location per vector: per column of a matrix, per array element.
-  const int per = f.gl_type >= 0x8B5A && f.gl_type <= 0x8B5C ? (f.gl_type - 0x8B5A + 2)
-                  : (f.gl_type >= 0x8B65 && f.gl_type <= 0x8B6A) ? (f.gl_type <= 0x8B66 ? 2 : f.gl_type <= 0x8B68 ? 3 : 4)
+  const int per = f.gl_type >= 0x8B5A && f.gl_type <= 0x8B5C     ? (f.gl_type - 0x8B5A + 2)
+                  : (f.gl_type >= 0x8B65 && f.gl_type <= 0x8B6A) ? (f.gl_type <= 0x8B66   ? 2
+                                                                    : f.gl_type <= 0x8B68 ? 3
+                                                                                          : 4)
                                                                  : 1;
   return per * std::max(1, f.array_size);
 }
@@ -162,7 +165,8 @@ int builtin_attribute_location(const std::string& name) {
   if (name == "gl_Color") return kLocationColor;
   if (name == "gl_SecondaryColor") return kLocationSecondaryColor;
   if (name == "gl_FogCoord") return kLocationFogCoord;
-  if (name.rfind("gl_MultiTexCoord", 0) == 0 && name.size() == 17) return kLocationMultiTexCoord0 + (name[16] - '0');
+  if (name.rfind("gl_MultiTexCoord", 0) == 0 && name.size() == 17)
+    return kLocationMultiTexCoord0 + (name[16] - '0');
   return -1;
 }
 
@@ -174,7 +178,8 @@ std::string vertex_name_for(const std::string& fs_name) {
   return fs_name;
 }
 
-template <class T, class M> uint32_t offset_of(M T::*member) {
+template <class T, class M>
+uint32_t offset_of(M T::*member) {
   return uint32_t(reinterpret_cast<size_t>(&(reinterpret_cast<T*>(0)->*member)));
 }
 
@@ -183,7 +188,8 @@ template <class T, class M> uint32_t offset_of(M T::*member) {
 Program::Program() : impl_(std::make_unique<Impl>()) {}
 Program::~Program() = default;
 
-std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragment, const LinkOptions& options) {
+std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragment,
+                                       const LinkOptions& options) {
   std::shared_ptr<Program> p(new Program());
   Impl& m = *p->impl_;
   if (vertex.stage() != Stage::Vertex || fragment.stage() != Stage::Fragment) {
@@ -202,8 +208,8 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
 
   // Attributes: layout(location), then the application's bindings, then the lowest free
   // locations in declaration order; the compatibility attributes have fixed ones.
-  using gpu::VertexLanes;
   using gpu::FragmentLanes;
+  using gpu::VertexLanes;
   uint32_t used = 0;
   std::vector<Interface*> unplaced;
   auto place_attr = [&](Interface& a, int loc) {
@@ -232,8 +238,10 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
       continue;
     }
     auto it = options.attribute_locations.find(a.name);
-    if (it != options.attribute_locations.end()) place_attr(a, it->second);
-    else unplaced.push_back(&a);
+    if (it != options.attribute_locations.end())
+      place_attr(a, it->second);
+    else
+      unplaced.push_back(&a);
   }
   for (Interface* a : unplaced) {
     const int n = locations_of(*a);
@@ -257,8 +265,9 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
     const int per = a.components / std::max(1, vectors);
     for (int v = 0; v < vectors; ++v) {
       for (int c = 0; c < per; ++c) {
-        linked->vs_in.push_back({a.reg + ir::Reg(v * per + c),
-                                 offset_of(&VertexLanes::attr) + uint32_t(((a.location + v) * 4 + c) * ir::kLanes * 4)});
+        linked->vs_in.push_back(
+            {a.reg + ir::Reg(v * per + c),
+             offset_of(&VertexLanes::attr) + uint32_t(((a.location + v) * 4 + c) * ir::kLanes * 4)});
       }
       linked->shape.attributes |= 1u << (a.location + v);
     }
@@ -270,14 +279,16 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
   for (const Interface& o : vs.outputs) {
     if (o.name == "gl_Position") {
       for (int c = 0; c < 4; ++c)
-        linked->vs_out.push_back({o.reg + ir::Reg(c), offset_of(&VertexLanes::position) + uint32_t(c * ir::kLanes * 4)});
+        linked->vs_out.push_back(
+            {o.reg + ir::Reg(c), offset_of(&VertexLanes::position) + uint32_t(c * ir::kLanes * 4)});
     }
   }
   for (const Interface& i : fs.inputs) {
     if (i.block) continue;
     if (i.name == "gl_FragCoord") {
       for (int c = 0; c < 4; ++c)
-        linked->fs_in.push_back({i.reg + ir::Reg(c), offset_of(&FragmentLanes::coord) + uint32_t(c * ir::kLanes * 4)});
+        linked->fs_in.push_back(
+            {i.reg + ir::Reg(c), offset_of(&FragmentLanes::coord) + uint32_t(c * ir::kLanes * 4)});
       continue;
     }
     if (i.name == "gl_FrontFacing") {
@@ -288,7 +299,8 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
       linked->fs_in.push_back({i.reg, offset_of(&FragmentLanes::primitive_id)});
       continue;
     }
-    if (i.name == "gl_PointCoord") continue;  // read as zero: points are squares without sprite coordinates yet
+    if (i.name == "gl_PointCoord")
+      continue;  // read as zero: points are squares without sprite coordinates yet
     const std::string vname = vertex_name_for(i.name);
     const Interface* o = nullptr;
     for (const Interface& c : vs.outputs)
@@ -316,7 +328,8 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
     for (int c = 0; c < i.components; ++c) {
       const uint32_t off = offset_of(&VertexLanes::varyings) + uint32_t((slot + c) * ir::kLanes * 4);
       linked->vs_out.push_back({o->reg + ir::Reg(c), off});
-      linked->fs_in.push_back({i.reg + ir::Reg(c), offset_of(&FragmentLanes::varyings) + uint32_t((slot + c) * ir::kLanes * 4)});
+      linked->fs_in.push_back(
+          {i.reg + ir::Reg(c), offset_of(&FragmentLanes::varyings) + uint32_t((slot + c) * ir::kLanes * 4)});
       if (i.flat || i.base != Base::Float) linked->shape.flat |= uint64_t(1) << (slot + c);
       if (i.noperspective) linked->shape.noperspective |= uint64_t(1) << (slot + c);
     }
@@ -364,7 +377,8 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
     for (;; ++loc) {
       bool taken = false;
       for (const Interface& q : fs.outputs)
-        if (&q != o && q.location >= 0 && loc >= q.location && loc < q.location + std::max(1, q.array_size)) taken = true;
+        if (&q != o && q.location >= 0 && loc >= q.location && loc < q.location + std::max(1, q.array_size))
+          taken = true;
       if (!taken) break;
     }
     o->location = loc;
@@ -379,8 +393,9 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
     const int per = o.components / n;
     for (int e = 0; e < n; ++e)
       for (int c = 0; c < per; ++c)
-        linked->fs_out.push_back({o.reg + ir::Reg(e * per + c),
-                                  int(offset_of(&FragmentLanes::color)) + ((o.location + e) * 4 + c) * ir::kLanes * 4});
+        linked->fs_out.push_back(
+            {o.reg + ir::Reg(e * per + c),
+             int(offset_of(&FragmentLanes::color)) + ((o.location + e) * 4 + c) * ir::kLanes * 4});
     outputs = std::max(outputs, o.location + n);
     m.outputs.push_back({o.name, o.gl_type, std::max(1, o.array_size), o.location});
   }
@@ -425,7 +440,8 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
     for (const Copy& c : linked->vs_in) vio.in.push_back({c.reg, c.offset});
     for (const Copy& c : linked->vs_out) vio.out.push_back({c.reg, c.offset});
     for (const Copy& c : linked->fs_in) fio.in.push_back({c.reg, c.offset});
-    for (ir::Reg f : linked->fs_front_facing) fio.in_mask.push_back({f, offset_of(&FragmentLanes::front_facing)});
+    for (ir::Reg f : linked->fs_front_facing)
+      fio.in_mask.push_back({f, offset_of(&FragmentLanes::front_facing)});
     for (const auto& [reg, off] : linked->fs_out) fio.out.push_back({reg, uint32_t(off)});
     if (!linked->frag_color.empty())
       for (int o = 0; o < linked->shape.outputs; ++o)
@@ -460,7 +476,8 @@ void put_builtin(Program& p, const std::string& name, const float* v, int n) {
 void Program::set_compat_defaults() {
   const glm::mat4 id(1.0f);
   set_compat_matrices(id, id);
-  for (int i = 0; i < 8; ++i) put_builtin(*this, "gl_TextureMatrix[" + std::to_string(i) + "]", &id[0][0], 16);
+  for (int i = 0; i < 8; ++i)
+    put_builtin(*this, "gl_TextureMatrix[" + std::to_string(i) + "]", &id[0][0], 16);
   // GL 2.1 §2.14.1 Table 2.10 and §6.2: the initial lighting state.
   const float black[4] = {0, 0, 0, 1}, white[4] = {1, 1, 1, 1}, ambient[4] = {0.2f, 0.2f, 0.2f, 1};
   const float diffuse[4] = {0.8f, 0.8f, 0.8f, 1}, zero4[4] = {0, 0, 0, 0};
@@ -548,13 +565,15 @@ int Program::uniform_location(std::string_view name) const {
   const Impl& m = *impl_;
   if (!m.ok) return -1;
   auto it = m.uniform_names.find(name);
-  if (it != m.uniform_names.end()) return m.layout.slots[m.locations[size_t(it->second)].slot].active ? it->second : -1;
+  if (it != m.uniform_names.end())
+    return m.layout.slots[m.locations[size_t(it->second)].slot].active ? it->second : -1;
   // "name[i]": element i of an array slot.
   if (!name.empty() && name.back() == ']') {
     const size_t open = name.rfind('[');
     if (open == std::string_view::npos) return -1;
     const std::string_view idx = name.substr(open + 1, name.size() - open - 2);
-    if (idx.empty() || idx.size() > 9 || idx.find_first_not_of("0123456789") != std::string_view::npos) return -1;
+    if (idx.empty() || idx.size() > 9 || idx.find_first_not_of("0123456789") != std::string_view::npos)
+      return -1;
     const int i = std::stoi(std::string(idx));
     auto b = m.uniform_names.find(name.substr(0, open));
     if (b == m.uniform_names.end()) return -1;
@@ -584,8 +603,10 @@ bool store_uniform(Program::Impl& m, int location, const T* data, int components
     for (int c = 0; c < components; ++c) {
       const T v = data[size_t(e * components + c)];
       uint32_t w;
-      if (u.base == Base::Bool) w = v != T(0) ? ~0u : 0u;
-      else std::memcpy(&w, &v, 4);
+      if (u.base == Base::Bool)
+        w = v != T(0) ? ~0u : 0u;
+      else
+        std::memcpy(&w, &v, 4);
       m.values[u.word + uint32_t((element + e) * components + c)] = w;
     }
   }
@@ -619,10 +640,18 @@ bool Program::get_uniform(int location, float* out) const {
   const UniformSlot& u = m.layout.slots[m.locations[size_t(location)].slot];
   for (int c = 0; c < u.components; ++c) {
     switch (u.base) {
-      case Base::Float: std::memcpy(&out[c], &w[c], 4); break;
-      case Base::Int: out[c] = float(int32_t(w[c])); break;
-      case Base::Uint: out[c] = float(w[c]); break;
-      case Base::Bool: out[c] = w[c] ? 1.0f : 0.0f; break;
+      case Base::Float:
+        std::memcpy(&out[c], &w[c], 4);
+        break;
+      case Base::Int:
+        out[c] = float(int32_t(w[c]));
+        break;
+      case Base::Uint:
+        out[c] = float(w[c]);
+        break;
+      case Base::Bool:
+        out[c] = w[c] ? 1.0f : 0.0f;
+        break;
     }
   }
   return true;
@@ -642,13 +671,15 @@ bool Program::set_uniform_block_binding(int index, int binding) {
   return true;
 }
 
-std::shared_ptr<const gpu::RuntimeShader> Program::bind(std::span<const TextureBinding> units,
-                                                        std::span<const BufferBinding> uniform_buffers) const {
+std::shared_ptr<const gpu::RuntimeShader> Program::bind(
+    std::span<const TextureBinding> units, std::span<const BufferBinding> uniform_buffers) const {
   const Impl& m = *impl_;
   if (!m.ok) throw gpu::Error("draw: the program is not linked: " + m.log);
   std::vector<TextureUnit> u;
   u.reserve(units.size());
-  for (const TextureBinding& b : units) u.push_back({b.texture_2d, b.texture_cube, b.sampler, b.texture_3d, b.texture_2d_array, b.texture_buffer});
+  for (const TextureBinding& b : units)
+    u.push_back(
+        {b.texture_2d, b.texture_cube, b.sampler, b.texture_3d, b.texture_2d_array, b.texture_buffer});
   std::vector<uint32_t> values = m.values;
   for (size_t i = 0; i < m.blocks.size(); ++i) {
     const UniformBlockLayout& bl = m.layout.blocks[i];

@@ -139,7 +139,8 @@ Layout layoutOf(const void* data, const PixelStore& ps, int width, int component
   Layout l;
   l.elementBytes = elementBytes;
   l.groupBytes = static_cast<size_t>(components) * elementBytes;
-  const size_t groupsPerRow = ps.rowLength > 0 ? static_cast<size_t>(ps.rowLength) : static_cast<size_t>(width);
+  const size_t groupsPerRow =
+      ps.rowLength > 0 ? static_cast<size_t>(ps.rowLength) : static_cast<size_t>(width);
   size_t row = groupsPerRow * l.groupBytes;
   const size_t align = ps.alignment > 0 ? static_cast<size_t>(ps.alignment) : 1;
   // Rows start on multiples of the alignment when it exceeds the element size.
@@ -173,13 +174,20 @@ void storeElement(unsigned char* p, T v, bool swap) {
 // Reads an element as a double holding its value in the units of its own type.
 double readValue(const unsigned char* p, GLenum type, bool swap) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: return *p;
-    case GL_BYTE: return static_cast<signed char>(*p);
-    case GL_UNSIGNED_SHORT: return loadElement<uint16_t>(p, swap);
-    case GL_SHORT: return loadElement<int16_t>(p, swap);
-    case GL_UNSIGNED_INT: return loadElement<uint32_t>(p, swap);
-    case GL_INT: return loadElement<int32_t>(p, swap);
-    default: return loadElement<float>(p, swap);
+    case GL_UNSIGNED_BYTE:
+      return *p;
+    case GL_BYTE:
+      return static_cast<signed char>(*p);
+    case GL_UNSIGNED_SHORT:
+      return loadElement<uint16_t>(p, swap);
+    case GL_SHORT:
+      return loadElement<int16_t>(p, swap);
+    case GL_UNSIGNED_INT:
+      return loadElement<uint32_t>(p, swap);
+    case GL_INT:
+      return loadElement<int32_t>(p, swap);
+    default:
+      return loadElement<float>(p, swap);
   }
 }
 
@@ -189,12 +197,18 @@ double readValue(const unsigned char* p, GLenum type, bool swap) {
 
 uint16_t widen16(const unsigned char* p, GLenum type, bool swap) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: return static_cast<uint16_t>(*p * 257);
-    case GL_BYTE: return static_cast<uint16_t>(static_cast<signed char>(*p) * 516);
-    case GL_UNSIGNED_SHORT: return loadElement<uint16_t>(p, swap);
-    case GL_SHORT: return static_cast<uint16_t>(loadElement<int16_t>(p, swap) * 2);
-    case GL_UNSIGNED_INT: return static_cast<uint16_t>(loadElement<uint32_t>(p, swap) >> 16);
-    case GL_INT: return static_cast<uint16_t>(loadElement<int32_t>(p, swap) >> 15);
+    case GL_UNSIGNED_BYTE:
+      return static_cast<uint16_t>(*p * 257);
+    case GL_BYTE:
+      return static_cast<uint16_t>(static_cast<signed char>(*p) * 516);
+    case GL_UNSIGNED_SHORT:
+      return loadElement<uint16_t>(p, swap);
+    case GL_SHORT:
+      return static_cast<uint16_t>(loadElement<int16_t>(p, swap) * 2);
+    case GL_UNSIGNED_INT:
+      return static_cast<uint16_t>(loadElement<uint32_t>(p, swap) >> 16);
+    case GL_INT:
+      return static_cast<uint16_t>(loadElement<int32_t>(p, swap) >> 15);
     default: {
       const float f = loadElement<float>(p, swap);
       const float scaled = f * 65535.0f;
@@ -208,13 +222,27 @@ uint16_t widen16(const unsigned char* p, GLenum type, bool swap) {
 
 void narrow16(unsigned char* p, uint16_t v, GLenum type, bool swap) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: *p = static_cast<unsigned char>(v >> 8); break;
-    case GL_BYTE: *p = static_cast<unsigned char>(static_cast<signed char>(v >> 9)); break;
-    case GL_UNSIGNED_SHORT: storeElement<uint16_t>(p, v, swap); break;
-    case GL_SHORT: storeElement<int16_t>(p, static_cast<int16_t>(v >> 1), swap); break;
-    case GL_UNSIGNED_INT: storeElement<uint32_t>(p, static_cast<uint32_t>(v) * 65537u, swap); break;
-    case GL_INT: storeElement<int32_t>(p, static_cast<int32_t>((static_cast<uint32_t>(v) * 65537u) >> 1), swap); break;
-    default: storeElement<float>(p, static_cast<float>(v) / 65535.0f, swap); break;
+    case GL_UNSIGNED_BYTE:
+      *p = static_cast<unsigned char>(v >> 8);
+      break;
+    case GL_BYTE:
+      *p = static_cast<unsigned char>(static_cast<signed char>(v >> 9));
+      break;
+    case GL_UNSIGNED_SHORT:
+      storeElement<uint16_t>(p, v, swap);
+      break;
+    case GL_SHORT:
+      storeElement<int16_t>(p, static_cast<int16_t>(v >> 1), swap);
+      break;
+    case GL_UNSIGNED_INT:
+      storeElement<uint32_t>(p, static_cast<uint32_t>(v) * 65537u, swap);
+      break;
+    case GL_INT:
+      storeElement<int32_t>(p, static_cast<int32_t>((static_cast<uint32_t>(v) * 65537u) >> 1), swap);
+      break;
+    default:
+      storeElement<float>(p, static_cast<float>(v) / 65535.0f, swap);
+      break;
   }
 }
 
@@ -319,7 +347,8 @@ Image unpackImage(const void* data, const PixelStore& ps, int width, int height,
     const unsigned char* row = l.base + static_cast<size_t>(y) * l.rowBytes;
     for (int x = 0; x < width; x++)
       for (int k = 0; k < comps; k++)
-        img.v[o++] = readValue(row + x * l.groupBytes + static_cast<size_t>(k) * l.elementBytes, type, l.swap);
+        img.v[o++] =
+            readValue(row + x * l.groupBytes + static_cast<size_t>(k) * l.elementBytes, type, l.swap);
   }
   return img;
 }
@@ -395,13 +424,27 @@ std::vector<unsigned char> packImage(const Image& img, GLenum type) {
     unsigned char* p = out.data() + i * es;
     const double v = img.v[i];
     switch (type) {
-      case GL_UNSIGNED_BYTE: *p = static_cast<unsigned char>(std::clamp(v, 0.0, 255.0)); break;
-      case GL_BYTE: *p = static_cast<unsigned char>(static_cast<signed char>(std::clamp(v, -128.0, 127.0))); break;
-      case GL_UNSIGNED_SHORT: storeElement<uint16_t>(p, static_cast<uint16_t>(std::clamp(v, 0.0, 65535.0)), false); break;
-      case GL_SHORT: storeElement<int16_t>(p, static_cast<int16_t>(std::clamp(v, -32768.0, 32767.0)), false); break;
-      case GL_UNSIGNED_INT: storeElement<uint32_t>(p, static_cast<uint32_t>(std::clamp(v, 0.0, 4294967295.0)), false); break;
-      case GL_INT: storeElement<int32_t>(p, static_cast<int32_t>(std::clamp(v, -2147483648.0, 2147483647.0)), false); break;
-      default: storeElement<float>(p, static_cast<float>(v), false); break;
+      case GL_UNSIGNED_BYTE:
+        *p = static_cast<unsigned char>(std::clamp(v, 0.0, 255.0));
+        break;
+      case GL_BYTE:
+        *p = static_cast<unsigned char>(static_cast<signed char>(std::clamp(v, -128.0, 127.0)));
+        break;
+      case GL_UNSIGNED_SHORT:
+        storeElement<uint16_t>(p, static_cast<uint16_t>(std::clamp(v, 0.0, 65535.0)), false);
+        break;
+      case GL_SHORT:
+        storeElement<int16_t>(p, static_cast<int16_t>(std::clamp(v, -32768.0, 32767.0)), false);
+        break;
+      case GL_UNSIGNED_INT:
+        storeElement<uint32_t>(p, static_cast<uint32_t>(std::clamp(v, 0.0, 4294967295.0)), false);
+        break;
+      case GL_INT:
+        storeElement<int32_t>(p, static_cast<int32_t>(std::clamp(v, -2147483648.0, 2147483647.0)), false);
+        break;
+      default:
+        storeElement<float>(p, static_cast<float>(v), false);
+        break;
     }
   }
   return out;
@@ -550,10 +593,14 @@ void transform(const double m[16], const double v[4], double out[4]) {
 // Inverse by cofactors (adjugate over determinant); false if singular.
 bool invert(const double m[16], double inv[16]) {
   // 2x2 minors of the top two rows and of the bottom two rows.
-  const double a0 = m[0] * m[5] - m[4] * m[1], a1 = m[0] * m[9] - m[8] * m[1], a2 = m[0] * m[13] - m[12] * m[1];
-  const double a3 = m[4] * m[9] - m[8] * m[5], a4 = m[4] * m[13] - m[12] * m[5], a5 = m[8] * m[13] - m[12] * m[9];
-  const double b0 = m[2] * m[7] - m[6] * m[3], b1 = m[2] * m[11] - m[10] * m[3], b2 = m[2] * m[15] - m[14] * m[3];
-  const double b3 = m[6] * m[11] - m[10] * m[7], b4 = m[6] * m[15] - m[14] * m[7], b5 = m[10] * m[15] - m[14] * m[11];
+  const double a0 = m[0] * m[5] - m[4] * m[1], a1 = m[0] * m[9] - m[8] * m[1],
+               a2 = m[0] * m[13] - m[12] * m[1];
+  const double a3 = m[4] * m[9] - m[8] * m[5], a4 = m[4] * m[13] - m[12] * m[5],
+               a5 = m[8] * m[13] - m[12] * m[9];
+  const double b0 = m[2] * m[7] - m[6] * m[3], b1 = m[2] * m[11] - m[10] * m[3],
+               b2 = m[2] * m[15] - m[14] * m[3];
+  const double b3 = m[6] * m[11] - m[10] * m[7], b4 = m[6] * m[15] - m[14] * m[7],
+               b5 = m[10] * m[15] - m[14] * m[11];
   const double det = a0 * b5 - a1 * b4 + a2 * b3 + a3 * b2 - a4 * b1 + a5 * b0;
   if (det == 0.0) return false;
   const double d = 1.0 / det;
@@ -605,21 +652,36 @@ extern "C" {
 
 const GLubyte* GLAPIENTRY gluErrorString(GLenum error) {
   switch (error) {
-    case GL_NO_ERROR: return str("no error");
-    case GL_INVALID_ENUM: return str("invalid enumerant");
-    case GL_INVALID_VALUE: return str("invalid value");
-    case GL_INVALID_OPERATION: return str("invalid operation");
-    case GL_STACK_OVERFLOW: return str("stack overflow");
-    case GL_STACK_UNDERFLOW: return str("stack underflow");
-    case GL_OUT_OF_MEMORY: return str("out of memory");
-    case 0x0506: return str("invalid framebuffer operation");  // GL_INVALID_FRAMEBUFFER_OPERATION
-    case 0x8031: return str("table too large");                // GL_TABLE_TOO_LARGE
-    case GLU_INVALID_ENUM: return str("invalid enumerant");
-    case GLU_INVALID_VALUE: return str("invalid value");
-    case GLU_OUT_OF_MEMORY: return str("out of memory");
-    case GLU_INCOMPATIBLE_GL_VERSION: return str("incompatible gl version");
-    case GLU_INVALID_OPERATION: return str("invalid operation");
-    default: break;
+    case GL_NO_ERROR:
+      return str("no error");
+    case GL_INVALID_ENUM:
+      return str("invalid enumerant");
+    case GL_INVALID_VALUE:
+      return str("invalid value");
+    case GL_INVALID_OPERATION:
+      return str("invalid operation");
+    case GL_STACK_OVERFLOW:
+      return str("stack overflow");
+    case GL_STACK_UNDERFLOW:
+      return str("stack underflow");
+    case GL_OUT_OF_MEMORY:
+      return str("out of memory");
+    case 0x0506:
+      return str("invalid framebuffer operation");  // GL_INVALID_FRAMEBUFFER_OPERATION
+    case 0x8031:
+      return str("table too large");  // GL_TABLE_TOO_LARGE
+    case GLU_INVALID_ENUM:
+      return str("invalid enumerant");
+    case GLU_INVALID_VALUE:
+      return str("invalid value");
+    case GLU_OUT_OF_MEMORY:
+      return str("out of memory");
+    case GLU_INCOMPATIBLE_GL_VERSION:
+      return str("incompatible gl version");
+    case GLU_INVALID_OPERATION:
+      return str("invalid operation");
+    default:
+      break;
   }
   // Tessellator errors (GLU 1.3 section 5.7).
   static const char* const tess[] = {
@@ -677,9 +739,12 @@ const GLubyte* GLAPIENTRY gluErrorString(GLenum error) {
 
 const GLubyte* GLAPIENTRY gluGetString(GLenum name) {
   switch (name) {
-    case GLU_VERSION: return str("1.3");
-    case GLU_EXTENSIONS: return str("");
-    default: return nullptr;
+    case GLU_VERSION:
+      return str("1.3");
+    case GLU_EXTENSIONS:
+      return str("");
+    default:
+      return nullptr;
   }
 }
 
@@ -784,9 +849,10 @@ GLint GLAPIENTRY gluUnProject(GLdouble winX, GLdouble winY, GLdouble winZ, const
 }
 
 // Section 4.4: the same for a given clip w and depth range; the result is not divided by w.
-GLint GLAPIENTRY gluUnProject4(GLdouble winX, GLdouble winY, GLdouble winZ, GLdouble clipW, const GLdouble* model,
-                               const GLdouble* proj, const GLint* view, GLdouble nearVal, GLdouble farVal,
-                               GLdouble* objX, GLdouble* objY, GLdouble* objZ, GLdouble* objW) {
+GLint GLAPIENTRY gluUnProject4(GLdouble winX, GLdouble winY, GLdouble winZ, GLdouble clipW,
+                               const GLdouble* model, const GLdouble* proj, const GLint* view,
+                               GLdouble nearVal, GLdouble farVal, GLdouble* objX, GLdouble* objY,
+                               GLdouble* objZ, GLdouble* objW) {
   double pm[16], inv[16];
   multiply(proj, model, pm);
   if (!invert(pm, inv)) return GL_FALSE;
@@ -826,7 +892,8 @@ GLint GLAPIENTRY gluScaleImage(GLenum format, GLsizei wIn, GLsizei hIn, GLenum t
       unsigned char* row = base + static_cast<size_t>(y) * l.rowBytes;
       for (int x = 0; x < wOut; x++)
         for (int k = 0; k < comps; k++)
-          narrow16(row + x * l.groupBytes + static_cast<size_t>(k) * l.elementBytes, out[i++], typeOut, l.swap);
+          narrow16(row + x * l.groupBytes + static_cast<size_t>(k) * l.elementBytes, out[i++], typeOut,
+                   l.swap);
     }
   } catch (const std::bad_alloc&) {
     return GLU_OUT_OF_MEMORY;
@@ -844,8 +911,8 @@ GLint GLAPIENTRY gluBuild1DMipmapLevels(GLenum target, GLint internalFormat, GLs
   return build1DCore(target, internalFormat, width, width, format, type, level, base, max, data);
 }
 
-GLint GLAPIENTRY gluBuild1DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLenum format, GLenum type,
-                                   const void* data) {
+GLint GLAPIENTRY gluBuild1DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLenum format,
+                                   GLenum type, const void* data) {
   if (const GLint rc = checkMipmapArgs(format, type)) return rc;
   if (width < 1) return GLU_INVALID_VALUE;
   int newWidth = 0, newHeight = 0;
@@ -861,7 +928,8 @@ GLint GLAPIENTRY gluBuild2DMipmapLevels(GLenum target, GLint internalFormat, GLs
   if (width < 1 || height < 1) return GLU_INVALID_VALUE;
   const int levels = std::max(log2Exact(width), log2Exact(height)) + level;
   if (!legalLevels(level, base, max, levels)) return GLU_INVALID_VALUE;
-  return build2DCore(target, internalFormat, width, height, width, height, format, type, level, base, max, data);
+  return build2DCore(target, internalFormat, width, height, width, height, format, type, level, base, max,
+                     data);
 }
 
 GLint GLAPIENTRY gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height,
@@ -871,7 +939,8 @@ GLint GLAPIENTRY gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei 
   int newWidth = 0, newHeight = 0;
   closestFit(width, height, &newWidth, &newHeight);
   const int levels = std::max(floorLog2(newWidth), floorLog2(newHeight));
-  return build2DCore(target, internalFormat, width, height, newWidth, newHeight, format, type, 0, 0, levels, data);
+  return build2DCore(target, internalFormat, width, height, newWidth, newHeight, format, type, 0, 0, levels,
+                     data);
 }
 
 }  // extern "C"

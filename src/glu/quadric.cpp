@@ -106,8 +106,8 @@ void GLAPIENTRY gluQuadricDrawStyle(GLUquadric* q, GLenum style) {
 // ---------------------------------------------------------------------------------------------
 // Section 6.6: a cylinder (or cone) around z from z = 0 (baseRadius) to z = height (topRadius),
 // in `slices` subdivisions around z and `stacks` along it.
-void GLAPIENTRY gluCylinder(GLUquadric* q, GLdouble baseRadius, GLdouble topRadius, GLdouble height, GLint slices,
-                            GLint stacks) {
+void GLAPIENTRY gluCylinder(GLUquadric* q, GLdouble baseRadius, GLdouble topRadius, GLdouble height,
+                            GLint slices, GLint stacks) {
   if (slices > kMaxDivisions) slices = kMaxDivisions;
   if (slices < 2 || stacks < 1 || baseRadius < 0.0 || topRadius < 0.0 || height < 0.0) {
     quadricError(q, GLU_INVALID_VALUE);
@@ -124,7 +124,8 @@ void GLAPIENTRY gluCylinder(GLUquadric* q, GLdouble baseRadius, GLdouble topRadi
   const float nz = dr / len;
   const float nxy = static_cast<float>(height / len) * (outside ? 1.0f : -1.0f);
 
-  const Circle pos = circle(slices, [&](int i) { return 2 * kPi * i / slices; }, true);
+  const Circle pos = circle(
+      slices, [&](int i) { return 2 * kPi * i / slices; }, true);
   // Smooth normals point the way of the vertices; flat normals the way of the middle of each
   // face (half a slice back), given with the face's last edge. The products are rounded once,
   // from the double-precision sine and cosine of the single-precision angle.
@@ -143,9 +144,7 @@ void GLAPIENTRY gluCylinder(GLUquadric* q, GLdouble baseRadius, GLdouble topRadi
   fc[slices] = fc[0];
 
   auto z = [&](int j) { return static_cast<float>(j * height / stacks); };
-  auto radius = [&](int j) {
-    return static_cast<float>(baseRadius - dr * (static_cast<float>(j) / stacks));
-  };
+  auto radius = [&](int j) { return static_cast<float>(baseRadius - dr * (static_cast<float>(j) / stacks)); };
   auto s = [&](int i) { return 1 - static_cast<float>(i) / slices; };
   auto t = [&](int j) { return static_cast<float>(j) / stacks; };
   auto vertex = [&](int i, int j) {
@@ -154,8 +153,10 @@ void GLAPIENTRY gluCylinder(GLUquadric* q, GLdouble baseRadius, GLdouble topRadi
     glVertex3f(r * pos.s[i], r * pos.c[i], z(j));
   };
   auto normal = [&](int i) {
-    if (q->normals == GLU_FLAT) glNormal3f(fs[i], fc[i], nz);
-    else if (q->normals == GLU_SMOOTH) glNormal3f(ns[i], nc[i], nz);
+    if (q->normals == GLU_FLAT)
+      glNormal3f(fs[i], fc[i], nz);
+    else if (q->normals == GLU_SMOOTH)
+      glNormal3f(ns[i], nc[i], nz);
   };
 
   switch (q->drawStyle) {
@@ -241,7 +242,8 @@ void GLAPIENTRY gluPartialDisk(GLUquadric* q, GLdouble innerRadius, GLdouble out
   const float dr = static_cast<float>(outerRadius - innerRadius);
   const float start = static_cast<float>(startAngle / 180.0 * kPi);
   const double step = kPi * sweepAngle / 180.0;
-  const Circle a = circle(slices, [&](int i) { return start + step * i / slices; }, full);
+  const Circle a = circle(
+      slices, [&](int i) { return start + step * i / slices; }, full);
   const bool outside = q->orientation == GLU_OUTSIDE;
 
   if (q->normals != GLU_NONE) glNormal3f(0.0f, 0.0f, outside ? 1.0f : -1.0f);
@@ -299,7 +301,8 @@ void GLAPIENTRY gluPartialDisk(GLUquadric* q, GLdouble innerRadius, GLdouble out
         glBegin(GL_LINE_STRIP);
         for (int i = 0; i <= slices; i++) {
           if (q->texture) glTexCoord2f(a.s[i] / 2 + 0.5f, a.c[i] / 2 + 0.5f);
-          glVertex3f(static_cast<float>(innerRadius * a.s[i]), static_cast<float>(innerRadius * a.c[i]), 0.0f);
+          glVertex3f(static_cast<float>(innerRadius * a.s[i]), static_cast<float>(innerRadius * a.c[i]),
+                     0.0f);
         }
         glEnd();
         break;
@@ -339,7 +342,8 @@ void GLAPIENTRY gluPartialDisk(GLUquadric* q, GLdouble innerRadius, GLdouble out
 }
 
 // Section 6.7: a full disk.
-void GLAPIENTRY gluDisk(GLUquadric* q, GLdouble innerRadius, GLdouble outerRadius, GLint slices, GLint loops) {
+void GLAPIENTRY gluDisk(GLUquadric* q, GLdouble innerRadius, GLdouble outerRadius, GLint slices,
+                        GLint loops) {
   gluPartialDisk(q, innerRadius, outerRadius, slices, loops, 0.0, 360.0);
 }
 
@@ -358,8 +362,10 @@ void GLAPIENTRY gluSphere(GLUquadric* q, GLdouble radius, GLint slices, GLint st
 
   // Around z (index i): positions and smooth normals at the slice edges, flat normals half a
   // slice back.
-  const Circle ring = circle(slices, [&](int i) { return 2 * kPi * i / slices; }, true);
-  const Circle ringFlat = circle(slices, [&](int i) { return 2 * kPi * (i - 0.5) / slices; }, true);
+  const Circle ring = circle(
+      slices, [&](int i) { return 2 * kPi * i / slices; }, true);
+  const Circle ringFlat = circle(
+      slices, [&](int i) { return 2 * kPi * (i - 0.5) / slices; }, true);
   // Along z (index j): the polar angle from +z.
   std::vector<float> rs(stacks + 1), rz(stacks + 1), ns(stacks + 1), nz(stacks + 1), fs(stacks + 1),
       fz(stacks + 1);
@@ -398,14 +404,18 @@ void GLAPIENTRY gluSphere(GLUquadric* q, GLdouble radius, GLint slices, GLint st
         glVertex3f(0.0f, 0.0f, static_cast<float>(radius));
         if (outside) {
           for (int i = slices; i >= 0; i--) {
-            if (q->normals == GLU_SMOOTH) smoothNormal(i, 1);
-            else if (q->normals == GLU_FLAT && i != slices) flatNormal(i + 1, 1);
+            if (q->normals == GLU_SMOOTH)
+              smoothNormal(i, 1);
+            else if (q->normals == GLU_FLAT && i != slices)
+              flatNormal(i + 1, 1);
             vertex(i, 1);
           }
         } else {
           for (int i = 0; i <= slices; i++) {
-            if (q->normals == GLU_SMOOTH) smoothNormal(i, 1);
-            else if (q->normals == GLU_FLAT) flatNormal(i, 1);
+            if (q->normals == GLU_SMOOTH)
+              smoothNormal(i, 1);
+            else if (q->normals == GLU_FLAT)
+              flatNormal(i, 1);
             vertex(i, 1);
           }
         }
@@ -421,14 +431,18 @@ void GLAPIENTRY gluSphere(GLUquadric* q, GLdouble radius, GLint slices, GLint st
         glVertex3f(0.0f, 0.0f, static_cast<float>(-radius));
         if (outside) {
           for (int i = 0; i <= slices; i++) {
-            if (q->normals == GLU_SMOOTH) smoothNormal(i, stacks - 1);
-            else if (q->normals == GLU_FLAT) flatNormal(i, stacks);
+            if (q->normals == GLU_SMOOTH)
+              smoothNormal(i, stacks - 1);
+            else if (q->normals == GLU_FLAT)
+              flatNormal(i, stacks);
             vertex(i, stacks - 1);
           }
         } else {
           for (int i = slices; i >= 0; i--) {
-            if (q->normals == GLU_SMOOTH) smoothNormal(i, stacks - 1);
-            else if (q->normals == GLU_FLAT && i != slices) flatNormal(i + 1, stacks);
+            if (q->normals == GLU_SMOOTH)
+              smoothNormal(i, stacks - 1);
+            else if (q->normals == GLU_FLAT && i != slices)
+              flatNormal(i + 1, stacks);
             vertex(i, stacks - 1);
           }
         }
@@ -443,8 +457,10 @@ void GLAPIENTRY gluSphere(GLUquadric* q, GLdouble radius, GLint slices, GLint st
         for (int i = 0; i <= slices; i++) {
           if (q->normals == GLU_SMOOTH) smoothNormal(i, a);
           texVertex(i, a);
-          if (q->normals == GLU_SMOOTH) smoothNormal(i, b);
-          else if (q->normals == GLU_FLAT) flatNormal(i, j + 1);
+          if (q->normals == GLU_SMOOTH)
+            smoothNormal(i, b);
+          else if (q->normals == GLU_FLAT)
+            flatNormal(i, j + 1);
           texVertex(i, b);
         }
         glEnd();
@@ -470,8 +486,10 @@ void GLAPIENTRY gluSphere(GLUquadric* q, GLdouble radius, GLint slices, GLint st
       for (int j = 1; j < stacks; j++) {
         glBegin(GL_LINE_STRIP);
         for (int i = 0; i <= slices; i++) {
-          if (q->normals == GLU_FLAT) glNormal3f(ringFlat.s[i] * ns[j], ringFlat.c[i] * ns[j], nz[j]);
-          else if (q->normals == GLU_SMOOTH) smoothNormal(i, j);
+          if (q->normals == GLU_FLAT)
+            glNormal3f(ringFlat.s[i] * ns[j], ringFlat.c[i] * ns[j], nz[j]);
+          else if (q->normals == GLU_SMOOTH)
+            smoothNormal(i, j);
           texVertex(i, j);
         }
         glEnd();
@@ -479,9 +497,12 @@ void GLAPIENTRY gluSphere(GLUquadric* q, GLdouble radius, GLint slices, GLint st
       for (int i = 0; i < slices; i++) {
         glBegin(GL_LINE_STRIP);
         for (int j = 0; j <= stacks; j++) {
-          if (q->normals == GLU_FLAT) glNormal3f(ring.s[i] * fs[j], ring.c[i] * fs[j], fz[j]);
-          else if (q->normals == GLU_SMOOTH) smoothNormal(i, j);
-          if (q->texture) glTexCoord2f(1 - static_cast<float>(i) / slices, 1 - static_cast<float>(j) / stacks);
+          if (q->normals == GLU_FLAT)
+            glNormal3f(ring.s[i] * fs[j], ring.c[i] * fs[j], fz[j]);
+          else if (q->normals == GLU_SMOOTH)
+            smoothNormal(i, j);
+          if (q->texture)
+            glTexCoord2f(1 - static_cast<float>(i) / slices, 1 - static_cast<float>(j) / stacks);
           glVertex3f(ring.s[i] * rs[j], ring.c[i] * rs[j], rz[j]);
         }
         glEnd();

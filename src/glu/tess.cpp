@@ -197,12 +197,17 @@ bool lexLess(const Vert& a, const Vert& b) { return a.s < b.s || (a.s == b.s && 
 
 bool windingInside(GLenum rule, int w) {
   switch (rule) {
-    case GLU_TESS_WINDING_NONZERO: return w != 0;
-    case GLU_TESS_WINDING_POSITIVE: return w > 0;
-    case GLU_TESS_WINDING_NEGATIVE: return w < 0;
-    case GLU_TESS_WINDING_ABS_GEQ_TWO: return w >= 2 || w <= -2;
+    case GLU_TESS_WINDING_NONZERO:
+      return w != 0;
+    case GLU_TESS_WINDING_POSITIVE:
+      return w > 0;
+    case GLU_TESS_WINDING_NEGATIVE:
+      return w < 0;
+    case GLU_TESS_WINDING_ABS_GEQ_TWO:
+      return w >= 2 || w <= -2;
     case GLU_TESS_WINDING_ODD:
-    default: return (w & 1) != 0;
+    default:
+      return (w & 1) != 0;
   }
 }
 
@@ -248,9 +253,9 @@ class Tessellation {
   bool nearSegment(int p, int a, int b, double o) const;
   // Step 4.
   struct SEdge {
-    int lo, hi;   // lo before hi in the sweep order
-    int delta;    // winding change from below (right of lo -> hi) to above (left of it)
-    bool flag;    // boundary edge: inside on one side only
+    int lo, hi;  // lo before hi in the sweep order
+    int delta;   // winding change from below (right of lo -> hi) to above (left of it)
+    bool flag;   // boundary edge: inside on one side only
   };
   struct Region {
     int wind = 0;
@@ -260,7 +265,7 @@ class Tessellation {
     int poly2 = -1;
   };
   struct Active {
-    int edge;  // -1 for the sentinel at the bottom
+    int edge;    // -1 for the sentinel at the bottom
     Region reg;  // the region above the edge
   };
   enum Chain : signed char { kStart = 0, kLower = 1, kUpper = 2 };
@@ -300,10 +305,10 @@ class Tessellation {
   std::vector<int> gridNext_;
 
   std::vector<SEdge> sedges_;
-  std::vector<int> order_;        // vertices in sweep order
-  std::vector<int> rightStart_;   // per vertex: its edges to later vertices, sorted bottom to top
+  std::vector<int> order_;       // vertices in sweep order
+  std::vector<int> rightStart_;  // per vertex: its edges to later vertices, sorted bottom to top
   std::vector<int> rightEdges_;
-  std::vector<int> leftCount_;    // per vertex: number of edges from earlier vertices
+  std::vector<int> leftCount_;  // per vertex: number of edges from earlier vertices
   std::vector<Active> status_;
   std::vector<Poly> polys_;
   std::vector<Triangle> tris_;
@@ -573,10 +578,22 @@ void Tessellation::testPair(std::size_t i, std::size_t j, std::vector<std::vecto
   // Nearly collinear overlapping edges end up split at each other's ends (and merged later)
   // instead of producing ill-conditioned crossings.
   bool touched = false;
-  if (nearSegment(c, a, b, o1)) { splits[i].push_back(c); touched = true; }
-  if (nearSegment(d, a, b, o2)) { splits[i].push_back(d); touched = true; }
-  if (nearSegment(a, c, d, o3)) { splits[j].push_back(a); touched = true; }
-  if (nearSegment(b, c, d, o4)) { splits[j].push_back(b); touched = true; }
+  if (nearSegment(c, a, b, o1)) {
+    splits[i].push_back(c);
+    touched = true;
+  }
+  if (nearSegment(d, a, b, o2)) {
+    splits[i].push_back(d);
+    touched = true;
+  }
+  if (nearSegment(a, c, d, o3)) {
+    splits[j].push_back(a);
+    touched = true;
+  }
+  if (nearSegment(b, c, d, o4)) {
+    splits[j].push_back(b);
+    touched = true;
+  }
   if (touched) return;
   if ((o1 >= 0 && o2 >= 0) || (o1 <= 0 && o2 <= 0)) return;
   if ((o3 >= 0 && o4 >= 0) || (o3 <= 0 && o4 <= 0)) return;
@@ -603,8 +620,8 @@ void Tessellation::testPair(std::size_t i, std::size_t j, std::vector<std::vecto
     nv.s = s;
     nv.t = t;
     for (int k = 0; k < 3; ++k)
-      nv.xyz[k] = 0.5 * ((1.0 - tp) * A.xyz[k] + tp * B.xyz[k]) +
-                  0.5 * ((1.0 - up) * C.xyz[k] + up * D.xyz[k]);
+      nv.xyz[k] =
+          0.5 * ((1.0 - tp) * A.xyz[k] + tp * B.xyz[k]) + 0.5 * ((1.0 - up) * C.xyz[k] + up * D.xyz[k]);
     void* data[4] = {A.data, B.data, C.data, D.data};
     nv.data = hasCombine(tess_) ? callCombine(tess_, nv.xyz, data, weights) : nullptr;
     if (!nv.data && !fatal_) {
@@ -784,8 +801,9 @@ void Tessellation::buildGraph() {
   std::vector<int> rank(nv);
   order_.resize(nv);
   for (int i = 0; i < nv; ++i) order_[i] = i;
-  std::sort(order_.begin(), order_.end(),
-            [&](int a, int b) { return lexLess(verts_[a], verts_[b]) || (!lexLess(verts_[b], verts_[a]) && a < b); });
+  std::sort(order_.begin(), order_.end(), [&](int a, int b) {
+    return lexLess(verts_[a], verts_[b]) || (!lexLess(verts_[b], verts_[a]) && a < b);
+  });
   for (int i = 0; i < nv; ++i) rank[order_[i]] = i;
 
   // Undirected edges with their windings added; edges whose windings cancel are dropped.
@@ -823,8 +841,9 @@ void Tessellation::buildGraph() {
   for (int v = 0; v < nv; ++v) {
     // Bottom to top: all these edges point into the half-plane ahead of the sweep line, where
     // the orientation test orders directions.
-    std::sort(rightEdges_.begin() + rightStart_[v], rightEdges_.begin() + rightStart_[v + 1],
-              [&](int x, int y) { return orient(verts_[v], verts_[sedges_[x].hi], verts_[sedges_[y].hi]) > 0.0; });
+    std::sort(
+        rightEdges_.begin() + rightStart_[v], rightEdges_.begin() + rightStart_[v + 1],
+        [&](int x, int y) { return orient(verts_[v], verts_[sedges_[x].hi], verts_[sedges_[y].hi]) > 0.0; });
   }
 }
 
@@ -1059,8 +1078,10 @@ void Tessellation::sweep() {
         if (sedges_[status_[p + k].edge].hi != v) together = false;
       if (!together) {
         const std::size_t q = gatherLeft(v, left);
-        if (left > 0) p = q;
-        else if (!hasRight) continue;
+        if (left > 0)
+          p = q;
+        else if (!hasRight)
+          continue;
       }
     }
     if (left > 0) {
@@ -1321,19 +1342,45 @@ void GLAPIENTRY gluTessEndPolygon(GLUtesselator* tess) {
 void GLAPIENTRY gluTessCallback(GLUtesselator* tess, GLenum which, _GLUfuncptr fn) {
   if (!tess) return;
   switch (which) {
-    case GLU_TESS_BEGIN: tess->begin = reinterpret_cast<BeginFn>(fn); break;
-    case GLU_TESS_BEGIN_DATA: tess->beginData = reinterpret_cast<BeginDataFn>(fn); break;
-    case GLU_TESS_EDGE_FLAG: tess->edgeFlag = reinterpret_cast<EdgeFlagFn>(fn); break;
-    case GLU_TESS_EDGE_FLAG_DATA: tess->edgeFlagData = reinterpret_cast<EdgeFlagDataFn>(fn); break;
-    case GLU_TESS_VERTEX: tess->vertex = reinterpret_cast<VertexFn>(fn); break;
-    case GLU_TESS_VERTEX_DATA: tess->vertexData = reinterpret_cast<VertexDataFn>(fn); break;
-    case GLU_TESS_END: tess->end = reinterpret_cast<EndFn>(fn); break;
-    case GLU_TESS_END_DATA: tess->endData = reinterpret_cast<EndDataFn>(fn); break;
-    case GLU_TESS_ERROR: tess->error = reinterpret_cast<ErrorFn>(fn); break;
-    case GLU_TESS_ERROR_DATA: tess->errorData = reinterpret_cast<ErrorDataFn>(fn); break;
-    case GLU_TESS_COMBINE: tess->combine = reinterpret_cast<CombineFn>(fn); break;
-    case GLU_TESS_COMBINE_DATA: tess->combineData = reinterpret_cast<CombineDataFn>(fn); break;
-    default: callError(tess, GLU_INVALID_ENUM); break;
+    case GLU_TESS_BEGIN:
+      tess->begin = reinterpret_cast<BeginFn>(fn);
+      break;
+    case GLU_TESS_BEGIN_DATA:
+      tess->beginData = reinterpret_cast<BeginDataFn>(fn);
+      break;
+    case GLU_TESS_EDGE_FLAG:
+      tess->edgeFlag = reinterpret_cast<EdgeFlagFn>(fn);
+      break;
+    case GLU_TESS_EDGE_FLAG_DATA:
+      tess->edgeFlagData = reinterpret_cast<EdgeFlagDataFn>(fn);
+      break;
+    case GLU_TESS_VERTEX:
+      tess->vertex = reinterpret_cast<VertexFn>(fn);
+      break;
+    case GLU_TESS_VERTEX_DATA:
+      tess->vertexData = reinterpret_cast<VertexDataFn>(fn);
+      break;
+    case GLU_TESS_END:
+      tess->end = reinterpret_cast<EndFn>(fn);
+      break;
+    case GLU_TESS_END_DATA:
+      tess->endData = reinterpret_cast<EndDataFn>(fn);
+      break;
+    case GLU_TESS_ERROR:
+      tess->error = reinterpret_cast<ErrorFn>(fn);
+      break;
+    case GLU_TESS_ERROR_DATA:
+      tess->errorData = reinterpret_cast<ErrorDataFn>(fn);
+      break;
+    case GLU_TESS_COMBINE:
+      tess->combine = reinterpret_cast<CombineFn>(fn);
+      break;
+    case GLU_TESS_COMBINE_DATA:
+      tess->combineData = reinterpret_cast<CombineDataFn>(fn);
+      break;
+    default:
+      callError(tess, GLU_INVALID_ENUM);
+      break;
   }
 }
 
@@ -1351,7 +1398,9 @@ void GLAPIENTRY gluTessProperty(GLUtesselator* tess, GLenum which, GLdouble valu
       tess->windingRule = static_cast<GLenum>(value);
       return;
     }
-    case GLU_TESS_BOUNDARY_ONLY: tess->boundaryOnly = value != 0.0; return;
+    case GLU_TESS_BOUNDARY_ONLY:
+      tess->boundaryOnly = value != 0.0;
+      return;
     case GLU_TESS_TOLERANCE:
       if (!(value >= 0.0 && value <= 1.0)) {
         callError(tess, GLU_INVALID_VALUE);
@@ -1359,16 +1408,24 @@ void GLAPIENTRY gluTessProperty(GLUtesselator* tess, GLenum which, GLdouble valu
       }
       tess->tolerance = value;
       return;
-    default: callError(tess, GLU_INVALID_ENUM); return;
+    default:
+      callError(tess, GLU_INVALID_ENUM);
+      return;
   }
 }
 
 void GLAPIENTRY gluGetTessProperty(GLUtesselator* tess, GLenum which, GLdouble* value) {
   if (!tess || !value) return;
   switch (which) {
-    case GLU_TESS_WINDING_RULE: *value = tess->windingRule; return;
-    case GLU_TESS_BOUNDARY_ONLY: *value = tess->boundaryOnly ? 1.0 : 0.0; return;
-    case GLU_TESS_TOLERANCE: *value = tess->tolerance; return;
+    case GLU_TESS_WINDING_RULE:
+      *value = tess->windingRule;
+      return;
+    case GLU_TESS_BOUNDARY_ONLY:
+      *value = tess->boundaryOnly ? 1.0 : 0.0;
+      return;
+    case GLU_TESS_TOLERANCE:
+      *value = tess->tolerance;
+      return;
     default:
       *value = 0.0;
       callError(tess, GLU_INVALID_ENUM);

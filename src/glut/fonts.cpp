@@ -98,8 +98,8 @@ class GlyphUnpackState {
   GlyphUnpackState& operator=(const GlyphUnpackState&) = delete;
 
  private:
-  static constexpr std::array<GLenum, 6> kNames = {GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST,
-                                                   GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS,
+  static constexpr std::array<GLenum, 6> kNames = {GL_UNPACK_SWAP_BYTES,  GL_UNPACK_LSB_FIRST,
+                                                   GL_UNPACK_ROW_LENGTH,  GL_UNPACK_SKIP_ROWS,
                                                    GL_UNPACK_SKIP_PIXELS, GL_UNPACK_ALIGNMENT};
   std::array<GLint, 6> saved_{};
 };

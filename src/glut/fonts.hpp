@@ -25,13 +25,13 @@ struct BitmapGlyph {
 };
 
 struct BitmapFont {
-  const char* xlfd;           // the X font GLUT's glyphs were made from
-  int height;                 // glutBitmapHeight (freeglut)
-  int first;                  // first character code in glyphs[]
-  int count;                  // number of glyphs
+  const char* xlfd;  // the X font GLUT's glyphs were made from
+  int height;        // glutBitmapHeight (freeglut)
+  int first;         // first character code in glyphs[]
+  int count;         // number of glyphs
   const BitmapGlyph* glyphs;
-  const char* hex_bits;       // all glyph bytes, two hex digits each
-  std::size_t bit_bytes;      // number of bytes hex_bits encodes
+  const char* hex_bits;   // all glyph bytes, two hex digits each
+  std::size_t bit_bytes;  // number of bytes hex_bits encodes
 };
 
 struct StrokeStrip {

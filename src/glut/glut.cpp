@@ -5,8 +5,8 @@
 // when TESSEL_HEADLESS is set (`frames:N,out:DIR`) — glutMainLoop reshapes each window once,
 // then for N frames fires the due timers and the idle callback (frames after the first),
 // calls display and writes the window's visible image to DIR/frame-NNNN.png; then it
-// returns, as it does when the last window closes (the program ends when main returns). Time in that mode is virtual: 1000/60 ms
-// per frame, so a run is the same every time.
+// returns, as it does when the last window closes (the program ends when main returns). Time in that mode is
+// virtual: 1000/60 ms per frame, so a run is the same every time.
 #include "glut_internal.hpp"
 
 #include <algorithm>
@@ -46,8 +46,11 @@ void parse_headless(Headless& h, const char* spec) {
     if (item.rfind("frames:", 0) == 0) {
       char* stop = nullptr;
       const long n = std::strtol(item.c_str() + 7, &stop, 10);
-      if (stop && *stop == '\0' && n >= 0 && n <= 1000000) h.frames = int(n);
-      else std::fprintf(stderr, "tessel glut: TESSEL_HEADLESS: bad frame count in '%s' (using %d)\n", item.c_str(), h.frames);
+      if (stop && *stop == '\0' && n >= 0 && n <= 1000000)
+        h.frames = int(n);
+      else
+        std::fprintf(stderr, "tessel glut: TESSEL_HEADLESS: bad frame count in '%s' (using %d)\n",
+                     item.c_str(), h.frames);
     } else if (item.rfind("out:", 0) == 0) {
       h.out = item.substr(4);
       if (h.out.empty()) h.out = std::string(1, '.');
@@ -70,8 +73,10 @@ void write_frame(Window& w, int frame) {
     rgb[i * 3 + 2] = src[i * 4 + 2];
   }
   char name[64];
-  if (w.id == 1) std::snprintf(name, sizeof name, "frame-%04d.png", frame);
-  else std::snprintf(name, sizeof name, "frame-%04d-w%d.png", frame, w.id);
+  if (w.id == 1)
+    std::snprintf(name, sizeof name, "frame-%04d.png", frame);
+  else
+    std::snprintf(name, sizeof name, "frame-%04d-w%d.png", frame, w.id);
   const std::string path = (std::filesystem::path(g_state.headless.out) / name).string();
   try {
     gpu::write_png(path, width, height, 3, rgb.data());
@@ -156,8 +161,10 @@ void service_window(Window& w) {
   if (w.reshape_pending) {
     w.reshape_pending = false;
     make_current(w);
-    if (w.reshape) w.reshape(w.width, w.height);
-    else glViewport(0, 0, w.width, w.height);  // GLUT's default reshape
+    if (w.reshape)
+      w.reshape(w.width, w.height);
+    else
+      glViewport(0, 0, w.width, w.height);  // GLUT's default reshape
     if (!window(id)) return;
     if (!w.shown_once) {
       w.shown_once = true;
@@ -247,7 +254,8 @@ void GLAPIENTRY glutInit(int* argcp, char** argv) {
       } else if (std::strcmp(a, "-display") == 0 && i + 1 < *argcp) {
         ++i;
       } else if (std::strcmp(a, "-iconic") == 0 || std::strcmp(a, "-direct") == 0 ||
-                 std::strcmp(a, "-indirect") == 0 || std::strcmp(a, "-gldebug") == 0 || std::strcmp(a, "-sync") == 0) {
+                 std::strcmp(a, "-indirect") == 0 || std::strcmp(a, "-gldebug") == 0 ||
+                 std::strcmp(a, "-sync") == 0) {
       } else {
         argv[out++] = argv[i];
       }
@@ -256,8 +264,10 @@ void GLAPIENTRY glutInit(int* argcp, char** argv) {
     argv[out] = nullptr;
   }
   const char* h = std::getenv("TESSEL_HEADLESS");
-  if (h && *h && std::strcmp(h, "0") != 0) parse_headless(s.headless, h);
-  else if (!native_available()) parse_headless(s.headless, "");
+  if (h && *h && std::strcmp(h, "0") != 0)
+    parse_headless(s.headless, h);
+  else if (!native_available())
+    parse_headless(s.headless, "");
 }
 
 void GLAPIENTRY glutInitDisplayMode(unsigned int mode) { state().display_mode = mode; }
@@ -393,8 +403,10 @@ void GLAPIENTRY glutMainLoop(void) {
   State& s = state();
   if (s.failed) return;  // an error already reported: the program ends as its main() does
   s.leave = false;
-  if (s.headless.on) headless_main_loop();
-  else windowed_main_loop();
+  if (s.headless.on)
+    headless_main_loop();
+  else
+    windowed_main_loop();
 }
 void GLAPIENTRY glutMainLoopEvent(void) {
   State& s = state();
@@ -410,8 +422,8 @@ void GLAPIENTRY glutExit(void) {
 }
 
 // --- callbacks ---
-#define SET_CALLBACK(name, member, type) \
-  void GLAPIENTRY name(decltype(Window::member) f) {    \
+#define SET_CALLBACK(name, member, type)               \
+  void GLAPIENTRY name(decltype(Window::member) f) {   \
     if (Window* w = need_window(#name)) w->member = f; \
   }
 
@@ -514,61 +526,95 @@ int GLAPIENTRY glutGet(GLenum what) {
   State& s = state();
   Window* w = current_window();
   switch (what) {
-    case GLUT_WINDOW_X: return w ? w->x : 0;
-    case GLUT_WINDOW_Y: return w ? w->y : 0;
-    case GLUT_WINDOW_WIDTH: return w ? w->width : 0;
-    case GLUT_WINDOW_HEIGHT: return w ? w->height : 0;
-    case GLUT_WINDOW_BUFFER_SIZE: return 32;
-    case GLUT_WINDOW_STENCIL_SIZE: return w && (w->mode & GLUT_STENCIL) ? 8 : 0;
-    case GLUT_WINDOW_DEPTH_SIZE: return w && (w->mode & GLUT_DEPTH) ? 24 : 0;
+    case GLUT_WINDOW_X:
+      return w ? w->x : 0;
+    case GLUT_WINDOW_Y:
+      return w ? w->y : 0;
+    case GLUT_WINDOW_WIDTH:
+      return w ? w->width : 0;
+    case GLUT_WINDOW_HEIGHT:
+      return w ? w->height : 0;
+    case GLUT_WINDOW_BUFFER_SIZE:
+      return 32;
+    case GLUT_WINDOW_STENCIL_SIZE:
+      return w && (w->mode & GLUT_STENCIL) ? 8 : 0;
+    case GLUT_WINDOW_DEPTH_SIZE:
+      return w && (w->mode & GLUT_DEPTH) ? 24 : 0;
     case GLUT_WINDOW_RED_SIZE:
     case GLUT_WINDOW_GREEN_SIZE:
     case GLUT_WINDOW_BLUE_SIZE:
-    case GLUT_WINDOW_ALPHA_SIZE: return 8;
-    case GLUT_WINDOW_DOUBLEBUFFER: return w && (w->mode & GLUT_DOUBLE) ? 1 : 0;
-    case GLUT_WINDOW_RGBA: return 1;
+    case GLUT_WINDOW_ALPHA_SIZE:
+      return 8;
+    case GLUT_WINDOW_DOUBLEBUFFER:
+      return w && (w->mode & GLUT_DOUBLE) ? 1 : 0;
+    case GLUT_WINDOW_RGBA:
+      return 1;
     case GLUT_WINDOW_PARENT:
     case GLUT_WINDOW_NUM_CHILDREN:
     case GLUT_WINDOW_COLORMAP_SIZE:
     case GLUT_WINDOW_NUM_SAMPLES:
     case GLUT_WINDOW_STEREO:
-    case GLUT_WINDOW_CURSOR: return 0;
-    case GLUT_SCREEN_WIDTH: return 1920;
-    case GLUT_SCREEN_HEIGHT: return 1080;
-    case GLUT_SCREEN_WIDTH_MM: return 508;
-    case GLUT_SCREEN_HEIGHT_MM: return 286;
+    case GLUT_WINDOW_CURSOR:
+      return 0;
+    case GLUT_SCREEN_WIDTH:
+      return 1920;
+    case GLUT_SCREEN_HEIGHT:
+      return 1080;
+    case GLUT_SCREEN_WIDTH_MM:
+      return 508;
+    case GLUT_SCREEN_HEIGHT_MM:
+      return 286;
     case GLUT_MENU_NUM_ITEMS: {
       Menu* m = menu(s.current_menu);
       return m ? int(m->items.size()) : 0;
     }
-    case GLUT_DISPLAY_MODE_POSSIBLE: return 1;
-    case GLUT_INIT_WINDOW_X: return s.init_x;
-    case GLUT_INIT_WINDOW_Y: return s.init_y;
-    case GLUT_INIT_WINDOW_WIDTH: return s.init_width;
-    case GLUT_INIT_WINDOW_HEIGHT: return s.init_height;
-    case GLUT_INIT_DISPLAY_MODE: return int(s.display_mode);
-    case GLUT_ELAPSED_TIME: return int(now_ms());
-    case GLUT_WINDOW_FORMAT_ID: return 1;
-    case GLUT_ACTION_ON_WINDOW_CLOSE: return s.action_on_close;
-    case GLUT_INIT_STATE: return s.initialized ? 1 : 0;
-    default: return -1;
+    case GLUT_DISPLAY_MODE_POSSIBLE:
+      return 1;
+    case GLUT_INIT_WINDOW_X:
+      return s.init_x;
+    case GLUT_INIT_WINDOW_Y:
+      return s.init_y;
+    case GLUT_INIT_WINDOW_WIDTH:
+      return s.init_width;
+    case GLUT_INIT_WINDOW_HEIGHT:
+      return s.init_height;
+    case GLUT_INIT_DISPLAY_MODE:
+      return int(s.display_mode);
+    case GLUT_ELAPSED_TIME:
+      return int(now_ms());
+    case GLUT_WINDOW_FORMAT_ID:
+      return 1;
+    case GLUT_ACTION_ON_WINDOW_CLOSE:
+      return s.action_on_close;
+    case GLUT_INIT_STATE:
+      return s.initialized ? 1 : 0;
+    default:
+      return -1;
   }
 }
 int GLAPIENTRY glutDeviceGet(GLenum what) {
   switch (what) {
     case GLUT_HAS_KEYBOARD:
-    case GLUT_HAS_MOUSE: return state().headless.on ? 0 : 1;
-    case GLUT_NUM_MOUSE_BUTTONS: return 3;
-    case GLUT_DEVICE_IGNORE_KEY_REPEAT: return state().ignore_key_repeat ? 1 : 0;
-    case GLUT_DEVICE_KEY_REPEAT: return state().ignore_key_repeat ? GLUT_KEY_REPEAT_OFF : GLUT_KEY_REPEAT_DEFAULT;
-    default: return 0;
+    case GLUT_HAS_MOUSE:
+      return state().headless.on ? 0 : 1;
+    case GLUT_NUM_MOUSE_BUTTONS:
+      return 3;
+    case GLUT_DEVICE_IGNORE_KEY_REPEAT:
+      return state().ignore_key_repeat ? 1 : 0;
+    case GLUT_DEVICE_KEY_REPEAT:
+      return state().ignore_key_repeat ? GLUT_KEY_REPEAT_OFF : GLUT_KEY_REPEAT_DEFAULT;
+    default:
+      return 0;
   }
 }
 int GLAPIENTRY glutLayerGet(GLenum what) {
   switch (what) {
-    case GLUT_LAYER_IN_USE: return GLUT_NORMAL;
-    case GLUT_NORMAL_DAMAGED: return 0;
-    default: return 0;
+    case GLUT_LAYER_IN_USE:
+      return GLUT_NORMAL;
+    case GLUT_NORMAL_DAMAGED:
+      return 0;
+    default:
+      return 0;
   }
 }
 int GLAPIENTRY glutGetModifiers(void) { return state().modifiers; }

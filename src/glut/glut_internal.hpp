@@ -16,7 +16,7 @@ namespace tessel::glut {
 
 struct MenuItem {
   std::string label;
-  int value = 0;          // the callback's argument, or the submenu id
+  int value = 0;  // the callback's argument, or the submenu id
   bool submenu = false;
 };
 
@@ -97,8 +97,8 @@ struct State {
   Headless headless;
   double virtual_ms = 0.0;  // headless: time advances 1000/60 ms per frame
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-  int modifiers = 0;        // valid inside input callbacks
-  bool leave = false;       // glutLeaveMainLoop
+  int modifiers = 0;   // valid inside input callbacks
+  bool leave = false;  // glutLeaveMainLoop
   // A GLUT error (misuse that GLUT 3.7 calls fatal, or a headless frame that could not be
   // written) was reported: the offending call did nothing and glutMainLoop returns.
   bool failed = false;

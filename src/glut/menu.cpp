@@ -29,13 +29,14 @@ int menu_height(const Menu& m) { return std::max(1, int(m.items.size())) * kItem
 int item_at(const OpenMenu& om, int x, int y) {
   const Menu* m = menu(om.menu);
   if (!m) return -1;
-  if (x < om.x || x >= om.x + menu_width(*m) || y < om.y + 1 || y >= om.y + 1 + int(m->items.size()) * kItemHeight)
+  if (x < om.x || x >= om.x + menu_width(*m) || y < om.y + 1 ||
+      y >= om.y + 1 + int(m->items.size()) * kItemHeight)
     return -1;
   return (y - om.y - 1) / kItemHeight;
 }
 
-void fill(std::vector<uint8_t>& px, int width, int height, int x0, int y0, int x1, int y1, uint8_t r, uint8_t g,
-          uint8_t b) {
+void fill(std::vector<uint8_t>& px, int width, int height, int x0, int y0, int x1, int y1, uint8_t r,
+          uint8_t g, uint8_t b) {
   x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, width), y1 = std::min(y1, height);
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {
@@ -45,8 +46,8 @@ void fill(std::vector<uint8_t>& px, int width, int height, int x0, int y0, int x
 }
 
 // Text with the 9x15 font; (x, baseline) in image pixels, y down.
-void text(std::vector<uint8_t>& px, int width, int height, int x, int baseline, const std::string& s, uint8_t r,
-          uint8_t g, uint8_t b) {
+void text(std::vector<uint8_t>& px, int width, int height, int x, int baseline, const std::string& s,
+          uint8_t r, uint8_t g, uint8_t b) {
   for (unsigned char ch : s) {
     BitmapGlyphView gl;
     if (!bitmap_glyph(GLUT_BITMAP_9_BY_15, ch, gl)) {

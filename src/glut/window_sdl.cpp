@@ -55,28 +55,50 @@ int modifiers_now() {
 
 int special_key(SDL_Keycode k) {
   switch (k) {
-    case SDLK_F1: return GLUT_KEY_F1;
-    case SDLK_F2: return GLUT_KEY_F2;
-    case SDLK_F3: return GLUT_KEY_F3;
-    case SDLK_F4: return GLUT_KEY_F4;
-    case SDLK_F5: return GLUT_KEY_F5;
-    case SDLK_F6: return GLUT_KEY_F6;
-    case SDLK_F7: return GLUT_KEY_F7;
-    case SDLK_F8: return GLUT_KEY_F8;
-    case SDLK_F9: return GLUT_KEY_F9;
-    case SDLK_F10: return GLUT_KEY_F10;
-    case SDLK_F11: return GLUT_KEY_F11;
-    case SDLK_F12: return GLUT_KEY_F12;
-    case SDLK_LEFT: return GLUT_KEY_LEFT;
-    case SDLK_UP: return GLUT_KEY_UP;
-    case SDLK_RIGHT: return GLUT_KEY_RIGHT;
-    case SDLK_DOWN: return GLUT_KEY_DOWN;
-    case SDLK_PAGEUP: return GLUT_KEY_PAGE_UP;
-    case SDLK_PAGEDOWN: return GLUT_KEY_PAGE_DOWN;
-    case SDLK_HOME: return GLUT_KEY_HOME;
-    case SDLK_END: return GLUT_KEY_END;
-    case SDLK_INSERT: return GLUT_KEY_INSERT;
-    default: return 0;
+    case SDLK_F1:
+      return GLUT_KEY_F1;
+    case SDLK_F2:
+      return GLUT_KEY_F2;
+    case SDLK_F3:
+      return GLUT_KEY_F3;
+    case SDLK_F4:
+      return GLUT_KEY_F4;
+    case SDLK_F5:
+      return GLUT_KEY_F5;
+    case SDLK_F6:
+      return GLUT_KEY_F6;
+    case SDLK_F7:
+      return GLUT_KEY_F7;
+    case SDLK_F8:
+      return GLUT_KEY_F8;
+    case SDLK_F9:
+      return GLUT_KEY_F9;
+    case SDLK_F10:
+      return GLUT_KEY_F10;
+    case SDLK_F11:
+      return GLUT_KEY_F11;
+    case SDLK_F12:
+      return GLUT_KEY_F12;
+    case SDLK_LEFT:
+      return GLUT_KEY_LEFT;
+    case SDLK_UP:
+      return GLUT_KEY_UP;
+    case SDLK_RIGHT:
+      return GLUT_KEY_RIGHT;
+    case SDLK_DOWN:
+      return GLUT_KEY_DOWN;
+    case SDLK_PAGEUP:
+      return GLUT_KEY_PAGE_UP;
+    case SDLK_PAGEDOWN:
+      return GLUT_KEY_PAGE_DOWN;
+    case SDLK_HOME:
+      return GLUT_KEY_HOME;
+    case SDLK_END:
+      return GLUT_KEY_END;
+    case SDLK_INSERT:
+      return GLUT_KEY_INSERT;
+    default:
+      return 0;
   }
 }
 
@@ -84,13 +106,19 @@ int special_key(SDL_Keycode k) {
 // text input instead (printable characters without Ctrl).
 unsigned char control_key(const SDL_Keysym& k) {
   switch (k.sym) {
-    case SDLK_ESCAPE: return 27;
+    case SDLK_ESCAPE:
+      return 27;
     case SDLK_RETURN:
-    case SDLK_KP_ENTER: return 13;
-    case SDLK_BACKSPACE: return 8;
-    case SDLK_TAB: return 9;
-    case SDLK_DELETE: return 127;
-    default: break;
+    case SDLK_KP_ENTER:
+      return 13;
+    case SDLK_BACKSPACE:
+      return 8;
+    case SDLK_TAB:
+      return 9;
+    case SDLK_DELETE:
+      return 127;
+    default:
+      break;
   }
   if ((k.mod & KMOD_CTRL) && k.sym >= SDLK_a && k.sym <= SDLK_z) return (unsigned char)(k.sym - SDLK_a + 1);
   return 0;
@@ -128,7 +156,9 @@ void dispatch(const SDL_Event& e) {
             w->redisplay = true;
           }
           break;
-        case SDL_WINDOWEVENT_EXPOSED: w->redisplay = true; break;
+        case SDL_WINDOWEVENT_EXPOSED:
+          w->redisplay = true;
+          break;
         case SDL_WINDOWEVENT_ENTER:
         case SDL_WINDOWEVENT_LEAVE:
           if (w->entry) {
@@ -143,7 +173,8 @@ void dispatch(const SDL_Event& e) {
           }
           s.leave = true;
           break;
-        default: break;
+        default:
+          break;
       }
       return;
     }
@@ -192,10 +223,17 @@ void dispatch(const SDL_Event& e) {
       if (!w) return;
       int button = -1;
       switch (e.button.button) {
-        case SDL_BUTTON_LEFT: button = GLUT_LEFT_BUTTON; break;
-        case SDL_BUTTON_MIDDLE: button = GLUT_MIDDLE_BUTTON; break;
-        case SDL_BUTTON_RIGHT: button = GLUT_RIGHT_BUTTON; break;
-        default: return;
+        case SDL_BUTTON_LEFT:
+          button = GLUT_LEFT_BUTTON;
+          break;
+        case SDL_BUTTON_MIDDLE:
+          button = GLUT_MIDDLE_BUTTON;
+          break;
+        case SDL_BUTTON_RIGHT:
+          button = GLUT_RIGHT_BUTTON;
+          break;
+        default:
+          return;
       }
       int x = 0, y = 0;
       mouse_xy(*w, e.button.x, e.button.y, x, y);
@@ -210,8 +248,10 @@ void dispatch(const SDL_Event& e) {
         if (w->native) native_present(*w);
         return;
       }
-      if (down) w->native->buttons_down |= 1 << button;
-      else w->native->buttons_down &= ~(1 << button);
+      if (down)
+        w->native->buttons_down |= 1 << button;
+      else
+        w->native->buttons_down &= ~(1 << button);
       if (w->mouse) {
         s.modifiers = modifiers_now();
         make_current(*w);
@@ -229,7 +269,8 @@ void dispatch(const SDL_Event& e) {
       mouse_xy(*w, x, y, x, y);
       make_current(*w);
       const int dir = e.wheel.y > 0 ? 1 : -1;
-      if (w->mouse_wheel) w->mouse_wheel(0, dir, x, y);
+      if (w->mouse_wheel)
+        w->mouse_wheel(0, dir, x, y);
       else if (w->mouse) {
         // freeglut reports the wheel as buttons 3 (up) and 4 (down) without a wheel callback.
         w->mouse(dir > 0 ? 3 : 4, GLUT_DOWN, x, y);
@@ -256,7 +297,8 @@ void dispatch(const SDL_Event& e) {
       if (window(w->id) && w->native && !(w->mode & GLUT_DOUBLE)) native_present(*w);
       return;
     }
-    default: return;
+    default:
+      return;
   }
 }
 }  // namespace
@@ -272,7 +314,8 @@ bool native_open(Window& w) {
   auto n = std::make_unique<NativeWindow>();
   const int x = state().init_x >= 0 ? state().init_x : int(SDL_WINDOWPOS_UNDEFINED);
   const int y = state().init_y >= 0 ? state().init_y : int(SDL_WINDOWPOS_UNDEFINED);
-  n->window = SDL_CreateWindow(w.title.c_str(), x, y, w.width, w.height, SDL_WINDOW_RESIZABLE | SDL_WINDOW_SHOWN);
+  n->window =
+      SDL_CreateWindow(w.title.c_str(), x, y, w.width, w.height, SDL_WINDOW_RESIZABLE | SDL_WINDOW_SHOWN);
   if (!n->window) return false;
   n->renderer = SDL_CreateRenderer(n->window, -1, SDL_RENDERER_SOFTWARE);
   if (!n->renderer) {
@@ -301,7 +344,8 @@ void native_present(Window& w) {
   const int width = front.width(), height = front.height();
   if (!n->texture || n->tex_w != width || n->tex_h != height) {
     if (n->texture) SDL_DestroyTexture(n->texture);
-    n->texture = SDL_CreateTexture(n->renderer, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STREAMING, width, height);
+    n->texture =
+        SDL_CreateTexture(n->renderer, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STREAMING, width, height);
     n->tex_w = width;
     n->tex_h = height;
     if (!n->texture) return;
@@ -333,8 +377,10 @@ void native_pump(double timeout_ms) {
   if (!g_sdl_ready) return;
   SDL_Event e;
   if (timeout_ms > 0.0) {
-    if (SDL_WaitEventTimeout(&e, int(timeout_ms + 0.5))) dispatch(e);
-    else return;
+    if (SDL_WaitEventTimeout(&e, int(timeout_ms + 0.5)))
+      dispatch(e);
+    else
+      return;
   }
   while (SDL_PollEvent(&e)) dispatch(e);
 }

@@ -16,8 +16,10 @@ void Context::Frame::bin_tiles(Worker& w, uint32_t chunk, const DrawRecord* d, c
     for (int tx = tx0; tx <= tx1; ++tx) {
       if (p->kind == PrimKind::Triangle && (tx1 > tx0 || ty1 > ty0)) {
         // Trivial reject of tiles the bbox touches but the triangle misses.
-        const int x0 = std::max(tx * kTileSize, p->minx), x1 = std::min(tx * kTileSize + kTileSize - 1, p->maxx);
-        const int y0 = std::max(ty * kTileSize, p->miny), y1 = std::min(ty * kTileSize + kTileSize - 1, p->maxy);
+        const int x0 = std::max(tx * kTileSize, p->minx),
+                  x1 = std::min(tx * kTileSize + kTileSize - 1, p->maxx);
+        const int y0 = std::max(ty * kTileSize, p->miny),
+                  y1 = std::min(ty * kTileSize + kTileSize - 1, p->maxy);
         bool out = false;
         if (p->cover) {
           // Covered groups are 4x2 aligned and tiles are multiples of them: a tile is touched
@@ -31,7 +33,10 @@ void Context::Frame::bin_tiles(Worker& w, uint32_t chunk, const DrawRecord* d, c
         } else {
           for (const EdgeEq& e : std::span(p->edges(d->program->varyings), 3)) {
             const int64_t hi = e.c + std::max(e.a * x0, e.a * x1) + std::max(e.b * y0, e.b * y1);
-            if (hi <= 0) { out = true; break; }
+            if (hi <= 0) {
+              out = true;
+              break;
+            }
           }
         }
         if (out) continue;

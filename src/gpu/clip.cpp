@@ -45,8 +45,8 @@ static void lerp_vertex(const ClipVert& in, const ClipVert& out, float t, int va
   for (int k = 0; k < varyings; ++k) r.var[k] = in.var[k] + (out.var[k] - in.var[k]) * t;
 }
 
-int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, ClipVert* b,
-                 int varyings, ClipVert** out) {
+int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, ClipVert* b, int varyings,
+                 ClipVert** out) {
   ClipVert* src = a;
   ClipVert* dst = b;
   constexpr int kMaxOut = 3 + 6 + kMaxClipPlanes + 1;
@@ -61,8 +61,10 @@ int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, Cl
       const bool in_prev = dprev >= 0.0f, in_cur = dcur >= 0.0f;
       if (in_prev != in_cur && m < kMaxOut) {
         // Always interpolate from the inside vertex to the outside one.
-        if (in_prev) lerp_vertex(prev, cur, dprev / (dprev - dcur), varyings, dst[m++]);
-        else lerp_vertex(cur, prev, dcur / (dcur - dprev), varyings, dst[m++]);
+        if (in_prev)
+          lerp_vertex(prev, cur, dprev / (dprev - dcur), varyings, dst[m++]);
+        else
+          lerp_vertex(cur, prev, dcur / (dcur - dprev), varyings, dst[m++]);
       }
       if (in_cur && m < kMaxOut) {
         dst[m].pos = cur.pos;
@@ -78,16 +80,18 @@ int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, Cl
   return n < 3 ? 0 : n;
 }
 
-bool clip_line(const ClipPlanes& planes, unsigned mask, const glm::vec4& p0, const glm::vec4& p1,
-               float& t0, float& t1) {
+bool clip_line(const ClipPlanes& planes, unsigned mask, const glm::vec4& p0, const glm::vec4& p1, float& t0,
+               float& t1) {
   t0 = 0.0f;
   t1 = 1.0f;
   for (int i = 0; i < planes.count; ++i) {
     if (!(mask & (1u << i))) continue;
     const float d0 = plane_distance(planes, i, p0), d1 = plane_distance(planes, i, p1);
     if (!(d0 >= 0.0f) && !(d1 >= 0.0f)) return false;
-    if (d0 < 0.0f) t0 = std::max(t0, d0 / (d0 - d1));
-    else if (d1 < 0.0f) t1 = std::min(t1, d0 / (d0 - d1));
+    if (d0 < 0.0f)
+      t0 = std::max(t0, d0 / (d0 - d1));
+    else if (d1 < 0.0f)
+      t1 = std::min(t1, d0 / (d0 - d1));
   }
   return t0 < t1;
 }

@@ -42,7 +42,7 @@ uint16_t float_to_half(float f) {
   if (a < 0x33000000u) return uint16_t(sign);  // below 2^-25: rounds to zero (2^-25 ties to 0)
   const uint32_t e = a >> 23;                  // biased exponent, 102..112
   const uint32_t m = (a & 0x7FFFFFu) | 0x800000u;
-  const uint32_t shift = 126u - e;             // 14..24
+  const uint32_t shift = 126u - e;  // 14..24
   uint32_t h = m >> shift;
   const uint32_t rem = m & ((1u << shift) - 1u);
   const uint32_t half = 1u << (shift - 1u);

@@ -22,14 +22,22 @@ namespace {
 
 inline uint8_t stencil_op(StencilOp op, uint8_t s, uint8_t ref) {
   switch (op) {
-    case StencilOp::Keep: return s;
-    case StencilOp::Zero: return 0;
-    case StencilOp::Replace: return ref;
-    case StencilOp::Incr: return s == 255 ? 255 : uint8_t(s + 1);
-    case StencilOp::IncrWrap: return uint8_t(s + 1);
-    case StencilOp::Decr: return s == 0 ? 0 : uint8_t(s - 1);
-    case StencilOp::DecrWrap: return uint8_t(s - 1);
-    case StencilOp::Invert: return uint8_t(~s);
+    case StencilOp::Keep:
+      return s;
+    case StencilOp::Zero:
+      return 0;
+    case StencilOp::Replace:
+      return ref;
+    case StencilOp::Incr:
+      return s == 255 ? 255 : uint8_t(s + 1);
+    case StencilOp::IncrWrap:
+      return uint8_t(s + 1);
+    case StencilOp::Decr:
+      return s == 0 ? 0 : uint8_t(s - 1);
+    case StencilOp::DecrWrap:
+      return uint8_t(s - 1);
+    case StencilOp::Invert:
+      return uint8_t(~s);
   }
   return s;
 }
@@ -55,47 +63,83 @@ void store_color(const ColorTarget& t, int x, int y, glm::vec4 c, uint8_t wmask)
 
 inline glm::vec3 factor_rgb(BlendFactor f, const glm::vec4& s, const glm::vec4& d, const glm::vec4& k) {
   switch (f) {
-    case BlendFactor::Zero: return glm::vec3(0.0f);
-    case BlendFactor::One: return glm::vec3(1.0f);
-    case BlendFactor::SrcColor: return glm::vec3(s);
-    case BlendFactor::OneMinusSrcColor: return glm::vec3(1.0f) - glm::vec3(s);
-    case BlendFactor::DstColor: return glm::vec3(d);
-    case BlendFactor::OneMinusDstColor: return glm::vec3(1.0f) - glm::vec3(d);
-    case BlendFactor::SrcAlpha: return glm::vec3(s.a);
-    case BlendFactor::OneMinusSrcAlpha: return glm::vec3(1.0f - s.a);
-    case BlendFactor::DstAlpha: return glm::vec3(d.a);
-    case BlendFactor::OneMinusDstAlpha: return glm::vec3(1.0f - d.a);
-    case BlendFactor::ConstantColor: return glm::vec3(k);
-    case BlendFactor::OneMinusConstantColor: return glm::vec3(1.0f) - glm::vec3(k);
-    case BlendFactor::ConstantAlpha: return glm::vec3(k.a);
-    case BlendFactor::OneMinusConstantAlpha: return glm::vec3(1.0f - k.a);
-    case BlendFactor::SrcAlphaSaturate: return glm::vec3(std::min(s.a, 1.0f - d.a));
+    case BlendFactor::Zero:
+      return glm::vec3(0.0f);
+    case BlendFactor::One:
+      return glm::vec3(1.0f);
+    case BlendFactor::SrcColor:
+      return glm::vec3(s);
+    case BlendFactor::OneMinusSrcColor:
+      return glm::vec3(1.0f) - glm::vec3(s);
+    case BlendFactor::DstColor:
+      return glm::vec3(d);
+    case BlendFactor::OneMinusDstColor:
+      return glm::vec3(1.0f) - glm::vec3(d);
+    case BlendFactor::SrcAlpha:
+      return glm::vec3(s.a);
+    case BlendFactor::OneMinusSrcAlpha:
+      return glm::vec3(1.0f - s.a);
+    case BlendFactor::DstAlpha:
+      return glm::vec3(d.a);
+    case BlendFactor::OneMinusDstAlpha:
+      return glm::vec3(1.0f - d.a);
+    case BlendFactor::ConstantColor:
+      return glm::vec3(k);
+    case BlendFactor::OneMinusConstantColor:
+      return glm::vec3(1.0f) - glm::vec3(k);
+    case BlendFactor::ConstantAlpha:
+      return glm::vec3(k.a);
+    case BlendFactor::OneMinusConstantAlpha:
+      return glm::vec3(1.0f - k.a);
+    case BlendFactor::SrcAlphaSaturate:
+      return glm::vec3(std::min(s.a, 1.0f - d.a));
   }
   return glm::vec3(0.0f);
 }
 
 inline float factor_alpha(BlendFactor f, const glm::vec4& s, const glm::vec4& d, const glm::vec4& k) {
   switch (f) {
-    case BlendFactor::Zero: return 0.0f;
-    case BlendFactor::One: return 1.0f;
-    case BlendFactor::SrcColor: case BlendFactor::SrcAlpha: return s.a;
-    case BlendFactor::OneMinusSrcColor: case BlendFactor::OneMinusSrcAlpha: return 1.0f - s.a;
-    case BlendFactor::DstColor: case BlendFactor::DstAlpha: return d.a;
-    case BlendFactor::OneMinusDstColor: case BlendFactor::OneMinusDstAlpha: return 1.0f - d.a;
-    case BlendFactor::ConstantColor: case BlendFactor::ConstantAlpha: return k.a;
-    case BlendFactor::OneMinusConstantColor: case BlendFactor::OneMinusConstantAlpha: return 1.0f - k.a;
-    case BlendFactor::SrcAlphaSaturate: return 1.0f;
+    case BlendFactor::Zero:
+      return 0.0f;
+    case BlendFactor::One:
+      return 1.0f;
+    case BlendFactor::SrcColor:
+    case BlendFactor::SrcAlpha:
+      return s.a;
+    case BlendFactor::OneMinusSrcColor:
+    case BlendFactor::OneMinusSrcAlpha:
+      return 1.0f - s.a;
+    case BlendFactor::DstColor:
+    case BlendFactor::DstAlpha:
+      return d.a;
+    case BlendFactor::OneMinusDstColor:
+    case BlendFactor::OneMinusDstAlpha:
+      return 1.0f - d.a;
+    case BlendFactor::ConstantColor:
+    case BlendFactor::ConstantAlpha:
+      return k.a;
+    case BlendFactor::OneMinusConstantColor:
+    case BlendFactor::OneMinusConstantAlpha:
+      return 1.0f - k.a;
+    case BlendFactor::SrcAlphaSaturate:
+      return 1.0f;
   }
   return 0.0f;
 }
 
-template <class T> inline T apply_equation(BlendEquation eq, T s, T sf, T d, T df) {
+template <class T>
+inline T apply_equation(BlendEquation eq, T s, T sf, T d, T df) {
   switch (eq) {
-    case BlendEquation::Add: return s * sf + d * df;
-    case BlendEquation::Subtract: return s * sf - d * df;
-    case BlendEquation::ReverseSubtract: return d * df - s * sf;
-    case BlendEquation::Min: return glm::min(s, d);  // factors unused (GL 4.6 §17.3.6.1)
-    case BlendEquation::Max: return glm::max(s, d);
+    case BlendEquation::Add:
+      return s * sf + d * df;
+    case BlendEquation::Subtract:
+      return s * sf - d * df;
+    case BlendEquation::ReverseSubtract:
+      return d * df - s * sf;
+    case BlendEquation::Min:
+      return glm::min(s, d);  // factors unused (GL 4.6 §17.3.6.1)
+    case BlendEquation::Max:
+      return glm::max(s, d);
   }
   return s;
 }
@@ -107,8 +151,8 @@ glm::vec4 blend(const BlendTarget& b, glm::vec4 s, glm::vec4 d, glm::vec4 k, boo
     s = glm::clamp(s, 0.0f, 1.0f);
     k = glm::clamp(k, 0.0f, 1.0f);
   }
-  const glm::vec3 rgb = apply_equation(b.eq_rgb, glm::vec3(s), factor_rgb(b.src_rgb, s, d, k),
-                                       glm::vec3(d), factor_rgb(b.dst_rgb, s, d, k));
+  const glm::vec3 rgb = apply_equation(b.eq_rgb, glm::vec3(s), factor_rgb(b.src_rgb, s, d, k), glm::vec3(d),
+                                       factor_rgb(b.dst_rgb, s, d, k));
   const float a = apply_equation(b.eq_alpha, s.a, factor_alpha(b.src_alpha, s, d, k), d.a,
                                  factor_alpha(b.dst_alpha, s, d, k));
   return {rgb, a};
@@ -123,7 +167,8 @@ bool streamable(const void* p, size_t stride, size_t bytes) {
 void stream_row(std::byte* dst, const std::byte* src, size_t bytes) {
 #if defined(__SSE2__)
   for (size_t off = 0; off < bytes; off += 16)
-    _mm_stream_si128(reinterpret_cast<__m128i*>(dst + off), _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + off)));
+    _mm_stream_si128(reinterpret_cast<__m128i*>(dst + off),
+                     _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + off)));
 #else
   std::memcpy(dst, src, bytes);
 #endif
@@ -156,12 +201,13 @@ void fill_rect(std::byte* data, size_t row_bytes, size_t bytes, const uint8_t* k
   std::memcpy(kw, kb, 64);
   std::memcpy(sw, sb, 64);
   const size_t n = size_t(x1 - x0) * bytes;
-  if (!reads && stream && streamable(data + size_t(y0) * row_bytes + size_t(x0) * bytes, row_bytes, n) && 64 % bytes == 0) {
+  if (!reads && stream && streamable(data + size_t(y0) * row_bytes + size_t(x0) * bytes, row_bytes, n) &&
+      64 % bytes == 0) {
     // Every 16-byte step of a row starts on a texel (the bytes per texel divide 64).
     for (int y = y0; y < y1; ++y)
       for (size_t off = 0; off < n; off += 64)
-        stream_row(data + size_t(y) * row_bytes + size_t(x0) * bytes + off, reinterpret_cast<const std::byte*>(sb),
-                   std::min<size_t>(64, n - off));
+        stream_row(data + size_t(y) * row_bytes + size_t(x0) * bytes + off,
+                   reinterpret_cast<const std::byte*>(sb), std::min<size_t>(64, n - off));
     stream_fence();
     return;
   }
@@ -236,8 +282,10 @@ unsigned depth_stencil_test(const DrawRecord& d, const TargetView& t, int gx, in
     if (pass && stencil) s_new = stencil_op(sf.pass, s, sf.ref);
     uint32_t new_word = word;
     if (pass && depth && st.depth_write) {
-      if (t.depth_format == Format::Depth32F) std::memcpy(&new_word, &zf, 4);
-      else new_word = (word & 0xFF000000u) | quantize24(zf);
+      if (t.depth_format == Format::Depth32F)
+        std::memcpy(&new_word, &zf, 4);
+      else
+        new_word = (word & 0xFF000000u) | quantize24(zf);
     }
     if (stencil && s_new != s) {
       const uint8_t wm = sf.write_mask;
@@ -252,7 +300,8 @@ unsigned depth_stencil_test(const DrawRecord& d, const TargetView& t, int gx, in
 
 void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask,
                   const Vec4<Float8>* colors, int outputs) {
-  if (d.fast_color && gx + 4 <= t.width && gy + 2 <= t.height) return write_rgba8(t.color[0], gx, gy, mask, colors[0]);
+  if (d.fast_color && gx + 4 <= t.width && gy + 2 <= t.height)
+    return write_rgba8(t.color[0], gx, gy, mask, colors[0]);
   const int n = std::min(outputs, t.color_count);
   for (int i = 0; i < n; ++i) {
     const ColorTarget& ct = t.color[i];
@@ -271,13 +320,15 @@ void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsi
   }
 }
 
-void copy_rows(std::byte* dst, size_t dst_stride, const std::byte* src, size_t src_stride, size_t row_bytes, int rows,
-               bool stream) {
+void copy_rows(std::byte* dst, size_t dst_stride, const std::byte* src, size_t src_stride, size_t row_bytes,
+               int rows, bool stream) {
   if (!stream || !streamable(dst, dst_stride, row_bytes)) {
-    for (int y = 0; y < rows; ++y) std::memcpy(dst + size_t(y) * dst_stride, src + size_t(y) * src_stride, row_bytes);
+    for (int y = 0; y < rows; ++y)
+      std::memcpy(dst + size_t(y) * dst_stride, src + size_t(y) * src_stride, row_bytes);
     return;
   }
-  for (int y = 0; y < rows; ++y) stream_row(dst + size_t(y) * dst_stride, src + size_t(y) * src_stride, row_bytes);
+  for (int y = 0; y < rows; ++y)
+    stream_row(dst + size_t(y) * dst_stride, src + size_t(y) * src_stride, row_bytes);
   stream_fence();
 }
 

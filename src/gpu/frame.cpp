@@ -24,7 +24,8 @@ Context::~Context() {
 int Context::threads() const { return pool_ ? pool_->size() : 1; }
 
 void Context::set_threads(int threads) {
-  if (threads < 0 || threads > 64) throw Error("Context: thread count " + std::to_string(threads) + " is outside 0..64");
+  if (threads < 0 || threads > 64)
+    throw Error("Context: thread count " + std::to_string(threads) + " is outside 0..64");
   flush();
   if (threads == 0) threads = int(std::max(1u, std::min(64u, std::thread::hardware_concurrency())));
   pool_.reset();
@@ -119,7 +120,8 @@ void Context::flush() {
   const uint32_t nchunks = uint32_t(fr.chunks.size());
   pool_->run([&](int wi) {
     Worker& w = fr.workers[size_t(wi)];
-    for (uint32_t c; (c = next_chunk.fetch_add(1, std::memory_order_relaxed)) < nchunks;) fr.process_chunk(w, c);
+    for (uint32_t c; (c = next_chunk.fetch_add(1, std::memory_order_relaxed)) < nchunks;)
+      fr.process_chunk(w, c);
   });
   // 3. Raster phase.
   std::atomic<int> next_tile{0};

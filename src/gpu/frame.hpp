@@ -86,39 +86,75 @@ struct Worker {
 // --- primitive assembly -----------------------------------------------------------------------
 inline uint32_t prim_count(Topology t, uint32_t n) {
   switch (t) {
-    case Topology::Points: return n;
-    case Topology::Lines: return n / 2;
-    case Topology::LineStrip: return n >= 2 ? n - 1 : 0;
-    case Topology::LineLoop: return n >= 2 ? n : 0;
-    case Topology::Triangles: return n / 3;
+    case Topology::Points:
+      return n;
+    case Topology::Lines:
+      return n / 2;
+    case Topology::LineStrip:
+      return n >= 2 ? n - 1 : 0;
+    case Topology::LineLoop:
+      return n >= 2 ? n : 0;
+    case Topology::Triangles:
+      return n / 3;
     case Topology::TriangleStrip:
-    case Topology::TriangleFan: return n >= 3 ? n - 2 : 0;
+    case Topology::TriangleFan:
+      return n >= 3 ? n - 2 : 0;
   }
   return 0;
 }
 
 inline int prim_size(Topology t) {
   switch (t) {
-    case Topology::Points: return 1;
-    case Topology::Lines: case Topology::LineStrip: case Topology::LineLoop: return 2;
-    default: return 3;
+    case Topology::Points:
+      return 1;
+    case Topology::Lines:
+    case Topology::LineStrip:
+    case Topology::LineLoop:
+      return 2;
+    default:
+      return 3;
   }
 }
 
 // Elements of primitive p, the provoking vertex last (GL 4.6 §10.1 and Table 13.2).
 inline void prim_elements(Topology t, uint32_t p, uint32_t n, uint32_t* e) {
   switch (t) {
-    case Topology::Points: e[0] = p; break;
-    case Topology::Lines: e[0] = 2 * p; e[1] = 2 * p + 1; break;
-    case Topology::LineStrip: e[0] = p; e[1] = p + 1; break;
-    case Topology::LineLoop: e[0] = p; e[1] = (p + 1) % n; break;
-    case Topology::Triangles: e[0] = 3 * p; e[1] = 3 * p + 1; e[2] = 3 * p + 2; break;
+    case Topology::Points:
+      e[0] = p;
+      break;
+    case Topology::Lines:
+      e[0] = 2 * p;
+      e[1] = 2 * p + 1;
+      break;
+    case Topology::LineStrip:
+      e[0] = p;
+      e[1] = p + 1;
+      break;
+    case Topology::LineLoop:
+      e[0] = p;
+      e[1] = (p + 1) % n;
+      break;
+    case Topology::Triangles:
+      e[0] = 3 * p;
+      e[1] = 3 * p + 1;
+      e[2] = 3 * p + 2;
+      break;
     case Topology::TriangleStrip:
       // Odd triangles swap their first two vertices to keep the winding.
-      if (p & 1) { e[0] = p + 1; e[1] = p; } else { e[0] = p; e[1] = p + 1; }
+      if (p & 1) {
+        e[0] = p + 1;
+        e[1] = p;
+      } else {
+        e[0] = p;
+        e[1] = p + 1;
+      }
       e[2] = p + 2;
       break;
-    case Topology::TriangleFan: e[0] = 0; e[1] = p + 1; e[2] = p + 2; break;
+    case Topology::TriangleFan:
+      e[0] = 0;
+      e[1] = p + 1;
+      e[2] = p + 2;
+      break;
   }
 }
 

@@ -34,8 +34,10 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
   uint32_t* ids = w.prim_slots.data();  // element ids first, replaced by slots below
   if (d.topology == Topology::Triangles) {
     const size_t e0 = size_t(ch.begin) * 3;
-    if (d.indexed) std::memcpy(ids, d.elements + e0, total * sizeof(uint32_t));
-    else for (size_t i = 0; i < total; ++i) ids[i] = d.first + uint32_t(e0 + i);
+    if (d.indexed)
+      std::memcpy(ids, d.elements + e0, total * sizeof(uint32_t));
+    else
+      for (size_t i = 0; i < total; ++i) ids[i] = d.first + uint32_t(e0 + i);
   } else {
     uint32_t e[3];
     for (uint32_t p = 0; p < nprims; ++p) {
@@ -137,8 +139,8 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     if (filled_triangles && (codes[s[0]] | codes[s[1]] | codes[s[2]]) == 0) {
       // The common case: a filled triangle inside every plane, set up here without a call.
       bool culled = false;
-      Prim* pr = setup_triangle_inline(d, sc, win[s[0]], win[s[1]], win[s[2]], vars + size_t(s[2]) * K, prim_id,
-                                       Facing::FromArea, offset_fill, w.arena, w.counters, &culled);
+      Prim* pr = setup_triangle_inline(d, sc, win[s[0]], win[s[1]], win[s[2]], vars + size_t(s[2]) * K,
+                                       prim_id, Facing::FromArea, offset_fill, w.arena, w.counters, &culled);
       culled_count += culled;
       if (pr) bin(w, chunk_index, &d, pr);
       continue;
@@ -226,7 +228,8 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     if (area == 0.0) continue;
     const bool front = (d.state.front_face == FrontFace::CCW) == (area > 0.0);
     const CullMode cm = d.state.cull;
-    if (cm == CullMode::FrontAndBack || (cm == CullMode::Front && front) || (cm == CullMode::Back && !front)) {
+    if (cm == CullMode::FrontAndBack || (cm == CullMode::Front && front) ||
+        (cm == CullMode::Back && !front)) {
       ++w.counters.primitives_culled;
       continue;
     }
@@ -234,8 +237,8 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     if (mode == PolygonMode::Fill) {
       const Facing facing = front ? Facing::Front : Facing::Back;
       for (int i = 1; i + 1 < nw; ++i) {
-        Prim* pr = setup_triangle(d, wv[0], wv[i], wv[i + 1], flat_src, prim_id, facing, d.state.offset_fill, w.arena,
-                                  w.counters, nullptr);
+        Prim* pr = setup_triangle(d, wv[0], wv[i], wv[i + 1], flat_src, prim_id, facing, d.state.offset_fill,
+                                  w.arena, w.counters, nullptr);
         if (pr) bin(w, chunk_index, &d, pr);
       }
       continue;
@@ -247,7 +250,8 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     for (int i = 0; i < nw; ++i) {
       // A vertex made by clipping carries the flag interpolated from its edge's ends.
       if (ef >= 0 && ef < K && wv[i].var[ef] == 0.0f) continue;
-      const int n = line ? setup_line(d, wv[i], wv[(i + 1) % nw], flat_src, prim_id, front, zoff, w.arena, w.counters, out)
+      const int n = line ? setup_line(d, wv[i], wv[(i + 1) % nw], flat_src, prim_id, front, zoff, w.arena,
+                                      w.counters, out)
                          : setup_point(d, wv[i], prim_id, front, zoff, w.arena, w.counters, out);
       for (int j = 0; j < n; ++j) bin(w, chunk_index, &d, out[j]);
     }

@@ -21,7 +21,8 @@ namespace tessel::gpu {
 namespace {
 
 // Reverses the row order of a tightly packed image in place (top-down <-> bottom-up).
-template <class T> void flip_rows(T* data, int width, int height, int channels) {
+template <class T>
+void flip_rows(T* data, int width, int height, int channels) {
   const size_t row = size_t(width) * size_t(channels);
   std::vector<T> tmp(row);
   for (int y = 0; y < height / 2; ++y) {
@@ -98,7 +99,8 @@ inline uint8_t to_byte(float c) {
 
 Image load_image_from_memory(const void* data, size_t bytes, const std::string& name) {
   if (data == nullptr || bytes == 0) throw Error("load_image: '" + name + "' is empty");
-  if (bytes > size_t(INT_MAX)) throw Error("load_image: '" + name + "' is too large (" + std::to_string(bytes) + " bytes)");
+  if (bytes > size_t(INT_MAX))
+    throw Error("load_image: '" + name + "' is too large (" + std::to_string(bytes) + " bytes)");
   const auto* buf = static_cast<const stbi_uc*>(data);
   const int len = int(bytes);
   int w = 0, h = 0, comp = 0;
@@ -143,8 +145,10 @@ Image load_image(const std::string& path) {
 }
 
 void write_png(const std::string& path, int width, int height, int channels, const uint8_t* rows_bottom_up) {
-  if (width < 1 || height < 1 || size_t(width) * 4 > size_t(INT_MAX) || size_t(height) > size_t(INT_MAX) / (size_t(width) * 4))
-    throw Error("write_png: '" + path + "': bad size " + std::to_string(width) + "x" + std::to_string(height));
+  if (width < 1 || height < 1 || size_t(width) * 4 > size_t(INT_MAX) ||
+      size_t(height) > size_t(INT_MAX) / (size_t(width) * 4))
+    throw Error("write_png: '" + path + "': bad size " + std::to_string(width) + "x" +
+                std::to_string(height));
   if (channels < 1 || channels > 4)
     throw Error("write_png: '" + path + "': bad channel count " + std::to_string(channels));
   if (rows_bottom_up == nullptr) throw Error("write_png: '" + path + "': null pixels");
@@ -209,9 +213,9 @@ Texture2D make_texture(const Image& image, bool mipmaps) {
   }
   const int ch = image.channels;
   if (ch < 1 || ch > 4 || image.pixels.size() != n * size_t(ch))
-    throw Error("make_texture: image of " + std::to_string(w) + "x" + std::to_string(h) + "x" + std::to_string(ch) +
-                " needs " + std::to_string(n * size_t(std::max(ch, 0))) + " bytes, has " +
-                std::to_string(image.pixels.size()));
+    throw Error("make_texture: image of " + std::to_string(w) + "x" + std::to_string(h) + "x" +
+                std::to_string(ch) + " needs " + std::to_string(n * size_t(std::max(ch, 0))) +
+                " bytes, has " + std::to_string(image.pixels.size()));
   Texture2D t(Format::RGBA8, w, h, levels);
   if (ch == 4) {
     t.upload_rgba8(0, image.pixels.data(), n * 4);

@@ -33,7 +33,9 @@ PendingWork::~PendingWork() {
   r.erase(std::remove(r.begin(), r.end(), this), r.end());
 }
 
-Resource::Resource(Resource&&) noexcept : born_(g_submitted.load(std::memory_order_acquire)) { before_write(); }
+Resource::Resource(Resource&&) noexcept : born_(g_submitted.load(std::memory_order_acquire)) {
+  before_write();
+}
 
 Resource& Resource::operator=(Resource&&) noexcept {
   before_write();

@@ -17,13 +17,16 @@ namespace tessel::gpu {
 namespace {
 
 struct NoVaryings {};
-template <class F, int K> struct VaryingArray {
+template <class F, int K>
+struct VaryingArray {
   F v[K];
 };
 
-template <int K, bool Packed> struct RuntimeBridge {
+template <int K, bool Packed>
+struct RuntimeBridge {
   using Uniforms = std::shared_ptr<const RuntimeShader>;
-  template <class F> using Varyings = std::conditional_t<K == 0, NoVaryings, VaryingArray<F, (K > 0 ? K : 1)>>;
+  template <class F>
+  using Varyings = std::conditional_t<K == 0, NoVaryings, VaryingArray<F, (K > 0 ? K : 1)>>;
   static constexpr bool runtime = true;
   // Without packing, discarding and depth writes are taken as possible: when the program
   // does neither, `killed` stays clear and `depth` holds the interpolated depth, so the
@@ -32,9 +35,12 @@ template <int K, bool Packed> struct RuntimeBridge {
   static constexpr bool writes_depth = !Packed;
   static constexpr bool lanes_independent = Packed;
   static constexpr int outputs = Packed ? 1 : kMaxColorAttachments;
-  static ScopedDenormalFlush float_mode(const Uniforms& u) { return ScopedDenormalFlush(u->shape().flush_denormals); }
+  static ScopedDenormalFlush float_mode(const Uniforms& u) {
+    return ScopedDenormalFlush(u->shape().flush_denormals);
+  }
 
-  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
     constexpr int N = lane_width<F>;
     thread_local VertexLanes lanes;
     const RuntimeShape& shape = u->shape();
@@ -65,14 +71,16 @@ template <int K, bool Packed> struct RuntimeBridge {
     thread_local FragmentLanes lanes;
     return lanes;
   }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>& in, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>& in, Fragment<F>& f) const {
     if constexpr (K > 0) {
       FragmentLanes& lanes = fragment_lanes();
       for (int k = 0; k < K; ++k) in.v[k].store(lanes.varyings[k]);
     }
     fragment_stored(u, f);
   }
-  template <class F> void fragment_stored(const Uniforms& u, Fragment<F>& f) const {
+  template <class F>
+  void fragment_stored(const Uniforms& u, Fragment<F>& f) const {
     constexpr int N = lane_width<F>;
     FragmentLanes& lanes = fragment_lanes();
     const RuntimeShape& shape = u->shape();
@@ -88,8 +96,8 @@ template <int K, bool Packed> struct RuntimeBridge {
     u->fragment(lanes);
     const int outs = std::min(outputs, shape.outputs);
     for (int i = 0; i < outs; ++i) {
-      f.color[size_t(i)] = Vec4<F>(F::load(lanes.color[i][0]), F::load(lanes.color[i][1]), F::load(lanes.color[i][2]),
-                                   F::load(lanes.color[i][3]));
+      f.color[size_t(i)] = Vec4<F>(F::load(lanes.color[i][0]), F::load(lanes.color[i][1]),
+                                   F::load(lanes.color[i][2]), F::load(lanes.color[i][3]));
     }
     if constexpr (!Packed) {
       if (shape.writes_depth) f.depth = F::load(lanes.depth);
@@ -122,13 +130,13 @@ std::unique_ptr<detail::ProgramBase> pick(const std::shared_ptr<const RuntimeSha
 
 }  // namespace
 
-void Context::draw(std::shared_ptr<const RuntimeShader> shader, const VertexLayout& layout, const RenderState& state,
-                   const DrawCall& call) {
+void Context::draw(std::shared_ptr<const RuntimeShader> shader, const VertexLayout& layout,
+                   const RenderState& state, const DrawCall& call) {
   if (!shader) throw Error("draw: no shader");
   const RuntimeShape& shape = shader->shape();
   if (shape.varyings < 0 || shape.varyings > kMaxVaryings)
-    throw Error("draw: the program passes " + std::to_string(shape.varyings) + " varying components; at most " +
-                std::to_string(kMaxVaryings) + " are supported");
+    throw Error("draw: the program passes " + std::to_string(shape.varyings) +
+                " varying components; at most " + std::to_string(kMaxVaryings) + " are supported");
   if (shape.outputs < 0 || shape.outputs > kMaxColorAttachments)
     throw Error("draw: the program writes " + std::to_string(shape.outputs) + " colour outputs; at most " +
                 std::to_string(kMaxColorAttachments) + " are supported");

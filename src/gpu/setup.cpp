@@ -42,18 +42,20 @@ float polygon_offset(const DrawRecord& d, const WinVert& v0, const WinVert& v1, 
   return float(m * d.state.offset_factor + r * d.state.offset_units);
 }
 
-void finish_vertices(const DrawRecord& d, const ClipPlanes& planes, const float* soa, const float* vars, int K,
-                     size_t n, unsigned* codes, WinVert* win) {
+void finish_vertices(const DrawRecord& d, const ClipPlanes& planes, const float* soa, const float* vars,
+                     int K, size_t n, unsigned* codes, WinVert* win) {
   const Float8 inf(std::numeric_limits<float>::infinity());
   const Float8 band(2.0f * kGuardBand), limit(2.0f * kGuardBand * float(kSubpixelOne));
   for (size_t base = 0; base < n; base += 8) {
     const float* b = soa + base * 4;
-    const Float8 x = Float8::load(b), y = Float8::load(b + 8), z = Float8::load(b + 16), w = Float8::load(b + 24);
+    const Float8 x = Float8::load(b), y = Float8::load(b + 8), z = Float8::load(b + 16),
+                 w = Float8::load(b + 24);
     // clip_code: distances in the same order of operations, NaN outside.
     Int8 code(0);
     for (int i = 0; i < planes.count; ++i) {
       const glm::vec4& pn = planes.n[i];
-      const Float8 dist = Float8(pn.x) * x + Float8(pn.y) * y + Float8(pn.z) * z + Float8(pn.w) * w + Float8(planes.d[i]);
+      const Float8 dist =
+          Float8(pn.x) * x + Float8(pn.y) * y + Float8(pn.z) * z + Float8(pn.w) * w + Float8(planes.d[i]);
       code = code | select(dist >= Float8(0.0f), Int8(0), Int8(int32_t(1u << i)));
     }
     const Mask8 finite = (abs(x) < inf) & (abs(y) < inf) & (abs(z) < inf) & (abs(w) < inf);
@@ -95,10 +97,10 @@ void finish_vertices(const DrawRecord& d, const ClipPlanes& planes, const float*
 }
 
 Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2,
-                     const float* flat_src, uint32_t prim_id, Facing facing, bool apply_offset,
-                     Arena& arena, Counters& c, bool* culled) {
-  return setup_triangle_inline(d, SetupConstants(d), v0, v1, v2, flat_src, prim_id, facing, apply_offset, arena, c,
-                               culled);
+                     const float* flat_src, uint32_t prim_id, Facing facing, bool apply_offset, Arena& arena,
+                     Counters& c, bool* culled) {
+  return setup_triangle_inline(d, SetupConstants(d), v0, v1, v2, flat_src, prim_id, facing, apply_offset,
+                               arena, c, culled);
 }
 
 int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const float* flat_src,
@@ -123,9 +125,15 @@ int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const 
   if (backwards) std::swap(a, b);
   WinVert q[4] = {a, b, b, a};
   if (x_major) {
-    q[0].y -= half; q[1].y -= half; q[2].y += half; q[3].y += half;
+    q[0].y -= half;
+    q[1].y -= half;
+    q[2].y += half;
+    q[3].y += half;
   } else {
-    q[0].x += half; q[1].x += half; q[2].x -= half; q[3].x -= half;
+    q[0].x += half;
+    q[1].x += half;
+    q[2].x -= half;
+    q[3].x -= half;
   }
   for (auto& v : q) {
     v.z += z_offset;
@@ -133,8 +141,10 @@ int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const 
       // The lattice position of the point one sub-pixel step further; the float position
       // (for the planes) stays.
       const float ox = v.x, oy = v.y;
-      if (x_major) v.x += 1.0f / float(kSubpixelOne);
-      else v.y += 1.0f / float(kSubpixelOne);
+      if (x_major)
+        v.x += 1.0f / float(kSubpixelOne);
+      else
+        v.y += 1.0f / float(kSubpixelOne);
       snap_vertex(v);
       v.x = ox;
       v.y = oy;
@@ -144,27 +154,35 @@ int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const 
   }
   const Facing f = front ? Facing::Front : Facing::Back;
   int n = 0;
-  if (Prim* p = setup_triangle(d, q[0], q[1], q[2], flat_src, prim_id, f, false, arena, c, nullptr)) out[n++] = p;
-  if (Prim* p = setup_triangle(d, q[0], q[2], q[3], flat_src, prim_id, f, false, arena, c, nullptr)) out[n++] = p;
+  if (Prim* p = setup_triangle(d, q[0], q[1], q[2], flat_src, prim_id, f, false, arena, c, nullptr))
+    out[n++] = p;
+  if (Prim* p = setup_triangle(d, q[0], q[2], q[3], flat_src, prim_id, f, false, arena, c, nullptr))
+    out[n++] = p;
   return n;
 }
 
-int setup_point(const DrawRecord& d, const WinVert& v, uint32_t prim_id, bool front,
-                float z_offset, Arena& arena, Counters& c, Prim** out) {
+int setup_point(const DrawRecord& d, const WinVert& v, uint32_t prim_id, bool front, float z_offset,
+                Arena& arena, Counters& c, Prim** out) {
   const float half = std::max(d.state.point_size, 1.0f) * 0.5f;
   WinVert q[4] = {v, v, v, v};
-  q[0].x -= half; q[0].y -= half;
-  q[1].x += half; q[1].y -= half;
-  q[2].x += half; q[2].y += half;
-  q[3].x -= half; q[3].y += half;
+  q[0].x -= half;
+  q[0].y -= half;
+  q[1].x += half;
+  q[1].y -= half;
+  q[2].x += half;
+  q[2].y += half;
+  q[3].x -= half;
+  q[3].y += half;
   for (auto& w : q) {
     w.z += z_offset;
     snap_vertex(w);
   }
   const Facing f = front ? Facing::Front : Facing::Back;
   int n = 0;
-  if (Prim* p = setup_triangle(d, q[0], q[1], q[2], v.var, prim_id, f, false, arena, c, nullptr)) out[n++] = p;
-  if (Prim* p = setup_triangle(d, q[0], q[2], q[3], v.var, prim_id, f, false, arena, c, nullptr)) out[n++] = p;
+  if (Prim* p = setup_triangle(d, q[0], q[1], q[2], v.var, prim_id, f, false, arena, c, nullptr))
+    out[n++] = p;
+  if (Prim* p = setup_triangle(d, q[0], q[2], q[3], v.var, prim_id, f, false, arena, c, nullptr))
+    out[n++] = p;
   return n;
 }
 

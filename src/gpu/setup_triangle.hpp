@@ -16,7 +16,8 @@ namespace tessel::gpu::detail {
 // size (whose trip counts a branch predictor cannot know): the edges are tested on the four
 // groups of the window's first four rows, or on all eight when the bbox is taller, and the
 // result is cut to the bbox by two masks from tables.
-__attribute__((always_inline)) inline uint64_t small_coverage(const EdgeEq* e, int minx, int miny, int maxx, int maxy) {
+__attribute__((always_inline)) inline uint64_t small_coverage(const EdgeEq* e, int minx, int miny, int maxx,
+                                                              int maxy) {
   // Bits of Prim::cover for pixel columns [lo, hi] of the window (all rows), and for rows.
   static constexpr auto masks = [] {
     struct Tables {
@@ -80,15 +81,20 @@ struct PlaneSolver {
 // over the chunk's triangles, where the DrawRecord's fields would be loaded again after each
 // store into a Prim (which the compiler cannot tell from them).
 struct SetupConstants {
-  bool cull_ccw, cull_cw;   // culled when the snapped area is positive / negative (Facing::FromArea)
-  bool ccw_front;           // front-facing when the area is positive
+  bool cull_ccw, cull_cw;  // culled when the snapped area is positive / negative (Facing::FromArea)
+  bool ccw_front;          // front-facing when the area is positive
   int area_x0, area_y0, area_x1, area_y1;
   int varyings;
-  uint64_t flat, linear;    // components from the provoking vertex; flat or noperspective
+  uint64_t flat, linear;  // components from the provoking vertex; flat or noperspective
   explicit SetupConstants(const DrawRecord& d)
       : ccw_front(d.state.front_face == FrontFace::CCW),
-        area_x0(d.area_x0), area_y0(d.area_y0), area_x1(d.area_x1), area_y1(d.area_y1),
-        varyings(d.program->varyings), flat(d.program->flat), linear(d.program->flat | d.program->noperspective) {
+        area_x0(d.area_x0),
+        area_y0(d.area_y0),
+        area_x1(d.area_x1),
+        area_y1(d.area_y1),
+        varyings(d.program->varyings),
+        flat(d.program->flat),
+        linear(d.program->flat | d.program->noperspective) {
     const CullMode cm = d.state.cull;
     const bool cull_front = cm == CullMode::Front || cm == CullMode::FrontAndBack;
     const bool cull_back = cm == CullMode::Back || cm == CullMode::FrontAndBack;
@@ -98,10 +104,11 @@ struct SetupConstants {
 };
 
 // setup_triangle (stages.hpp), inline for the geometry phase's loop over a chunk's triangles.
-__attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawRecord& d, const SetupConstants& sc,
-                                                                  const WinVert& v0, const WinVert& v1,
-                                                                  const WinVert& v2, const float* flat_src,
-                                                                  uint32_t prim_id, Facing facing, bool apply_offset,
+__attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawRecord& d,
+                                                                  const SetupConstants& sc, const WinVert& v0,
+                                                                  const WinVert& v1, const WinVert& v2,
+                                                                  const float* flat_src, uint32_t prim_id,
+                                                                  Facing facing, bool apply_offset,
                                                                   Arena& arena, Counters& c, bool* culled) {
   if (culled) *culled = false;
   // Clipping keeps positions finite and inside the guard band; a vertex that still is not
@@ -208,9 +215,11 @@ __attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawReco
     return r;
   };
   auto store4 = [](float* q, f4 r) { std::memcpy(q, &r, sizeof r); };
-  const d4 dx1 = d4{} + s.dx1, dy1 = d4{} + s.dy1, dx2 = d4{} + s.dx2, dy2 = d4{} + s.dy2, inv = d4{} + s.inv_det;
+  const d4 dx1 = d4{} + s.dx1, dy1 = d4{} + s.dy1, dx2 = d4{} + s.dx2, dy2 = d4{} + s.dy2,
+           inv = d4{} + s.inv_det;
   for (; k + 4 <= K && !((linear >> k) & 0xF); k += 4) {
-    const f4 a0 = load4(v0.var + k) * v0.oow, a1 = load4(v1.var + k) * v1.oow, a2 = load4(v2.var + k) * v2.oow;
+    const f4 a0 = load4(v0.var + k) * v0.oow, a1 = load4(v1.var + k) * v1.oow,
+             a2 = load4(v2.var + k) * v2.oow;
     const d4 b0 = __builtin_convertvector(a0, d4);
     const d4 d1 = __builtin_convertvector(a1, d4) - b0, d2 = __builtin_convertvector(a2, d4) - b0;
     store4(pl + k, a0);

@@ -83,11 +83,11 @@ inline unsigned clip_code(const ClipPlanes& planes, const glm::vec4& pos) {
 }
 // Clips the convex polygon in[0..n) against the planes in `mask`; returns the vertex count
 // (0 when nothing is left) and points *out at the result (one of the two buffers).
-int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, ClipVert* b,
-                 int varyings, ClipVert** out);
+int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, ClipVert* b, int varyings,
+                 ClipVert** out);
 // Clips the segment p0-p1: the kept part is [t0, t1] of the parameter; false if none.
-bool clip_line(const ClipPlanes& planes, unsigned mask, const glm::vec4& p0, const glm::vec4& p1,
-               float& t0, float& t1);
+bool clip_line(const ClipPlanes& planes, unsigned mask, const glm::vec4& p0, const glm::vec4& p1, float& t0,
+               float& t1);
 
 // --- setup.cpp --------------------------------------------------------------------------------
 // A vertex in window coordinates: x, y in pixels (y up), z in the depth range, 1/w.
@@ -132,8 +132,8 @@ inline WinVert to_window(const DrawRecord& d, const glm::vec4& pos, const float*
 // position (to_window) of each one inside every plane; eight at a time. `soa` holds the clip
 // positions as blocks of eight x, eight y, eight z and eight w; vars the varyings, K per
 // vertex. The same bits as the one-vertex functions.
-void finish_vertices(const DrawRecord& d, const ClipPlanes& planes, const float* soa, const float* vars, int K,
-                     size_t n, unsigned* codes, WinVert* win);
+void finish_vertices(const DrawRecord& d, const ClipPlanes& planes, const float* soa, const float* vars,
+                     int K, size_t n, unsigned* codes, WinVert* win);
 
 // How setup decides the facing of a triangle.
 enum class Facing : int8_t { FromArea = -1, Back = 0, Front = 1 };
@@ -144,8 +144,8 @@ enum class Facing : int8_t { FromArea = -1, Back = 0, Front = 1 };
 // 1/w and every varying (flat components from `flat_src`). z_offset is added to depth.
 // Returns nullptr when the triangle is culled, has zero area or covers no pixel.
 Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2,
-                     const float* flat_src, uint32_t prim_id, Facing facing, bool apply_offset,
-                     Arena& arena, Counters& c, bool* culled);
+                     const float* flat_src, uint32_t prim_id, Facing facing, bool apply_offset, Arena& arena,
+                     Counters& c, bool* culled);
 // Polygon offset of GL 4.6 §14.6.5 for the plane through three window vertices.
 float polygon_offset(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2);
 // A line of the draw's line width between two window vertices, as up to two Prims
@@ -153,7 +153,7 @@ float polygon_offset(const DrawRecord& d, const WinVert& v0, const WinVert& v1, 
 int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const float* flat_src,
                uint32_t prim_id, bool front, float z_offset, Arena& arena, Counters& c, Prim** out);
 // A point of the draw's point size: a square, as up to two Prims.
-int setup_point(const DrawRecord& d, const WinVert& v, uint32_t prim_id, bool front,
-                float z_offset, Arena& arena, Counters& c, Prim** out);
+int setup_point(const DrawRecord& d, const WinVert& v, uint32_t prim_id, bool front, float z_offset,
+                Arena& arena, Counters& c, Prim** out);
 
 }  // namespace tessel::gpu::detail

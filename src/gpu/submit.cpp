@@ -13,7 +13,8 @@ namespace tessel::gpu {
 using namespace detail;
 
 // Expands a strip/fan/loop/list with primitive restart into an independent list.
-std::vector<uint32_t> detail::expand_restart(Topology& t, const std::vector<uint32_t>& idx, uint32_t restart) {
+std::vector<uint32_t> detail::expand_restart(Topology& t, const std::vector<uint32_t>& idx,
+                                             uint32_t restart) {
   std::vector<uint32_t> out;
   const Topology in = t;
   size_t start = 0;
@@ -40,8 +41,10 @@ static Rect render_area(const RenderState& s, int width, int height) {
   Rect r{0, 0, width, height};
   if (s.scissor_test) {
     const int x0 = std::max(r.x, s.scissor.x), y0 = std::max(r.y, s.scissor.y);
-    const int x1 = std::min<int64_t>(int64_t(r.x) + r.width, int64_t(s.scissor.x) + std::max(0, s.scissor.width));
-    const int y1 = std::min<int64_t>(int64_t(r.y) + r.height, int64_t(s.scissor.y) + std::max(0, s.scissor.height));
+    const int x1 =
+        std::min<int64_t>(int64_t(r.x) + r.width, int64_t(s.scissor.x) + std::max(0, s.scissor.width));
+    const int y1 =
+        std::min<int64_t>(int64_t(r.y) + r.height, int64_t(s.scissor.y) + std::max(0, s.scissor.height));
     r = {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
   }
   return r;
@@ -77,18 +80,22 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
                      const RenderState& state, const DrawCall& call, uint32_t required_attribs) {
   note_draw_submitted();  // from now on earlier resources may be read by queued work
   if (!fb_) throw Error("draw: no framebuffer bound");
-  if (unsigned(call.topology) > unsigned(Topology::TriangleFan)) throw Error("draw: invalid topology " + std::to_string(int(call.topology)));
+  if (unsigned(call.topology) > unsigned(Topology::TriangleFan))
+    throw Error("draw: invalid topology " + std::to_string(int(call.topology)));
   if (unsigned(state.cull) > unsigned(CullMode::FrontAndBack) || unsigned(state.front_face) > 1 ||
-      unsigned(state.polygon_mode) > 2 || unsigned(state.polygon_mode_back) > 2 || unsigned(state.depth_func) > 7)
+      unsigned(state.polygon_mode) > 2 || unsigned(state.polygon_mode_back) > 2 ||
+      unsigned(state.depth_func) > 7)
     throw Error("draw: invalid enum in render state");
-  if (!(state.line_width > 0.0f) || !(state.point_size > 0.0f) || state.line_width > 1024.0f || state.point_size > 8192.0f)
+  if (!(state.line_width > 0.0f) || !(state.point_size > 0.0f) || state.line_width > 1024.0f ||
+      state.point_size > 8192.0f)
     throw Error("draw: line width " + std::to_string(state.line_width) + " / point size " +
                 std::to_string(state.point_size) + " out of range");
   if (!std::isfinite(state.depth_near) || !std::isfinite(state.depth_far) ||
       !std::isfinite(state.offset_factor) || !std::isfinite(state.offset_units))
     throw Error("draw: depth range and polygon offset must be finite");
   if (call.count == 0 || call.instance_count == 0) return;
-  if (uint64_t(call.base_instance) + call.instance_count > UINT32_MAX) throw Error("draw: instance range overflows");
+  if (uint64_t(call.base_instance) + call.instance_count > UINT32_MAX)
+    throw Error("draw: instance range overflows");
   for (int i = 0; i < kMaxClipPlanes; ++i)
     if ((state.clip_plane_enable >> i) & 1)
       for (int k = 0; k < 4; ++k)
@@ -116,13 +123,16 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   if (call.index_buffer) {
     const size_t isz = call.index_type == IndexType::U8 ? 1 : call.index_type == IndexType::U16 ? 2 : 4;
     if (unsigned(call.index_type) > 2) throw Error("draw: invalid index type");
-    if (call.index_offset % isz) throw Error("draw: index offset " + std::to_string(call.index_offset) + " is not aligned to the index size");
+    if (call.index_offset % isz)
+      throw Error("draw: index offset " + std::to_string(call.index_offset) +
+                  " is not aligned to the index size");
     // Overflow-safe: the indices [first, first + count) must lie in the buffer after the offset.
     const size_t size = call.index_buffer->size();
     const uint64_t available = call.index_offset <= size ? (size - call.index_offset) / isz : 0;
     if (call.index_offset > size || uint64_t(call.first) + call.count > available)
-      throw Error("draw: indices [" + std::to_string(call.first) + ", " + std::to_string(uint64_t(call.first) + call.count) +
-                  ") at byte offset " + std::to_string(call.index_offset) + " are past the end of an index buffer of " +
+      throw Error("draw: indices [" + std::to_string(call.first) + ", " +
+                  std::to_string(uint64_t(call.first) + call.count) + ") at byte offset " +
+                  std::to_string(call.index_offset) + " are past the end of an index buffer of " +
                   std::to_string(size) + " bytes");
     const uint64_t begin = uint64_t(call.index_offset) + uint64_t(call.first) * isz;
     const std::byte* src = call.index_buffer->data() + begin;
@@ -178,8 +188,9 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   // windows is still to do.
   const uint64_t chunks = uint64_t(d->instance_count) * ((d->prim_count + kChunkPrims - 1) / kChunkPrims);
   if (chunks > (uint64_t(1) << 13))
-    throw Error("draw: " + std::to_string(uint64_t(d->prim_count) * d->instance_count) +
-                " primitives (instances included) in one draw is more than Tessel runs at once; split the draw");
+    throw Error(
+        "draw: " + std::to_string(uint64_t(d->prim_count) * d->instance_count) +
+        " primitives (instances included) in one draw is more than Tessel runs at once; split the draw");
 
   if (frame_->commands.empty()) frame_->target = make_target();
   d->target = frame_->target;
@@ -222,8 +233,9 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   d->depth_resolution = 1.0f / 16777216.0f;  // 2^-24 for 24-bit depth
   d->early_depth = !d->program->discards && !d->program->writes_depth;
   d->fast_depth = d->target.depth && d->state.depth_test && !(d->state.stencil_test && d->target.has_stencil);
-  d->fast_color = d->target.color_count == 1 && d->target.color[0].data && d->target.color[0].format == Format::RGBA8 &&
-                  !d->state.blend[0].enabled && d->state.blend[0].write_mask == 0xF && d->program->outputs >= 1;
+  d->fast_color = d->target.color_count == 1 && d->target.color[0].data &&
+                  d->target.color[0].format == Format::RGBA8 && !d->state.blend[0].enabled &&
+                  d->state.blend[0].write_mask == 0xF && d->program->outputs >= 1;
 
   frame_->pending_prims += uint64_t(d->prim_count) * d->instance_count;
   frame_->commands.push_back({false, uint32_t(frame_->draws.size())});

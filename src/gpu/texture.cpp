@@ -44,7 +44,8 @@ inline uint8_t float_to_unorm8(float c) { return uint8_t(std::lrint(sat(c) * 255
 inline uint32_t float_to_unorm24(float d) { return uint32_t(std::llrint(double(sat(d)) * kD24Max)); }
 inline float unorm24_to_float(uint32_t d) { return float(double(d & 0xFFFFFFu) * (1.0 / kD24Max)); }
 
-template <Format F> TESSEL_INLINE glm::vec4 decode(const std::byte* p) {
+template <Format F>
+TESSEL_INLINE glm::vec4 decode(const std::byte* p) {
   if constexpr (F == Format::RGBA8) {
     uint8_t b[4];
     std::memcpy(b, p, 4);
@@ -78,17 +79,26 @@ template <Format F> TESSEL_INLINE glm::vec4 decode(const std::byte* p) {
 }
 
 // Calls fn(std::integral_constant<Format, F>{}) for the runtime format f.
-template <class Fn> decltype(auto) with_format(Format f, Fn&& fn) {
+template <class Fn>
+decltype(auto) with_format(Format f, Fn&& fn) {
   using F = Format;
   switch (f) {
-    case F::RGBA8: return fn(std::integral_constant<F, F::RGBA8>{});
-    case F::R8: return fn(std::integral_constant<F, F::R8>{});
-    case F::RG8: return fn(std::integral_constant<F, F::RG8>{});
-    case F::RGBA16F: return fn(std::integral_constant<F, F::RGBA16F>{});
-    case F::RGBA32F: return fn(std::integral_constant<F, F::RGBA32F>{});
-    case F::Depth24: return fn(std::integral_constant<F, F::Depth24>{});
-    case F::Depth32F: return fn(std::integral_constant<F, F::Depth32F>{});
-    case F::Depth24Stencil8: break;
+    case F::RGBA8:
+      return fn(std::integral_constant<F, F::RGBA8>{});
+    case F::R8:
+      return fn(std::integral_constant<F, F::R8>{});
+    case F::RG8:
+      return fn(std::integral_constant<F, F::RG8>{});
+    case F::RGBA16F:
+      return fn(std::integral_constant<F, F::RGBA16F>{});
+    case F::RGBA32F:
+      return fn(std::integral_constant<F, F::RGBA32F>{});
+    case F::Depth24:
+      return fn(std::integral_constant<F, F::Depth24>{});
+    case F::Depth32F:
+      return fn(std::integral_constant<F, F::Depth32F>{});
+    case F::Depth24Stencil8:
+      break;
   }
   return fn(std::integral_constant<F, F::Depth24Stencil8>{});
 }
@@ -102,11 +112,14 @@ glm::vec4 detail::decode_texel(Format f, const std::byte* p) {
 void detail::encode_texel(Format f, std::byte* p, const glm::vec4& c) {
   switch (f) {
     case Format::RGBA8: {
-      const uint8_t b[4] = {float_to_unorm8(c.x), float_to_unorm8(c.y), float_to_unorm8(c.z), float_to_unorm8(c.w)};
+      const uint8_t b[4] = {float_to_unorm8(c.x), float_to_unorm8(c.y), float_to_unorm8(c.z),
+                            float_to_unorm8(c.w)};
       std::memcpy(p, b, 4);
       return;
     }
-    case Format::R8: p[0] = std::byte(float_to_unorm8(c.x)); return;
+    case Format::R8:
+      p[0] = std::byte(float_to_unorm8(c.x));
+      return;
     case Format::RG8:
       p[0] = std::byte(float_to_unorm8(c.x));
       p[1] = std::byte(float_to_unorm8(c.y));
@@ -116,7 +129,9 @@ void detail::encode_texel(Format f, std::byte* p, const glm::vec4& c) {
       std::memcpy(p, h, 8);
       return;
     }
-    case Format::RGBA32F: std::memcpy(p, &c[0], 16); return;
+    case Format::RGBA32F:
+      std::memcpy(p, &c[0], 16);
+      return;
     case Format::Depth24: {
       const uint32_t w = float_to_unorm24(c.x);
       std::memcpy(p, &w, 4);
@@ -256,9 +271,9 @@ void Texture2D::upload(int level, const void* data, size_t bytes) {
                 std::to_string(levels()) + " levels)");
   Level& l = levels_[size_t(level)];
   if (bytes != l.data.size())
-    throw Error("Texture2D::upload: level " + std::to_string(level) + " of a " + size_string(l.width, l.height) +
-                " " + format_info(format_).name + " texture needs " + std::to_string(l.data.size()) +
-                " bytes, got " + std::to_string(bytes));
+    throw Error("Texture2D::upload: level " + std::to_string(level) + " of a " +
+                size_string(l.width, l.height) + " " + format_info(format_).name + " texture needs " +
+                std::to_string(l.data.size()) + " bytes, got " + std::to_string(bytes));
   if (data == nullptr) throw Error("Texture2D::upload: null data");
   std::memcpy(l.data.data(), data, bytes);
 }
@@ -374,7 +389,6 @@ void TextureCube::generate_mipmaps() {
 
 namespace {
 
-
 // NaN -> 0 and infinities to a large finite value, so index arithmetic stays defined.
 TESSEL_INLINE float sane(float s) {
   if (!(s == s)) return 0.0f;
@@ -397,14 +411,17 @@ TESSEL_INLINE int wrap_texel(int i, int size, Wrap mode) {
       int r = i % size;
       return r < 0 ? r + size : r;
     }
-    case Wrap::ClampToEdge: return i < 0 ? 0 : (i >= size ? size - 1 : i);
-    case Wrap::ClampToBorder: return (i < 0 || i >= size) ? -1 : i;
-    case Wrap::Clamp: return i < 0 ? 0 : (i >= size ? size - 1 : i);  // sample_level resolves it first
+    case Wrap::ClampToEdge:
+      return i < 0 ? 0 : (i >= size ? size - 1 : i);
+    case Wrap::ClampToBorder:
+      return (i < 0 || i >= size) ? -1 : i;
+    case Wrap::Clamp:
+      return i < 0 ? 0 : (i >= size ? size - 1 : i);  // sample_level resolves it first
     case Wrap::MirroredRepeat: {
       const int m2 = 2 * size;
       int r = i % m2;
       if (r < 0) r += m2;
-      const int a = r - size;                   // fmod(coord, 2 size) - size
+      const int a = r - size;                      // fmod(coord, 2 size) - size
       const int mirrored = a >= 0 ? a : -(1 + a);  // mirror(a)
       return (size - 1) - mirrored;
     }
@@ -420,14 +437,20 @@ inline bool is_linear(Filter f) {
 // missing channels read as 0 (alpha 1), depth formats read (d, 0, 0, 1).
 glm::vec4 border_for(Format f, const glm::vec4& b) {
   switch (f) {
-    case Format::RGBA8: return glm::vec4(sat(b.x), sat(b.y), sat(b.z), sat(b.w));
-    case Format::R8: return glm::vec4(sat(b.x), 0.0f, 0.0f, 1.0f);
-    case Format::RG8: return glm::vec4(sat(b.x), sat(b.y), 0.0f, 1.0f);
+    case Format::RGBA8:
+      return glm::vec4(sat(b.x), sat(b.y), sat(b.z), sat(b.w));
+    case Format::R8:
+      return glm::vec4(sat(b.x), 0.0f, 0.0f, 1.0f);
+    case Format::RG8:
+      return glm::vec4(sat(b.x), sat(b.y), 0.0f, 1.0f);
     case Format::RGBA16F:
-    case Format::RGBA32F: return b;
+    case Format::RGBA32F:
+      return b;
     case Format::Depth24:
-    case Format::Depth24Stencil8: return glm::vec4(sat(b.x), 0.0f, 0.0f, 1.0f);
-    case Format::Depth32F: return glm::vec4(b.x, 0.0f, 0.0f, 1.0f);
+    case Format::Depth24Stencil8:
+      return glm::vec4(sat(b.x), 0.0f, 0.0f, 1.0f);
+    case Format::Depth32F:
+      return glm::vec4(b.x, 0.0f, 0.0f, 1.0f);
   }
   return b;
 }
@@ -452,8 +475,8 @@ TESSEL_INLINE glm::vec4 lerp(const glm::vec4& a, const glm::vec4& b, float t) { 
 // Filters one level at (s, t) in [0,1] texture space (GL 4.6 §8.14.2, equations 8.9-8.11).
 // `border` is already passed through `xf`.
 template <Format F, class Xf>
-TESSEL_INLINE glm::vec4 sample_level(const LevelRef& L, Wrap ws, Wrap wt, float s, float t, bool linear, const glm::vec4& border,
-                       const Xf& xf) {
+TESSEL_INLINE glm::vec4 sample_level(const LevelRef& L, Wrap ws, Wrap wt, float s, float t, bool linear,
+                                     const glm::vec4& border, const Xf& xf) {
   constexpr size_t bpp = format_info(F).bytes;
   // GL 1.x CLAMP (GL 2.1 §3.8.7): the coordinate is clamped to [0, 1]; a nearest lookup then
   // stays on the edge texels, a linear one blends with the border beyond them.
@@ -507,7 +530,8 @@ Plan make_plan(const SamplerState& st, int levels, float lod) {
   const int q = levels - 1;  // the last level the texture has (its effective MAX_LEVEL)
   switch (st.min_filter) {
     case Filter::Nearest:
-    case Filter::Linear: return p;
+    case Filter::Linear:
+      return p;
     case Filter::NearestMipmapNearest:
     case Filter::LinearMipmapNearest: {
       if (l > 0.5f) p.level0 = int(std::min(std::ceil(l + 0.5f) - 1.0f, float(q)));
@@ -530,15 +554,19 @@ Plan make_plan(const SamplerState& st, int levels, float lod) {
 }
 
 template <Format F, class Xf>
-TESSEL_INLINE glm::vec4 run_plan(const Texture2D& tex, const Plan& p, const SamplerState& st, float s, float t,
-                   const glm::vec4& border, const Xf& xf) {
-  const glm::vec4 c0 = sample_level<F>(level_ref(tex, p.level0), st.wrap_s, st.wrap_t, s, t, p.linear, border, xf);
+TESSEL_INLINE glm::vec4 run_plan(const Texture2D& tex, const Plan& p, const SamplerState& st, float s,
+                                 float t, const glm::vec4& border, const Xf& xf) {
+  const glm::vec4 c0 =
+      sample_level<F>(level_ref(tex, p.level0), st.wrap_s, st.wrap_t, s, t, p.linear, border, xf);
   if (p.level1 < 0 || p.blend == 0.0f) return c0;
-  const glm::vec4 c1 = sample_level<F>(level_ref(tex, p.level1), st.wrap_s, st.wrap_t, s, t, p.linear, border, xf);
+  const glm::vec4 c1 =
+      sample_level<F>(level_ref(tex, p.level1), st.wrap_s, st.wrap_t, s, t, p.linear, border, xf);
   return lerp(c0, c1, p.blend);
 }
 
-inline bool fixed_point_depth(Format f) { return f != Format::Depth32F && f != Format::RGBA16F && f != Format::RGBA32F; }
+inline bool fixed_point_depth(Format f) {
+  return f != Format::Depth32F && f != Format::RGBA16F && f != Format::RGBA32F;
+}
 
 Compare make_compare(const Sampler2DShadow& s, float ref) {
   const bool fixed = fixed_point_depth(s.texture->format());
@@ -561,12 +589,18 @@ inline int select_face(float x, float y, float z) {
 
 inline FaceAxes face_axes(int face, float x, float y, float z) {
   switch (face) {
-    case 0: return {0, -z, -y, std::fabs(x)};
-    case 1: return {1, z, -y, std::fabs(x)};
-    case 2: return {2, x, z, std::fabs(y)};
-    case 3: return {3, x, -z, std::fabs(y)};
-    case 4: return {4, x, -y, std::fabs(z)};
-    default: return {5, -x, -y, std::fabs(z)};
+    case 0:
+      return {0, -z, -y, std::fabs(x)};
+    case 1:
+      return {1, z, -y, std::fabs(x)};
+    case 2:
+      return {2, x, z, std::fabs(y)};
+    case 3:
+      return {3, x, -z, std::fabs(y)};
+    case 4:
+      return {4, x, -y, std::fabs(z)};
+    default:
+      return {5, -x, -y, std::fabs(z)};
   }
 }
 
@@ -587,7 +621,8 @@ const glm::vec4 kMissing(0.0f, 0.0f, 0.0f, 1.0f);
 // LOD of a 2x2 quad from lanes 4q (origin), 4q+1 (x neighbour), 4q+2 (y neighbour).
 inline float quad_lod(const Float8& u, const Float8& v, int q, int w, int h) {
   const int o = q * 4;
-  return detail::lod_from_derivatives(u[o + 1] - u[o], v[o + 1] - v[o], u[o + 2] - u[o], v[o + 2] - v[o], w, h);
+  return detail::lod_from_derivatives(u[o + 1] - u[o], v[o + 1] - v[o], u[o + 2] - u[o], v[o + 2] - v[o], w,
+                                      h);
 }
 
 // log2 as llvmpipe takes it for the level of detail (its lp_build_fast_log2): the exponent
@@ -613,8 +648,10 @@ inline void quad_lods(const Float8& u, const Float8& v, int w, int h, float lod[
   const Float8 rho2 = max(ux * ux + vx * vx, uy * uy + vy * vy);
   for (int q = 0; q < 2; ++q) {
     const float r = rho2[4 * q];
-    if (r > 0.0f && r <= 3.4e38f) lod[q] = 0.5f * lod_log2(r);
-    else lod[q] = r == 0.0f ? -1000.0f : (r > 0.0f ? 1000.0f : r);  // 0: magnified; inf; NaN stays NaN
+    if (r > 0.0f && r <= 3.4e38f)
+      lod[q] = 0.5f * lod_log2(r);
+    else
+      lod[q] = r == 0.0f ? -1000.0f : (r > 0.0f ? 1000.0f : r);  // 0: magnified; inf; NaN stays NaN
   }
 }
 
@@ -694,7 +731,9 @@ inline Vec4<Float8> missing8() { return {Float8(0.0f), Float8(0.0f), Float8(0.0f
 
 }  // namespace
 
-Vec4<float> texture(const Sampler2D& s, const Vec2<float>& uv) { return to_vec(detail::sample_2d(s, uv.x, uv.y, 0.0f)); }
+Vec4<float> texture(const Sampler2D& s, const Vec2<float>& uv) {
+  return to_vec(detail::sample_2d(s, uv.x, uv.y, 0.0f));
+}
 
 namespace {
 
@@ -716,19 +755,22 @@ Vec4<Float8> sample_level_rgba8(const LevelRef& L, Wrap ws, Wrap wt, Float8 s, F
   const Int8 i0 = integral_to_int(fu), j0 = integral_to_int(fv);
   const Int8 x0 = wrap8(i0, L.w, ws), x1 = wrap8(i0 + Int8(1), L.w, ws);
   const Int8 y0 = wrap8(j0, L.h, wt) * row, y1 = wrap8(j0 + Int8(1), L.h, wt) * row;
-  const Vec4<Float8> t00 = decode_rgba8(gather_u32(L.data, y0 + x0)), t10 = decode_rgba8(gather_u32(L.data, y0 + x1));
-  const Vec4<Float8> t01 = decode_rgba8(gather_u32(L.data, y1 + x0)), t11 = decode_rgba8(gather_u32(L.data, y1 + x1));
+  const Vec4<Float8> t00 = decode_rgba8(gather_u32(L.data, y0 + x0)),
+                     t10 = decode_rgba8(gather_u32(L.data, y0 + x1));
+  const Vec4<Float8> t01 = decode_rgba8(gather_u32(L.data, y1 + x0)),
+                     t11 = decode_rgba8(gather_u32(L.data, y1 + x1));
   return lerp8(lerp8(t00, t10, a), lerp8(t01, t11, a), b);
 }
 
 #if defined(__AVX2__)
 // Both quads use levels p.level0 and p.level1 (if any); quad q blends them by blend[q].
-Vec4<Float8> run_plan_rgba8_linear(const Texture2D& tex, const Plan& p, const float blend[2], const SamplerState& st,
-                                   const Vec2<Float8>& uv) {
+Vec4<Float8> run_plan_rgba8_linear(const Texture2D& tex, const Plan& p, const float blend[2],
+                                   const SamplerState& st, const Vec2<Float8>& uv) {
   Rgba16 c = bilinear_rgba16(level_ref(tex, p.level0), st.wrap_s, st.wrap_t, uv.x, uv.y);
   if (p.level1 >= 0 && (blend[0] != 0.0f || blend[1] != 0.0f)) {
     const Rgba16 c1 = bilinear_rgba16(level_ref(tex, p.level1), st.wrap_s, st.wrap_t, uv.x, uv.y);
-    const int16_t w0 = lerp_weight(int(std::lrint(blend[0] * 256.0f))), w1 = lerp_weight(int(std::lrint(blend[1] * 256.0f)));
+    const int16_t w0 = lerp_weight(int(std::lrint(blend[0] * 256.0f))),
+                  w1 = lerp_weight(int(std::lrint(blend[1] * 256.0f)));
     c = lerp16(c, c1, _mm256_setr_epi16(w0, w0, w0, w0, w0, w0, w0, w0, w1, w1, w1, w1, w1, w1, w1, w1));
   }
   const __m256i packed = _mm256_or_si256(c.even, _mm256_slli_epi32(c.odd, 8));
@@ -736,16 +778,19 @@ Vec4<Float8> run_plan_rgba8_linear(const Texture2D& tex, const Plan& p, const fl
 }
 #endif
 
-Vec4<Float8> run_plan_rgba8(const Texture2D& tex, const Plan& p, const SamplerState& st, const Vec2<Float8>& uv) {
+Vec4<Float8> run_plan_rgba8(const Texture2D& tex, const Plan& p, const SamplerState& st,
+                            const Vec2<Float8>& uv) {
 #if defined(__AVX2__)
   if (p.linear) {
     const float blend[2] = {p.blend, p.blend};
     return run_plan_rgba8_linear(tex, p, blend, st, uv);
   }
 #endif
-  const Vec4<Float8> c0 = sample_level_rgba8(level_ref(tex, p.level0), st.wrap_s, st.wrap_t, uv.x, uv.y, p.linear);
+  const Vec4<Float8> c0 =
+      sample_level_rgba8(level_ref(tex, p.level0), st.wrap_s, st.wrap_t, uv.x, uv.y, p.linear);
   if (p.level1 < 0 || p.blend == 0.0f) return c0;
-  const Vec4<Float8> c1 = sample_level_rgba8(level_ref(tex, p.level1), st.wrap_s, st.wrap_t, uv.x, uv.y, p.linear);
+  const Vec4<Float8> c1 =
+      sample_level_rgba8(level_ref(tex, p.level1), st.wrap_s, st.wrap_t, uv.x, uv.y, p.linear);
   return lerp8(c0, c1, Float8(p.blend));
 }
 
@@ -787,10 +832,12 @@ Vec4<Float8> texture(const Sampler2D& s, const Vec2<Float8>& uv) {
     }
 #endif
     const Vec4<Float8> r0 = run_plan_rgba8(tex, p0, s.state, uv);
-    if (p0.level0 == p1.level0 && p0.level1 == p1.level1 && p0.blend == p1.blend && p0.linear == p1.linear) return r0;
+    if (p0.level0 == p1.level0 && p0.level1 == p1.level1 && p0.blend == p1.blend && p0.linear == p1.linear)
+      return r0;
     const Vec4<Float8> r1 = run_plan_rgba8(tex, p1, s.state, uv);
     const Mask8 first = Mask8::from_bits(0x0F);
-    return {select(first, r0.x, r1.x), select(first, r0.y, r1.y), select(first, r0.z, r1.z), select(first, r0.w, r1.w)};
+    return {select(first, r0.x, r1.x), select(first, r0.y, r1.y), select(first, r0.z, r1.z),
+            select(first, r0.w, r1.w)};
   }
   const glm::vec4 border = border_for(tex.format(), s.state.border_color);
   Vec4<Float8> r;
@@ -817,13 +864,16 @@ Vec4<Float8> textureLod(const Sampler2D& s, const Vec2<Float8>& uv, Float8 lod) 
   return r;
 }
 
-Vec4<float> textureGrad(const Sampler2D& s, const Vec2<float>& uv, const Vec2<float>& dx, const Vec2<float>& dy) {
+Vec4<float> textureGrad(const Sampler2D& s, const Vec2<float>& uv, const Vec2<float>& dx,
+                        const Vec2<float>& dy) {
   if (s.texture == nullptr) return to_vec(kMissing);
-  const float lod = detail::lod_from_derivatives(dx.x, dx.y, dy.x, dy.y, s.texture->width(), s.texture->height());
+  const float lod =
+      detail::lod_from_derivatives(dx.x, dx.y, dy.x, dy.y, s.texture->width(), s.texture->height());
   return to_vec(detail::sample_2d(s, uv.x, uv.y, lod));
 }
 
-Vec4<Float8> textureGrad(const Sampler2D& s, const Vec2<Float8>& uv, const Vec2<Float8>& dx, const Vec2<Float8>& dy) {
+Vec4<Float8> textureGrad(const Sampler2D& s, const Vec2<Float8>& uv, const Vec2<Float8>& dx,
+                         const Vec2<Float8>& dy) {
   if (s.texture == nullptr) return missing8();
   const int w = s.texture->width(), h = s.texture->height();
   Vec4<Float8> r;
@@ -866,7 +916,8 @@ Float8 texture(const Sampler2DShadow& s, const Vec3<Float8>& uvr) {
   Float8 r;
   for (int q = 0; q < kLanes / 4; ++q) {
     const float lod = quad_lod(uvr.x, uvr.y, q, tex.width(), tex.height());
-    for (int i = q * 4; i < q * 4 + 4; ++i) r[i] = detail::sample_2d_compare(s, uvr.x[i], uvr.y[i], uvr.z[i], lod);
+    for (int i = q * 4; i < q * 4 + 4; ++i)
+      r[i] = detail::sample_2d_compare(s, uvr.x[i], uvr.y[i], uvr.z[i], lod);
   }
   return r;
 }

@@ -26,7 +26,8 @@ static bool clears_everything(const TargetView& t, const ClearPrim& c, int x0, i
 // A pointer p such that p + y * row_bytes + x * bpp addresses (x, y) of a tile-local buffer
 // whose first byte holds pixel (x0, y0).
 static std::byte* tile_origin(std::byte* local, size_t row_bytes, size_t bpp, int x0, int y0) {
-  return reinterpret_cast<std::byte*>(reinterpret_cast<uintptr_t>(local) - size_t(y0) * row_bytes - size_t(x0) * bpp);
+  return reinterpret_cast<std::byte*>(reinterpret_cast<uintptr_t>(local) - size_t(y0) * row_bytes -
+                                      size_t(x0) * bpp);
 }
 
 // The most triangles handed to a program's raster() at once.
@@ -96,7 +97,8 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
       view.color[0].data = tile_origin(w.tile_color.data(), rb, color_bpp, x0, y0);
       view.color[0].row_bytes = rb;
       if (!fresh)
-        copy_rows(w.tile_color.data(), rb, target.color[0].data + size_t(y0) * target.color[0].row_bytes + size_t(x0) * color_bpp,
+        copy_rows(w.tile_color.data(), rb,
+                  target.color[0].data + size_t(y0) * target.color[0].row_bytes + size_t(x0) * color_bpp,
                   target.color[0].row_bytes, size_t(tw) * color_bpp, y1 - y0);
     }
     if (target.depth) {
@@ -105,8 +107,9 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
       view.depth = tile_origin(w.tile_depth.data(), rb, 4, x0, y0);
       view.depth_row_bytes = rb;
       if (!fresh)
-        copy_rows(w.tile_depth.data(), rb, target.depth + size_t(y0) * target.depth_row_bytes + size_t(x0) * 4,
-                  target.depth_row_bytes, size_t(tw) * 4, y1 - y0);
+        copy_rows(w.tile_depth.data(), rb,
+                  target.depth + size_t(y0) * target.depth_row_bytes + size_t(x0) * 4, target.depth_row_bytes,
+                  size_t(tw) * 4, y1 - y0);
     }
   }
 
@@ -136,8 +139,8 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
   if (local) {
     if (target.color[0].data)
       copy_rows(target.color[0].data + size_t(y0) * target.color[0].row_bytes + size_t(x0) * color_bpp,
-                target.color[0].row_bytes, w.tile_color.data(), size_t(kTileSize) * color_bpp, size_t(tw) * color_bpp, y1 - y0,
-                fresh);
+                target.color[0].row_bytes, w.tile_color.data(), size_t(kTileSize) * color_bpp,
+                size_t(tw) * color_bpp, y1 - y0, fresh);
     if (target.depth)
       copy_rows(target.depth + size_t(y0) * target.depth_row_bytes + size_t(x0) * 4, target.depth_row_bytes,
                 w.tile_depth.data(), size_t(kTileSize) * 4, size_t(tw) * 4, y1 - y0, fresh);

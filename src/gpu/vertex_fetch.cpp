@@ -15,18 +15,25 @@ namespace tessel::gpu {
 
 size_t attrib_type_size(AttribType t) {
   switch (t) {
-    case AttribType::F32: case AttribType::I32: case AttribType::U32: return 4;
-    case AttribType::F16: case AttribType::I16: case AttribType::U16: return 2;
-    case AttribType::I8: case AttribType::U8: return 1;
+    case AttribType::F32:
+    case AttribType::I32:
+    case AttribType::U32:
+      return 4;
+    case AttribType::F16:
+    case AttribType::I16:
+    case AttribType::U16:
+      return 2;
+    case AttribType::I8:
+    case AttribType::U8:
+      return 1;
   }
   return 4;
 }
 
 void Buffer::update(size_t offset, const void* data, size_t bytes) {
   if (offset > data_.size() || bytes > data_.size() - offset)
-    throw Error("Buffer::update: range [" + std::to_string(offset) + ", " +
-                std::to_string(offset + bytes) + ") is past the end of a buffer of " +
-                std::to_string(data_.size()) + " bytes");
+    throw Error("Buffer::update: range [" + std::to_string(offset) + ", " + std::to_string(offset + bytes) +
+                ") is past the end of a buffer of " + std::to_string(data_.size()) + " bytes");
   before_write();
   max_cache_.clear();
   if (bytes) std::memcpy(data_.data() + offset, data, bytes);
@@ -50,7 +57,8 @@ uint32_t Buffer::max_u32(size_t offset, size_t count) const {
 namespace detail {
 namespace {
 
-template <class T> inline T read(const std::byte* p) {
+template <class T>
+inline T read(const std::byte* p) {
   T v;
   std::memcpy(&v, p, sizeof v);
   return v;
@@ -58,8 +66,10 @@ template <class T> inline T read(const std::byte* p) {
 
 float component(const VertexAttrib& a, const std::byte* p) {
   switch (a.type) {
-    case AttribType::F32: return read<float>(p);
-    case AttribType::F16: return half_to_float(read<uint16_t>(p));
+    case AttribType::F32:
+      return read<float>(p);
+    case AttribType::F16:
+      return half_to_float(read<uint16_t>(p));
     case AttribType::I8: {
       const float v = read<int8_t>(p);
       return a.normalized ? std::max(v / 127.0f, -1.0f) : v;
@@ -90,14 +100,22 @@ float component(const VertexAttrib& a, const std::byte* p) {
 
 int32_t integer_component(const VertexAttrib& a, const std::byte* p) {
   switch (a.type) {
-    case AttribType::I8: return read<int8_t>(p);
-    case AttribType::U8: return read<uint8_t>(p);
-    case AttribType::I16: return read<int16_t>(p);
-    case AttribType::U16: return read<uint16_t>(p);
-    case AttribType::I32: return read<int32_t>(p);
-    case AttribType::U32: return int32_t(read<uint32_t>(p));
-    case AttribType::F32: return int32_t(read<float>(p));
-    case AttribType::F16: return int32_t(half_to_float(read<uint16_t>(p)));
+    case AttribType::I8:
+      return read<int8_t>(p);
+    case AttribType::U8:
+      return read<uint8_t>(p);
+    case AttribType::I16:
+      return read<int16_t>(p);
+    case AttribType::U16:
+      return read<uint16_t>(p);
+    case AttribType::I32:
+      return read<int32_t>(p);
+    case AttribType::U32:
+      return int32_t(read<uint32_t>(p));
+    case AttribType::F32:
+      return int32_t(read<float>(p));
+    case AttribType::F16:
+      return int32_t(half_to_float(read<uint16_t>(p)));
   }
   return 0;
 }
@@ -158,11 +176,13 @@ inline void broadcast_store(const float v[4], Vec4<Float8>& out) {
 // C floats per lane read straight from memory; the rest (0, 0, 0, 1).
 // Built in registers: a row written in parts to memory and read back whole would wait for
 // each part's store to retire (a failed store-to-load forward), for every lane.
-template <int C> inline f32x4 load_row(const std::byte* p) {
+template <int C>
+inline f32x4 load_row(const std::byte* p) {
 #if defined(__SSE4_1__)
   if constexpr (C == 4) return f32x4(_mm_loadu_ps(reinterpret_cast<const float*>(p)));
   const __m128 one = _mm_set_ss(1.0f);
-  if constexpr (C == 1) return f32x4(_mm_insert_ps(_mm_load_ss(reinterpret_cast<const float*>(p)), one, 0x30));
+  if constexpr (C == 1)
+    return f32x4(_mm_insert_ps(_mm_load_ss(reinterpret_cast<const float*>(p)), one, 0x30));
   const __m128 xy = _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p)));
   if constexpr (C == 2) return f32x4(_mm_insert_ps(xy, one, 0x30));
   const __m128 xyz = _mm_insert_ps(xy, _mm_load_ss(reinterpret_cast<const float*>(p) + 2), 0x20);
@@ -175,7 +195,8 @@ template <int C> inline f32x4 load_row(const std::byte* p) {
 }
 
 template <int C>
-inline void fetch_f32(const std::byte* base, size_t stride, const uint32_t (&ids)[kLanes], Vec4<Float8>& out) {
+inline void fetch_f32(const std::byte* base, size_t stride, const uint32_t (&ids)[kLanes],
+                      Vec4<Float8>& out) {
   f32x4 r[kLanes];
   for (int l = 0; l < kLanes; ++l) r[l] = load_row<C>(base + size_t(ids[l]) * stride);
   transpose_store(r, out);
@@ -223,11 +244,20 @@ void fetch_attributes8(const VertexLayout& layout, const uint32_t* ids, int n, u
     }
     if (a.type == AttribType::F32 && !a.integer) {
       switch (a.components) {
-        case 1: fetch_f32<1>(base, stride, lane, out); continue;
-        case 2: fetch_f32<2>(base, stride, lane, out); continue;
-        case 3: fetch_f32<3>(base, stride, lane, out); continue;
-        case 4: fetch_f32<4>(base, stride, lane, out); continue;
-        default: break;
+        case 1:
+          fetch_f32<1>(base, stride, lane, out);
+          continue;
+        case 2:
+          fetch_f32<2>(base, stride, lane, out);
+          continue;
+        case 3:
+          fetch_f32<3>(base, stride, lane, out);
+          continue;
+        case 4:
+          fetch_f32<4>(base, stride, lane, out);
+          continue;
+        default:
+          break;
       }
     }
     f32x4 r[kLanes];
@@ -258,8 +288,8 @@ void validate_vertex_range(const VertexLayout& layout, uint32_t max_id, uint32_t
     if (!b.buffer) throw Error(where + ": binding " + std::to_string(a.binding) + " has no buffer");
     const size_t size = attrib_type_size(a.type) * size_t(a.components);
     const size_t stride = effective_stride(a, b);
-    const uint64_t elements = b.divisor ? (instance_end == 0 ? 0 : (instance_end - 1) / b.divisor + 1)
-                                        : uint64_t(max_id) + 1;
+    const uint64_t elements =
+        b.divisor ? (instance_end == 0 ? 0 : (instance_end - 1) / b.divisor + 1) : uint64_t(max_id) + 1;
     if (elements == 0) continue;
     if (a.integer && (a.type == AttribType::F32 || a.type == AttribType::F16))
       throw Error(where + ": an integer attribute must have an integer type");
@@ -270,8 +300,8 @@ void validate_vertex_range(const VertexLayout& layout, uint32_t max_id, uint32_t
                           __builtin_add_overflow(end, uint64_t(size), &end);
     if (overflow || end > b.buffer->size())
       throw Error(where + ": reading " + std::to_string(elements) + (b.divisor ? " instances" : " vertices") +
-                  " needs " + (overflow ? std::string("more") : std::to_string(end)) + " bytes but the buffer has " +
-                  std::to_string(b.buffer->size()));
+                  " needs " + (overflow ? std::string("more") : std::to_string(end)) +
+                  " bytes but the buffer has " + std::to_string(b.buffer->size()));
   }
 }
 

@@ -14,7 +14,8 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 }  // namespace
 
 void Camera::validate() const {
-  if (!finite(eye) || !finite(lookat) || !finite(vup)) throw Error("camera: eye, lookat and vup must be finite");
+  if (!finite(eye) || !finite(lookat) || !finite(vup))
+    throw Error("camera: eye, lookat and vup must be finite");
   const glm::vec3 w = eye - lookat;
   if (glm::dot(w, w) == 0.0f) throw Error("camera: eye and lookat are the same point");
   if (glm::length(glm::cross(vup, w)) <= 1e-6f * glm::length(vup) * glm::length(w))
@@ -22,7 +23,8 @@ void Camera::validate() const {
   if (!(aspect > 0.0f) || !std::isfinite(aspect)) throw Error("camera: aspect must be positive");
   if (!std::isfinite(near) || !std::isfinite(far)) throw Error("camera: near and far must be finite");
   if (orthographic) {
-    if (!(ortho_height > 0.0f) || !std::isfinite(ortho_height)) throw Error("camera: ortho_height must be positive");
+    if (!(ortho_height > 0.0f) || !std::isfinite(ortho_height))
+      throw Error("camera: ortho_height must be positive");
     if (!(far > near)) throw Error("camera: far must be greater than near");
   } else {
     if (!(fov > 0.0f && fov < 3.14159265f)) throw Error("camera: fov must be between 0 and pi radians");

@@ -20,10 +20,22 @@ void sincos_turns(float t, float& s, float& c) {
   const float a = (q4 - float(q)) * (std::numbers::pi_v<float> * 0.5f);
   const float sa = std::sin(a), ca = std::cos(a);
   switch (q & 3) {
-    case 0: s = sa; c = ca; break;
-    case 1: s = ca; c = -sa; break;
-    case 2: s = -sa; c = -ca; break;
-    default: s = -ca; c = sa; break;
+    case 0:
+      s = sa;
+      c = ca;
+      break;
+    case 1:
+      s = ca;
+      c = -sa;
+      break;
+    case 2:
+      s = -sa;
+      c = -ca;
+      break;
+    default:
+      s = -ca;
+      c = sa;
+      break;
   }
 }
 
@@ -38,8 +50,10 @@ std::vector<uint32_t> Mesh::triangle_list() const {
     for (int k = 0; k + 2 < strip_length; ++k) {
       const uint32_t* p = &indices[s + size_t(k)];
       // Odd triangles of a strip swap their first two vertices (GL 4.6 §10.1.6).
-      if (k & 1) out.insert(out.end(), {p[1], p[0], p[2]});
-      else out.insert(out.end(), {p[0], p[1], p[2]});
+      if (k & 1)
+        out.insert(out.end(), {p[1], p[0], p[2]});
+      else
+        out.insert(out.end(), {p[0], p[1], p[2]});
     }
   }
   return out;
@@ -60,8 +74,8 @@ void Mesh::validate(const std::string& what) const {
   }
   for (size_t i = 0; i < indices.size(); ++i)
     if (indices[i] >= vertices.size())
-      throw Error(what + ": index " + std::to_string(i) + " is " + std::to_string(indices[i]) + ", but there are only " +
-                  std::to_string(vertices.size()) + " vertices");
+      throw Error(what + ": index " + std::to_string(i) + " is " + std::to_string(indices[i]) +
+                  ", but there are only " + std::to_string(vertices.size()) + " vertices");
   if (primitive == Primitive::Triangles && indices.size() % 3 != 0)
     throw Error(what + ": " + std::to_string(indices.size()) + " indices do not make whole triangles");
   if (primitive == Primitive::TriangleStrip &&
@@ -112,8 +126,10 @@ Mesh ParamSurface::create(int N, int M) const {
   for (int i = 0; i < N; ++i) {
     const uint32_t lo = uint32_t(i * (M + 1)), hi = uint32_t((i + 1) * (M + 1));
     for (int j = 0; j <= M; ++j) {
-      if (swap_rows) m.indices.insert(m.indices.end(), {hi + uint32_t(j), lo + uint32_t(j)});
-      else m.indices.insert(m.indices.end(), {lo + uint32_t(j), hi + uint32_t(j)});
+      if (swap_rows)
+        m.indices.insert(m.indices.end(), {hi + uint32_t(j), lo + uint32_t(j)});
+      else
+        m.indices.insert(m.indices.end(), {lo + uint32_t(j), hi + uint32_t(j)});
     }
   }
   return m;

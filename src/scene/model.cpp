@@ -48,7 +48,8 @@ void smooth_normals(Mesh& mesh) {
       glm::vec3 n(0.0f);
       for (size_t g : around[key(mesh.vertices[vi].pos)]) {
         const float gl = glm::length(face[g]);
-        if (g == f || (own_len > 0.0f && gl > 0.0f && glm::dot(own, face[g]) > cos_limit * own_len * gl)) n += face[g];
+        if (g == f || (own_len > 0.0f && gl > 0.0f && glm::dot(own, face[g]) > cos_limit * own_len * gl))
+          n += face[g];
       }
       const float len = glm::length(n);
       if (len > 0.0f && std::isfinite(len)) n /= len;
@@ -71,7 +72,8 @@ Model convert(const tinyobj::ObjReader& r, const std::string& name, const std::s
   const tinyobj::attrib_t& at = r.GetAttrib();
   const size_t nv = at.vertices.size() / 3, nn = at.normals.size() / 3, nt = at.texcoords.size() / 2;
   for (size_t i = 0; i < at.vertices.size(); ++i)
-    if (!std::isfinite(at.vertices[i])) throw Error(name + ": vertex " + std::to_string(i / 3 + 1) + " is not a finite number");
+    if (!std::isfinite(at.vertices[i]))
+      throw Error(name + ": vertex " + std::to_string(i / 3 + 1) + " is not a finite number");
   Model m;
   std::map<std::string, std::shared_ptr<const gpu::Texture2D>> textures;
   for (const tinyobj::material_t& mt : r.GetMaterials()) {
@@ -86,7 +88,8 @@ Model convert(const tinyobj::ObjReader& r, const std::string& name, const std::s
     if (!mt.diffuse_texname.empty()) {
       auto& t = textures[mt.diffuse_texname];
       if (!t) {
-        const std::string f = mt.diffuse_texname[0] == '/' ? mt.diffuse_texname : folder + "/" + mt.diffuse_texname;
+        const std::string f =
+            mt.diffuse_texname[0] == '/' ? mt.diffuse_texname : folder + "/" + mt.diffuse_texname;
         try {
           t = std::make_shared<gpu::Texture2D>(gpu::make_texture(gpu::load_image(f), true));
         } catch (const Error& e) {
@@ -117,7 +120,8 @@ Model convert(const tinyobj::ObjReader& r, const std::string& name, const std::s
       auto it = part_of.find(mid);
       if (it == part_of.end()) {
         it = part_of.emplace(mid, m.parts.size()).first;
-        m.parts.push_back({sh.name + (mid >= 0 ? "/" + r.GetMaterials()[size_t(mid)].name : ""), Mesh{}, mid});
+        m.parts.push_back(
+            {sh.name + (mid >= 0 ? "/" + r.GetMaterials()[size_t(mid)].name : ""), Mesh{}, mid});
         lookup.emplace_back();
         has_normals.push_back(true);
       }
@@ -128,22 +132,28 @@ Model convert(const tinyobj::ObjReader& r, const std::string& name, const std::s
         const tinyobj::index_t ix = sh.mesh.indices[offset + size_t(k)];
         if (ix.vertex_index < 0 || size_t(ix.vertex_index) >= nv)
           throw Error(name + ": shape '" + sh.name + "', face " + std::to_string(f + 1) + ": vertex index " +
-                      std::to_string(ix.vertex_index + 1) + " is outside the " + std::to_string(nv) + " vertices");
+                      std::to_string(ix.vertex_index + 1) + " is outside the " + std::to_string(nv) +
+                      " vertices");
         if (ix.normal_index >= 0 && size_t(ix.normal_index) >= nn)
           throw Error(name + ": shape '" + sh.name + "', face " + std::to_string(f + 1) + ": normal index " +
-                      std::to_string(ix.normal_index + 1) + " is outside the " + std::to_string(nn) + " normals");
+                      std::to_string(ix.normal_index + 1) + " is outside the " + std::to_string(nn) +
+                      " normals");
         if (ix.texcoord_index >= 0 && size_t(ix.texcoord_index) >= nt)
-          throw Error(name + ": shape '" + sh.name + "', face " + std::to_string(f + 1) + ": texture coordinate index " +
-                      std::to_string(ix.texcoord_index + 1) + " is outside the " + std::to_string(nt) + " coordinates");
+          throw Error(name + ": shape '" + sh.name + "', face " + std::to_string(f + 1) +
+                      ": texture coordinate index " + std::to_string(ix.texcoord_index + 1) +
+                      " is outside the " + std::to_string(nt) + " coordinates");
         const auto key = std::make_tuple(ix.vertex_index, ix.normal_index, ix.texcoord_index);
         auto [slot, fresh] = lookup[li].emplace(key, uint32_t(part.mesh.vertices.size()));
         if (fresh) {
           VertexData vd;
           vd.pos = v3(&at.vertices[size_t(ix.vertex_index) * 3]);
-          if (ix.normal_index >= 0) vd.norm = v3(&at.normals[size_t(ix.normal_index) * 3]);
-          else has_normals[li] = false;
+          if (ix.normal_index >= 0)
+            vd.norm = v3(&at.normals[size_t(ix.normal_index) * 3]);
+          else
+            has_normals[li] = false;
           if (ix.texcoord_index >= 0)
-            vd.tex = glm::vec2(float(at.texcoords[size_t(ix.texcoord_index) * 2]), float(at.texcoords[size_t(ix.texcoord_index) * 2 + 1]));
+            vd.tex = glm::vec2(float(at.texcoords[size_t(ix.texcoord_index) * 2]),
+                               float(at.texcoords[size_t(ix.texcoord_index) * 2 + 1]));
           part.mesh.vertices.push_back(vd);
         }
         part.mesh.indices.push_back(slot->second);
@@ -171,12 +181,14 @@ std::string folder_of(const std::string& path) {
 
 }  // namespace
 
-Model parse_obj(const std::string& obj_text, const std::string& mtl_text, const std::string& name, const std::string& folder) {
+Model parse_obj(const std::string& obj_text, const std::string& mtl_text, const std::string& name,
+                const std::string& folder) {
   tinyobj::ObjReaderConfig cfg;
   cfg.triangulate = true;
   cfg.vertex_color = false;
   tinyobj::ObjReader r;
-  if (!r.ParseFromString(obj_text, mtl_text, cfg)) throw Error(name + ": " + (r.Error().empty() ? "cannot parse" : r.Error()));
+  if (!r.ParseFromString(obj_text, mtl_text, cfg))
+    throw Error(name + ": " + (r.Error().empty() ? "cannot parse" : r.Error()));
   return convert(r, name, folder);
 }
 
@@ -188,10 +200,12 @@ Model load_obj(const std::string& path) {
   cfg.vertex_color = false;
   cfg.mtl_search_path = folder_of(path);
   tinyobj::ObjReader r;
-  if (!r.ParseFromFile(path, cfg)) throw Error(path + ": " + (r.Error().empty() ? "cannot parse" : r.Error()));
+  if (!r.ParseFromFile(path, cfg))
+    throw Error(path + ": " + (r.Error().empty() ? "cannot parse" : r.Error()));
   // A missing .mtl is only a warning to tinyobjloader; to us a material that cannot be found
   // is an error worth naming.
-  if (r.Warning().find("Material file [") != std::string::npos && r.Warning().find("not found") != std::string::npos)
+  if (r.Warning().find("Material file [") != std::string::npos &&
+      r.Warning().find("not found") != std::string::npos)
     throw Error(path + ": " + r.Warning().substr(0, r.Warning().find('\n')));
   return convert(r, path, folder_of(path));
 }

@@ -31,7 +31,9 @@ Geometry::Geometry(const Mesh& mesh, const std::string& name) : mesh_(mesh) {
 }
 
 gpu::DrawCall Geometry::draw_call() const {
-  return {.topology = gpu::Topology::Triangles, .count = count_, .index_buffer = &indices_,
+  return {.topology = gpu::Topology::Triangles,
+          .count = count_,
+          .index_buffer = &indices_,
           .index_type = gpu::IndexType::U32};
 }
 
@@ -79,7 +81,8 @@ glm::mat4 Scene::shadow_matrix(const Light& light) const {
   const glm::vec3 c(b), w = glm::vec3(light.wLightPos);
   const float r = b.w;
   auto up_for = [](const glm::vec3& dir) {
-    return std::fabs(glm::normalize(dir).y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    return std::fabs(glm::normalize(dir).y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f)
+                                                    : glm::vec3(0.0f, 1.0f, 0.0f);
   };
   if (light.wLightPos.w == 0.0f) {
     // Directional: an orthographic box around the bounding sphere, looking along -direction.
@@ -92,13 +95,17 @@ glm::mat4 Scene::shadow_matrix(const Light& light) const {
   if (light.spot_cos_cutoff > -1.0f) {
     const glm::vec3 d = glm::normalize(light.spot_direction);
     const float half = std::acos(std::clamp(light.spot_cos_cutoff, -1.0f, 1.0f));
-    if (half > glm::radians(85.0f)) throw Error("shadows: a spot light wider than 170 degrees cannot cast a shadow map");
-    const float far = std::max(dist + r, 1e-2f), near = std::max(far * 1e-3f, dist - r > 0.0f ? (dist - r) * 0.9f : far * 1e-3f);
-    return glm::perspective(2.0f * half + glm::radians(2.0f), 1.0f, near, far) * glm::lookAt(p, p + d, up_for(d));
+    if (half > glm::radians(85.0f))
+      throw Error("shadows: a spot light wider than 170 degrees cannot cast a shadow map");
+    const float far = std::max(dist + r, 1e-2f),
+                near = std::max(far * 1e-3f, dist - r > 0.0f ? (dist - r) * 0.9f : far * 1e-3f);
+    return glm::perspective(2.0f * half + glm::radians(2.0f), 1.0f, near, far) *
+           glm::lookAt(p, p + d, up_for(d));
   }
   if (dist <= r * 1.01f)
-    throw Error("shadows: the point light is inside the scene's bounding sphere (omnidirectional shadow maps are not "
-                "supported yet; use a spot or directional light)");
+    throw Error(
+        "shadows: the point light is inside the scene's bounding sphere (omnidirectional shadow maps are not "
+        "supported yet; use a spot or directional light)");
   const glm::vec3 d = (c - p) / dist;
   const float half = std::asin(std::min(r / dist, 0.999f));
   return glm::perspective(2.0f * half, 1.0f, (dist - r) * 0.9f, dist + r) * glm::lookAt(p, c, up_for(d));
@@ -177,7 +184,8 @@ void Scene::Render(gpu::Context& ctx, std::vector<PassStats>* passes) const {
     const int size = cube ? std::min(shadows.size, 1024) : shadows.size;
     if (shadow_maps_.size() != size_t(faces) || shadow_maps_[0]->width() != size) {
       shadow_maps_.clear();
-      for (int f = 0; f < faces; ++f) shadow_maps_.push_back(std::make_unique<gpu::Texture2D>(gpu::Format::Depth32F, size, size));
+      for (int f = 0; f < faces; ++f)
+        shadow_maps_.push_back(std::make_unique<gpu::Texture2D>(gpu::Format::Depth32F, size, size));
     }
     // The light pass: depth only, both faces, pushed back by the slope-scaled and constant bias.
     gpu::Framebuffer* previous = ctx.framebuffer();
@@ -273,7 +281,8 @@ void Scene::draw_planar_shadows(gpu::Context& ctx, const RenderState& state) con
     throw Error("planar shadows: light " + std::to_string(ps.light) + " does not exist (the scene has " +
                 std::to_string(lights.size()) + ")");
   const float nlen = glm::length(glm::vec3(ps.plane));
-  if (!(nlen > 0.0f) || !std::isfinite(nlen) || !std::isfinite(ps.plane.w)) throw Error("planar shadows: the plane has no normal");
+  if (!(nlen > 0.0f) || !std::isfinite(nlen) || !std::isfinite(ps.plane.w))
+    throw Error("planar shadows: the plane has no normal");
   const glm::vec4 P = ps.plane / nlen;
   const glm::vec4 L = lights[size_t(ps.light)].wLightPos;
   // Projection onto the plane from L (homogeneous, so directional lights work too):

@@ -27,7 +27,8 @@ constexpr float kDeg = 3.14159265358979f / 180.0f;
 // A JSON value with its place in the file, for messages.
 class Node {
  public:
-  Node(const json& j, std::string path, const std::string& file) : jp_(&j), path_(std::move(path)), fp_(&file) {}
+  Node(const json& j, std::string path, const std::string& file)
+      : jp_(&j), path_(std::move(path)), fp_(&file) {}
   const json& json_value() const { return *jp_; }
   const std::string& path() const { return path_; }
 
@@ -63,7 +64,8 @@ class Node {
   int integer(int lo, int hi) const {
     if (!j().is_number_integer()) fail("expected a whole number");
     const int64_t v = j().get<int64_t>();
-    if (v < lo || v > hi) fail("value " + std::to_string(v) + " is outside " + std::to_string(lo) + " .. " + std::to_string(hi));
+    if (v < lo || v > hi)
+      fail("value " + std::to_string(v) + " is outside " + std::to_string(lo) + " .. " + std::to_string(hi));
     return int(v);
   }
   bool boolean() const {
@@ -74,8 +76,10 @@ class Node {
     if (!j().is_string()) fail("expected a string");
     return j().get<std::string>();
   }
-  template <int N> glm::vec<N, float> vec(float lo = -1e30f, float hi = 1e30f) const {
-    if (!j().is_array() || j().size() != size_t(N)) fail("expected an array of " + std::to_string(N) + " numbers");
+  template <int N>
+  glm::vec<N, float> vec(float lo = -1e30f, float hi = 1e30f) const {
+    if (!j().is_array() || j().size() != size_t(N))
+      fail("expected an array of " + std::to_string(N) + " numbers");
     glm::vec<N, float> v;
     for (int i = 0; i < N; ++i) v[i] = item(size_t(i)).number(lo, hi);
     return v;
@@ -103,8 +107,12 @@ class WavingObject : public Object {
  public:
   WavingObject(std::shared_ptr<Flag> flag, int rows, int columns, float phase_speed,
                std::shared_ptr<const Material> material, std::shared_ptr<const Shader> shader)
-      : Object(std::make_shared<Geometry>(flag->create(rows, columns), "flag"), std::move(material), std::move(shader)),
-        flag_(std::move(flag)), rows_(rows), columns_(columns), phase_speed_(phase_speed) {}
+      : Object(std::make_shared<Geometry>(flag->create(rows, columns), "flag"), std::move(material),
+               std::move(shader)),
+        flag_(std::move(flag)),
+        rows_(rows),
+        columns_(columns),
+        phase_speed_(phase_speed) {}
   void Animate(float dt) override {
     Object::Animate(dt);
     if (phase_speed_ == 0.0f || dt == 0.0f) return;
@@ -120,7 +128,8 @@ class WavingObject : public Object {
 
 std::shared_ptr<const gpu::Texture2D> read_texture(const Node& n, const std::string& folder) {
   n.only({"file", "checker", "bumps"});
-  if (int(n.has("file")) + int(n.has("checker")) + int(n.has("bumps")) != 1) n.fail("give one of 'file', 'checker' or 'bumps'");
+  if (int(n.has("file")) + int(n.has("checker")) + int(n.has("bumps")) != 1)
+    n.fail("give one of 'file', 'checker' or 'bumps'");
   if (n.has("bumps")) {
     // A tangent-space normal map of round bumps: count x count of them, `height` scaling
     // their slope, for NormalMapShader.
@@ -182,9 +191,10 @@ std::shared_ptr<const gpu::Texture2D> read_texture(const Node& n, const std::str
   return t;
 }
 
-std::shared_ptr<Material> read_material(const Node& n, const std::map<std::string, std::shared_ptr<const gpu::Texture2D>>& textures) {
-  n.only({"ka", "kd", "ks", "shininess", "specular", "emission", "texture", "normal_map", "reflectance", "transmittance",
-          "refractive_index"});
+std::shared_ptr<Material> read_material(
+    const Node& n, const std::map<std::string, std::shared_ptr<const gpu::Texture2D>>& textures) {
+  n.only({"ka", "kd", "ks", "shininess", "specular", "emission", "texture", "normal_map", "reflectance",
+          "transmittance", "refractive_index"});
   auto m = std::make_shared<Material>();
   if (n.has("kd")) m->kd = n.at("kd").colour();
   m->ka = n.has("ka") ? n.at("ka").colour() : m->kd * 0.1f;
@@ -192,9 +202,12 @@ std::shared_ptr<Material> read_material(const Node& n, const std::map<std::strin
   if (n.has("shininess")) m->shininess = n.at("shininess").number(0.0f, 10000.0f);
   if (n.has("specular")) {
     const std::string sp = n.at("specular").string();
-    if (sp == "blinn") m->specular = Specular::Blinn;
-    else if (sp == "phong") m->specular = Specular::Phong;
-    else n.at("specular").fail("unknown specular model '" + sp + "' (expected blinn or phong)");
+    if (sp == "blinn")
+      m->specular = Specular::Blinn;
+    else if (sp == "phong")
+      m->specular = Specular::Phong;
+    else
+      n.at("specular").fail("unknown specular model '" + sp + "' (expected blinn or phong)");
   }
   if (n.has("emission")) m->emission = n.at("emission").colour();
   if (n.has("reflectance")) m->reflectance = n.at("reflectance").colour();
@@ -218,9 +231,12 @@ std::shared_ptr<Material> read_material(const Node& n, const std::map<std::strin
 Light read_light(const Node& n) {
   n.only({"position", "direction", "ambient", "color", "spot", "attenuation"});
   Light l;
-  if (n.has("position") == n.has("direction")) n.fail("give either 'position' (a point light) or 'direction' (toward the light)");
-  l.wLightPos = n.has("position") ? glm::vec4(n.at("position").vec<3>(), 1.0f) : glm::vec4(n.at("direction").vec<3>(), 0.0f);
-  if (n.has("direction") && glm::length(glm::vec3(l.wLightPos)) == 0.0f) n.at("direction").fail("the direction is zero");
+  if (n.has("position") == n.has("direction"))
+    n.fail("give either 'position' (a point light) or 'direction' (toward the light)");
+  l.wLightPos = n.has("position") ? glm::vec4(n.at("position").vec<3>(), 1.0f)
+                                  : glm::vec4(n.at("direction").vec<3>(), 0.0f);
+  if (n.has("direction") && glm::length(glm::vec3(l.wLightPos)) == 0.0f)
+    n.at("direction").fail("the direction is zero");
   l.La = n.has("ambient") ? n.at("ambient").colour() : glm::vec3(0.0f);
   l.Le = n.has("color") ? n.at("color").colour() : glm::vec3(1.0f);
   if (n.has("attenuation")) {
@@ -295,7 +311,8 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
       if (ps.has("light")) s.planar_shadows.light = ps.at("light").integer(0, kMaxLights - 1);
       if (ps.has("plane")) {
         s.planar_shadows.plane = ps.at("plane").vec<4>();
-        if (glm::length(glm::vec3(s.planar_shadows.plane)) == 0.0f) ps.at("plane").fail("the plane's normal (a, b, c) is zero");
+        if (glm::length(glm::vec3(s.planar_shadows.plane)) == 0.0f)
+          ps.at("plane").fail("the plane's normal (a, b, c) is zero");
       }
       if (ps.has("color")) s.planar_shadows.color = ps.at("color").colour();
     }
@@ -322,13 +339,16 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
     }
     if (r.has("background")) {
       const Node b = r.at("background");
-      s.background = b.json_value().is_array() && b.json_value().size() == 4 ? b.vec<4>(0.0f, 1.0f) : glm::vec4(b.colour(), 1.0f);
+      s.background = b.json_value().is_array() && b.json_value().size() == 4 ? b.vec<4>(0.0f, 1.0f)
+                                                                             : glm::vec4(b.colour(), 1.0f);
     }
     if (r.has("threads")) out.render.threads = r.at("threads").integer(0, 64);
     if (r.has("fps")) out.render.fps = r.at("fps").number(0.001f, 10000.0f);
     if (r.has("shading")) {
       default_shader = r.at("shading").string();
-      if (!shader_by_name(default_shader)) r.at("shading").fail("unknown shading '" + default_shader + "' (expected gouraud, phong, normalmap, npr, depth, normal)");
+      if (!shader_by_name(default_shader))
+        r.at("shading").fail("unknown shading '" + default_shader +
+                             "' (expected gouraud, phong, normalmap, npr, depth, normal)");
     }
   }
 
@@ -356,16 +376,20 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
     if (!ls.json_value().is_array()) ls.fail("expected an array of lights");
     const size_t max_lights = size_t(s.deferred ? kMaxDeferredLights : kMaxLights);
     if (ls.json_value().size() > max_lights)
-      ls.fail("at most " + std::to_string(max_lights) + " lights" + (s.deferred ? "" : " (with render.deferred: " + std::to_string(kMaxDeferredLights) + ")"));
+      ls.fail("at most " + std::to_string(max_lights) + " lights" +
+              (s.deferred ? "" : " (with render.deferred: " + std::to_string(kMaxDeferredLights) + ")"));
     for (size_t i = 0; i < ls.json_value().size(); ++i) s.lights.push_back(read_light(ls.item(i)));
   }
 
   if (s.planar_shadows.enabled && size_t(s.planar_shadows.light) >= s.lights.size())
-    root.at("render").at("planar_shadows").fail("light " + std::to_string(s.planar_shadows.light) + " does not exist (there are " +
-                                                std::to_string(s.lights.size()) + " lights)");
+    root.at("render")
+        .at("planar_shadows")
+        .fail("light " + std::to_string(s.planar_shadows.light) + " does not exist (there are " +
+              std::to_string(s.lights.size()) + " lights)");
   if (s.shadows.enabled && size_t(s.shadows.light) >= s.lights.size())
-    root.at("render").at("shadows").fail("light " + std::to_string(s.shadows.light) + " does not exist (there are " +
-                                         std::to_string(s.lights.size()) + " lights)");
+    root.at("render").at("shadows").fail("light " + std::to_string(s.shadows.light) +
+                                         " does not exist (there are " + std::to_string(s.lights.size()) +
+                                         " lights)");
 
   std::map<std::string, std::shared_ptr<const gpu::Texture2D>> textures;
   if (root.has("textures")) {
@@ -398,15 +422,17 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
     std::vector<std::pair<Object*, Node>> parents;
     for (size_t i = 0; i < os.json_value().size(); ++i) {
       const Node o = os.item(i);
-      o.only({"name", "geometry", "material", "shader", "position", "scale", "rotation", "parent", "animate", "cull",
-              "planar_shadow"});
+      o.only({"name", "geometry", "material", "shader", "position", "scale", "rotation", "parent", "animate",
+              "cull", "planar_shadow"});
       const Node g = o.at("geometry");
-      g.only({"type", "rows", "columns", "radius", "center", "width", "height", "depth", "waves", "phase", "major", "minor", "size",
-              "file"});
+      g.only({"type", "rows", "columns", "radius", "center", "width", "height", "depth", "waves", "phase",
+              "major", "minor", "size", "file"});
       const std::string type = g.at("type").string();
       const int rows = g.has("rows") ? g.at("rows").integer(1, 4096) : 16;
       const int cols = g.has("columns") ? g.at("columns").integer(1, 4096) : 32;
-      auto num = [&](const char* k, float d, float lo = 1e-6f) { return g.has(k) ? g.at(k).number(lo, 1e6f) : d; };
+      auto num = [&](const char* k, float d, float lo = 1e-6f) {
+        return g.has(k) ? g.at(k).number(lo, 1e6f) : d;
+      };
       std::shared_ptr<const Material> mat = default_material;
       if (o.has("material")) {
         const Node m = o.at("material");
@@ -417,7 +443,10 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
       std::string shader_name = default_shader;
       if (o.has("shader")) shader_name = o.at("shader").string();
       auto shader = shader_by_name(shader_name);
-      if (!shader) (o.has("shader") ? o.at("shader") : o).fail("unknown shader '" + shader_name + "' (expected gouraud, phong, normalmap, npr, depth, normal)");
+      if (!shader)
+        (o.has("shader") ? o.at("shader") : o)
+            .fail("unknown shader '" + shader_name +
+                  "' (expected gouraud, phong, normalmap, npr, depth, normal)");
       float phase_speed = 0.0f;
       Node anim = o;
       if (o.has("animate")) {
@@ -443,24 +472,37 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
         }
         for (size_t k = 0; k < model.parts.size(); ++k) {
           const Model::Part& part = model.parts[k];
-          std::shared_ptr<const Material> pm = o.has("material") || part.material < 0 ? mat : model.materials[size_t(part.material)];
-          auto po = std::make_unique<Object>(std::make_shared<Geometry>(part.mesh, file + ": " + part.name), pm, shader);
-          if (k == 0) obj = std::move(po);
-          else extra_parts.push_back(std::move(po));
+          std::shared_ptr<const Material> pm =
+              o.has("material") || part.material < 0 ? mat : model.materials[size_t(part.material)];
+          auto po = std::make_unique<Object>(std::make_shared<Geometry>(part.mesh, file + ": " + part.name),
+                                             pm, shader);
+          if (k == 0)
+            obj = std::move(po);
+          else
+            extra_parts.push_back(std::move(po));
         }
       } else if (type == "flag") {
-        auto flag = std::make_shared<Flag>(num("width", 1.0f), num("height", 1.0f), num("depth", 0.1f, -1e6f), num("waves", 2.0f, -1e6f),
-                                           g.has("phase") ? g.at("phase").number() : 0.0f);
+        auto flag =
+            std::make_shared<Flag>(num("width", 1.0f), num("height", 1.0f), num("depth", 0.1f, -1e6f),
+                                   num("waves", 2.0f, -1e6f), g.has("phase") ? g.at("phase").number() : 0.0f);
         obj = std::make_unique<WavingObject>(flag, rows, cols, phase_speed, mat, shader);
       } else {
         std::unique_ptr<ParamSurface> surf;
-        if (type == "sphere") surf = std::make_unique<Sphere>(num("radius", 1.0f), g.has("center") ? g.at("center").vec<3>() : glm::vec3(0.0f));
-        else if (type == "torus") surf = std::make_unique<Torus>(num("major", 1.0f), num("minor", 0.25f));
-        else if (type == "cylinder") surf = std::make_unique<Cylinder>(num("radius", 1.0f), num("height", 1.0f));
-        else if (type == "cone") surf = std::make_unique<Cone>(num("radius", 1.0f), num("height", 1.0f));
-        else if (type == "plane") surf = std::make_unique<Plane>(num("size", 1.0f));
-        else g.at("type").fail("unknown surface '" + type + "' (expected " + kSurfaces + ")");
-        obj = std::make_unique<Object>(std::make_shared<Geometry>(surf->create(rows, cols), type), mat, shader);
+        if (type == "sphere")
+          surf = std::make_unique<Sphere>(num("radius", 1.0f),
+                                          g.has("center") ? g.at("center").vec<3>() : glm::vec3(0.0f));
+        else if (type == "torus")
+          surf = std::make_unique<Torus>(num("major", 1.0f), num("minor", 0.25f));
+        else if (type == "cylinder")
+          surf = std::make_unique<Cylinder>(num("radius", 1.0f), num("height", 1.0f));
+        else if (type == "cone")
+          surf = std::make_unique<Cone>(num("radius", 1.0f), num("height", 1.0f));
+        else if (type == "plane")
+          surf = std::make_unique<Plane>(num("size", 1.0f));
+        else
+          g.at("type").fail("unknown surface '" + type + "' (expected " + kSurfaces + ")");
+        obj =
+            std::make_unique<Object>(std::make_shared<Geometry>(surf->create(rows, cols), type), mat, shader);
       }
       Transform& t = obj->transform;
       if (o.has("position")) t.position = o.at("position").vec<3>();
@@ -490,7 +532,8 @@ SceneFile parse_scene(const std::string& text, const std::string& name, const st
       }
       if (o.has("name")) {
         const std::string nm = o.at("name").string();
-        if (!named.emplace(nm, &added).second) o.at("name").fail("another object is already named '" + nm + "'");
+        if (!named.emplace(nm, &added).second)
+          o.at("name").fail("another object is already named '" + nm + "'");
       }
       if (o.has("parent")) parents.emplace_back(&added, o.at("parent"));
     }

@@ -97,7 +97,8 @@ int cube_face(const glm::vec3& d) {
 // lit. The depth compared is always p's own, as that face sees it: a tap is off the
 // receiver (in p's image plane, not on its surface), and its own depth on a face that sees
 // the surface edge-on would fall behind the surface and shadow it.
-template <class F> F cube_visibility(const LightingUniforms& u, const Vec3<F>& p) {
+template <class F>
+F cube_visibility(const LightingUniforms& u, const Vec3<F>& p) {
   F vis(1.0f);
   const float n = float((2 * u.pcf + 1) * (2 * u.pcf + 1));
   for (int l = 0; l < lane_width<F>; ++l) {
@@ -136,7 +137,8 @@ template <class F> F cube_visibility(const LightingUniforms& u, const Vec3<F>& p
           continue;
         }
         const glm::vec4 q = fv.q0 + float(i) * fv.qa + float(j) * fv.qb;
-        sum += detail::sample_2d_compare(u.cube_maps[size_t(f)], q.x / q.w * 0.5f + 0.5f, q.y / q.w * 0.5f + 0.5f, fv.ref, 0.0f);
+        sum += detail::sample_2d_compare(u.cube_maps[size_t(f)], q.x / q.w * 0.5f + 0.5f,
+                                         q.y / q.w * 0.5f + 0.5f, fv.ref, 0.0f);
       }
     vis[l] = sum / n;
   }
@@ -144,10 +146,12 @@ template <class F> F cube_visibility(const LightingUniforms& u, const Vec3<F>& p
 }
 
 // The fraction of the shadow map's percentage-closer compares that see p from the light.
-template <class F> F shadow_visibility(const LightingUniforms& u, const Vec3<F>& p) {
+template <class F>
+F shadow_visibility(const LightingUniforms& u, const Vec3<F>& p) {
   const Vec4<F> q = u.light_VP * Vec4<F>(p, F(1.0f));
   const F inv = F(1.0f) / q.w;
-  const F x = q.x * inv * F(0.5f) + F(0.5f), y = q.y * inv * F(0.5f) + F(0.5f), z = q.z * inv * F(0.5f) + F(0.5f);
+  const F x = q.x * inv * F(0.5f) + F(0.5f), y = q.y * inv * F(0.5f) + F(0.5f),
+          z = q.z * inv * F(0.5f) + F(0.5f);
   F sum(0.0f);
   for (int j = -u.pcf; j <= u.pcf; ++j)
     for (int i = -u.pcf; i <= u.pcf; ++i)
@@ -157,24 +161,25 @@ template <class F> F shadow_visibility(const LightingUniforms& u, const Vec3<F>&
   return select((z > F(1.0f)) | (q.w <= F(0.0f)), F(1.0f), sum * F(1.0f / n));
 }
 
-TransformUniforms transforms(const RenderState& s) {
-  return {s.P * s.V * s.M, s.M, glm::transpose(s.Minv)};
-}
+TransformUniforms transforms(const RenderState& s) { return {s.P * s.V * s.M, s.M, glm::transpose(s.Minv)}; }
 
 // The two parts of the notes' formula at a point: ambient + diffuse (to be multiplied by the
 // texture) and specular.
-template <class F> struct Radiance {
+template <class F>
+struct Radiance {
   Vec3<F> ambient_diffuse, specular;
 };
 
 // The cosine the specular exponent applies to (before max(., 0)): Phong's R.V, R the light
 // direction mirrored about N, or Blinn's N.H.
-template <class F> F specular_cosine(const Vec3<F>& N, const Vec3<F>& L, const Vec3<F>& V, bool phong) {
+template <class F>
+F specular_cosine(const Vec3<F>& N, const Vec3<F>& L, const Vec3<F>& V, bool phong) {
   return phong ? dot(reflect(-L, N), V) : dot(N, normalize(L + V));
 }
 
 template <class F>
-Radiance<F> illuminate(const LightingUniforms& u, const Vec3<F>& p, const Vec3<F>& N, const F* visibility = nullptr) {
+Radiance<F> illuminate(const LightingUniforms& u, const Vec3<F>& p, const Vec3<F>& N,
+                       const F* visibility = nullptr) {
   const Vec3<F> V = normalize(Vec3<F>(u.eye) - p);
   Radiance<F> r{Vec3<F>(F(0.0f)), Vec3<F>(F(0.0f))};
   for (int i = 0; i < u.count; ++i) {
@@ -184,12 +189,15 @@ Radiance<F> illuminate(const LightingUniforms& u, const Vec3<F>& p, const Vec3<F
     F spot(1.0f);
     if (l.spot_cos_cutoff > -1.0f) {
       const F c = dot(-L, Vec3<F>(glm::normalize(l.spot_direction)));
-      spot = select(c >= F(l.spot_cos_cutoff), l.spot_exponent == 0.0f ? F(1.0f) : pow(max(c, F(0.0f)), F(l.spot_exponent)),
-                    F(0.0f));
+      spot = select(c >= F(l.spot_cos_cutoff),
+                    l.spot_exponent == 0.0f ? F(1.0f) : pow(max(c, F(0.0f)), F(l.spot_exponent)), F(0.0f));
     }
     const F cost = max(dot(N, L), F(0.0f));
-    const F cosd = select(cost > F(0.0f), pow(max(specular_cosine(N, L, V, u.phong_specular), F(0.0f)), F(u.shininess)), F(0.0f));
-    if (l.wLightPos.w != 0.0f && (l.attenuation.y != 0.0f || l.attenuation.z != 0.0f || l.attenuation.x != 1.0f)) {
+    const F cosd =
+        select(cost > F(0.0f), pow(max(specular_cosine(N, L, V, u.phong_specular), F(0.0f)), F(u.shininess)),
+               F(0.0f));
+    if (l.wLightPos.w != 0.0f &&
+        (l.attenuation.y != 0.0f || l.attenuation.z != 0.0f || l.attenuation.x != 1.0f)) {
       const Vec3<F> d = Vec3<F>(glm::vec3(l.wLightPos) / l.wLightPos.w) - p;
       const F d2 = dot(d, d);
       spot = spot / (F(l.attenuation.x) + F(l.attenuation.y) * sqrt(d2) + F(l.attenuation.z) * d2);
@@ -208,13 +216,15 @@ struct GouraudGpu {
     TransformUniforms t;
     LightingUniforms l;
   };
-  template <class F> struct Varyings {
+  template <class F>
+  struct Varyings {
     Vec3<F> ambient_diffuse, specular;
     Vec2<F> uv;
   };
   static constexpr uint32_t attributes = 0b111;
 
-  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
     const Vec4<F> pos(in.attr[0].xyz(), F(1.0f));
     const Vec3<F> p = (u.t.M * pos).xyz();
     const Vec3<F> N = normalize((u.t.normal * Vec4<F>(in.attr[1].xyz(), F(0.0f))).xyz());
@@ -224,7 +234,8 @@ struct GouraudGpu {
     out.uv = in.attr[2].xy();
     return u.t.MVP * pos;
   }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
     Vec3<F> c = v.ambient_diffuse;
     if (u.l.textured) c = c * texture(u.l.tex, v.uv).xyz();
     f.color[0] = Vec4<F>(c + v.specular, F(1.0f));
@@ -236,20 +247,23 @@ struct PhongGpu {
     TransformUniforms t;
     LightingUniforms l;
   };
-  template <class F> struct Varyings {
+  template <class F>
+  struct Varyings {
     Vec3<F> wPos, wNormal;
     Vec2<F> uv;
   };
   static constexpr uint32_t attributes = 0b111;
 
-  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
     const Vec4<F> pos(in.attr[0].xyz(), F(1.0f));
     out.wPos = (u.t.M * pos).xyz();
     out.wNormal = (u.t.normal * Vec4<F>(in.attr[1].xyz(), F(0.0f))).xyz();
     out.uv = in.attr[2].xy();
     return u.t.MVP * pos;
   }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
     Radiance<F> r;
     if (u.l.shadow_light >= 0) {
       const F vis = u.l.cube ? cube_visibility(u.l, v.wPos) : shadow_visibility(u.l, v.wPos);
@@ -270,12 +284,15 @@ struct NormalMapGpu {
     bool mapped = false;
     Sampler2D normal_map;
   };
-  template <class F> using Varyings = PhongGpu::Varyings<F>;
+  template <class F>
+  using Varyings = PhongGpu::Varyings<F>;
   static constexpr uint32_t attributes = 0b111;
-  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
     return PhongGpu{}.vertex(PhongGpu::Uniforms{u.t, u.l}, in, out);
   }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
     Vec3<F> N = normalize(v.wNormal);
     if (u.mapped) {
       // The cotangent frame of the surface at the pixel from the derivatives of position and
@@ -308,13 +325,16 @@ struct NprGpu {
     LightingUniforms l;
     float bands = 2.0f, silhouette = 0.2f;
   };
-  template <class F> using Varyings = PhongGpu::Varyings<F>;
+  template <class F>
+  using Varyings = PhongGpu::Varyings<F>;
   static constexpr uint32_t attributes = 0b111;
 
-  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
     return PhongGpu{}.vertex(PhongGpu::Uniforms{u.t, u.l}, in, out);
   }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
     const Vec3<F> N = normalize(v.wNormal), V = normalize(Vec3<F>(u.l.eye) - v.wPos);
     F y(1.0f);
     if (u.l.count > 0) {
@@ -329,7 +349,8 @@ struct NprGpu {
     Vec3<F> c = Vec3<F>(u.l.kd) * y;
     if (u.l.textured) c = c * texture(u.l.tex, v.uv).xyz();
     const auto outline = abs(dot(N, V)) < F(u.silhouette);
-    f.color[0] = Vec4<F>(select(outline, F(0.0f), c.x), select(outline, F(0.0f), c.y), select(outline, F(0.0f), c.z), F(1.0f));
+    f.color[0] = Vec4<F>(select(outline, F(0.0f), c.x), select(outline, F(0.0f), c.y),
+                         select(outline, F(0.0f), c.z), F(1.0f));
   }
 };
 
@@ -338,16 +359,19 @@ struct DepthGpu {
     glm::mat4 MVP{1.0f}, MV{1.0f};
     float near = 0.1f, far = 100.0f;
   };
-  template <class F> struct Varyings {
+  template <class F>
+  struct Varyings {
     F eye_depth;
   };
   static constexpr uint32_t attributes = 0b1;
-  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
     const Vec4<F> pos(in.attr[0].xyz(), F(1.0f));
     out.eye_depth = -(u.MV * pos).z;
     return u.MVP * pos;
   }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
     const F g = clamp((F(u.far) - v.eye_depth) * F(1.0f / (u.far - u.near)), F(0.0f), F(1.0f));
     f.color[0] = Vec4<F>(g, g, g, F(1.0f));
   }
@@ -357,16 +381,19 @@ struct NormalGpu {
   struct Uniforms {
     TransformUniforms t;
   };
-  template <class F> struct Varyings {
+  template <class F>
+  struct Varyings {
     Vec3<F> wNormal;
   };
   static constexpr uint32_t attributes = 0b11;
-  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
     const Vec4<F> pos(in.attr[0].xyz(), F(1.0f));
     out.wNormal = (u.t.normal * Vec4<F>(in.attr[1].xyz(), F(0.0f))).xyz();
     return u.t.MVP * pos;
   }
-  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
     const Vec3<F> n = normalize(v.wNormal) * F(0.5f) + Vec3<F>(F(0.5f));
     f.color[0] = Vec4<F>(n, F(1.0f));
   }
@@ -376,12 +403,15 @@ struct DepthOnlyGpu {
   struct Uniforms {
     glm::mat4 MVP{1.0f};
   };
-  template <class F> struct Varyings {};
+  template <class F>
+  struct Varyings {};
   static constexpr uint32_t attributes = 0b1;
-  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>&) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>&) const {
     return u.MVP * Vec4<F>(in.attr[0].xyz(), F(1.0f));
   }
-  template <class F> void fragment(const Uniforms&, const Varyings<F>&, Fragment<F>&) const {}
+  template <class F>
+  void fragment(const Uniforms&, const Varyings<F>&, Fragment<F>&) const {}
 };
 
 struct FlatGpu {
@@ -389,12 +419,15 @@ struct FlatGpu {
     glm::mat4 MVP{1.0f};
     glm::vec3 color{0.0f};
   };
-  template <class F> struct Varyings {};
+  template <class F>
+  struct Varyings {};
   static constexpr uint32_t attributes = 0b1;
-  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>&) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>&) const {
     return u.MVP * Vec4<F>(in.attr[0].xyz(), F(1.0f));
   }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>&, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>&, Fragment<F>& f) const {
     f.color[0] = Vec4<F>(Vec3<F>(u.color), F(1.0f));
   }
 };
@@ -404,13 +437,16 @@ struct GBufferGpu {
     TransformUniforms t;
     LightingUniforms l;
   };
-  template <class F> using Varyings = PhongGpu::Varyings<F>;
+  template <class F>
+  using Varyings = PhongGpu::Varyings<F>;
   static constexpr uint32_t attributes = 0b111;
   static constexpr int outputs = 6;
-  template <class F> Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
     return PhongGpu{}.vertex(PhongGpu::Uniforms{u.t, u.l}, in, out);
   }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
     Vec3<F> tex(F(1.0f));
     if (u.l.textured) tex = texture(u.l.tex, v.uv).xyz();
     f.color[0] = Vec4<F>(v.wPos, F(u.l.shininess));
@@ -431,12 +467,15 @@ struct DeferredLightGpu {
     glm::vec4 background{0.0f};
     bool phong_specular = false;  // some pixel's material takes Phong's R.V (ks's alpha 0)
   };
-  template <class F> struct Varyings {};
+  template <class F>
+  struct Varyings {};
   static constexpr uint32_t attributes = 0b1;
-  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>&) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>&) const {
     return Vec4<F>(in.attr[0].x, in.attr[0].y, F(0.0f), F(1.0f));
   }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>&, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>&, Fragment<F>& f) const {
     const IntOf<F> x = to_int(f.coord.x), y = to_int(f.coord.y);
     const Vec4<F> g0 = texelFetch(u.g[0], x, y, 0), g1 = texelFetch(u.g[1], x, y, 0);
     const Vec4<F> g3 = texelFetch(u.g[3], x, y, 0);
@@ -451,14 +490,16 @@ struct DeferredLightGpu {
       const Light& l = u.lights[size_t(i)];
       const Vec3<F> L = normalize(Vec3<F>(glm::vec3(l.wLightPos)) - p * F(l.wLightPos.w));
       F k(1.0f);
-      if (l.wLightPos.w != 0.0f && (l.attenuation.y != 0.0f || l.attenuation.z != 0.0f || l.attenuation.x != 1.0f)) {
+      if (l.wLightPos.w != 0.0f &&
+          (l.attenuation.y != 0.0f || l.attenuation.z != 0.0f || l.attenuation.x != 1.0f)) {
         const Vec3<F> d = Vec3<F>(glm::vec3(l.wLightPos) / l.wLightPos.w) - p;
         const F d2 = dot(d, d);
         k = F(1.0f) / (F(l.attenuation.x) + F(l.attenuation.y) * sqrt(d2) + F(l.attenuation.z) * d2);
       }
       if (l.spot_cos_cutoff > -1.0f) {
         const F cs = dot(-L, Vec3<F>(glm::normalize(l.spot_direction)));
-        k = k * select(cs >= F(l.spot_cos_cutoff), l.spot_exponent == 0.0f ? F(1.0f) : pow(max(cs, F(0.0f)), F(l.spot_exponent)),
+        k = k * select(cs >= F(l.spot_cos_cutoff),
+                       l.spot_exponent == 0.0f ? F(1.0f) : pow(max(cs, F(0.0f)), F(l.spot_exponent)),
                        F(0.0f));
       }
       const F cost = max(dot(N, L), F(0.0f));
@@ -477,13 +518,13 @@ struct DeferredLightGpu {
 }  // namespace
 
 void draw_gbuffer(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) {
-  ctx.draw(GBufferGpu{}, GBufferGpu::Uniforms{transforms(state), lighting(state)}, geometry.layout(), state.pipeline,
-           geometry.draw_call());
+  ctx.draw(GBufferGpu{}, GBufferGpu::Uniforms{transforms(state), lighting(state)}, geometry.layout(),
+           state.pipeline, geometry.draw_call());
 }
 
 void draw_deferred_lighting(gpu::Context& ctx, const std::vector<const gpu::Texture2D*>& gbuffer,
-                            const std::vector<Light>& lights, const glm::vec3& eye, const glm::vec4& background,
-                            bool phong_specular) {
+                            const std::vector<Light>& lights, const glm::vec3& eye,
+                            const glm::vec4& background, bool phong_specular) {
   auto u = std::make_unique<DeferredLightGpu::Uniforms>();
   for (size_t i = 0; i < 6 && i < gbuffer.size(); ++i) {
     u->g[i].texture = gbuffer[i];
@@ -509,7 +550,8 @@ void draw_flat(gpu::Context& ctx, const glm::mat4& MVP, const glm::vec3& color, 
   ctx.draw(FlatGpu{}, FlatGpu::Uniforms{MVP, color}, geometry.layout(), pipeline, geometry.draw_call());
 }
 
-void draw_shadow_depth(gpu::Context& ctx, const glm::mat4& MVP, const Geometry& geometry, const gpu::RenderState& pipeline) {
+void draw_shadow_depth(gpu::Context& ctx, const glm::mat4& MVP, const Geometry& geometry,
+                       const gpu::RenderState& pipeline) {
   ctx.draw(DepthOnlyGpu{}, DepthOnlyGpu::Uniforms{MVP}, geometry.layout(), pipeline, geometry.draw_call());
 }
 
@@ -530,22 +572,24 @@ void NprShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry
 }
 
 void DepthShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {
-  DepthGpu::Uniforms u{state.P * state.V * state.M, state.V * state.M, range_ ? from_ : state.near, range_ ? to_ : state.far};
+  DepthGpu::Uniforms u{state.P * state.V * state.M, state.V * state.M, range_ ? from_ : state.near,
+                       range_ ? to_ : state.far};
   ctx.draw(DepthGpu{}, u, geometry.layout(), state.pipeline, geometry.draw_call());
 }
 
 void NormalShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {
-  ctx.draw(NormalGpu{}, NormalGpu::Uniforms{transforms(state)}, geometry.layout(), state.pipeline, geometry.draw_call());
+  ctx.draw(NormalGpu{}, NormalGpu::Uniforms{transforms(state)}, geometry.layout(), state.pipeline,
+           geometry.draw_call());
 }
 
 void GouraudShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {
-  ctx.draw(GouraudGpu{}, GouraudGpu::Uniforms{transforms(state), lighting(state)}, geometry.layout(), state.pipeline,
-           geometry.draw_call());
+  ctx.draw(GouraudGpu{}, GouraudGpu::Uniforms{transforms(state), lighting(state)}, geometry.layout(),
+           state.pipeline, geometry.draw_call());
 }
 
 void PhongShader::draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const {
-  ctx.draw(PhongGpu{}, PhongGpu::Uniforms{transforms(state), lighting(state)}, geometry.layout(), state.pipeline,
-           geometry.draw_call());
+  ctx.draw(PhongGpu{}, PhongGpu::Uniforms{transforms(state), lighting(state)}, geometry.layout(),
+           state.pipeline, geometry.draw_call());
 }
 
 }  // namespace tessel::scene

@@ -13,11 +13,13 @@ glm::mat4 rotation(const glm::vec3& axis, float angle) {
 }  // namespace
 
 glm::mat4 Transform::M() const {
-  return glm::translate(glm::mat4(1.0f), position) * rotation(axis, angle) * glm::scale(glm::mat4(1.0f), scale);
+  return glm::translate(glm::mat4(1.0f), position) * rotation(axis, angle) *
+         glm::scale(glm::mat4(1.0f), scale);
 }
 
 glm::mat4 Transform::Minv() const {
-  return glm::scale(glm::mat4(1.0f), 1.0f / scale) * rotation(axis, -angle) * glm::translate(glm::mat4(1.0f), -position);
+  return glm::scale(glm::mat4(1.0f), 1.0f / scale) * rotation(axis, -angle) *
+         glm::translate(glm::mat4(1.0f), -position);
 }
 
 glm::mat4 Transform::world() const {

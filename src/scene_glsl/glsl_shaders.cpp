@@ -274,12 +274,18 @@ std::string GlslShader::vertex_source(Kind kind) {
 }
 std::string GlslShader::fragment_source(Kind kind) {
   switch (kind) {
-    case Kind::Gouraud: return std::string("#version 330\n") + kLighting + kGouraudFragment;
-    case Kind::Phong: return std::string("#version 330\n") + kLighting + kPhongFragment;
-    case Kind::NormalMap: return std::string("#version 330\n") + kLighting + kNormalMapFragment;
-    case Kind::Npr: return std::string("#version 330\n") + kLighting + kNprFragment;
-    case Kind::Depth: return std::string("#version 330\n") + kDepthFragment;
-    case Kind::Normal: return std::string("#version 330\n") + kNormalFragment;
+    case Kind::Gouraud:
+      return std::string("#version 330\n") + kLighting + kGouraudFragment;
+    case Kind::Phong:
+      return std::string("#version 330\n") + kLighting + kPhongFragment;
+    case Kind::NormalMap:
+      return std::string("#version 330\n") + kLighting + kNormalMapFragment;
+    case Kind::Npr:
+      return std::string("#version 330\n") + kLighting + kNprFragment;
+    case Kind::Depth:
+      return std::string("#version 330\n") + kDepthFragment;
+    case Kind::Normal:
+      return std::string("#version 330\n") + kNormalFragment;
   }
   return {};
 }
@@ -290,13 +296,22 @@ struct GlslShader::Impl {
   std::shared_ptr<glsl::Program> program;
   std::mutex mutex;  // draw() sets the program's uniforms
   // The uniforms' locations, looked up once (-1 for those a kind does not use).
-  enum : int { kLightPos, kLa, kLe, kAttenuation, kSpotDirection, kSpotCosCutoff, kSpotExponent, kLightFields };
-  static constexpr const char* kLightField[kLightFields] = {"wLightPos",     "La",           "Le",          "attenuation",
-                                                            "spotDirection", "spotCosCutoff", "spotExponent"};
+  enum : int {
+    kLightPos,
+    kLa,
+    kLe,
+    kAttenuation,
+    kSpotDirection,
+    kSpotCosCutoff,
+    kSpotExponent,
+    kLightFields
+  };
+  static constexpr const char* kLightField[kLightFields] = {
+      "wLightPos", "La", "Le", "attenuation", "spotDirection", "spotCosCutoff", "spotExponent"};
   std::array<std::array<int, kLightFields>, kMaxLights> light{};
-  int MVP, M, Mnormal, nLights, ka, kd, ks, emission, shininess, phongSpecular, wEye, textured, tex, shadowMap, bands_loc,
-      silhouette_loc, shadowLight, lightVP, pcf, texel, cubeShadow, cubeLight, cubeVP, cubeMaps, mapped, normalMap, MV, far,
-      invRange;
+  int MVP, M, Mnormal, nLights, ka, kd, ks, emission, shininess, phongSpecular, wEye, textured, tex,
+      shadowMap, bands_loc, silhouette_loc, shadowLight, lightVP, pcf, texel, cubeShadow, cubeLight, cubeVP,
+      cubeMaps, mapped, normalMap, MV, far, invRange;
   void locate() {
     const glsl::Program& p = *program;
     auto at = [&](const std::string& n) { return p.uniform_location(n); };
@@ -305,8 +320,10 @@ struct GlslShader::Impl {
     phongSpecular = at("phongSpecular"), wEye = at("wEye"), textured = at("textured"), tex = at("tex");
     shadowMap = at("shadowMap"), bands_loc = at("bands"), silhouette_loc = at("silhouette");
     shadowLight = at("shadowLight"), lightVP = at("lightVP"), pcf = at("pcf"), texel = at("texel");
-    cubeShadow = at("cubeShadow"), cubeLight = at("cubeLight"), cubeVP = at("cubeVP"), cubeMaps = at("cubeMaps");
-    mapped = at("mapped"), normalMap = at("normalMap"), MV = at("MV"), far = at("far"), invRange = at("invRange");
+    cubeShadow = at("cubeShadow"), cubeLight = at("cubeLight"), cubeVP = at("cubeVP"),
+    cubeMaps = at("cubeMaps");
+    mapped = at("mapped"), normalMap = at("normalMap"), MV = at("MV"), far = at("far"),
+    invRange = at("invRange");
     for (int i = 0; i < kMaxLights; ++i)
       for (int f = 0; f < kLightFields; ++f)
         light[size_t(i)][size_t(f)] = at("lights[" + std::to_string(i) + "]." + kLightField[f]);
@@ -416,12 +433,18 @@ std::shared_ptr<const Shader> glsl_shader_by_name(const std::string& name) {
   auto it = made.find(name);
   if (it != made.end()) return it->second;
   std::shared_ptr<const Shader> s;
-  if (name == "glsl-gouraud") s = std::make_shared<GlslShader>(GlslShader::Kind::Gouraud);
-  else if (name == "glsl-phong") s = std::make_shared<GlslShader>(GlslShader::Kind::Phong);
-  else if (name == "glsl-npr") s = std::make_shared<GlslShader>(GlslShader::Kind::Npr);
-  else if (name == "glsl-normalmap") s = std::make_shared<GlslShader>(GlslShader::Kind::NormalMap);
-  else if (name == "glsl-depth") s = std::make_shared<GlslShader>(GlslShader::Kind::Depth);
-  else if (name == "glsl-normal") s = std::make_shared<GlslShader>(GlslShader::Kind::Normal);
+  if (name == "glsl-gouraud")
+    s = std::make_shared<GlslShader>(GlslShader::Kind::Gouraud);
+  else if (name == "glsl-phong")
+    s = std::make_shared<GlslShader>(GlslShader::Kind::Phong);
+  else if (name == "glsl-npr")
+    s = std::make_shared<GlslShader>(GlslShader::Kind::Npr);
+  else if (name == "glsl-normalmap")
+    s = std::make_shared<GlslShader>(GlslShader::Kind::NormalMap);
+  else if (name == "glsl-depth")
+    s = std::make_shared<GlslShader>(GlslShader::Kind::Depth);
+  else if (name == "glsl-normal")
+    s = std::make_shared<GlslShader>(GlslShader::Kind::Normal);
   if (s) made[name] = s;
   return s;
 }

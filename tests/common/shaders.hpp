@@ -21,13 +21,18 @@ struct TestVertex {
 // Position straight through; colour interpolated (perspective-correct).
 struct ColorShader {
   struct Uniforms {};
-  template <class F> struct Varyings { Vec4<F> color; };
+  template <class F>
+  struct Varyings {
+    Vec4<F> color;
+  };
   static constexpr uint32_t attributes = 0b11;
-  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
     out.color = in.attr[1];
     return in.attr[0];
   }
-  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
     f.color[0] = v.color;
   }
 };
@@ -39,15 +44,23 @@ struct FlatColorShader : ColorShader {
 
 // Colour times a texture sampled at the interpolated uv (implicit LOD from the quad).
 struct TexturedShader {
-  struct Uniforms { Sampler2D tex; };
-  template <class F> struct Varyings { Vec4<F> color; Vec2<F> uv; };
+  struct Uniforms {
+    Sampler2D tex;
+  };
+  template <class F>
+  struct Varyings {
+    Vec4<F> color;
+    Vec2<F> uv;
+  };
   static constexpr uint32_t attributes = 0b111;
-  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
     out.color = in.attr[1];
     out.uv = in.attr[2].xy();
     return in.attr[0];
   }
-  template <class F> void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms& u, const Varyings<F>& v, Fragment<F>& f) const {
     f.color[0] = v.color * texture(u.tex, v.uv);
   }
 };

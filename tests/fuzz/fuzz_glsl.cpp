@@ -13,7 +13,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   const auto cut = text.find("//FRAGMENT");
   const std::string vs = cut == std::string::npos ? text : text.substr(0, cut);
-  const std::string fs = cut == std::string::npos ? std::string("void main() { gl_FragColor = vec4(1.0); }") : text.substr(cut);
+  const std::string fs =
+      cut == std::string::npos ? std::string("void main() { gl_FragColor = vec4(1.0); }") : text.substr(cut);
   using namespace tessel;
   auto v = glsl::Shader::compile(glsl::Stage::Vertex, vs);
   auto f = glsl::Shader::compile(glsl::Stage::Fragment, fs);

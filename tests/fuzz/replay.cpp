@@ -20,8 +20,10 @@ int main(int argc, char** argv) {
   int mutations = 200;
   std::vector<std::string> dirs;
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--mutations") == 0 && i + 1 < argc) mutations = std::atoi(argv[++i]);
-    else dirs.push_back(argv[i]);
+    if (std::strcmp(argv[i], "--mutations") == 0 && i + 1 < argc)
+      mutations = std::atoi(argv[++i]);
+    else
+      dirs.push_back(argv[i]);
   }
   std::mt19937 rng(12345);
   size_t files = 0, runs = 0;
@@ -36,18 +38,31 @@ int main(int argc, char** argv) {
       LLVMFuzzerTestOneInput(seed.data(), seed.size());
       ++files;
       ++runs;
-      static const uint8_t interesting[] = {0, 0xFF, 0x7F, 0x80, '9', '-', '{', '}', '[', ']', '"', '\n', '/', 'e'};
+      static const uint8_t interesting[] = {0,   0xFF, 0x7F, 0x80, '9',  '-', '{',
+                                            '}', '[',  ']',  '"',  '\n', '/', 'e'};
       for (int m = 0; m < mutations; ++m) {
         std::vector<uint8_t> v = seed;
         const int edits = 1 + int(rng() % 4);
         for (int e = 0; e < edits; ++e) {
           const size_t at = v.empty() ? 0 : rng() % v.size();
           switch (rng() % 5) {
-            case 0: if (!v.empty()) v[at] ^= uint8_t(1u << (rng() % 8)); break;
-            case 1: v.resize(at); break;
-            case 2: if (!v.empty()) v.insert(v.begin() + long(at), v.begin() + long(at), v.begin() + long(std::min(v.size(), at + 1 + rng() % 16))); break;
-            case 3: if (!v.empty()) v[at] = interesting[rng() % sizeof interesting]; break;
-            default: v.insert(v.begin() + long(at), interesting[rng() % sizeof interesting]); break;
+            case 0:
+              if (!v.empty()) v[at] ^= uint8_t(1u << (rng() % 8));
+              break;
+            case 1:
+              v.resize(at);
+              break;
+            case 2:
+              if (!v.empty())
+                v.insert(v.begin() + long(at), v.begin() + long(at),
+                         v.begin() + long(std::min(v.size(), at + 1 + rng() % 16)));
+              break;
+            case 3:
+              if (!v.empty()) v[at] = interesting[rng() % sizeof interesting];
+              break;
+            default:
+              v.insert(v.begin() + long(at), interesting[rng() % sizeof interesting]);
+              break;
           }
         }
         LLVMFuzzerTestOneInput(v.data(), v.size());

@@ -63,8 +63,8 @@ double parse_number(std::string_view opt, const char* text, double lo, double hi
   char* end = nullptr;
   double v = std::strtod(text, &end);
   if (!end || *end || end == text || !(v >= lo && v <= hi)) {
-    std::string m = std::string(opt) + " needs a number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                    "], got '" + text + "'";
+    std::string m = std::string(opt) + " needs a number in [" + std::to_string(lo) + ", " +
+                    std::to_string(hi) + "], got '" + text + "'";
     usage(m.c_str());
   }
   return v;
@@ -94,10 +94,12 @@ int not_blank(const std::string& path, double min_content) {
   for (std::size_t i = 0; i < n; ++i)
     if (max_channel_diff(&img->rgba[i * 4], bgc) > 3) ++content;
   const double pct = n ? 100.0 * double(content) / double(n) : 0.0;
-  std::printf("image: %s\nsize: %dx%d\nbackground: #%02x%02x%02x\ncolours: %zu\ncontent: %.3f%% (%zu pixels)\n",
-              path.c_str(), img->width, img->height, bgc[0], bgc[1], bgc[2], counts.size(), pct, content);
+  std::printf(
+      "image: %s\nsize: %dx%d\nbackground: #%02x%02x%02x\ncolours: %zu\ncontent: %.3f%% (%zu pixels)\n",
+      path.c_str(), img->width, img->height, bgc[0], bgc[1], bgc[2], counts.size(), pct, content);
   if (pct < min_content) {
-    std::printf("BLANK: only %.3f%% of the pixels differ from the background (need %.3f%%)\n", pct, min_content);
+    std::printf("BLANK: only %.3f%% of the pixels differ from the background (need %.3f%%)\n", pct,
+                min_content);
     return 1;
   }
   std::printf("not blank\n");
@@ -119,14 +121,22 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) usage((std::string(a) + " needs a value").c_str());
       return argv[++i];
     };
-    if (a == "--tolerance") tolerance = int(parse_number(a, value(), 0, 255));
-    else if (a == "--min-match") min_match = parse_number(a, value(), 0, 100);
-    else if (a == "--min-content") min_content = parse_number(a, value(), 0, 100);
-    else if (a == "--diff") diff_path = value();
-    else if (a == "--not-blank") blank_mode = true;
-    else if (a == "-h" || a == "--help") usage("compares two PNG images");
-    else if (a.size() > 1 && a[0] == '-') usage(("unknown option " + std::string(a)).c_str());
-    else files.emplace_back(a);
+    if (a == "--tolerance")
+      tolerance = int(parse_number(a, value(), 0, 255));
+    else if (a == "--min-match")
+      min_match = parse_number(a, value(), 0, 100);
+    else if (a == "--min-content")
+      min_content = parse_number(a, value(), 0, 100);
+    else if (a == "--diff")
+      diff_path = value();
+    else if (a == "--not-blank")
+      blank_mode = true;
+    else if (a == "-h" || a == "--help")
+      usage("compares two PNG images");
+    else if (a.size() > 1 && a[0] == '-')
+      usage(("unknown option " + std::string(a)).c_str());
+    else
+      files.emplace_back(a);
   }
   if (blank_mode) {
     if (files.size() != 1) usage("--not-blank takes one image");
@@ -166,9 +176,10 @@ int main(int argc, char** argv) {
     }
   }
   const double match = n ? 100.0 * double(n - differing) / double(n) : 100.0;
-  std::printf("size: %dx%d\nmatch: %.3f%% of pixels within %d/255 (need %.3f%%)\nmax channel difference: %d\n"
-              "differing pixels: %zu of %zu\n",
-              a->width, a->height, match, tolerance, min_match, max_diff, differing, n);
+  std::printf(
+      "size: %dx%d\nmatch: %.3f%% of pixels within %d/255 (need %.3f%%)\nmax channel difference: %d\n"
+      "differing pixels: %zu of %zu\n",
+      a->width, a->height, match, tolerance, min_match, max_diff, differing, n);
   if (!vis.empty()) {
     if (!stbi_write_png(diff_path.c_str(), a->width, a->height, 3, vis.data(), a->width * 3)) {
       std::fprintf(stderr, "compare_images: cannot write the diff image '%s'\n", diff_path.c_str());

@@ -42,8 +42,8 @@ static int cap_parsed = 0;
 static int cap_enabled = 0;
 static int cap_frames = 1;
 static char cap_dir[4096];
-static int cap_count = 0;          /* frames written so far */
-static int cap_swapped = 0;        /* a capture happened inside glutSwapBuffers this callback */
+static int cap_count = 0;   /* frames written so far */
+static int cap_swapped = 0; /* a capture happened inside glutSwapBuffers this callback */
 static int cap_in_display = 0;
 static int cap_mode_known = 0;
 static unsigned int cap_mode = GLUT_RGB | GLUT_SINGLE;
@@ -69,16 +69,23 @@ static void cap_parse(void) {
     char* next = NULL;
     if (strncmp(p, "out:", 4) == 0) {
       char* f = strstr(p, ",frames:");
-      if (f) { *f = '\0'; next = f + 1; }
+      if (f) {
+        *f = '\0';
+        next = f + 1;
+      }
       if (strlen(p + 4) >= sizeof cap_dir) cap_fail("TESSEL_CAPTURE out: directory is too long");
       strcpy(cap_dir, p + 4);
     } else {
       char* c = strchr(p, ',');
-      if (c) { *c = '\0'; next = c + 1; }
+      if (c) {
+        *c = '\0';
+        next = c + 1;
+      }
       if (strncmp(p, "frames:", 7) == 0) {
         char* end = NULL;
         long n = strtol(p + 7, &end, 10);
-        if (!end || *end || n < 1 || n > 100000) cap_fail("TESSEL_CAPTURE frames: must be a positive integer");
+        if (!end || *end || n < 1 || n > 100000)
+          cap_fail("TESSEL_CAPTURE frames: must be a positive integer");
         cap_frames = (int)n;
       } else if (*p) {
         fprintf(stderr, "mesa_capture: unknown TESSEL_CAPTURE key in '%s' (expected frames:N,out:DIR)\n", p);
@@ -113,7 +120,8 @@ static void cap_write(GLenum buffer) {
   glGetIntegerv(GL_PACK_SKIP_PIXELS, &saved_skip_pixels);
   glGetIntegerv(GL_PACK_SWAP_BYTES, &saved_swap);
   glGetIntegerv(GL_PACK_LSB_FIRST, &saved_lsb);
-  while (glGetError() != GL_NO_ERROR) {}
+  while (glGetError() != GL_NO_ERROR) {
+  }
   glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &saved_pack_buffer);
   if (glGetError() != GL_NO_ERROR) saved_pack_buffer = -1; /* not supported: leave alone */
 

@@ -76,8 +76,8 @@ TEST_F(GLTest, InvalidOperationInsideBeginEnd) {
   glVertex2f(0, 0);
   glClear(GL_COLOR_BUFFER_BIT);  // not allowed between glBegin and glEnd
   glEnable(GL_LIGHTING);
-  glColor3f(1, 0, 0);     // allowed
-  glNormal3f(0, 0, 1);    // allowed
+  glColor3f(1, 0, 0);   // allowed
+  glNormal3f(0, 0, 1);  // allowed
   GLfloat red[4] = {1, 0, 0, 1};
   glMaterialfv(GL_FRONT, GL_DIFFUSE, red);  // allowed
   glEnd();
@@ -89,8 +89,8 @@ TEST_F(GLTest, InvalidOperationInsideBeginEnd) {
 }
 
 TEST_F(GLTest, FirstErrorIsKept) {
-  glEnable(0x1234);     // INVALID_ENUM
-  glLineWidth(-1.0f);   // INVALID_VALUE, not recorded: an error is pending
+  glEnable(0x1234);    // INVALID_ENUM
+  glLineWidth(-1.0f);  // INVALID_VALUE, not recorded: an error is pending
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
@@ -235,7 +235,7 @@ TEST_F(GLTest, SelectionHitRecords) {
   glVertex2f(6, 6);
   glEnd();
   EXPECT_EQ(glRenderMode(GL_RENDER), 2);
-  EXPECT_EQ(buf[0], 1u);  // names
+  EXPECT_EQ(buf[0], 1u);           // names
   EXPECT_EQ(buf[1], 2147483648u);  // 0.5 * (2^32 - 1), rounded
   EXPECT_EQ(buf[2], 2147483648u);
   EXPECT_EQ(buf[3], 10u);
@@ -306,15 +306,65 @@ TEST_F(GLTest, FeedbackTokens) {
 // values, numbers including negatives, NaN and huge ones, and calls inside glBegin/glEnd.
 TEST_F(GLTest, RandomCallSequenceNeverCrashes) {
   std::mt19937 rng(12345);
-  const GLenum enums[] = {GL_TRIANGLES, GL_QUADS, GL_POLYGON, GL_LINES, GL_POINTS, GL_DEPTH_TEST, GL_LIGHTING,
-                          GL_LIGHT0, GL_LIGHT7, GL_TEXTURE_2D, GL_BLEND, GL_FOG, GL_CULL_FACE, GL_FRONT, GL_BACK,
-                          GL_FRONT_AND_BACK, GL_LINE, GL_FILL, GL_POINT, GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE,
-                          GL_RGBA, GL_RGB, GL_LUMINANCE, GL_UNSIGNED_BYTE, GL_FLOAT, GL_AMBIENT, GL_DIFFUSE,
-                          GL_POSITION, GL_SPOT_CUTOFF, GL_SHININESS, GL_COMPILE, GL_COMPILE_AND_EXECUTE,
-                          GL_NEAREST, GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT, GL_CLAMP, GL_MODULATE, GL_DECAL,
-                          GL_LESS, GL_ALWAYS, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_KEEP, GL_INCR,
-                          GL_STENCIL_TEST, GL_ALPHA_TEST, GL_POLYGON_STIPPLE, GL_LINE_STIPPLE, GL_FLAT,
-                          GL_SMOOTH, GL_VERTEX_ARRAY, GL_COLOR_ARRAY, 0, 1, 0x1234, 0xFFFF, 0x7FFFFFFF};
+  const GLenum enums[] = {GL_TRIANGLES,
+                          GL_QUADS,
+                          GL_POLYGON,
+                          GL_LINES,
+                          GL_POINTS,
+                          GL_DEPTH_TEST,
+                          GL_LIGHTING,
+                          GL_LIGHT0,
+                          GL_LIGHT7,
+                          GL_TEXTURE_2D,
+                          GL_BLEND,
+                          GL_FOG,
+                          GL_CULL_FACE,
+                          GL_FRONT,
+                          GL_BACK,
+                          GL_FRONT_AND_BACK,
+                          GL_LINE,
+                          GL_FILL,
+                          GL_POINT,
+                          GL_MODELVIEW,
+                          GL_PROJECTION,
+                          GL_TEXTURE,
+                          GL_RGBA,
+                          GL_RGB,
+                          GL_LUMINANCE,
+                          GL_UNSIGNED_BYTE,
+                          GL_FLOAT,
+                          GL_AMBIENT,
+                          GL_DIFFUSE,
+                          GL_POSITION,
+                          GL_SPOT_CUTOFF,
+                          GL_SHININESS,
+                          GL_COMPILE,
+                          GL_COMPILE_AND_EXECUTE,
+                          GL_NEAREST,
+                          GL_LINEAR_MIPMAP_LINEAR,
+                          GL_REPEAT,
+                          GL_CLAMP,
+                          GL_MODULATE,
+                          GL_DECAL,
+                          GL_LESS,
+                          GL_ALWAYS,
+                          GL_SRC_ALPHA,
+                          GL_ONE_MINUS_SRC_ALPHA,
+                          GL_KEEP,
+                          GL_INCR,
+                          GL_STENCIL_TEST,
+                          GL_ALPHA_TEST,
+                          GL_POLYGON_STIPPLE,
+                          GL_LINE_STIPPLE,
+                          GL_FLAT,
+                          GL_SMOOTH,
+                          GL_VERTEX_ARRAY,
+                          GL_COLOR_ARRAY,
+                          0,
+                          1,
+                          0x1234,
+                          0xFFFF,
+                          0x7FFFFFFF};
   auto e = [&] { return enums[rng() % (sizeof enums / sizeof enums[0])]; };
   const float numbers[] = {0.0f, 1.0f, -1.0f, 0.5f, 2.0f, 100.0f, -1e30f, 1e30f, NAN, INFINITY, 3.0f, 64.0f};
   auto f = [&] { return numbers[rng() % (sizeof numbers / sizeof numbers[0])]; };
@@ -324,50 +374,128 @@ TEST_F(GLTest, RandomCallSequenceNeverCrashes) {
   for (int n = 0; n < 20000; ++n) {
     for (float& x : v) x = f();
     switch (rng() % 40) {
-      case 0: glBegin(e()); break;
-      case 1: glEnd(); break;
-      case 2: glVertex3f(f(), f(), f()); break;
-      case 3: glColor4f(f(), f(), f(), f()); break;
-      case 4: glNormal3f(f(), f(), f()); break;
-      case 5: glTexCoord2f(f(), f()); break;
-      case 6: glEnable(e()); break;
-      case 7: glDisable(e()); break;
-      case 8: glMatrixMode(e()); break;
-      case 9: glPushMatrix(); break;
-      case 10: glPopMatrix(); break;
-      case 11: glLoadIdentity(); break;
-      case 12: glRotatef(f(), f(), f(), f()); break;
-      case 13: glTranslatef(f(), f(), f()); break;
-      case 14: glFrustum(f(), f(), f(), f(), f(), f()); break;
-      case 15: glOrtho(-1, 1, -1, 1, f(), f()); break;
-      case 16: glLightfv(e(), e(), v); break;
-      case 17: glMaterialfv(e(), e(), v); break;
-      case 18: glNewList(GLuint(i() + 3), e()); break;
-      case 19: glEndList(); break;
-      case 20: glCallList(GLuint(i() + 3)); break;
-      case 21: glClear(GLbitfield(rng())); break;
-      case 22: glViewport(i(), i(), i() * 10, i() * 10); break;
-      case 23: glTexImage2D(e(), i(), GLint(e()), 16, 16, i(), e(), e(), image.data()); break;
-      case 24: glTexParameteri(GL_TEXTURE_2D, e(), GLint(e())); break;
-      case 25: glBindTexture(e(), GLuint(i() + 2)); break;
-      case 26: glPolygonMode(e(), e()); break;
-      case 27: glBlendFunc(e(), e()); break;
-      case 28: glDepthFunc(e()); break;
-      case 29: glLineWidth(f()); break;
-      case 30: glPointSize(f()); break;
-      case 31: glPushAttrib(GLbitfield(rng())); break;
-      case 32: glPopAttrib(); break;
-      case 33: glRectf(f(), f(), f(), f()); break;
-      case 34: glDrawArrays(e(), i(), i() * 3); break;
-      case 35: glFogf(e(), f()); break;
-      case 36: glShadeModel(e()); break;
-      case 37: glTexEnvi(e(), e(), GLint(e())); break;
+      case 0:
+        glBegin(e());
+        break;
+      case 1:
+        glEnd();
+        break;
+      case 2:
+        glVertex3f(f(), f(), f());
+        break;
+      case 3:
+        glColor4f(f(), f(), f(), f());
+        break;
+      case 4:
+        glNormal3f(f(), f(), f());
+        break;
+      case 5:
+        glTexCoord2f(f(), f());
+        break;
+      case 6:
+        glEnable(e());
+        break;
+      case 7:
+        glDisable(e());
+        break;
+      case 8:
+        glMatrixMode(e());
+        break;
+      case 9:
+        glPushMatrix();
+        break;
+      case 10:
+        glPopMatrix();
+        break;
+      case 11:
+        glLoadIdentity();
+        break;
+      case 12:
+        glRotatef(f(), f(), f(), f());
+        break;
+      case 13:
+        glTranslatef(f(), f(), f());
+        break;
+      case 14:
+        glFrustum(f(), f(), f(), f(), f(), f());
+        break;
+      case 15:
+        glOrtho(-1, 1, -1, 1, f(), f());
+        break;
+      case 16:
+        glLightfv(e(), e(), v);
+        break;
+      case 17:
+        glMaterialfv(e(), e(), v);
+        break;
+      case 18:
+        glNewList(GLuint(i() + 3), e());
+        break;
+      case 19:
+        glEndList();
+        break;
+      case 20:
+        glCallList(GLuint(i() + 3));
+        break;
+      case 21:
+        glClear(GLbitfield(rng()));
+        break;
+      case 22:
+        glViewport(i(), i(), i() * 10, i() * 10);
+        break;
+      case 23:
+        glTexImage2D(e(), i(), GLint(e()), 16, 16, i(), e(), e(), image.data());
+        break;
+      case 24:
+        glTexParameteri(GL_TEXTURE_2D, e(), GLint(e()));
+        break;
+      case 25:
+        glBindTexture(e(), GLuint(i() + 2));
+        break;
+      case 26:
+        glPolygonMode(e(), e());
+        break;
+      case 27:
+        glBlendFunc(e(), e());
+        break;
+      case 28:
+        glDepthFunc(e());
+        break;
+      case 29:
+        glLineWidth(f());
+        break;
+      case 30:
+        glPointSize(f());
+        break;
+      case 31:
+        glPushAttrib(GLbitfield(rng()));
+        break;
+      case 32:
+        glPopAttrib();
+        break;
+      case 33:
+        glRectf(f(), f(), f(), f());
+        break;
+      case 34:
+        glDrawArrays(e(), i(), i() * 3);
+        break;
+      case 35:
+        glFogf(e(), f());
+        break;
+      case 36:
+        glShadeModel(e());
+        break;
+      case 37:
+        glTexEnvi(e(), e(), GLint(e()));
+        break;
       case 38: {
         GLubyte px[4 * 4 * 4];
         glReadPixels(i(), i(), 4, 4, e(), e(), px);
         break;
       }
-      default: glFlush(); break;
+      default:
+        glFlush();
+        break;
     }
     const GLenum err = glGetError();
     ASSERT_TRUE(err == GL_NO_ERROR || err == GL_INVALID_ENUM || err == GL_INVALID_VALUE ||

@@ -116,7 +116,7 @@ TEST(GlutMenu, IsDrawnOverTheImage) {
   std::vector<uint8_t> img(200 * 150 * 4, 0);
   tessel::glut::menu_draw(w, img, 200, 150);
   auto px = [&](int x, int y) { return &img[(size_t(y) * 200 + size_t(x)) * 4]; };
-  EXPECT_EQ(px(0, 0)[0], 0);  // outside the menu: untouched
+  EXPECT_EQ(px(0, 0)[0], 0);                 // outside the menu: untouched
   EXPECT_EQ(px(35, item_y(20, 0))[2], 204);  // the highlighted entry's blue
   EXPECT_EQ(px(35, item_y(20, 1))[0], 226);  // the menu's grey
   // Text: dark pixels inside the second entry's row.

@@ -17,7 +17,8 @@ int g_displayed = 0;
 void on_display() { ++g_displayed; }
 
 // Runs f and returns what it wrote to stderr.
-template <class F> std::string stderr_of(F f) {
+template <class F>
+std::string stderr_of(F f) {
   testing::internal::CaptureStderr();
   f();
   return testing::internal::GetCapturedStderr();
@@ -40,13 +41,15 @@ TEST(GlutErrors, CallsBeforeGlutInitAreReportedAndIgnored) {
     id = glutCreateWindow("early");
     glutDisplayFunc(on_display);
     glutPostRedisplay();
-    glutTimerFunc(10, [](int) {}, 0);
+    glutTimerFunc(
+        10, [](int) {}, 0);
     glutMainLoop();
   });
   EXPECT_EQ(id, 0);
   EXPECT_NE(err.find("tessel glut: glutCreateWindow called before glutInit"), std::string::npos) << err;
   EXPECT_NE(err.find("tessel glut: glutDisplayFunc called with no current window"), std::string::npos) << err;
-  EXPECT_NE(err.find("tessel glut: glutPostRedisplay called with no current window"), std::string::npos) << err;
+  EXPECT_NE(err.find("tessel glut: glutPostRedisplay called with no current window"), std::string::npos)
+      << err;
   EXPECT_NE(err.find("tessel glut: glutMainLoop called before glutInit"), std::string::npos) << err;
   EXPECT_TRUE(state().windows.empty());
   EXPECT_TRUE(state().timers.empty());
@@ -61,7 +64,9 @@ TEST(GlutErrors, AWindowWithoutADisplayCallbackEndsTheMainLoop) {
   const int id = glutCreateWindow("no display");
   ASSERT_GT(id, 0);
   std::string err = stderr_of([] { glutMainLoop(); });
-  EXPECT_NE(err.find("tessel glut: no display callback registered for window " + std::to_string(id)), std::string::npos) << err;
+  EXPECT_NE(err.find("tessel glut: no display callback registered for window " + std::to_string(id)),
+            std::string::npos)
+      << err;
   EXPECT_TRUE(state().failed);
   glutDisplayFunc(on_display);
   g_displayed = 0;
@@ -76,7 +81,8 @@ TEST(GlutErrors, AnUnwritableOutputFolderIsReported) {
   state().headless.out = "/proc/tessel-no-such-folder/frames";
   g_displayed = 0;
   const std::string err = stderr_of([] { glutMainLoop(); });
-  EXPECT_NE(err.find("tessel glut: cannot create the output folder /proc/tessel-no-such-folder/frames"), std::string::npos)
+  EXPECT_NE(err.find("tessel glut: cannot create the output folder /proc/tessel-no-such-folder/frames"),
+            std::string::npos)
       << err;
   EXPECT_EQ(g_displayed, 0);
   // With a writable folder the same window renders its frames.

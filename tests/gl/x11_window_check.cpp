@@ -163,7 +163,8 @@ int main(int argc, char** argv) {
   XSetErrorHandler(ignore_x_errors);
   Display* d = XOpenDisplay(nullptr);
   if (!d) {
-    std::fprintf(stderr, "x11_window_check: no X display (DISPLAY=%s)\n", std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "");
+    std::fprintf(stderr, "x11_window_check: no X display (DISPLAY=%s)\n",
+                 std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "");
     return 2;
   }
   const auto start = std::chrono::steady_clock::now();
@@ -187,11 +188,11 @@ int main(int argc, char** argv) {
   if (screen.w > 0) stbi_write_png(argv[2], screen.w, screen.h, 3, screen.rgb.data(), screen.w * 3);
   XCloseDisplay(d);
   if (best >= 0.99) {
-    std::printf("window found at (%d, %d): %.3f%% of %s's pixels on screen within 3/255\n", bx, by, best * 100.0,
-                argv[1]);
+    std::printf("window found at (%d, %d): %.3f%% of %s's pixels on screen within 3/255\n", bx, by,
+                best * 100.0, argv[1]);
     return 0;
   }
-  std::printf("the picture of %s was not on screen after %.0f s (best %.3f%%); screenshot: %s\n", argv[1], timeout,
-              best * 100.0, argv[2]);
+  std::printf("the picture of %s was not on screen after %.0f s (best %.3f%%); screenshot: %s\n", argv[1],
+              timeout, best * 100.0, argv[2]);
   return 1;
 }

@@ -19,8 +19,8 @@ struct Mismatch {
 };
 
 // NaN matches NaN, infinities match themselves; channels with mask bit clear are skipped.
-inline Mismatch compare_floats(const std::vector<float>& a, const std::vector<float>& b, int width, Tolerance tol,
-                               unsigned channel_mask = 0xF) {
+inline Mismatch compare_floats(const std::vector<float>& a, const std::vector<float>& b, int width,
+                               Tolerance tol, unsigned channel_mask = 0xF) {
   Mismatch m;
   std::ostringstream os;
   os.precision(9);
@@ -33,14 +33,17 @@ inline Mismatch compare_floats(const std::vector<float>& a, const std::vector<fl
     if (!((channel_mask >> (i % 4)) & 1)) continue;
     const float x = a[i], y = b[i];
     bool same;
-    if (std::isnan(y)) same = std::isnan(x);
-    else if (std::isinf(y)) same = x == y;
-    else same = std::isfinite(x) && std::fabs(x - y) <= tol.abs + tol.rel * std::fabs(y);
+    if (std::isnan(y))
+      same = std::isnan(x);
+    else if (std::isinf(y))
+      same = x == y;
+    else
+      same = std::isfinite(x) && std::fabs(x - y) <= tol.abs + tol.rel * std::fabs(y);
     if (!same) {
       if (m.count < 4) {
         const size_t p = i / 4;
-        os << " pixel (" << p % size_t(width) << "," << p / size_t(width) << ")." << "rgba"[i % 4] << ": tessel " << x
-           << " mesa " << y << ";";
+        os << " pixel (" << p % size_t(width) << "," << p / size_t(width) << ")."
+           << "rgba"[i % 4] << ": tessel " << x << " mesa " << y << ";";
       }
       ++m.count;
     }

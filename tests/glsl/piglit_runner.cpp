@@ -63,7 +63,8 @@ std::vector<float> numbers(const std::string& s) {
 
 enum class ValueKind { Float, Int, Uint, Bool };
 ValueKind value_kind(const std::string& type) {
-  if (type.find("sampler") != std::string::npos || type == "int" || type.rfind("ivec", 0) == 0) return ValueKind::Int;
+  if (type.find("sampler") != std::string::npos || type == "int" || type.rfind("ivec", 0) == 0)
+    return ValueKind::Int;
   if (type == "uint" || type.rfind("uvec", 0) == 0) return ValueKind::Uint;
   if (type == "bool" || type.rfind("bvec", 0) == 0) return ValueKind::Bool;
   return ValueKind::Float;
@@ -113,7 +114,8 @@ Test parse(const std::string& path) {
       section = tl;
       if ((tl == "[vertex shader]" && !t.vs.empty()) || (tl == "[fragment shader]" && !t.fs.empty()))
         t.skip = "several shader objects for one stage (a Program takes one per stage)";
-      if (section == "[vertex shader passthrough]") t.passthrough = true;
+      if (section == "[vertex shader passthrough]")
+        t.passthrough = true;
       else if (section != "[require]" && section != "[vertex shader]" && section != "[fragment shader]" &&
                section != "[test]" && section != "[vertex data]")
         t.skip = "section " + section;
@@ -126,13 +128,18 @@ Test parse(const std::string& path) {
       w >> a;
       if (a == "GLSL") {
         w >> op >> ver;
-        if (op == "ES" || ver == "ES") t.skip = "GLSL ES";
-        else if (op == ">=") t.glsl = int(std::lround(std::stod(ver) * 100));
-        else if (op != "<" && op != "<=") t.skip = "GLSL requirement " + tl;
+        if (op == "ES" || ver == "ES")
+          t.skip = "GLSL ES";
+        else if (op == ">=")
+          t.glsl = int(std::lround(std::stod(ver) * 100));
+        else if (op != "<" && op != "<=")
+          t.skip = "GLSL requirement " + tl;
       } else if (a == "GL") {
         w >> op >> ver;
-        if (op == "ES") t.skip = "GL ES";
-        else if (op == ">=" && std::stod(ver) > 3.3) t.skip = "needs " + tl;
+        if (op == "ES")
+          t.skip = "GL ES";
+        else if (op == ">=" && std::stod(ver) > 3.3)
+          t.skip = "needs " + tl;
       } else if (a == "SIZE") {
         w >> t.width >> t.height;
       } else if (a.rfind("GL_", 0) == 0) {
@@ -176,8 +183,8 @@ struct Runner {
         for (int c = 0; c < n; ++c)
           if (std::fabs(got[c] - want[size_t(c)]) > 0.01f) {
             char buf[256];
-            std::snprintf(buf, sizeof buf, "probe at (%d, %d): expected (%g %g %g %g) got (%g %g %g %g)", x, y,
-                          double(want[0]), double(want[1]), double(want[2]), n > 3 ? double(want[3]) : 0.0,
+            std::snprintf(buf, sizeof buf, "probe at (%d, %d): expected (%g %g %g %g) got (%g %g %g %g)", x,
+                          y, double(want[0]), double(want[1]), double(want[2]), n > 3 ? double(want[3]) : 0.0,
                           double(got.r), double(got.g), double(got.b), double(got.a));
             why = buf;
             return false;
@@ -187,7 +194,8 @@ struct Runner {
   }
 
   void draw_quad(float x, float y, float w, float h) {
-    const float v[] = {x, y, 0, 1, x + w, y, 0, 1, x + w, y + h, 0, 1, x, y, 0, 1, x + w, y + h, 0, 1, x, y + h, 0, 1};
+    const float v[] = {x, y, 0, 1, x + w, y,     0, 1, x + w, y + h, 0, 1,
+                       x, y, 0, 1, x + w, y + h, 0, 1, x,     y + h, 0, 1};
     gpu::Buffer vbo(v, sizeof v);
     gpu::VertexLayout layout;
     layout.attrib(0, vbo, 4, gpu::AttribType::F32, 16, 0);
@@ -264,7 +272,8 @@ struct Runner {
     } else {
       // Missing components of a vector read as 0 (shader_runner's parser).
       const int want = type == "vec2" ? 2 : type == "vec3" ? 3 : type == "vec4" ? 4 : 0;
-      if (want && int(words.size()) % want) words.resize(words.size() + size_t(want - int(words.size()) % want), 0u);
+      if (want && int(words.size()) % want)
+        words.resize(words.size() + size_t(want - int(words.size()) % want), 0u);
       std::vector<float> f(words.size());
       std::memcpy(f.data(), words.data(), words.size() * 4);
       ok = prog->set_uniform(loc, f.data(), int(f.size()));
@@ -279,7 +288,8 @@ struct Runner {
     std::string vs = t.vs;
     if (t.passthrough || vs.empty()) {
       if (t.glsl >= 140)
-        vs = "#version " + std::to_string(t.glsl) + "\nin vec4 piglit_vertex;\nvoid main() { gl_Position = piglit_vertex; }\n";
+        vs = "#version " + std::to_string(t.glsl) +
+             "\nin vec4 piglit_vertex;\nvoid main() { gl_Position = piglit_vertex; }\n";
       else
         vs = "#version 110\nvoid main() { gl_Position = gl_Vertex; }\n";
     }
@@ -307,7 +317,8 @@ struct Runner {
     prog = glsl::Program::link(*v, *f, lo);
     if (expect_link_error) return prog->ok() ? fail("linked, but a link error was expected") : Result{};
     if (!prog->ok()) {
-      if (prog->info_log().find("not supported") != std::string::npos) return skip("Tessel: " + prog->info_log());
+      if (prog->info_log().find("not supported") != std::string::npos)
+        return skip("Tessel: " + prog->info_log());
       return fail("link: " + prog->info_log());
     }
     for (const auto& b : prog->uniform_blocks()) block_data.emplace_back(size_t(b.size), uint8_t(0));
@@ -407,7 +418,8 @@ struct Runner {
           prog->set_compat_matrices(glm::mat4(1.0f), glm::frustum(n[0], n[1], n[2], n[3], n[4], n[5]));
         } else if (w1 == "ortho") {
           // glOrtho(0, w, 0, h, -1, 1) on the projection matrix, as shader_runner does
-          prog->set_compat_matrices(glm::mat4(1.0f), glm::ortho(0.0f, float(t.width), 0.0f, float(t.height), -1.0f, 1.0f));
+          prog->set_compat_matrices(glm::mat4(1.0f),
+                                    glm::ortho(0.0f, float(t.width), 0.0f, float(t.height), -1.0f, 1.0f));
         } else {
           return skip("command: " + c);
         }
@@ -432,8 +444,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--verbose") verbose = true;
-    else if (a == "--list-failures") list_failures = true;
+    if (a == "--verbose")
+      verbose = true;
+    else if (a == "--list-failures")
+      list_failures = true;
     else if (fs::is_directory(a)) {
       for (const auto& e : fs::recursive_directory_iterator(a))
         if (e.path().extension() == ".shader_test") files.push_back(e.path().string());
@@ -457,8 +471,10 @@ int main(int argc, char** argv) {
       res = {Outcome::Fail, std::string("exception: ") + e.what()};
     }
     Count& c = counts[version_of(f)];
-    if (res.outcome == Outcome::Pass) ++c.pass;
-    else if (res.outcome == Outcome::Fail) ++c.fail;
+    if (res.outcome == Outcome::Pass)
+      ++c.pass;
+    else if (res.outcome == Outcome::Fail)
+      ++c.fail;
     else {
       ++c.skip;
       std::string key = res.why.substr(0, res.why.find_first_of("\n"));
@@ -467,25 +483,31 @@ int main(int argc, char** argv) {
       ++skip_reasons[key.substr(0, 60)];
     }
     if ((res.outcome == Outcome::Fail && list_failures) || verbose)
-      std::printf("%s %s: %s\n", res.outcome == Outcome::Pass ? "PASS" : res.outcome == Outcome::Fail ? "FAIL" : "SKIP",
+      std::printf("%s %s: %s\n",
+                  res.outcome == Outcome::Pass   ? "PASS"
+                  : res.outcome == Outcome::Fail ? "FAIL"
+                                                 : "SKIP",
                   f.c_str(), res.why.substr(0, 300).c_str());
   }
   std::printf("\n%-10s %6s %6s %6s %8s\n", "version", "pass", "fail", "skip", "pass %");
   Count total;
   for (const auto& [v, c] : counts) {
     const int run = c.pass + c.fail;
-    std::printf("%-10s %6d %6d %6d %7.1f%%\n", v.c_str(), c.pass, c.fail, c.skip, run ? 100.0 * c.pass / run : 0.0);
+    std::printf("%-10s %6d %6d %6d %7.1f%%\n", v.c_str(), c.pass, c.fail, c.skip,
+                run ? 100.0 * c.pass / run : 0.0);
     total.pass += c.pass;
     total.fail += c.fail;
     total.skip += c.skip;
   }
   const int run = total.pass + total.fail;
-  std::printf("%-10s %6d %6d %6d %7.1f%%\n", "all", total.pass, total.fail, total.skip, run ? 100.0 * total.pass / run : 0.0);
+  std::printf("%-10s %6d %6d %6d %7.1f%%\n", "all", total.pass, total.fail, total.skip,
+              run ? 100.0 * total.pass / run : 0.0);
   std::printf("\nskipped, by reason:\n");
   std::vector<std::pair<int, std::string>> reasons;
   for (const auto& [k, n] : skip_reasons) reasons.push_back({n, k});
   std::sort(reasons.rbegin(), reasons.rend());
-  for (size_t i = 0; i < reasons.size() && i < 25; ++i) std::printf("%6d  %s\n", reasons[i].first, reasons[i].second.c_str());
+  for (size_t i = 0; i < reasons.size() && i < 25; ++i)
+    std::printf("%6d  %s\n", reasons[i].first, reasons[i].second.c_str());
   std::printf("%d passed, %d failed\n", total.pass, total.fail);
   return 0;
 }

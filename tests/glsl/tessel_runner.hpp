@@ -22,20 +22,30 @@ struct TesselResult {
 
 inline gpu::Filter to_filter(uint32_t e) {
   switch (e) {
-    case 0x2600: return gpu::Filter::Nearest;
-    case 0x2601: return gpu::Filter::Linear;
-    case 0x2700: return gpu::Filter::NearestMipmapNearest;
-    case 0x2701: return gpu::Filter::LinearMipmapNearest;
-    case 0x2702: return gpu::Filter::NearestMipmapLinear;
-    default: return gpu::Filter::LinearMipmapLinear;
+    case 0x2600:
+      return gpu::Filter::Nearest;
+    case 0x2601:
+      return gpu::Filter::Linear;
+    case 0x2700:
+      return gpu::Filter::NearestMipmapNearest;
+    case 0x2701:
+      return gpu::Filter::LinearMipmapNearest;
+    case 0x2702:
+      return gpu::Filter::NearestMipmapLinear;
+    default:
+      return gpu::Filter::LinearMipmapLinear;
   }
 }
 inline gpu::Wrap to_wrap(uint32_t e) {
   switch (e) {
-    case 0x812F: return gpu::Wrap::ClampToEdge;
-    case 0x8370: return gpu::Wrap::MirroredRepeat;
-    case 0x812D: return gpu::Wrap::ClampToBorder;
-    default: return gpu::Wrap::Repeat;
+    case 0x812F:
+      return gpu::Wrap::ClampToEdge;
+    case 0x8370:
+      return gpu::Wrap::MirroredRepeat;
+    case 0x812D:
+      return gpu::Wrap::ClampToBorder;
+    default:
+      return gpu::Wrap::Repeat;
   }
 }
 
@@ -79,9 +89,12 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
       return false;
     };
     bool done = false;
-    if (!u.f.empty()) done = try_set(u.f.data(), u.f.size());
-    else if (!u.i.empty()) done = try_set(u.i.data(), u.i.size());
-    else if (!u.u.empty()) done = try_set(u.u.data(), u.u.size());
+    if (!u.f.empty())
+      done = try_set(u.f.data(), u.f.size());
+    else if (!u.i.empty())
+      done = try_set(u.i.data(), u.i.size());
+    else if (!u.u.empty())
+      done = try_set(u.u.data(), u.u.size());
     if (!done) r.log += "uniform '" + u.name + "' could not be set\n";
   }
   // Textures: 1D and rectangle ones as 2D, 1D arrays as height-1 2D arrays, buffer textures
@@ -103,7 +116,9 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
     st.compare_func = gpu::CompareFunc(t.compare_func - 0x0200u);  // GL_NEVER.. in GL's order
     if (!t.mipmaps) st.max_lod = 0.0f;
     const bool depth = t.internal_format == 0x8CAC;  // GL_DEPTH_COMPONENT32F
-    const gpu::Format fmt = depth ? gpu::Format::Depth32F : t.internal_format == 0x8058 ? gpu::Format::RGBA8 : gpu::Format::RGBA32F;
+    const gpu::Format fmt = depth                         ? gpu::Format::Depth32F
+                            : t.internal_format == 0x8058 ? gpu::Format::RGBA8
+                                                          : gpu::Format::RGBA32F;
     // The data as RGBA floats (depth textures give one float per texel).
     std::vector<float> rgba = t.data;
     if (depth) {
@@ -116,7 +131,8 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
       case 0x8513: {  // GL_TEXTURE_CUBE_MAP
         cubes.push_back(std::make_unique<gpu::TextureCube>(fmt, t.width, levels));
         const size_t face = size_t(t.width * t.height * 4);
-        for (int f = 0; f < 6; ++f) cubes.back()->face(f).upload_rgba32f(0, rgba.data() + size_t(f) * face, face * 4);
+        for (int f = 0; f < 6; ++f)
+          cubes.back()->face(f).upload_rgba32f(0, rgba.data() + size_t(f) * face, face * 4);
         if (t.mipmaps) cubes.back()->generate_mipmaps();
         unit.texture_cube = cubes.back().get();
         break;
@@ -130,7 +146,8 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
       case 0x8C1A:    // GL_TEXTURE_2D_ARRAY
       case 0x8C18: {  // GL_TEXTURE_1D_ARRAY: height is the layer count
         const bool one = t.target == 0x8C18;
-        arrays.push_back(std::make_unique<gpu::Texture2DArray>(fmt, t.width, one ? 1 : t.height, one ? t.height : t.depth, levels));
+        arrays.push_back(std::make_unique<gpu::Texture2DArray>(fmt, t.width, one ? 1 : t.height,
+                                                               one ? t.height : t.depth, levels));
         arrays.back()->upload_rgba32f(0, rgba.data(), size_t(t.width * t.height * (one ? 1 : t.depth)) * 16);
         if (t.mipmaps) arrays.back()->generate_mipmaps();
         unit.texture_2d_array = arrays.back().get();
@@ -138,7 +155,8 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
       }
       case 0x8C2A:  // GL_TEXTURE_BUFFER
         texel_buffers.push_back(std::make_unique<gpu::Buffer>(rgba.data(), size_t(t.width) * 16));
-        buffer_textures.push_back(std::make_unique<gpu::TextureBuffer>(gpu::Format::RGBA32F, *texel_buffers.back()));
+        buffer_textures.push_back(
+            std::make_unique<gpu::TextureBuffer>(gpu::Format::RGBA32F, *texel_buffers.back()));
         unit.texture_buffer = buffer_textures.back().get();
         break;
       default:
@@ -174,9 +192,15 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
     gpu::DrawCall call;
     call.count = uint32_t(spec.count);
     switch (spec.primitive) {
-      case 0x0005: call.topology = gpu::Topology::TriangleStrip; break;
-      case 0x0006: call.topology = gpu::Topology::TriangleFan; break;
-      default: call.topology = gpu::Topology::Triangles; break;
+      case 0x0005:
+        call.topology = gpu::Topology::TriangleStrip;
+        break;
+      case 0x0006:
+        call.topology = gpu::Topology::TriangleFan;
+        break;
+      default:
+        call.topology = gpu::Topology::Triangles;
+        break;
     }
     std::vector<std::unique_ptr<gpu::Buffer>> ubos;
     std::vector<glsl::BufferBinding> points;

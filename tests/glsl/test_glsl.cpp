@@ -1,10 +1,10 @@
 // The glsl layer's own rules: info logs, link errors, reflection, uniforms, bad input.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "tessel_runner.hpp"
 
@@ -42,7 +42,8 @@ std::vector<float> draw(const std::string& fs, std::string* log = nullptr) {
 }
 
 TEST(Glsl, CompileErrorNamesTheLine) {
-  auto s = Shader::compile(Stage::Fragment, "#version 330\nout vec4 c;\nvoid main() {\n  c = vec4(foo);\n}\n");
+  auto s =
+      Shader::compile(Stage::Fragment, "#version 330\nout vec4 c;\nvoid main() {\n  c = vec4(foo);\n}\n");
   EXPECT_FALSE(s->ok());
   EXPECT_NE(s->info_log().find("0:4"), std::string::npos) << s->info_log();
   EXPECT_NE(s->info_log().find("foo"), std::string::npos) << s->info_log();
@@ -50,12 +51,18 @@ TEST(Glsl, CompileErrorNamesTheLine) {
 
 TEST(Glsl, VersionsAndCompatibilityBuiltinsCompile) {
   EXPECT_TRUE(Shader::compile(Stage::Vertex, "void main() { gl_Position = ftransform(); }")->ok());
-  EXPECT_TRUE(Shader::compile(Stage::Vertex,
-                              "#version 120\nattribute vec3 a; varying vec3 n;\nvoid main() { n = gl_NormalMatrix * gl_Normal;"
-                              " gl_Position = gl_ModelViewProjectionMatrix * vec4(a, 1.0); }")
-                  ->ok());
-  EXPECT_TRUE(Shader::compile(Stage::Fragment, "#version 130\nprecision highp float; out vec4 c; void main() { c = vec4(1.0); }")->ok());
-  EXPECT_TRUE(Shader::compile(Stage::Fragment, "#version 150\nout vec4 c; void main() { c = vec4(1.0); }")->ok());
+  EXPECT_TRUE(
+      Shader::compile(
+          Stage::Vertex,
+          "#version 120\nattribute vec3 a; varying vec3 n;\nvoid main() { n = gl_NormalMatrix * gl_Normal;"
+          " gl_Position = gl_ModelViewProjectionMatrix * vec4(a, 1.0); }")
+          ->ok());
+  EXPECT_TRUE(
+      Shader::compile(Stage::Fragment,
+                      "#version 130\nprecision highp float; out vec4 c; void main() { c = vec4(1.0); }")
+          ->ok());
+  EXPECT_TRUE(
+      Shader::compile(Stage::Fragment, "#version 150\nout vec4 c; void main() { c = vec4(1.0); }")->ok());
 }
 
 TEST(Glsl, LinkErrors) {
@@ -130,11 +137,11 @@ void main() { first = col * k[2] + texture(tex, col.xy); second = vec4(s.a, floa
   const float three[3] = {1, 2, 3};
   const int32_t one = 1;
   EXPECT_TRUE(p->set_uniform(p->uniform_location("s.a"), three, 3));
-  EXPECT_FALSE(p->set_uniform(p->uniform_location("s.a"), three, 2));   // size mismatch
-  EXPECT_FALSE(p->set_uniform(p->uniform_location("s.b"), three, 1));   // float into int
+  EXPECT_FALSE(p->set_uniform(p->uniform_location("s.a"), three, 2));  // size mismatch
+  EXPECT_FALSE(p->set_uniform(p->uniform_location("s.b"), three, 1));  // float into int
   EXPECT_TRUE(p->set_uniform(p->uniform_location("s.b"), &one, 1));
-  EXPECT_FALSE(p->set_uniform(p->uniform_location("tex"), three, 1));   // samplers take ints
-  EXPECT_TRUE(p->set_uniform(-1, three, 3));                            // -1 is ignored
+  EXPECT_FALSE(p->set_uniform(p->uniform_location("tex"), three, 1));  // samplers take ints
+  EXPECT_TRUE(p->set_uniform(-1, three, 3));                           // -1 is ignored
   EXPECT_FALSE(p->set_uniform(12345, three, 3));
   float back[3] = {};
   EXPECT_TRUE(p->get_uniform(p->uniform_location("s.a"), back));
@@ -146,7 +153,8 @@ void main() { first = col * k[2] + texture(tex, col.xy); second = vec4(s.a, floa
 }
 
 TEST(Glsl, DrawsAndIsIdenticalForAnyThreadCount) {
-  const std::string fs = "#version 330\nin vec2 p; out vec4 c; void main() { c = vec4(p, sin(p.x * 10.0), 1.0); }";
+  const std::string fs =
+      "#version 330\nin vec2 p; out vec4 c; void main() { c = vec4(p, sin(p.x * 10.0), 1.0); }";
   reference::GlslDrawSpec s;
   s.vertex = kVs;
   s.fragment = fs;
@@ -171,7 +179,8 @@ TEST(Glsl, DiskCacheOfCompiledPrograms) {
   std::filesystem::remove_all(dir);
   ::setenv("TESSEL_SHADER_CACHE_DIR", dir.c_str(), 1);
   const std::string fs =
-      "#version 330\nin vec2 p; out vec4 c; uniform float k; void main() { c = vec4(sin(p.x * k), p.y, 0.5, 1.0); }";
+      "#version 330\nin vec2 p; out vec4 c; uniform float k; void main() { c = vec4(sin(p.x * k), p.y, 0.5, "
+      "1.0); }";
   auto link = [&] {
     auto v = Shader::compile(Stage::Vertex, kVs);
     auto f = Shader::compile(Stage::Fragment, fs);
@@ -230,29 +239,33 @@ TEST(Glsl, BadInputGetsALogOrADefinedResult) {
   deep += "; c = vec4(x); }";
   (void)Shader::compile(Stage::Fragment, deep);  // a log or success, never a crash
   std::string huge = "#version 330\nout vec4 c;\n";
-  while (huge.size() < 10u * 1024 * 1024) huge += "// padding padding padding padding padding padding padding padding\n";
+  while (huge.size() < 10u * 1024 * 1024)
+    huge += "// padding padding padding padding padding padding padding padding\n";
   huge += "void main() { c = vec4(1.0); }\n";
   EXPECT_TRUE(Shader::compile(Stage::Fragment, huge)->ok());
   // Recursion is a compile or link error.
   auto v = Shader::compile(Stage::Vertex, kVs);
-  auto f = Shader::compile(Stage::Fragment,
-                           "#version 330\nin vec2 p; out vec4 c; float r(float x) { return x < 0.0 ? x : r(x - 1.0); }"
-                           " void main() { c = vec4(r(p.x)); }");
+  auto f = Shader::compile(
+      Stage::Fragment,
+      "#version 330\nin vec2 p; out vec4 c; float r(float x) { return x < 0.0 ? x : r(x - 1.0); }"
+      " void main() { c = vec4(r(p.x)); }");
   if (f->ok()) {
     EXPECT_FALSE(Program::link(*v, *f)->ok());
   }
   // An infinite loop ends (cut after 65535 iterations); integer division by zero and indices
   // out of range give defined values.
   std::string log;
-  auto px = draw("#version 330\nin vec2 p; out vec4 c; void main() { float s = 0.0; while (true) { s += 1.0; }"
-                 " c = vec4(s); }",
-                 &log);
+  auto px = draw(
+      "#version 330\nin vec2 p; out vec4 c; void main() { float s = 0.0; while (true) { s += 1.0; }"
+      " c = vec4(s); }",
+      &log);
   ASSERT_FALSE(px.empty()) << log;
   EXPECT_EQ(px[0], 65535.0f);
-  px = draw("#version 330\nin vec2 p; out vec4 c; uniform int z; void main() { int a = 7 / z; int b = 7 % z;"
-            " float arr[3] = float[3](1.0, 2.0, 3.0); int k = int(p.x * 100.0) - 50;"
-            " c = vec4(float(a), float(b), arr[k], arr[-k]); }",
-            &log);
+  px = draw(
+      "#version 330\nin vec2 p; out vec4 c; uniform int z; void main() { int a = 7 / z; int b = 7 % z;"
+      " float arr[3] = float[3](1.0, 2.0, 3.0); int k = int(p.x * 100.0) - 50;"
+      " c = vec4(float(a), float(b), arr[k], arr[-k]); }",
+      &log);
   ASSERT_FALSE(px.empty()) << log;
   for (float x : px) EXPECT_FALSE(std::isnan(x));
 }

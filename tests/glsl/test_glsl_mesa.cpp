@@ -26,15 +26,15 @@ struct Unary {
 // input, 1 + (-0.99 + i step), is reassociated by Mesa's optimizer into (1 - 0.99) + i step,
 // which Tessel does not do: a few ulp apart at the ends of its domain.
 const Unary kUnary[] = {
-    {"sin", -10, 10, {0, 0}},       {"cos", -10, 10, {0, 0}},     {"tan", -1.5f, 1.5f, {0, 0}},
-    {"asin", -1, 1, {0, 0}},        {"acos", -1, 1, {0, 0}},      {"atan", -20, 20, {0, 0}},
-    {"sinh", -5, 5, {0, 0}},        {"cosh", -5, 5, {0, 0}},      {"tanh", -5, 5, {0, 0}},
-    {"asinh", -10, 10, {0, 0}},     {"acosh", 1, 20, {0, 0}},     {"atanh", -0.99f, 0.99f, {0, 2e-6f}},
-    {"exp", -20, 20, {0, 0}},           {"log", 0.001f, 1000, {0, 0}}, {"exp2", -30, 30, {0, 0}},
-    {"log2", 0.001f, 1000, {0, 0}}, {"sqrt", 0, 1000, {0, 0}},        {"inversesqrt", 0.001f, 1000, {0, 0}},
-    {"abs", -10, 10, {0, 0}},               {"sign", -10, 10, {0, 0}},            {"floor", -10, 10, {0, 0}},
-    {"ceil", -10, 10, {0, 0}},              {"fract", -10, 10, {0, 0}},       {"trunc", -10, 10, {0, 0}},
-    {"roundEven", -10, 10, {0, 0}},         {"radians", -720, 720, {0, 0}},   {"degrees", -10, 10, {0, 0}},
+    {"sin", -10, 10, {0, 0}},       {"cos", -10, 10, {0, 0}},       {"tan", -1.5f, 1.5f, {0, 0}},
+    {"asin", -1, 1, {0, 0}},        {"acos", -1, 1, {0, 0}},        {"atan", -20, 20, {0, 0}},
+    {"sinh", -5, 5, {0, 0}},        {"cosh", -5, 5, {0, 0}},        {"tanh", -5, 5, {0, 0}},
+    {"asinh", -10, 10, {0, 0}},     {"acosh", 1, 20, {0, 0}},       {"atanh", -0.99f, 0.99f, {0, 2e-6f}},
+    {"exp", -20, 20, {0, 0}},       {"log", 0.001f, 1000, {0, 0}},  {"exp2", -30, 30, {0, 0}},
+    {"log2", 0.001f, 1000, {0, 0}}, {"sqrt", 0, 1000, {0, 0}},      {"inversesqrt", 0.001f, 1000, {0, 0}},
+    {"abs", -10, 10, {0, 0}},       {"sign", -10, 10, {0, 0}},      {"floor", -10, 10, {0, 0}},
+    {"ceil", -10, 10, {0, 0}},      {"fract", -10, 10, {0, 0}},     {"trunc", -10, 10, {0, 0}},
+    {"roundEven", -10, 10, {0, 0}}, {"radians", -720, 720, {0, 0}}, {"degrees", -10, 10, {0, 0}},
 };
 
 struct Binary {
@@ -87,47 +87,58 @@ struct Flow {
 };
 const Flow kFlow[] = {
     {"nested_if", "",
-     "float r = 0.0; if (t < 0.5) { if (t < 0.25) r = 1.0; else r = 2.0; } else if (t > 0.9) r = 3.0; else { r = 4.0 + t; }\n"
+     "float r = 0.0; if (t < 0.5) { if (t < 0.25) r = 1.0; else r = 2.0; } else if (t > 0.9) r = 3.0; else { "
+     "r = 4.0 + t; }\n"
      "  c = vec4(r, t, 0.0, 1.0);"},
     {"loop_per_lane_count", "",
      "float s = 0.0; for (int k = 0; k < i % 17; ++k) s += float(k) * 0.5; c = vec4(s, 0.0, 0.0, 1.0);"},
     {"loop_break_continue", "",
-     "float s = 0.0; for (int k = 0; k < 40; ++k) { if (k % 3 == 0) continue; if (k > i % 23) break; s += float(k); }\n"
+     "float s = 0.0; for (int k = 0; k < 40; ++k) { if (k % 3 == 0) continue; if (k > i % 23) break; s += "
+     "float(k); }\n"
      "  c = vec4(s, 0.0, 0.0, 1.0);"},
     {"while_and_do", "",
-     "int n = i; int steps = 0; while (n != 1 && steps < 200) { n = (n % 2 == 0) ? n / 2 : 3 * n + 1; ++steps; }\n"
+     "int n = i; int steps = 0; while (n != 1 && steps < 200) { n = (n % 2 == 0) ? n / 2 : 3 * n + 1; "
+     "++steps; }\n"
      "  int m = 0; do { m += 3; } while (m < i % 11);\n  c = vec4(float(steps), float(m), 0.0, 1.0);"},
-    {"early_return", "float f(float x) { if (x < 0.3) return -1.0; for (int k = 0; k < 10; ++k) { if (float(k) > x * 10.0) return float(k); } return 99.0; }",
+    {"early_return",
+     "float f(float x) { if (x < 0.3) return -1.0; for (int k = 0; k < 10; ++k) { if (float(k) > x * 10.0) "
+     "return float(k); } return 99.0; }",
      "c = vec4(f(t), f(1.0 - t), 0.0, 1.0);"},
     {"discard", "", "if (i % 3 == 1) discard; c = vec4(t, 1.0, 0.0, 1.0);"},
     {"switch_fallthrough", "",
-     "float r = 0.0; switch (i % 6) { case 0: r = 1.0; break; case 1: r = 2.0; case 2: r += 3.0; break; case 4: { r = 5.0; break; } default: r = -1.0; }\n"
+     "float r = 0.0; switch (i % 6) { case 0: r = 1.0; break; case 1: r = 2.0; case 2: r += 3.0; break; case "
+     "4: { r = 5.0; break; } default: r = -1.0; }\n"
      "  c = vec4(r, 0.0, 0.0, 1.0);"},
     {"out_params", "void g(in float a, out float b, inout float cc) { b = a * 2.0; cc += a; }",
      "float b = 0.0, d = 1.0; g(t, b, d); c = vec4(b, d, 0.0, 1.0);"},
     {"local_array_dynamic", "",
-     "float a[5]; for (int k = 0; k < 5; ++k) a[k] = float(k * k); a[i % 5] += 0.5; c = vec4(a[i % 5], a[(i + 2) % 5], a[i % 7], 1.0);"},
+     "float a[5]; for (int k = 0; k < 5; ++k) a[k] = float(k * k); a[i % 5] += 0.5; c = vec4(a[i % 5], a[(i "
+     "+ 2) % 5], a[i % 7], 1.0);"},
     {"struct_and_array_of_struct", "struct S { vec2 v; float w; }; ",
      "S s[3]; for (int k = 0; k < 3; ++k) s[k] = S(vec2(float(k), t), float(k) * 2.0); S q = s[i % 3];\n"
      "  q.v.y += 1.0; c = vec4(q.v, q.w, float(s[1] == S(vec2(1.0, t), 2.0)));"},
     {"swizzles_and_write_masks", "",
-     "vec4 v = vec4(t, 2.0 * t, 3.0, 4.0); v.zx = v.xz; v.yw += vec2(1.0); vec3 w = v.wzy; w.xy = w.yx; c = vec4(w, v.x);"},
+     "vec4 v = vec4(t, 2.0 * t, 3.0, 4.0); v.zx = v.xz; v.yw += vec2(1.0); vec3 w = v.wzy; w.xy = w.yx; c = "
+     "vec4(w, v.x);"},
     {"matrix_products", "",
      "mat3 m = mat3(1.0, t, 2.0, 0.5, 3.0, -t, 1.0, 1.0, 4.0); vec3 v = vec3(t, 1.0, -2.0);\n"
      "  vec3 a = m * v; vec3 b = v * m; c = vec4(a.x + b.y, a.y - b.z, a.z, (m * m)[1][2]);"},
     {"matrix_functions", "",
      "mat3 m = mat3(2.0, t, 0.5, 0.25, 3.0, -t, 1.0, 0.5, 4.0); mat3 n = inverse(m);\n"
-     "  c = vec4(determinant(m), n[0][1], transpose(m)[2][0], outerProduct(vec2(t, 1.0), vec3(2.0, 3.0, 4.0))[2][0]);"},
+     "  c = vec4(determinant(m), n[0][1], transpose(m)[2][0], outerProduct(vec2(t, 1.0), vec3(2.0, 3.0, "
+     "4.0))[2][0]);"},
     {"mat4_inverse", "",
      "mat4 m = mat4(2.0, t, 0.5, 0.0, 0.25, 3.0, -t, 0.1, 1.0, 0.5, 4.0, 0.2, 0.3, 0.0, 1.0, 1.0);\n"
-     "  mat4 n = inverse(m); vec4 v = (m * n) * vec4(1.0, 2.0, 3.0, 4.0); c = vec4(v.x, n[3][0], determinant(m), matrixCompMult(m, m)[1][1]);"},
+     "  mat4 n = inverse(m); vec4 v = (m * n) * vec4(1.0, 2.0, 3.0, 4.0); c = vec4(v.x, n[3][0], "
+     "determinant(m), matrixCompMult(m, m)[1][1]);"},
     {"derivatives", "",
      "float f = p.x * p.x * 40.0 + p.y * 3.0; c = vec4(dFdx(f), dFdy(f), fwidth(f * p.y), 1.0);"},
     {"ternary_with_effects", "",
      "float a = 1.0; float b = t > 0.5 ? (a += 2.0) : (a -= 1.0); c = vec4(a, b, 0.0, 1.0);"},
     {"short_circuit", "float k = 0.0; bool side(float x) { k += 1.0; return x > 0.7; }",
      "bool r = t > 0.5 && side(t); bool q = t < 0.2 || side(t); c = vec4(float(r), float(q), k, 1.0);"},
-    {"const_array", "const float K[4] = float[4](1.0, 10.0, 100.0, 1000.0);", "c = vec4(K[i % 4], K[3 - i % 4], 0.0, 1.0);"},
+    {"const_array", "const float K[4] = float[4](1.0, 10.0, 100.0, 1000.0);",
+     "c = vec4(K[i % 4], K[3 - i % 4], 0.0, 1.0);"},
     {"global_initializer", "float g = 3.0; vec2 h = vec2(1.0, 2.0);", "g *= t; c = vec4(g, h, 1.0);"},
 };
 
@@ -137,7 +148,8 @@ TEST_P(Functions, MatchMesa) {
   char buf[256];
   // Inputs lo + i * step, rounded the same way on both sides (the step is a float literal).
   const float step = (u.hi - u.lo) / 256.0f;
-  std::snprintf(buf, sizeof buf, "float x = %.9g + float(i) * %.9g; c = vec4(%s(x), x, 0.0, 1.0);", double(u.lo), double(step), u.fn);
+  std::snprintf(buf, sizeof buf, "float x = %.9g + float(i) * %.9g; c = vec4(%s(x), x, 0.0, 1.0);",
+                double(u.lo), double(step), u.fn);
   run_case({u.fn, "", buf, u.tol});
 }
 INSTANTIATE_TEST_SUITE_P(Glsl, Functions, ::testing::ValuesIn(kUnary),
@@ -149,7 +161,8 @@ TEST_P(Expressions, MatchMesa) {
   char buf[512];
   const float step = (b.hi - b.lo) / 256.0f;
   std::snprintf(buf, sizeof buf,
-                "float x = %.9g + float(i) * %.9g; float y = %.9g + float(255 - i) * %.9g + 0.375;\n  c = vec4(%s, x, y, 1.0);",
+                "float x = %.9g + float(i) * %.9g; float y = %.9g + float(255 - i) * %.9g + 0.375;\n  c = "
+                "vec4(%s, x, y, 1.0);",
                 double(b.lo), double(step), double(b.lo), double(step), b.expr);
   run_case({b.expr, "", buf, b.tol});
 }
@@ -176,9 +189,11 @@ INSTANTIATE_TEST_SUITE_P(Glsl, ControlFlow, ::testing::ValuesIn(kFlow),
 
 TEST(GlslMesa, UniformsArraysAndStructsByName) {
   Case c{"uniforms",
-         "struct L { vec3 pos; float power; }; uniform L lights[2]; uniform float k[3]; uniform mat4 M; uniform int n;"
+         "struct L { vec3 pos; float power; }; uniform L lights[2]; uniform float k[3]; uniform mat4 M; "
+         "uniform int n;"
          " uniform bool flag;",
-         "vec4 v = M * vec4(t, 1.0, 2.0, 1.0); c = vec4(v.x + k[i % 3], lights[i % 2].pos.y * lights[1].power, float(n) + v.w,"
+         "vec4 v = M * vec4(t, 1.0, 2.0, 1.0); c = vec4(v.x + k[i % 3], lights[i % 2].pos.y * "
+         "lights[1].power, float(n) + v.w,"
          " flag ? 1.0 : 0.0);",
          {1e-6f, 1e-6f}};
   c.uniforms = {{"lights[0].pos", {1, 2, 3}},
@@ -209,7 +224,8 @@ layout(std140) uniform Params {
 };
 uniform Other { vec4 o; } other;)";
   const char* body =
-      "vec3 mv = m * vec3(1.0, 2.0, 3.0); c = vec4(f + v.z + arr[i % 3], mv.y, s.a.y + s.b + (flag ? 100.0 : 0.0),"
+      "vec3 mv = m * vec3(1.0, 2.0, 3.0); c = vec4(f + v.z + arr[i % 3], mv.y, s.a.y + s.b + (flag ? 100.0 : "
+      "0.0),"
       " tail.w + other.o.x);";
   reference::GlslDrawSpec spec = quad_spec(kVertex330, fragment330(decl, body));
   // std140 offsets (bytes): f 0, v 16, arr 32/48/64, m 80 (3 rows of vec4 when row-major:
@@ -264,13 +280,16 @@ reference::GlslTexture checker_texture(int w, int h) {
   t.height = h;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      t.data.insert(t.data.end(), {float(x) / float(w), float(y) / float(h), ((x ^ y) & 1) ? 1.0f : 0.25f, 1.0f});
+      t.data.insert(t.data.end(),
+                    {float(x) / float(w), float(y) / float(h), ((x ^ y) & 1) ? 1.0f : 0.25f, 1.0f});
   return t;
 }
 
 TEST(GlslMesa, TexelFetchAndSize) {
-  Case c{"texelFetch", "uniform sampler2D tex;",
-         "ivec2 s = textureSize(tex, 0); c = texelFetch(tex, ivec2(i % 8, i / 32), 0) + vec4(0.0, 0.0, 0.0, float(s.x * 100 + s.y));",
+  Case c{"texelFetch",
+         "uniform sampler2D tex;",
+         "ivec2 s = textureSize(tex, 0); c = texelFetch(tex, ivec2(i % 8, i / 32), 0) + vec4(0.0, 0.0, 0.0, "
+         "float(s.x * 100 + s.y));",
          {0, 0}};
   c.textures = {checker_texture(8, 8)};
   c.uniforms = {{"tex", {}, {0}}};
@@ -279,7 +298,10 @@ TEST(GlslMesa, TexelFetchAndSize) {
 
 TEST(GlslMesa, TextureNearestAndLinear) {
   for (uint32_t filter : {0x2600u, 0x2601u}) {
-    Case c{"texture", "uniform sampler2D tex;", "c = texture(tex, p * 1.7 - 0.3) + textureLod(tex, p.yx, 0.0);", {2e-6f, 1e-5f}};
+    Case c{"texture",
+           "uniform sampler2D tex;",
+           "c = texture(tex, p * 1.7 - 0.3) + textureLod(tex, p.yx, 0.0);",
+           {2e-6f, 1e-5f}};
     reference::GlslTexture t = checker_texture(8, 8);
     t.min_filter = t.mag_filter = filter;
     c.textures = {t};
@@ -312,7 +334,9 @@ TEST(GlslMesa, TextureFunctionsOn2D) {
 
 TEST(GlslMesa, ShadowAndCubeSamplers) {
   {
-    Case c{"shadow", "uniform sampler2DShadow sm;", "float v = texture(sm, vec3(p, t)); c = vec4(v, texture(sm, vec3(p.yx, 0.5)), 0.0, 1.0);",
+    Case c{"shadow",
+           "uniform sampler2DShadow sm;",
+           "float v = texture(sm, vec3(p, t)); c = vec4(v, texture(sm, vec3(p.yx, 0.5)), 0.0, 1.0);",
            {1e-5f, 1e-5f}};
     reference::GlslTexture tx;
     tx.width = 8;
@@ -329,7 +353,9 @@ TEST(GlslMesa, ShadowAndCubeSamplers) {
   }
   {
     // Directions with one clearly largest axis (the face of a tie is the implementation's).
-    Case c{"cube", "uniform samplerCube cm;", "c = texture(cm, vec3(p * 2.0 - 1.0, 1.7)) + textureLod(cm, vec3(1.0, p.yx - 0.5), 0.0) +"
+    Case c{"cube",
+           "uniform samplerCube cm;",
+           "c = texture(cm, vec3(p * 2.0 - 1.0, 1.7)) + textureLod(cm, vec3(1.0, p.yx - 0.5), 0.0) +"
            " 2.0 * texture(cm, vec3(p.x - 0.5, -1.3, p.y - 0.5));",
            {1e-5f, 1e-5f}};
     reference::GlslTexture tx;
@@ -385,7 +411,8 @@ void main() {
 // A wrong result must fail: the comparison of a shader against a slightly different one.
 TEST(GlslMesa, ToleranceCatchesAWrongResult) {
   if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
-  reference::GlslDrawSpec spec = quad_spec(kVertex330, fragment330("", "c = vec4(sin(t * 6.0), t, 0.0, 1.0);"));
+  reference::GlslDrawSpec spec =
+      quad_spec(kVertex330, fragment330("", "c = vec4(sin(t * 6.0), t, 0.0, 1.0);"));
   const reference::GlslResult mesa = oracle()->run(spec);
   ASSERT_TRUE(mesa.ok);
   // sin off by one part in 10^4 (a cheap approximation) is caught by the loosest tolerance of

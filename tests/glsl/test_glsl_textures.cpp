@@ -29,17 +29,19 @@ reference::GlslOracle* oracle() {
 }
 
 // GL enums.
-constexpr uint32_t kNearest = 0x2600, kLinear = 0x2601, kNearestMipmapNearest = 0x2700, kLinearMipmapLinear = 0x2703;
+constexpr uint32_t kNearest = 0x2600, kLinear = 0x2601, kNearestMipmapNearest = 0x2700,
+                   kLinearMipmapLinear = 0x2703;
 constexpr uint32_t kRepeat = 0x2901, kClampToEdge = 0x812F, kMirroredRepeat = 0x8370, kClampToBorder = 0x812D;
-constexpr uint32_t kTex1D = 0x0DE0, kTex3D = 0x806F, kTexCube = 0x8513, kTex2DArray = 0x8C1A, kTex1DArray = 0x8C18,
-                   kTexBuffer = 0x8C2A;
+constexpr uint32_t kTex1D = 0x0DE0, kTex3D = 0x806F, kTexCube = 0x8513, kTex2DArray = 0x8C1A,
+                   kTex1DArray = 0x8C18, kTexBuffer = 0x8C2A;
 constexpr uint32_t kDepth32F = 0x8CAC, kRGBA32I = 0x8D82, kRGBA32UI = 0x8D70, kRGBA8 = 0x8058;
 
 // The fragment shader: `body` runs with p in [0, 1]^2 (the pixel's centre), i the pixel
 // index 0..255 and t = i / 255, and writes vec4 c.
 std::string fragment(const std::string& decl, const std::string& body) {
   return "#version 330\nin vec2 p;\nout vec4 c;\n" + decl +
-         "\nvoid main() {\n  int i = int(gl_FragCoord.x) + 16 * int(gl_FragCoord.y);\n  float t = float(i) / 255.0;\n  " +
+         "\nvoid main() {\n  int i = int(gl_FragCoord.x) + 16 * int(gl_FragCoord.y);\n  float t = float(i) / "
+         "255.0;\n  " +
          body + "\n}\n";
 }
 
@@ -74,7 +76,8 @@ void run(const std::string& decl, const std::string& body, const reference::Glsl
   ::unsetenv("TESSEL_GLSL");
   ASSERT_TRUE(interp.ok) << interp.log;
   EXPECT_EQ(0, std::memcmp(interp.outputs[0].data(), ours.outputs[0].data(), ours.outputs[0].size() * 4))
-      << "the interpreter and the JIT differ\n" << spec.fragment;
+      << "the interpreter and the JIT differ\n"
+      << spec.fragment;
 }
 
 // A colour texture of w x h x d texels (d slices, layers, or 1): red, green and blue ramp
@@ -123,7 +126,8 @@ reference::GlslTexture depth_texture(uint32_t target, int w, int h, int d) {
   return t;
 }
 
-reference::GlslTexture filtered(reference::GlslTexture t, uint32_t min, uint32_t mag, uint32_t wrap, bool mipmaps = false) {
+reference::GlslTexture filtered(reference::GlslTexture t, uint32_t min, uint32_t mag, uint32_t wrap,
+                                bool mipmaps = false) {
   t.min_filter = min;
   t.mag_filter = mag;
   t.wrap = wrap;
@@ -143,14 +147,17 @@ TEST(GlslTextures, Sampler3DFiltersAndWraps) {
   const reference::GlslTexture base = colour_texture(kTex3D, 8, 4, 4);
   for (uint32_t wrap : {kRepeat, kClampToEdge, kMirroredRepeat, kClampToBorder}) {
     SCOPED_TRACE(wrap);
-    run(decl, "c = texture(tex, vec3(p * 1.6 - 0.31, t * 1.8 - 0.4));", filtered(base, kNearest, kNearest, wrap), kExact);
-    run(decl, "c = texture(tex, vec3(p.yx * 1.6 - 0.31, t * 1.8 - 0.4));", filtered(base, kLinear, kLinear, wrap), kFiltered);
+    run(decl, "c = texture(tex, vec3(p * 1.6 - 0.31, t * 1.8 - 0.4));",
+        filtered(base, kNearest, kNearest, wrap), kExact);
+    run(decl, "c = texture(tex, vec3(p.yx * 1.6 - 0.31, t * 1.8 - 0.4));",
+        filtered(base, kLinear, kLinear, wrap), kFiltered);
   }
 }
 
 TEST(GlslTextures, Sampler3DFunctions) {
   const std::string decl = "uniform sampler3D tex;";
-  const reference::GlslTexture mip = filtered(colour_texture(kTex3D, 8, 8, 4), kLinearMipmapLinear, kLinear, kRepeat, true);
+  const reference::GlslTexture mip =
+      filtered(colour_texture(kTex3D, 8, 8, 4), kLinearMipmapLinear, kLinear, kRepeat, true);
   const char* bodies[] = {
       // Implicit LOD from derivatives along all three axes (rho uses the depth too).
       "c = texture(tex, vec3(p.x * 5.0, p.y * 2.0, (p.x + p.y) * 3.0));",
@@ -169,24 +176,30 @@ TEST(GlslTextures, Sampler3DFunctions) {
       "c = texelFetch(tex, ivec3(i % 8, (i / 8) % 8, i / 64), 0);",
       "c = texelFetch(tex, ivec3(i % 4, (i / 4) % 4, i / 16 - 7), 1);",  // slices out of range too
       "c = texelFetchOffset(tex, ivec3(i % 4, i / 64, 1), 0, ivec3(2, 1, 1));",
-      "c = vec4(textureSize(tex, 0), 0.0) + vec4(textureSize(tex, 1), 0.0) * 100.0 + vec4(0.0, 0.0, 0.0, textureSize(tex, 3).z);",
+      "c = vec4(textureSize(tex, 0), 0.0) + vec4(textureSize(tex, 1), 0.0) * 100.0 + vec4(0.0, 0.0, 0.0, "
+      "textureSize(tex, 3).z);",
       "c = textureLod(tex, vec3(p, t), 2.0 + float(i % 3));",
   };
-  for (const char* body : exact) run(decl, body, filtered(mip, kNearestMipmapNearest, kNearest, kRepeat, true), kExact);
+  for (const char* body : exact)
+    run(decl, body, filtered(mip, kNearestMipmapNearest, kNearest, kRepeat, true), kExact);
 }
 
 TEST(GlslTextures, Sampler3DIntegerAndOldName) {
-  run("uniform isampler3D tex;", "c = vec4(texture(tex, vec3(p, t) * 1.2)) + vec4(texelFetch(tex, ivec3(i % 4, 1, i / 64), 0));",
+  run("uniform isampler3D tex;",
+      "c = vec4(texture(tex, vec3(p, t) * 1.2)) + vec4(texelFetch(tex, ivec3(i % 4, 1, i / 64), 0));",
       integer_texture(kTex3D, 4, 4, 4, false), kExact);
   run("uniform usampler3D tex;", "c = vec4(texture(tex, vec3(p.yx, t))) + vec4(textureSize(tex, 0), 0.0);",
       integer_texture(kTex3D, 4, 2, 8, true), kExact);
   // GLSL 1.10's texture3D, in a 1.20 shader.
   if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
   reference::GlslDrawSpec spec;
-  spec.vertex = "#version 120\nattribute vec2 pos;\nvarying vec2 p;\nvoid main() { p = pos * 0.5 + 0.5; gl_Position = vec4(pos, 0.0, 1.0); }\n";
-  spec.fragment = "#version 120\nuniform sampler3D tex;\nvarying vec2 p;\nvoid main() {\n"
-                  "  gl_FragColor = texture3D(tex, vec3(p, p.x * p.y)) + texture3DProj(tex, vec4(p, 0.5, 2.0)) +\n"
-                  "                 texture3D(tex, vec3(p.yx, 0.3), 0.5);\n}\n";
+  spec.vertex =
+      "#version 120\nattribute vec2 pos;\nvarying vec2 p;\nvoid main() { p = pos * 0.5 + 0.5; gl_Position = "
+      "vec4(pos, 0.0, 1.0); }\n";
+  spec.fragment =
+      "#version 120\nuniform sampler3D tex;\nvarying vec2 p;\nvoid main() {\n"
+      "  gl_FragColor = texture3D(tex, vec3(p, p.x * p.y)) + texture3DProj(tex, vec4(p, 0.5, 2.0)) +\n"
+      "                 texture3D(tex, vec3(p.yx, 0.3), 0.5);\n}\n";
   spec.attributes.push_back({"pos", 2, {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1}});
   spec.count = 6;
   spec.textures = {filtered(colour_texture(kTex3D, 8, 8, 4), kLinearMipmapLinear, kLinear, kRepeat, true)};
@@ -207,11 +220,15 @@ TEST(GlslTextures, Sampler2DArray) {
   // Layers from -1.5 to 5.5 (out of range on both sides), and exactly halfway between layers.
   for (uint32_t wrap : {kRepeat, kClampToEdge, kMirroredRepeat, kClampToBorder}) {
     SCOPED_TRACE(wrap);
-    run(decl, "c = texture(tex, vec3(p * 1.6 - 0.31, t * 7.0 - 1.5));", filtered(base, kNearest, kNearest, wrap), kExact);
-    run(decl, "c = texture(tex, vec3(p.yx * 1.6 - 0.31, t * 7.0 - 1.5));", filtered(base, kLinear, kLinear, wrap), kFiltered);
+    run(decl, "c = texture(tex, vec3(p * 1.6 - 0.31, t * 7.0 - 1.5));",
+        filtered(base, kNearest, kNearest, wrap), kExact);
+    run(decl, "c = texture(tex, vec3(p.yx * 1.6 - 0.31, t * 7.0 - 1.5));",
+        filtered(base, kLinear, kLinear, wrap), kFiltered);
   }
-  run(decl, "c = texture(tex, vec3(p, float(i % 16) * 0.5 - 1.5));", filtered(base, kNearest, kNearest, kRepeat), kExact);
-  run(decl, "c = texture(tex, vec3(p, float(i % 16) * 0.5 - 1.5 + (t - 0.5) * 1e-6));", filtered(base, kNearest, kNearest, kRepeat), kExact);
+  run(decl, "c = texture(tex, vec3(p, float(i % 16) * 0.5 - 1.5));",
+      filtered(base, kNearest, kNearest, kRepeat), kExact);
+  run(decl, "c = texture(tex, vec3(p, float(i % 16) * 0.5 - 1.5 + (t - 0.5) * 1e-6));",
+      filtered(base, kNearest, kNearest, kRepeat), kExact);
   const reference::GlslTexture mip = filtered(base, kLinearMipmapLinear, kLinear, kRepeat, true);
   const char* bodies[] = {
       "c = texture(tex, vec3(p * 4.0, t * 5.0));",
@@ -229,10 +246,14 @@ TEST(GlslTextures, Sampler2DArray) {
       "c = texelFetchOffset(tex, ivec3(i % 4, i / 64, i % 5), 1, ivec2(-1, 1));",
       "c = vec4(textureSize(tex, 0), 1.0) + vec4(textureSize(tex, 2), 0.0) * 100.0;",
   };
-  for (const char* body : exact) run(decl, body, filtered(mip, kNearestMipmapNearest, kNearest, kRepeat, true), kExact);
-  run("uniform isampler2DArray tex;", "c = vec4(texture(tex, vec3(p * 1.3, t * 6.0 - 1.0))) + vec4(texelFetch(tex, ivec3(i % 4, 2, i / 64), 0));",
+  for (const char* body : exact)
+    run(decl, body, filtered(mip, kNearestMipmapNearest, kNearest, kRepeat, true), kExact);
+  run("uniform isampler2DArray tex;",
+      "c = vec4(texture(tex, vec3(p * 1.3, t * 6.0 - 1.0))) + vec4(texelFetch(tex, ivec3(i % 4, 2, i / 64), "
+      "0));",
       integer_texture(kTex2DArray, 4, 4, 4, false), kExact);
-  run("uniform usampler2DArray tex;", "c = vec4(texture(tex, vec3(p, t * 3.0))) + vec4(textureSize(tex, 0), 0.0);",
+  run("uniform usampler2DArray tex;",
+      "c = vec4(texture(tex, vec3(p, t * 3.0))) + vec4(textureSize(tex, 0), 0.0);",
       integer_texture(kTex2DArray, 4, 2, 3, true), kExact);
 }
 
@@ -242,8 +263,10 @@ TEST(GlslTextures, Sampler1DArray) {
   const reference::GlslTexture base = colour_texture(kTex1DArray, 16, 4, 1);
   for (uint32_t wrap : {kRepeat, kClampToEdge, kMirroredRepeat, kClampToBorder}) {
     SCOPED_TRACE(wrap);
-    run(decl, "c = texture(tex, vec2(p.x * 1.6 - 0.31, p.y * 6.0 - 1.0));", filtered(base, kNearest, kNearest, wrap), kExact);
-    run(decl, "c = texture(tex, vec2(p.y * 1.6 - 0.31, p.x * 6.0 - 1.0));", filtered(base, kLinear, kLinear, wrap), kFiltered);
+    run(decl, "c = texture(tex, vec2(p.x * 1.6 - 0.31, p.y * 6.0 - 1.0));",
+        filtered(base, kNearest, kNearest, wrap), kExact);
+    run(decl, "c = texture(tex, vec2(p.y * 1.6 - 0.31, p.x * 6.0 - 1.0));",
+        filtered(base, kLinear, kLinear, wrap), kFiltered);
   }
   const reference::GlslTexture mip = filtered(base, kLinearMipmapLinear, kLinear, kRepeat, true);
   const char* bodies[] = {
@@ -254,11 +277,15 @@ TEST(GlslTextures, Sampler1DArray) {
       "c = textureOffset(tex, vec2(p.x, t * 3.0), -3);",
   };
   for (const char* body : bodies) run(decl, body, mip, kFiltered);
-  run(decl, "c = texelFetch(tex, ivec2(i % 16, i / 16 - 5), 0) + texelFetch(tex, ivec2(i % 8, 1), 1) + vec4(textureSize(tex, 1), 0.0, 0.0);",
+  run(decl,
+      "c = texelFetch(tex, ivec2(i % 16, i / 16 - 5), 0) + texelFetch(tex, ivec2(i % 8, 1), 1) + "
+      "vec4(textureSize(tex, 1), 0.0, 0.0);",
       filtered(mip, kNearestMipmapNearest, kNearest, kRepeat, true), kExact);
-  run("uniform usampler1DArray tex;", "c = vec4(texture(tex, vec2(p.x, t * 5.0))) + vec4(texelFetch(tex, ivec2(i % 8, i / 64), 0));",
+  run("uniform usampler1DArray tex;",
+      "c = vec4(texture(tex, vec2(p.x, t * 5.0))) + vec4(texelFetch(tex, ivec2(i % 8, i / 64), 0));",
       integer_texture(kTex1DArray, 8, 4, 1, true), kExact);
-  run("uniform isampler1DArray tex;", "c = vec4(texture(tex, vec2(p.y, t * 5.0))) + vec4(textureSize(tex, 0), 0.0, 0.0);",
+  run("uniform isampler1DArray tex;",
+      "c = vec4(texture(tex, vec2(p.y, t * 5.0))) + vec4(textureSize(tex, 0), 0.0, 0.0);",
       integer_texture(kTex1DArray, 8, 4, 1, false), kExact);
 }
 
@@ -271,7 +298,8 @@ TEST(GlslTextures, ShadowSamplers) {
     reference::GlslTexture d1 = depth_texture(kTex1D, 16, 1, 1);
     d1.min_filter = d1.mag_filter = filter;
     run("uniform sampler1DShadow tex;",
-        "c = vec4(texture(tex, vec3(p.x * 1.2 - 0.1, 0.0, t)), textureProj(tex, vec4(p.y * 2.0, 0.0, 1.0, 2.0)),"
+        "c = vec4(texture(tex, vec3(p.x * 1.2 - 0.1, 0.0, t)), textureProj(tex, vec4(p.y * 2.0, 0.0, 1.0, "
+        "2.0)),"
         " textureLod(tex, vec3(p.x, 0.0, 0.5), 0.0), 1.0);",
         d1, kFiltered);
     reference::GlslTexture a2 = depth_texture(kTex2DArray, 8, 8, 3);
@@ -283,8 +311,9 @@ TEST(GlslTextures, ShadowSamplers) {
     reference::GlslTexture a1 = depth_texture(kTex1DArray, 16, 3, 1);
     a1.min_filter = a1.mag_filter = filter;
     run("uniform sampler1DArrayShadow tex;",
-        "c = vec4(texture(tex, vec3(p.x, t * 4.0 - 0.5, p.y)), textureLod(tex, vec3(p.y, 1.0, 0.5), 0.0), 0.0, 1.0);", a1,
-        kFiltered);
+        "c = vec4(texture(tex, vec3(p.x, t * 4.0 - 0.5, p.y)), textureLod(tex, vec3(p.y, 1.0, 0.5), 0.0), "
+        "0.0, 1.0);",
+        a1, kFiltered);
     // Directions with one clearly largest axis (the face of a tie is the implementation's).
     reference::GlslTexture cube = depth_texture(kTexCube, 4, 4, 6);
     cube.min_filter = cube.mag_filter = filter;
@@ -297,13 +326,13 @@ TEST(GlslTextures, ShadowSamplers) {
     SCOPED_TRACE(func);
     reference::GlslTexture a2 = depth_texture(kTex2DArray, 8, 8, 2);
     a2.compare_func = func;
-    run("uniform sampler2DArrayShadow tex;", "float v = texture(tex, vec4(p, p.x * 2.0, t)); c = vec4(v, v, v, 1.0);", a2,
-        kFiltered);
+    run("uniform sampler2DArrayShadow tex;",
+        "float v = texture(tex, vec4(p, p.x * 2.0, t)); c = vec4(v, v, v, 1.0);", a2, kFiltered);
     reference::GlslTexture cube = depth_texture(kTexCube, 4, 4, 6);
     cube.compare_func = func;
     cube.min_filter = cube.mag_filter = kNearest;
-    run("uniform samplerCubeShadow tex;", "float v = texture(tex, vec4(p * 2.0 - 1.0, -1.6, t)); c = vec4(v, 0.0, 0.0, 1.0);",
-        cube, kExact);
+    run("uniform samplerCubeShadow tex;",
+        "float v = texture(tex, vec4(p * 2.0 - 1.0, -1.6, t)); c = vec4(v, 0.0, 0.0, 1.0);", cube, kExact);
   }
   reference::GlslTexture cube = depth_texture(kTexCube, 4, 4, 6);
   run("uniform samplerCubeShadow tex;", "c = vec4(vec2(textureSize(tex, 0)), 0.0, 1.0);", cube, kExact);
@@ -314,11 +343,12 @@ TEST(GlslTextures, ShadowSamplers) {
 TEST(GlslTextures, SamplerBuffer) {
   // 100 texels fetched at -20..235: in range and out of range on both sides.
   reference::GlslTexture buf = colour_texture(kTexBuffer, 100, 1, 1);
-  run("uniform samplerBuffer tex;", "c = texelFetch(tex, i - 20) + vec4(0.0, 0.0, 0.0, float(textureSize(tex)));", buf, kExact);
+  run("uniform samplerBuffer tex;",
+      "c = texelFetch(tex, i - 20) + vec4(0.0, 0.0, 0.0, float(textureSize(tex)));", buf, kExact);
   run("uniform isamplerBuffer tex;", "c = vec4(texelFetch(tex, i - 20)) + vec4(float(textureSize(tex)));",
       integer_texture(kTexBuffer, 100, 1, 1, false), kExact);
-  run("uniform usamplerBuffer tex;", "c = vec4(texelFetch(tex, 255 - i * 2));", integer_texture(kTexBuffer, 100, 1, 1, true),
-      kExact);
+  run("uniform usamplerBuffer tex;", "c = vec4(texelFetch(tex, 255 - i * 2));",
+      integer_texture(kTexBuffer, 100, 1, 1, true), kExact);
 }
 
 // RGBA8 3D and array textures: llvmpipe filters them in 8-bit fixed point and returns 8-bit
@@ -327,15 +357,19 @@ TEST(GlslTextures, SamplerBuffer) {
 // where mip levels of high contrast are blended). Fetches are exact.
 TEST(GlslTextures, Rgba8WithinTwoSteps) {
   constexpr Tolerance kTwoSteps{2.0f / 255.0f, 0};
-  reference::GlslTexture t3 = filtered(colour_texture(kTex3D, 8, 8, 4), kLinearMipmapLinear, kLinear, kRepeat, true);
+  reference::GlslTexture t3 =
+      filtered(colour_texture(kTex3D, 8, 8, 4), kLinearMipmapLinear, kLinear, kRepeat, true);
   t3.internal_format = kRGBA8;
   run("uniform sampler3D tex;", "c = texture(tex, vec3(p.yx * 1.6 - 0.31, t * 1.8 - 0.4));", t3, kTwoSteps);
-  run("uniform sampler3D tex;", "c = textureLod(tex, vec3(p.yx * 1.6 - 0.31, t * 1.8 - 0.4), 0.5);", t3, kTwoSteps);
+  run("uniform sampler3D tex;", "c = textureLod(tex, vec3(p.yx * 1.6 - 0.31, t * 1.8 - 0.4), 0.5);", t3,
+      kTwoSteps);
   run("uniform sampler3D tex;", "c = texelFetch(tex, ivec3(i % 8, (i / 8) % 8, i / 64), 0);", t3, kExact);
-  reference::GlslTexture a = filtered(colour_texture(kTex2DArray, 8, 8, 4), kLinearMipmapLinear, kLinear, kRepeat, true);
+  reference::GlslTexture a =
+      filtered(colour_texture(kTex2DArray, 8, 8, 4), kLinearMipmapLinear, kLinear, kRepeat, true);
   a.internal_format = kRGBA8;
   run("uniform sampler2DArray tex;", "c = texture(tex, vec3(p.yx * 1.6 - 0.31, t * 4.0));", a, kTwoSteps);
-  run("uniform sampler2DArray tex;", "c = textureLod(tex, vec3(p.yx * 1.6 - 0.31, t * 4.0), 0.4);", a, kTwoSteps);
+  run("uniform sampler2DArray tex;", "c = textureLod(tex, vec3(p.yx * 1.6 - 0.31, t * 4.0), 0.4);", a,
+      kTwoSteps);
 }
 
 // Reflection: the GL type enums of the new sampler types.
@@ -343,10 +377,14 @@ TEST(GlslTextures, SamplerTypeEnums) {
   const char* vs = "#version 330\nvoid main() { gl_Position = vec4(0.0); }\n";
   const std::string fs = fragment(
       "uniform sampler3D a; uniform sampler2DArray b; uniform sampler1DArray c1; uniform sampler1DShadow d;"
-      " uniform sampler2DArrayShadow e; uniform samplerCubeShadow f; uniform samplerBuffer g; uniform isampler3D h;"
-      " uniform usampler2DArray k; uniform isamplerBuffer l; uniform usamplerBuffer m; uniform sampler1DArrayShadow n;",
-      "c = texture(a, vec3(t)) + texture(b, vec3(t)) + texture(c1, vec2(t)) + vec4(texture(d, vec3(t)) + texture(e, vec4(t)) +"
-      " texture(f, vec4(t)) + texture(n, vec3(t))) + texelFetch(g, i) + vec4(texture(h, vec3(t))) + vec4(texture(k, vec3(t))) +"
+      " uniform sampler2DArrayShadow e; uniform samplerCubeShadow f; uniform samplerBuffer g; uniform "
+      "isampler3D h;"
+      " uniform usampler2DArray k; uniform isamplerBuffer l; uniform usamplerBuffer m; uniform "
+      "sampler1DArrayShadow n;",
+      "c = texture(a, vec3(t)) + texture(b, vec3(t)) + texture(c1, vec2(t)) + vec4(texture(d, vec3(t)) + "
+      "texture(e, vec4(t)) +"
+      " texture(f, vec4(t)) + texture(n, vec3(t))) + texelFetch(g, i) + vec4(texture(h, vec3(t))) + "
+      "vec4(texture(k, vec3(t))) +"
       " vec4(texelFetch(l, i)) + vec4(texelFetch(m, i));");
   auto v = glsl::Shader::compile(glsl::Stage::Vertex, vs);
   auto f = glsl::Shader::compile(glsl::Stage::Fragment, fs);

@@ -40,8 +40,14 @@ std::vector<uint8_t> draw(int W, int H, const std::vector<TestVertex>& v, Topolo
 
 TestVertex cv(glm::vec4 p, glm::vec4 c) {
   TestVertex v{};
-  v.pos[0] = p.x; v.pos[1] = p.y; v.pos[2] = p.z; v.pos[3] = p.w;
-  v.color[0] = c.r; v.color[1] = c.g; v.color[2] = c.b; v.color[3] = c.a;
+  v.pos[0] = p.x;
+  v.pos[1] = p.y;
+  v.pos[2] = p.z;
+  v.pos[3] = p.w;
+  v.color[0] = c.r;
+  v.color[1] = c.g;
+  v.color[2] = c.b;
+  v.color[3] = c.a;
   return v;
 }
 
@@ -97,7 +103,8 @@ TEST(Clip, PolygonAgainstNearPlane) {
   a[0].var[0] = 0.0f;
   a[1].var[0] = 1.0f;
   a[2].var[0] = 1.0f;
-  const unsigned code = clip_code(planes, a[0].pos) | clip_code(planes, a[1].pos) | clip_code(planes, a[2].pos);
+  const unsigned code =
+      clip_code(planes, a[0].pos) | clip_code(planes, a[1].pos) | clip_code(planes, a[2].pos);
   ASSERT_NE(code, 0u);
   ClipVert* out;
   const int n = clip_polygon(planes, code, a, 3, b, 1, &out);
@@ -112,11 +119,11 @@ TEST(Clip, CodesAndTrivialCases) {
   DrawRecord d = record_for(64, 64);
   const ClipPlanes planes = make_clip_planes(d);
   EXPECT_EQ(clip_code(planes, {0, 0, 0, 1}), 0u);
-  EXPECT_NE(clip_code(planes, {0, 0, 2, 1}), 0u);    // beyond far
-  EXPECT_NE(clip_code(planes, {0, 0, 0, -1}), 0u);   // behind the eye
-  EXPECT_NE(clip_code(planes, {NAN, 0, 0, 1}), 0u);  // NaN is outside
-  EXPECT_EQ(clip_code(planes, {100, 0, 0, 1}), 0u);  // outside the viewport, inside the guard band
-  EXPECT_NE(clip_code(planes, {3000, 0, 0, 1}), 0u); // beyond the guard band
+  EXPECT_NE(clip_code(planes, {0, 0, 2, 1}), 0u);     // beyond far
+  EXPECT_NE(clip_code(planes, {0, 0, 0, -1}), 0u);    // behind the eye
+  EXPECT_NE(clip_code(planes, {NAN, 0, 0, 1}), 0u);   // NaN is outside
+  EXPECT_EQ(clip_code(planes, {100, 0, 0, 1}), 0u);   // outside the viewport, inside the guard band
+  EXPECT_NE(clip_code(planes, {3000, 0, 0, 1}), 0u);  // beyond the guard band
   float t0, t1;
   ASSERT_TRUE(clip_line(planes, ~0u, {0, 0, -3, 1}, {0, 0, 1, 1}, t0, t1));
   EXPECT_NEAR(t0, 0.5f, 1e-6f);
@@ -159,7 +166,11 @@ TEST(Clip, EightVerticesAtATimeMatchOneAtATime) {
     if (code) continue;
     ++inside;
     const WinVert v = to_window(d, p, &vars[i * K]);
-    auto bits = [](float f) { uint32_t b; std::memcpy(&b, &f, 4); return b; };
+    auto bits = [](float f) {
+      uint32_t b;
+      std::memcpy(&b, &f, 4);
+      return b;
+    };
     EXPECT_EQ(bits(win[i].x), bits(v.x)) << i;
     EXPECT_EQ(bits(win[i].y), bits(v.y)) << i;
     EXPECT_EQ(bits(win[i].z), bits(v.z)) << i;
@@ -194,7 +205,8 @@ TEST(Clip, UserPlanes) {
   ctx.finish();
   const auto p = read_rgba8(tg.color);
   for (int y = 0; y < 32; ++y)
-    for (int x = 0; x < 32; ++x) EXPECT_EQ(p[(size_t(y) * 32 + x) * 4 + 3], x >= 16 ? 255 : 0) << x << "," << y;
+    for (int x = 0; x < 32; ++x)
+      EXPECT_EQ(p[(size_t(y) * 32 + x) * 4 + 3], x >= 16 ? 255 : 0) << x << "," << y;
 }
 
 TEST(Clip, TriangleCrossingNearPlaneRendersAsItsClippedPart) {
@@ -227,7 +239,8 @@ TEST(Clip, HugeCoordinatesBeyondTheGuardBand) {
   // A triangle reaching 1e7 pixels out: clipped to the guard band, the visible part matches a
   // full-screen quad's coverage.
   const int W = 64, H = 64;
-  const auto p = draw(W, H, {cv({-1e5f, -1e5f, 0, 1}, glm::vec4(1)), cv({1e5f, -1e5f, 0, 1}, glm::vec4(1)),
-                             cv({0, 1e5f, 0, 1}, glm::vec4(1))});
+  const auto p = draw(W, H,
+                      {cv({-1e5f, -1e5f, 0, 1}, glm::vec4(1)), cv({1e5f, -1e5f, 0, 1}, glm::vec4(1)),
+                       cv({0, 1e5f, 0, 1}, glm::vec4(1))});
   for (size_t i = 3; i < p.size(); i += 4) ASSERT_EQ(p[i], 255);
 }

@@ -23,7 +23,10 @@ uint32_t px(const std::vector<uint8_t>& p, int w, int x, int y) {
 TestVertex wv(float x, float y, float z, int w, int h, glm::vec4 c = glm::vec4(1), float cw = 1.0f) {
   TestVertex v{};
   clip_from_window(x, y, z, cw, w, h, v.pos);
-  v.color[0] = c.r; v.color[1] = c.g; v.color[2] = c.b; v.color[3] = c.a;
+  v.color[0] = c.r;
+  v.color[1] = c.g;
+  v.color[2] = c.b;
+  v.color[3] = c.a;
   return v;
 }
 
@@ -34,7 +37,8 @@ TEST(Draw, TriangleCoversItsInterior) {
   Context ctx(1);
   ctx.bind_framebuffer(&t.fb);
   ctx.clear({.color = {0, 0, 0, 1}});
-  Mesh m({wv(2, 2, 0, 32, 32, {1, 0, 0, 1}), wv(30, 2, 0, 32, 32, {1, 0, 0, 1}), wv(2, 30, 0, 32, 32, {1, 0, 0, 1})});
+  Mesh m({wv(2, 2, 0, 32, 32, {1, 0, 0, 1}), wv(30, 2, 0, 32, 32, {1, 0, 0, 1}),
+          wv(2, 30, 0, 32, 32, {1, 0, 0, 1})});
   ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 3});
   ctx.finish();
   auto p = pixels(t.color);
@@ -48,14 +52,19 @@ namespace {
 
 struct Offsets {
   struct Uniforms {};
-  template <class F> struct Varyings { Vec4<F> color; };
+  template <class F>
+  struct Varyings {
+    Vec4<F> color;
+  };
   static constexpr uint32_t attributes = 0b1011;
   // attr 3: per-instance offset (x, y) and colour in z.
-  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
     out.color = Vec4<F>(in.attr[3].z, F(1.0f), to_float(in.instance_id) * F(0.25f), F(1.0f));
     return Vec4<F>(in.attr[0].x + in.attr[3].x, in.attr[0].y + in.attr[3].y, in.attr[0].z, in.attr[0].w);
   }
-  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
     f.color[0] = v.color;
   }
 };
@@ -67,8 +76,10 @@ std::vector<uint8_t> render(int W, int H, const std::vector<TestVertex>& v, cons
   ctx.bind_framebuffer(&t.fb);
   ctx.clear({.color = {0, 0, 0, 0}});
   Mesh m(v);
-  if (flat) ctx.draw(FlatColorShader{}, {}, m.layout, st, call);
-  else ctx.draw(ColorShader{}, {}, m.layout, st, call);
+  if (flat)
+    ctx.draw(FlatColorShader{}, {}, m.layout, st, call);
+  else
+    ctx.draw(ColorShader{}, {}, m.layout, st, call);
   ctx.finish();
   return read_rgba8(t.color);
 }
@@ -83,7 +94,8 @@ size_t lit(const std::vector<uint8_t>& p) {
 
 TEST(Draw, IndexedMatchesArraysForEveryIndexType) {
   const int W = 32, H = 32;
-  std::vector<TestVertex> v = {wv(2, 2, 0, W, H), wv(30, 3, 0, W, H), wv(28, 29, 0, W, H), wv(3, 27, 0, W, H)};
+  std::vector<TestVertex> v = {wv(2, 2, 0, W, H), wv(30, 3, 0, W, H), wv(28, 29, 0, W, H),
+                               wv(3, 27, 0, W, H)};
   const auto arrays = render(W, H, {v[0], v[1], v[2], v[0], v[2], v[3]}, {.count = 6});
   const uint8_t i8[] = {0, 1, 2, 0, 2, 3};
   const uint16_t i16[] = {0, 1, 2, 0, 2, 3};
@@ -114,8 +126,8 @@ TEST(Draw, IndexedGridMatchesArraysWithUnusedNaNVertices) {
       auto id = [&](int i, int j) { return uint32_t(j * (NX + junk) + i); };
       for (int j = 0; j < NY; ++j) {
         for (int i = 0; i < NX; ++i)
-          v.push_back(wv(-2.0f + 68.0f * i / (NX - 1) + 0.3f * u(rng), -2.0f + 52.0f * j / (NY - 1) + 0.3f * u(rng), 0,
-                         W, H, {u(rng), u(rng), u(rng), 1}));
+          v.push_back(wv(-2.0f + 68.0f * i / (NX - 1) + 0.3f * u(rng),
+                         -2.0f + 52.0f * j / (NY - 1) + 0.3f * u(rng), 0, W, H, {u(rng), u(rng), u(rng), 1}));
         for (int k = 0; k < junk; ++k) v.push_back(wv(NAN, NAN, NAN, W, H));
       }
       std::vector<std::array<uint32_t, 3>> tris;
@@ -143,7 +155,8 @@ TEST(Draw, IndexedGridMatchesArraysWithUnusedNaNVertices) {
 
 TEST(Draw, StripsFansAndListsAgree) {
   const int W = 32, H = 32;
-  const TestVertex a = wv(2, 2, 0, W, H), b = wv(30, 2, 0, W, H), c = wv(2, 30, 0, W, H), d = wv(30, 30, 0, W, H);
+  const TestVertex a = wv(2, 2, 0, W, H), b = wv(30, 2, 0, W, H), c = wv(2, 30, 0, W, H),
+                   d = wv(30, 30, 0, W, H);
   const auto list = render(W, H, {a, b, c, c, b, d}, {.count = 6});
   EXPECT_EQ(render(W, H, {a, b, c, d}, {.topology = Topology::TriangleStrip, .count = 4}), list);
   EXPECT_EQ(render(W, H, {a, b, d, c}, {.topology = Topology::TriangleFan, .count = 4}), list);
@@ -155,15 +168,19 @@ TEST(Draw, StripsFansAndListsAgree) {
 
 TEST(Draw, PrimitiveRestart) {
   const int W = 32, H = 32;
-  std::vector<TestVertex> v = {wv(2, 2, 0, W, H), wv(14, 2, 0, W, H), wv(2, 14, 0, W, H), wv(14, 14, 0, W, H),
-                               wv(18, 18, 0, W, H), wv(30, 18, 0, W, H), wv(18, 30, 0, W, H), wv(30, 30, 0, W, H)};
+  std::vector<TestVertex> v = {wv(2, 2, 0, W, H),   wv(14, 2, 0, W, H),  wv(2, 14, 0, W, H),
+                               wv(14, 14, 0, W, H), wv(18, 18, 0, W, H), wv(30, 18, 0, W, H),
+                               wv(18, 30, 0, W, H), wv(30, 30, 0, W, H)};
   const uint16_t idx[] = {0, 1, 2, 3, 0xFFFF, 4, 5, 6, 7};
   const Buffer ib(idx, sizeof idx);
   RenderState st;
   st.primitive_restart = true;
-  const auto got = render(W, H, v, {.topology = Topology::TriangleStrip, .count = 9, .index_buffer = &ib,
-                                    .index_type = IndexType::U16}, st);
-  const auto want = render(W, H, {v[0], v[1], v[2], v[2], v[1], v[3], v[4], v[5], v[6], v[6], v[5], v[7]}, {.count = 12});
+  const auto got = render(
+      W, H, v,
+      {.topology = Topology::TriangleStrip, .count = 9, .index_buffer = &ib, .index_type = IndexType::U16},
+      st);
+  const auto want =
+      render(W, H, {v[0], v[1], v[2], v[2], v[1], v[3], v[4], v[5], v[6], v[6], v[5], v[7]}, {.count = 12});
   EXPECT_EQ(got, want);
   // Without restart, 0xFFFF is an index past the buffer: an error, nothing drawn.
   Target t(W, H);
@@ -171,7 +188,10 @@ TEST(Draw, PrimitiveRestart) {
   ctx.bind_framebuffer(&t.fb);
   Mesh m(v);
   EXPECT_THROW(ctx.draw(ColorShader{}, {}, m.layout, RenderState{},
-                        {.topology = Topology::TriangleStrip, .count = 9, .index_buffer = &ib, .index_type = IndexType::U16}),
+                        {.topology = Topology::TriangleStrip,
+                         .count = 9,
+                         .index_buffer = &ib,
+                         .index_type = IndexType::U16}),
                Error);
 }
 
@@ -190,10 +210,10 @@ TEST(Draw, InstancingWithDivisor) {
   ctx.finish();
   const auto p = read_rgba8(t.color);
   auto at = [&](int x, int y) { return &p[(size_t(y) * W + x) * 4]; };
-  EXPECT_EQ(at(1, 1)[0], 51);   // instance 0: red 0.2
-  EXPECT_EQ(at(17, 1)[0], 153); // instance 1 at +16 x: red 0.6
-  EXPECT_EQ(at(17, 1)[2], 64);  // gl_InstanceID 1 -> blue 0.25
-  EXPECT_EQ(at(1, 17)[0], 255); // instance 2 at +16 y
+  EXPECT_EQ(at(1, 1)[0], 51);    // instance 0: red 0.2
+  EXPECT_EQ(at(17, 1)[0], 153);  // instance 1 at +16 x: red 0.6
+  EXPECT_EQ(at(17, 1)[2], 64);   // gl_InstanceID 1 -> blue 0.25
+  EXPECT_EQ(at(1, 17)[0], 255);  // instance 2 at +16 y
   EXPECT_EQ(at(1, 17)[2], 128);
   // Past the instance buffer: 4 instances need 4 elements, the buffer has 3.
   EXPECT_THROW(ctx.draw(Offsets{}, {}, layout, RenderState{}, {.count = 3, .instance_count = 4}), Error);
@@ -204,7 +224,8 @@ TEST(Draw, FlatTakesTheProvokingVertex) {
   const std::vector<TestVertex> v = {wv(0, 0, 0, W, H, {1, 0, 0, 1}), wv(16, 0, 0, W, H, {0, 1, 0, 1}),
                                      wv(0, 16, 0, W, H, {0, 0, 1, 1})};
   const auto p = render(W, H, v, {.count = 3}, RenderState{}, 1, true);
-  for (int i = 0; i < 4; ++i) EXPECT_EQ(p[(1 * W + 1) * 4 + i], i == 2 || i == 3 ? 255 : 0);  // last vertex: blue
+  for (int i = 0; i < 4; ++i)
+    EXPECT_EQ(p[(1 * W + 1) * 4 + i], i == 2 || i == 3 ? 255 : 0);  // last vertex: blue
   // Strip triangle 1 is (v2, v1, v3) in GL order: its provoking vertex is v3.
   const std::vector<TestVertex> s = {wv(0, 0, 0, W, H, {1, 0, 0, 1}), wv(16, 0, 0, W, H, {0, 1, 0, 1}),
                                      wv(0, 16, 0, W, H, {0, 0, 1, 1}), wv(16, 16, 0, W, H, {1, 1, 0, 1})};
@@ -232,9 +253,13 @@ TEST(Draw, PerspectiveCorrectCheckerboard) {
   // projected with a 90-degree frustum: clip = (x, y, ..., -z).
   auto v = [&](float x, float z, float s, float tt) {
     TestVertex r{};
-    r.pos[0] = x; r.pos[1] = -0.5f; r.pos[2] = 0.0f; r.pos[3] = -z;
+    r.pos[0] = x;
+    r.pos[1] = -0.5f;
+    r.pos[2] = 0.0f;
+    r.pos[3] = -z;
     r.color[0] = r.color[1] = r.color[2] = r.color[3] = 1.0f;
-    r.uv[0] = s; r.uv[1] = tt;
+    r.uv[0] = s;
+    r.uv[1] = tt;
     return r;
   };
   Mesh m({v(-1, -1, 0, 0), v(1, -1, 1, 0), v(1, -5, 1, 1), v(-1, -1, 0, 0), v(1, -5, 1, 1), v(-1, -5, 0, 1)});
@@ -247,7 +272,7 @@ TEST(Draw, PerspectiveCorrectCheckerboard) {
   int checked = 0;
   for (int y = 0; y < H; ++y) {
     const float yn = (y + 0.5f) / H * 2.0f - 1.0f;  // ndc y = -0.5 / -z
-    const float z = 0.5f / yn;                       // eye z (negative below the horizon)
+    const float z = 0.5f / yn;                      // eye z (negative below the horizon)
     if (!(z <= -1.0f && z >= -5.0f)) continue;
     const float tcoord = (-z - 1.0f) / 4.0f;
     for (int x = 0; x < W; ++x) {
@@ -270,20 +295,24 @@ TEST(Draw, PerspectiveCorrectCheckerboard) {
 TEST(Draw, LinesAndPoints) {
   const int W = 16, H = 16;
   // A horizontal line from x = 2.5 to 12.5 at y = 5.5: pixels 2..11 (the last excluded).
-  auto line = render(W, H, {wv(2.5f, 5.5f, 0, W, H), wv(12.5f, 5.5f, 0, W, H)}, {.topology = Topology::Lines, .count = 2});
+  auto line = render(W, H, {wv(2.5f, 5.5f, 0, W, H), wv(12.5f, 5.5f, 0, W, H)},
+                     {.topology = Topology::Lines, .count = 2});
   for (int x = 0; x < W; ++x) EXPECT_EQ(line[(5 * W + x) * 4 + 3], x >= 2 && x < 12 ? 255 : 0) << x;
   EXPECT_EQ(lit(line), 10u);
   // The same line drawn backwards covers 3..12 (diamond exit: the start is kept).
-  auto back = render(W, H, {wv(12.5f, 5.5f, 0, W, H), wv(2.5f, 5.5f, 0, W, H)}, {.topology = Topology::Lines, .count = 2});
+  auto back = render(W, H, {wv(12.5f, 5.5f, 0, W, H), wv(2.5f, 5.5f, 0, W, H)},
+                     {.topology = Topology::Lines, .count = 2});
   EXPECT_EQ(lit(back), 10u);
   EXPECT_EQ(back[(5 * W + 12) * 4 + 3], 255);
   // A wide line: 3 pixels tall.
   RenderState st;
   st.line_width = 3.0f;
-  auto wide = render(W, H, {wv(2.5f, 5.5f, 0, W, H), wv(12.5f, 5.5f, 0, W, H)}, {.topology = Topology::Lines, .count = 2}, st);
+  auto wide = render(W, H, {wv(2.5f, 5.5f, 0, W, H), wv(12.5f, 5.5f, 0, W, H)},
+                     {.topology = Topology::Lines, .count = 2}, st);
   EXPECT_EQ(lit(wide), 30u);
   // A diagonal line lights one pixel per column.
-  auto diag = render(W, H, {wv(1.5f, 1.2f, 0, W, H), wv(14.5f, 10.3f, 0, W, H)}, {.topology = Topology::Lines, .count = 2});
+  auto diag = render(W, H, {wv(1.5f, 1.2f, 0, W, H), wv(14.5f, 10.3f, 0, W, H)},
+                     {.topology = Topology::Lines, .count = 2});
   EXPECT_EQ(lit(diag), 13u);
   // Points: size 1 one pixel, size 4 a 4x4 square.
   auto pt = render(W, H, {wv(4.5f, 4.5f, 0, W, H)}, {.topology = Topology::Points, .count = 1});
@@ -294,15 +323,16 @@ TEST(Draw, LinesAndPoints) {
   auto big = render(W, H, {wv(8.0f, 8.0f, 0, W, H)}, {.topology = Topology::Points, .count = 1}, st);
   EXPECT_EQ(lit(big), 16u);
   // Line strip and loop: a square outline.
-  const std::vector<TestVertex> sq = {wv(2.5f, 2.5f, 0, W, H), wv(12.5f, 2.5f, 0, W, H), wv(12.5f, 12.5f, 0, W, H),
-                                      wv(2.5f, 12.5f, 0, W, H)};
+  const std::vector<TestVertex> sq = {wv(2.5f, 2.5f, 0, W, H), wv(12.5f, 2.5f, 0, W, H),
+                                      wv(12.5f, 12.5f, 0, W, H), wv(2.5f, 12.5f, 0, W, H)};
   EXPECT_EQ(lit(render(W, H, sq, {.topology = Topology::LineStrip, .count = 4})), 30u);
   EXPECT_EQ(lit(render(W, H, sq, {.topology = Topology::LineLoop, .count = 4})), 40u);
 }
 
 TEST(Draw, PolygonModes) {
   const int W = 16, H = 16;
-  const std::vector<TestVertex> tri = {wv(2.5f, 2.5f, 0, W, H), wv(12.5f, 2.5f, 0, W, H), wv(2.5f, 12.5f, 0, W, H)};
+  const std::vector<TestVertex> tri = {wv(2.5f, 2.5f, 0, W, H), wv(12.5f, 2.5f, 0, W, H),
+                                       wv(2.5f, 12.5f, 0, W, H)};
   RenderState st;
   st.polygon_mode = PolygonMode::Point;
   EXPECT_EQ(lit(render(W, H, tri, {.count = 3}, st)), 3u);
@@ -319,7 +349,8 @@ TEST(Draw, SameImageForAnyThreadCount) {
   std::vector<TestVertex> v;
   std::mt19937 rng(2);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  for (int i = 0; i < 3000 * 3; ++i) v.push_back(wv(u(rng) * W, u(rng) * H, u(rng) * 2 - 1, W, H, {u(rng), u(rng), u(rng), 0.5f}));
+  for (int i = 0; i < 3000 * 3; ++i)
+    v.push_back(wv(u(rng) * W, u(rng) * H, u(rng) * 2 - 1, W, H, {u(rng), u(rng), u(rng), 0.5f}));
   RenderState st;
   st.depth_test = true;
   st.blend[0] = {.enabled = true, .src_rgb = BlendFactor::SrcAlpha, .dst_rgb = BlendFactor::OneMinusSrcAlpha};
@@ -333,7 +364,8 @@ TEST(Draw, MipmapLevelFromQuadDerivatives) {
   // A 64x64 texture whose levels are solid, distinct colours, drawn on a 16x16 target so
   // that one pixel steps 4 texels (LOD 2) and, scaled 2x, 8 texels (LOD 3).
   Texture2D tex(Format::RGBA8, 64, 64, 0);
-  const glm::vec4 level_colors[] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}, {1, 1, 0, 1}, {0, 1, 1, 1}, {1, 0, 1, 1}, {1, 1, 1, 1}};
+  const glm::vec4 level_colors[] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}, {1, 1, 0, 1},
+                                    {0, 1, 1, 1}, {1, 0, 1, 1}, {1, 1, 1, 1}};
   for (int l = 0; l < tex.levels(); ++l)
     for (int y = 0; y < tex.height(l); ++y)
       for (int x = 0; x < tex.width(l); ++x) tex.store(l, x, y, level_colors[l]);
@@ -356,7 +388,8 @@ TEST(Draw, MipmapLevelFromQuadDerivatives) {
     ctx.finish();
     const glm::vec4 want = level_colors[repeat == 1.0f ? 2 : 3];
     for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x) ASSERT_EQ(t.color.fetch(0, x, y), want) << x << "," << y << " repeat " << repeat;
+      for (int x = 0; x < W; ++x)
+        ASSERT_EQ(t.color.fetch(0, x, y), want) << x << "," << y << " repeat " << repeat;
   }
 }
 
@@ -391,7 +424,8 @@ TEST(Draw, ReversedLineHasTheSameDepth) {
   ctx.clear({.color = {0, 0, 0, 0}, .depth = 1.0f});
   RenderState st;
   st.depth_test = true;
-  const TestVertex a = wv(3.3f, 5.1f, 0.2f, 48, 48, {1, 0, 0, 1}), b = wv(44.7f, 31.9f, 0.7f, 48, 48, {1, 0, 0, 1});
+  const TestVertex a = wv(3.3f, 5.1f, 0.2f, 48, 48, {1, 0, 0, 1}),
+                   b = wv(44.7f, 31.9f, 0.7f, 48, 48, {1, 0, 0, 1});
   TestVertex a2 = a, b2 = b;
   a2.color[0] = b2.color[0] = 0.0f;
   a2.color[1] = b2.color[1] = 1.0f;
@@ -414,27 +448,34 @@ TEST(Draw, PolygonModePerFace) {
   st.polygon_mode_back = PolygonMode::Line;
   const glm::vec4 c(1, 1, 1, 1);
   // Left triangle counter-clockwise (front), right one clockwise (back).
-  const auto p = render(64, 32, {wv(2, 2, 0, 64, 32, c), wv(30, 2, 0, 64, 32, c), wv(2, 30, 0, 64, 32, c),
-                                 wv(34.5f, 2.5f, 0, 64, 32, c), wv(34.5f, 29.5f, 0, 64, 32, c),
-                                 wv(61.5f, 2.5f, 0, 64, 32, c)},
-                        {.count = 6}, st);
-  EXPECT_NE(px(p, 64, 8, 8), 0u);   // inside the front one: filled
-  EXPECT_EQ(px(p, 64, 40, 8), 0u);  // inside the back one: empty
-  EXPECT_NE(px(p, 64, 34, 16), 0u); // on the back one's left edge: drawn
+  const auto p =
+      render(64, 32,
+             {wv(2, 2, 0, 64, 32, c), wv(30, 2, 0, 64, 32, c), wv(2, 30, 0, 64, 32, c),
+              wv(34.5f, 2.5f, 0, 64, 32, c), wv(34.5f, 29.5f, 0, 64, 32, c), wv(61.5f, 2.5f, 0, 64, 32, c)},
+             {.count = 6}, st);
+  EXPECT_NE(px(p, 64, 8, 8), 0u);    // inside the front one: filled
+  EXPECT_EQ(px(p, 64, 40, 8), 0u);   // inside the back one: empty
+  EXPECT_NE(px(p, 64, 34, 16), 0u);  // on the back one's left edge: drawn
 }
 
 namespace {
 // The colour and, in varying component 4, a GL edge flag taken from the colour's alpha.
 struct EdgeFlagShader {
   struct Uniforms {};
-  template <class F> struct Varyings { Vec4<F> color; F edge; };
+  template <class F>
+  struct Varyings {
+    Vec4<F> color;
+    F edge;
+  };
   static constexpr uint32_t attributes = 0b11;
-  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
     out.color = Vec4<F>(in.attr[1].x, in.attr[1].y, in.attr[1].z, F(1.0f));
     out.edge = in.attr[1].w;
     return in.attr[0];
   }
-  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
     f.color[0] = v.color;
   }
 };

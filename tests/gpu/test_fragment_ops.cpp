@@ -18,15 +18,22 @@ constexpr int W = 8, H = 8;
 
 TestVertex q(float x, float y, float z, glm::vec4 c) {
   TestVertex v{};
-  v.pos[0] = x; v.pos[1] = y; v.pos[2] = z; v.pos[3] = 1.0f;
-  v.color[0] = c.r; v.color[1] = c.g; v.color[2] = c.b; v.color[3] = c.a;
+  v.pos[0] = x;
+  v.pos[1] = y;
+  v.pos[2] = z;
+  v.pos[3] = 1.0f;
+  v.color[0] = c.r;
+  v.color[1] = c.g;
+  v.color[2] = c.b;
+  v.color[3] = c.a;
   return v;
 }
 
 // A full-screen quad at ndc depth z (or a plane from z0 at the left to z1 at the right).
 std::vector<TestVertex> quad(float z0, glm::vec4 c, float z1 = NAN) {
   if (std::isnan(z1)) z1 = z0;
-  return {q(-1, -1, z0, c), q(1, -1, z1, c), q(1, 1, z1, c), q(-1, -1, z0, c), q(1, 1, z1, c), q(-1, 1, z0, c)};
+  return {q(-1, -1, z0, c), q(1, -1, z1, c), q(1, 1, z1, c),
+          q(-1, -1, z0, c), q(1, 1, z1, c),  q(-1, 1, z0, c)};
 }
 
 struct Fixture {
@@ -54,16 +61,20 @@ struct Fixture {
 }  // namespace
 
 TEST(DepthTest, AllEightFunctions) {
-  struct Case { CompareFunc f; bool pass_less, pass_equal, pass_greater; };
+  struct Case {
+    CompareFunc f;
+    bool pass_less, pass_equal, pass_greater;
+  };
   const Case cases[] = {
-      {CompareFunc::Never, false, false, false}, {CompareFunc::Less, true, false, false},
-      {CompareFunc::Equal, false, true, false},  {CompareFunc::LessEqual, true, true, false},
-      {CompareFunc::Greater, false, false, true}, {CompareFunc::NotEqual, true, false, true},
+      {CompareFunc::Never, false, false, false},      {CompareFunc::Less, true, false, false},
+      {CompareFunc::Equal, false, true, false},       {CompareFunc::LessEqual, true, true, false},
+      {CompareFunc::Greater, false, false, true},     {CompareFunc::NotEqual, true, false, true},
       {CompareFunc::GreaterEqual, false, true, true}, {CompareFunc::Always, true, true, true},
   };
   for (const Case& c : cases) {
     // Stored depth 0.5 (ndc 0); incoming 0.25, 0.5 and 0.75.
-    const std::pair<float, bool> tries[] = {{-0.5f, c.pass_less}, {0.0f, c.pass_equal}, {0.5f, c.pass_greater}};
+    const std::pair<float, bool> tries[] = {
+        {-0.5f, c.pass_less}, {0.0f, c.pass_equal}, {0.5f, c.pass_greater}};
     for (auto [z, pass] : tries) {
       Fixture fx;
       fx.ctx.clear({.color = {0, 0, 0, 1}, .depth = 0.5f});
@@ -102,11 +113,15 @@ TEST(DepthTest, InterpolatesLinearlyInScreenSpace) {
 }
 
 TEST(Stencil, AllEightOps) {
-  struct Case { StencilOp op; int from; int expect; };
+  struct Case {
+    StencilOp op;
+    int from;
+    int expect;
+  };
   const Case cases[] = {
-      {StencilOp::Keep, 5, 5},       {StencilOp::Zero, 5, 0},      {StencilOp::Replace, 5, 9},
-      {StencilOp::Incr, 255, 255},   {StencilOp::Incr, 5, 6},      {StencilOp::IncrWrap, 255, 0},
-      {StencilOp::Decr, 0, 0},       {StencilOp::Decr, 5, 4},      {StencilOp::DecrWrap, 0, 255},
+      {StencilOp::Keep, 5, 5},     {StencilOp::Zero, 5, 0}, {StencilOp::Replace, 5, 9},
+      {StencilOp::Incr, 255, 255}, {StencilOp::Incr, 5, 6}, {StencilOp::IncrWrap, 255, 0},
+      {StencilOp::Decr, 0, 0},     {StencilOp::Decr, 5, 4}, {StencilOp::DecrWrap, 0, 255},
       {StencilOp::Invert, 5, 250},
   };
   for (const Case& c : cases) {
@@ -136,12 +151,15 @@ TEST(Stencil, FuncMasksAndFaces) {
   fx.ctx.clear({.stencil = 0x0F});
   RenderState st;
   st.stencil_test = true;
-  st.stencil_front = {.func = CompareFunc::Equal, .ref = 0x3F, .read_mask = 0x0F, .write_mask = 0xF0,
+  st.stencil_front = {.func = CompareFunc::Equal,
+                      .ref = 0x3F,
+                      .read_mask = 0x0F,
+                      .write_mask = 0xF0,
                       .pass = StencilOp::Invert};
   st.stencil_back = {.func = CompareFunc::Never};
   fx.draw(quad(0, {1, 1, 1, 1}), st);
-  EXPECT_EQ(fx.pixel().r, 1.0f);       // (0x3F & 0x0F) == (0x0F & 0x0F)
-  EXPECT_EQ(fx.stencil(), 0xFF);       // ~0x0F = 0xF0, only the high bits written: 0xF0 | 0x0F
+  EXPECT_EQ(fx.pixel().r, 1.0f);  // (0x3F & 0x0F) == (0x0F & 0x0F)
+  EXPECT_EQ(fx.stencil(), 0xFF);  // ~0x0F = 0xF0, only the high bits written: 0xF0 | 0x0F
   // Back faces use the back state: Never.
   std::vector<TestVertex> back = quad(0, {0, 1, 0, 1});
   for (size_t i = 0; i < back.size(); i += 3) std::swap(back[i + 1], back[i + 2]);
@@ -153,21 +171,36 @@ TEST(Blend, EveryEquationAndFactor) {
   const glm::vec4 src(0.8f, 0.4f, 0.2f, 0.6f), dst(0.2f, 0.6f, 1.0f, 0.4f), k(0.3f, 0.5f, 0.7f, 0.25f);
   auto fac = [&](BlendFactor f) -> glm::vec4 {
     switch (f) {
-      case BlendFactor::Zero: return glm::vec4(0);
-      case BlendFactor::One: return glm::vec4(1);
-      case BlendFactor::SrcColor: return src;
-      case BlendFactor::OneMinusSrcColor: return glm::vec4(1) - src;
-      case BlendFactor::DstColor: return dst;
-      case BlendFactor::OneMinusDstColor: return glm::vec4(1) - dst;
-      case BlendFactor::SrcAlpha: return glm::vec4(src.a);
-      case BlendFactor::OneMinusSrcAlpha: return glm::vec4(1 - src.a);
-      case BlendFactor::DstAlpha: return glm::vec4(dst.a);
-      case BlendFactor::OneMinusDstAlpha: return glm::vec4(1 - dst.a);
-      case BlendFactor::ConstantColor: return k;
-      case BlendFactor::OneMinusConstantColor: return glm::vec4(1) - k;
-      case BlendFactor::ConstantAlpha: return glm::vec4(k.a);
-      case BlendFactor::OneMinusConstantAlpha: return glm::vec4(1 - k.a);
-      case BlendFactor::SrcAlphaSaturate: return glm::vec4(glm::vec3(std::min(src.a, 1 - dst.a)), 1.0f);
+      case BlendFactor::Zero:
+        return glm::vec4(0);
+      case BlendFactor::One:
+        return glm::vec4(1);
+      case BlendFactor::SrcColor:
+        return src;
+      case BlendFactor::OneMinusSrcColor:
+        return glm::vec4(1) - src;
+      case BlendFactor::DstColor:
+        return dst;
+      case BlendFactor::OneMinusDstColor:
+        return glm::vec4(1) - dst;
+      case BlendFactor::SrcAlpha:
+        return glm::vec4(src.a);
+      case BlendFactor::OneMinusSrcAlpha:
+        return glm::vec4(1 - src.a);
+      case BlendFactor::DstAlpha:
+        return glm::vec4(dst.a);
+      case BlendFactor::OneMinusDstAlpha:
+        return glm::vec4(1 - dst.a);
+      case BlendFactor::ConstantColor:
+        return k;
+      case BlendFactor::OneMinusConstantColor:
+        return glm::vec4(1) - k;
+      case BlendFactor::ConstantAlpha:
+        return glm::vec4(k.a);
+      case BlendFactor::OneMinusConstantAlpha:
+        return glm::vec4(1 - k.a);
+      case BlendFactor::SrcAlphaSaturate:
+        return glm::vec4(glm::vec3(std::min(src.a, 1 - dst.a)), 1.0f);
     }
     return glm::vec4(0);
   };
@@ -180,8 +213,13 @@ TEST(Blend, EveryEquationAndFactor) {
       ctx.bind_framebuffer(&fb);
       ctx.clear({.color = dst});
       RenderState st;
-      st.blend[0] = {.enabled = true, .eq_rgb = BlendEquation(eq), .eq_alpha = BlendEquation(eq),
-                     .src_rgb = s, .dst_rgb = d, .src_alpha = s, .dst_alpha = d};
+      st.blend[0] = {.enabled = true,
+                     .eq_rgb = BlendEquation(eq),
+                     .eq_alpha = BlendEquation(eq),
+                     .src_rgb = s,
+                     .dst_rgb = d,
+                     .src_alpha = s,
+                     .dst_alpha = d};
       st.blend_color = k;
       Mesh m(quad(0, src));
       ctx.draw(ColorShader{}, {}, m.layout, st, {.count = m.count});
@@ -190,14 +228,25 @@ TEST(Blend, EveryEquationAndFactor) {
       glm::vec4 fs = fac(s), fd = fac(d);
       glm::vec4 want;
       switch (BlendEquation(eq)) {
-        case BlendEquation::Add: want = src * fs + dst * fd; break;
-        case BlendEquation::Subtract: want = src * fs - dst * fd; break;
-        case BlendEquation::ReverseSubtract: want = dst * fd - src * fs; break;
-        case BlendEquation::Min: want = glm::min(src, dst); break;
-        case BlendEquation::Max: want = glm::max(src, dst); break;
+        case BlendEquation::Add:
+          want = src * fs + dst * fd;
+          break;
+        case BlendEquation::Subtract:
+          want = src * fs - dst * fd;
+          break;
+        case BlendEquation::ReverseSubtract:
+          want = dst * fd - src * fs;
+          break;
+        case BlendEquation::Min:
+          want = glm::min(src, dst);
+          break;
+        case BlendEquation::Max:
+          want = glm::max(src, dst);
+          break;
       }
       // Alpha uses the alpha of each factor.
-      for (int c = 0; c < 4; ++c) EXPECT_NEAR(got[c], want[c], 1e-5f) << "eq " << eq << " src " << sf << " ch " << c;
+      for (int c = 0; c < 4; ++c)
+        EXPECT_NEAR(got[c], want[c], 1e-5f) << "eq " << eq << " src " << sf << " ch " << c;
     }
   }
 }
@@ -206,8 +255,11 @@ TEST(Blend, UnormTargetsClampAndRound) {
   Fixture fx;
   fx.ctx.clear({.color = {0.5f, 0.5f, 0.5f, 0.5f}});
   RenderState st;
-  st.blend[0] = {.enabled = true, .src_rgb = BlendFactor::One, .dst_rgb = BlendFactor::One,
-                 .src_alpha = BlendFactor::One, .dst_alpha = BlendFactor::Zero};
+  st.blend[0] = {.enabled = true,
+                 .src_rgb = BlendFactor::One,
+                 .dst_rgb = BlendFactor::One,
+                 .src_alpha = BlendFactor::One,
+                 .dst_alpha = BlendFactor::Zero};
   fx.draw(quad(0, {0.7f, -0.3f, 0.2f, 2.0f}), st);
   const glm::vec4 p = fx.pixel();
   EXPECT_EQ(p.r, 1.0f);                      // 0.7 + 0.5 clamped
@@ -260,13 +312,18 @@ TEST(PolygonOffset, FactorAndUnits) {
 namespace {
 struct TwoTargets {
   struct Uniforms {};
-  template <class F> struct Varyings { Vec4<F> color; };
+  template <class F>
+  struct Varyings {
+    Vec4<F> color;
+  };
   static constexpr int outputs = 3;
-  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
     out.color = in.attr[1];
     return in.attr[0];
   }
-  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
     f.color[0] = v.color;
     f.color[1] = Vec4<F>(F(1.0f) - v.color.x, F(0.25f), F(0.5f), F(1.0f));
     f.color[2] = Vec4<F>(f.coord.x, f.coord.y, f.coord.z, F(1.0f));
@@ -290,7 +347,7 @@ TEST(MRT, EachOutputToItsAttachment) {
   ctx.finish();
   EXPECT_NEAR(a.fetch(0, 1, 1).r, 51.0f / 255.0f, 1e-6f);
   EXPECT_NEAR(b.fetch(0, 1, 1).r, 204.0f / 255.0f, 1e-6f);
-  EXPECT_EQ(b.fetch(0, 1, 1).g, 0.0f);  // masked
+  EXPECT_EQ(b.fetch(0, 1, 1).g, 0.0f);                             // masked
   EXPECT_EQ(c.fetch(0, 5, 2), glm::vec4(5.5f, 2.5f, 0.5f, 1.0f));  // gl_FragCoord
 }
 
@@ -324,14 +381,19 @@ namespace {
 // Discards the left half of the screen and writes depth 0.9 - red * 0.5.
 struct DiscardAndDepth {
   struct Uniforms {};
-  template <class F> struct Varyings { Vec4<F> color; };
+  template <class F>
+  struct Varyings {
+    Vec4<F> color;
+  };
   static constexpr bool discards = true;
   static constexpr bool writes_depth = true;
-  template <class F> Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
+  template <class F>
+  Vec4<F> vertex(const Uniforms&, const VertexIn<F>& in, Varyings<F>& out) const {
     out.color = in.attr[1];
     return in.attr[0];
   }
-  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
     f.discard(f.coord.x < F(4.0f));
     f.depth = F(0.9f) - v.color.x * F(0.5f);
     f.color[0] = v.color;
@@ -348,8 +410,8 @@ TEST(FragmentShader, DiscardAndDepthWriteUseLateTests) {
   fx.ctx.draw(DiscardAndDepth{}, {}, m.layout, st, {.count = m.count});
   EXPECT_EQ(fx.pixel(2, 2), glm::vec4(0, 0, 0, 1));  // discarded
   EXPECT_EQ(fx.pixel(6, 2), glm::vec4(1, 0, 0, 1));
-  EXPECT_NEAR(fx.depth(6, 2), 0.4f, 1e-6f);           // the shader's depth, not the plane's
-  EXPECT_NEAR(fx.depth(2, 2), 0.6f, 1e-6f);           // discarded fragments write nothing
+  EXPECT_NEAR(fx.depth(6, 2), 0.4f, 1e-6f);  // the shader's depth, not the plane's
+  EXPECT_NEAR(fx.depth(2, 2), 0.6f, 1e-6f);  // discarded fragments write nothing
   // Green at written depth 0.9 fails LESS against 0.4 although its plane depth (0.05) passes.
   Mesh g(quad(-0.9f, {0, 1, 0, 1}));
   fx.ctx.draw(DiscardAndDepth{}, {}, g.layout, st, {.count = g.count});
@@ -395,7 +457,8 @@ std::vector<std::byte> randomize(Texture2D& t, uint32_t seed) {
   return v;
 }
 
-template <class T> T read_at(const std::vector<std::byte>& v, size_t offset) {
+template <class T>
+T read_at(const std::vector<std::byte>& v, size_t offset) {
   T x;
   std::memcpy(&x, v.data() + offset, sizeof x);
   return x;
@@ -407,7 +470,7 @@ uint32_t float_bits(float f) {
   return u;
 }
 
-constexpr int CW = 100, CH = 70;            // more than one 64x64 tile each way
+constexpr int CW = 100, CH = 70;              // more than one 64x64 tile each way
 constexpr Rect kClearScissor{13, 5, 70, 60};  // x 13..82, y 5..64
 bool in_scissor(int x, int y) {
   return x >= kClearScissor.x && x < kClearScissor.x + kClearScissor.width && y >= kClearScissor.y &&
@@ -421,7 +484,10 @@ TEST(Clear, ScissoredPartialMasksRgba8Depth24Stencil8) {
   Framebuffer fb(&color, &ds);
   Context ctx(2);
   ctx.bind_framebuffer(&fb);
-  struct Config { bool depth_write, clear_stencil; uint8_t color_mask, stencil_mask; };
+  struct Config {
+    bool depth_write, clear_stencil;
+    uint8_t color_mask, stencil_mask;
+  };
   const Config configs[] = {
       {true, true, 0b1010, 0x3C},   // depth and part of the stencil
       {false, true, 0b0001, 0x81},  // only part of the stencil
@@ -481,7 +547,10 @@ TEST(Clear, ScissoredPartialMasksFloatAndByteTargetsDepth32F) {
   Context ctx(2);
   ctx.bind_framebuffer(&fb);
   const glm::vec4 clear_color{-1.5f, 0.1f, 70000.0f, 0.3f};  // 70000 is infinity in half
-  struct Config { bool depth_write; uint8_t masks[4]; };
+  struct Config {
+    bool depth_write;
+    uint8_t masks[4];
+  };
   const Config configs[] = {
       {true, {0b0101, 0b1110, 0b0001, 0b0010}},
       {false, {0b1010, 0b0001, 0b1110, 0b0001}},  // R8: only masked-off channels -> unchanged
@@ -508,23 +577,28 @@ TEST(Clear, ScissoredPartialMasksFloatAndByteTargetsDepth32F) {
         for (int c = 0; c < 4; ++c) {
           const bool w = in && (cfg.masks[0] & (1 << c));
           const uint16_t old = read_at<uint16_t>(before[0], px * 8 + size_t(c) * 2);
-          ASSERT_EQ(read_at<uint16_t>(h.level(0).data, px * 8 + size_t(c) * 2), w ? float_to_half(clear_color[c]) : old)
+          ASSERT_EQ(read_at<uint16_t>(h.level(0).data, px * 8 + size_t(c) * 2),
+                    w ? float_to_half(clear_color[c]) : old)
               << "RGBA16F " << x << "," << y << " channel " << c;
         }
         for (int c = 0; c < 4; ++c) {
           const bool w = in && (cfg.masks[1] & (1 << c));
           const uint32_t old = read_at<uint32_t>(before[1], px * 16 + size_t(c) * 4);
-          ASSERT_EQ(read_at<uint32_t>(f.level(0).data, px * 16 + size_t(c) * 4), w ? float_bits(clear_color[c]) : old)
+          ASSERT_EQ(read_at<uint32_t>(f.level(0).data, px * 16 + size_t(c) * 4),
+                    w ? float_bits(clear_color[c]) : old)
               << "RGBA32F " << x << "," << y << " channel " << c;
         }
         {
           const bool w = in && (cfg.masks[2] & 1);
-          ASSERT_EQ(uint8_t(r.level(0).data[px]), w ? uint8_t(0) : uint8_t(before[2][px])) << "R8 " << x << "," << y;
+          ASSERT_EQ(uint8_t(r.level(0).data[px]), w ? uint8_t(0) : uint8_t(before[2][px]))
+              << "R8 " << x << "," << y;
         }
         for (int c = 0; c < 2; ++c) {
           const bool w = in && (cfg.masks[3] & (1 << c));
-          const uint8_t want = w ? uint8_t(c == 0 ? 0 : 26) : uint8_t(before[3][px * 2 + size_t(c)]);  // 0.1 -> 26
-          ASSERT_EQ(uint8_t(rg.level(0).data[px * 2 + size_t(c)]), want) << "RG8 " << x << "," << y << " channel " << c;
+          const uint8_t want =
+              w ? uint8_t(c == 0 ? 0 : 26) : uint8_t(before[3][px * 2 + size_t(c)]);  // 0.1 -> 26
+          ASSERT_EQ(uint8_t(rg.level(0).data[px * 2 + size_t(c)]), want)
+              << "RG8 " << x << "," << y << " channel " << c;
         }
         const uint32_t want_d = in && cfg.depth_write ? float_bits(1.0f) : read_at<uint32_t>(d0, px * 4);
         ASSERT_EQ(read_at<uint32_t>(d.level(0).data, px * 4), want_d) << "Depth32F " << x << "," << y;
@@ -536,7 +610,8 @@ namespace {
 
 // The per-pixel clear as it was written first (store_color per pixel): the reference that
 // clear_rect must match bit for bit.
-void reference_clear(const detail::TargetView& t, const detail::ClearPrim& c, int x0, int y0, int x1, int y1) {
+void reference_clear(const detail::TargetView& t, const detail::ClearPrim& c, int x0, int y0, int x1,
+                     int y1) {
   for (int i = 0; i < t.color_count; ++i) {
     const detail::ColorTarget& ct = t.color[i];
     if (!(c.color_mask_bits & (1u << i)) || !ct.data || !c.write_mask[i]) continue;
@@ -556,8 +631,10 @@ void reference_clear(const detail::TargetView& t, const detail::ClearPrim& c, in
   if (t.depth && (c.clear_depth || (c.clear_stencil && t.has_stencil))) {
     const float z = std::clamp(c.depth, 0.0f, 1.0f);
     uint32_t zbits;
-    if (t.depth_format == Format::Depth32F) std::memcpy(&zbits, &z, 4);
-    else zbits = uint32_t(std::lrint(double(z) * 16777215.0));
+    if (t.depth_format == Format::Depth32F)
+      std::memcpy(&zbits, &z, 4);
+    else
+      zbits = uint32_t(std::lrint(double(z) * 16777215.0));
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
         std::byte* p = t.depth + size_t(y) * t.depth_row_bytes + size_t(x) * 4;
@@ -587,8 +664,11 @@ struct PaddedImage {
 TEST(ClearRect, MatchesPerPixelReferenceForEveryFormatAndMask) {
   constexpr int w = 83, h = 9;
   const Format colors[] = {Format::RGBA8, Format::R8, Format::RG8, Format::RGBA16F, Format::RGBA32F};
-  const glm::vec4 values[] = {{0.2f, 0.4f, 0.6f, 0.8f}, {-3.0f, 1.5f, NAN, 65519.0f}, {1e-6f, -0.0f, 0.5f, 1.0f}};
-  struct R { int x0, y0, x1, y1; };
+  const glm::vec4 values[] = {
+      {0.2f, 0.4f, 0.6f, 0.8f}, {-3.0f, 1.5f, NAN, 65519.0f}, {1e-6f, -0.0f, 0.5f, 1.0f}};
+  struct R {
+    int x0, y0, x1, y1;
+  };
   const R rects[] = {{0, 0, w, h}, {3, 1, 80, 8}, {17, 2, 18, 3}, {5, 4, 22, 9}};
   uint32_t seed = 1000;
   for (Format f : colors)
@@ -621,7 +701,9 @@ TEST(ClearRect, MatchesPerPixelReferenceForEveryFormatAndMask) {
       detail::ColorTarget ct{nullptr, size_t(side) * format_info(f).bytes, f};
       std::vector<std::byte> a(ct.row_bytes * size_t(side));
       for (size_t i = 0; i < a.size() / 2; ++i) {
-        const uint16_t u = f == Format::RGBA16F ? uint16_t(i) : uint16_t((2 * i) & 0xFF) | uint16_t(((2 * i + 1) & 0xFF) << 8);
+        const uint16_t u = f == Format::RGBA16F
+                               ? uint16_t(i)
+                               : uint16_t((2 * i) & 0xFF) | uint16_t(((2 * i + 1) & 0xFF) << 8);
         std::memcpy(a.data() + 2 * i, &u, 2);
       }
       std::vector<std::byte> b = a;
@@ -676,7 +758,9 @@ TEST(ClearRect, MatchesPerPixelReferenceForEveryFormatAndMask) {
 // Clears and tile copies into the target with non-temporal stores write what the plain ones
 // write, on 16-byte aligned rows (streamed) and on rows that are not (the plain fallback).
 TEST(ClearRect, StreamedStoresWriteWhatPlainStoresWrite) {
-  struct R { int x0, y0, x1, y1; };
+  struct R {
+    int x0, y0, x1, y1;
+  };
   const R rects[] = {{0, 0, 64, 8}, {4, 1, 36, 7}, {1, 2, 30, 5}, {16, 0, 17, 8}};
   uint32_t seed = 7000;
   for (Format f : {Format::RGBA8, Format::RGBA32F, Format::Depth24Stencil8, Format::Depth32F})

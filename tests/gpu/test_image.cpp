@@ -23,8 +23,7 @@ class ImageFiles : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("tessel-image-" + std::to_string(::getpid()) + "-" + info->name());
+    dir_ = fs::temp_directory_path() / ("tessel-image-" + std::to_string(::getpid()) + "-" + info->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -57,8 +56,8 @@ class ImageFiles : public ::testing::Test {
 // 3x2 RGBA, rows bottom-up: bottom row reds, top row greens.
 std::vector<uint8_t> sample_pixels() {
   return {
-      10, 0, 0, 255, 20, 0, 0, 200, 30, 0, 0, 100,  // y = 0 (bottom)
-      0, 40, 0, 255, 0, 50, 0, 128, 0, 60, 7, 0,    // y = 1 (top)
+      10, 0,  0, 255, 20, 0,  0, 200, 30, 0,  0, 100,  // y = 0 (bottom)
+      0,  40, 0, 255, 0,  50, 0, 128, 0,  60, 7, 0,    // y = 1 (top)
   };
 }
 

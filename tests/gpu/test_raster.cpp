@@ -4,8 +4,8 @@
 
 #include <random>
 
-#include "shaders.hpp"
 #include "setup_triangle.hpp"
+#include "shaders.hpp"
 #include "stages.hpp"
 
 using namespace tessel::test;
@@ -14,16 +14,19 @@ using namespace tessel::gpu::detail;
 namespace {
 
 // Draws the triangles additively into a float target: each pixel counts its coverage.
-std::vector<float> coverage_count(int W, int H, const std::vector<TestVertex>& v, Topology topo = Topology::Triangles,
-                                  int threads = 2) {
+std::vector<float> coverage_count(int W, int H, const std::vector<TestVertex>& v,
+                                  Topology topo = Topology::Triangles, int threads = 2) {
   Texture2D color(Format::RGBA32F, W, H);
   Framebuffer fb(&color);
   Context ctx(threads);
   ctx.bind_framebuffer(&fb);
   ctx.clear({.color = {0, 0, 0, 0}});
   RenderState st;
-  st.blend[0] = {.enabled = true, .src_rgb = BlendFactor::One, .dst_rgb = BlendFactor::One,
-                 .src_alpha = BlendFactor::One, .dst_alpha = BlendFactor::One};
+  st.blend[0] = {.enabled = true,
+                 .src_rgb = BlendFactor::One,
+                 .dst_rgb = BlendFactor::One,
+                 .src_alpha = BlendFactor::One,
+                 .dst_alpha = BlendFactor::One};
   Mesh m(v);
   ctx.draw(ColorShader{}, {}, m.layout, st, {.topology = topo, .count = m.count});
   ctx.finish();
@@ -73,8 +76,14 @@ TEST(FillRule, JitteredGridCoversEveryPixelOnce) {
         // Positions on the 1/256 lattice and off it, some exactly on pixel centres.
         float x = -4.0f + i * cw + (border ? 0.0f : jitter(rng) * cw);
         float y = -4.0f + j * ch + (border ? 0.0f : jitter(rng) * ch);
-        if (round == 1) { x = std::round(x) + 0.5f; y = std::round(y) + 0.5f; }  // on centres
-        if (round == 2) { x = std::round(x * 2.0f) / 2.0f; y = std::round(y); }   // on edges
+        if (round == 1) {
+          x = std::round(x) + 0.5f;
+          y = std::round(y) + 0.5f;
+        }  // on centres
+        if (round == 2) {
+          x = std::round(x * 2.0f) / 2.0f;
+          y = std::round(y);
+        }  // on edges
         g[size_t(j) * (N + 1) + i] = {x, y};
       }
     std::vector<TestVertex> v;
@@ -89,7 +98,13 @@ TEST(FillRule, JitteredGridCoversEveryPixelOnce) {
           v.push_back(at(q.x, q.y, W, H));
           v.push_back(at(r.x, r.y, W, H));
         };
-        if (flip(rng)) { tri(a, b, c); tri(a, c, d); } else { tri(a, b, d); tri(b, c, d); }
+        if (flip(rng)) {
+          tri(a, b, c);
+          tri(a, c, d);
+        } else {
+          tri(a, b, d);
+          tri(b, c, d);
+        }
       }
     expect_watertight(coverage_count(W, H, v), W, H, "grid");
   }
@@ -138,7 +153,10 @@ TEST(FillRule, RandomPairsSharingAnEdge) {
     // into separate counts.
     for (int i = 0; i < 25; ++i, ++cases) {
       glm::vec2 a(u(rng), u(rng)), b(u(rng), u(rng)), c(u(rng), u(rng)), d(u(rng), u(rng));
-      if (i % 5 == 0) { a = glm::round(a * 4.0f) / 4.0f; b = glm::round(b); }  // on the lattice
+      if (i % 5 == 0) {
+        a = glm::round(a * 4.0f) / 4.0f;
+        b = glm::round(b);
+      }  // on the lattice
       // c and d on opposite sides of the shared edge a-b.
       const auto side = [&](glm::vec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); };
       if (side(c) * side(d) >= 0.0f) d = a + b - c;  // mirror c through the edge's midpoint
@@ -167,7 +185,8 @@ TEST(Coverage, MatchesIndependentEdgeTest) {
     glm::vec2 p[3] = {{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}};
     if (t % 3 == 0)
       for (auto& q : p) q = glm::round(q * 2.0f) / 2.0f;  // many samples exactly on edges
-    const std::vector<TestVertex> v = {at(p[0].x, p[0].y, W, H), at(p[1].x, p[1].y, W, H), at(p[2].x, p[2].y, W, H)};
+    const std::vector<TestVertex> v = {at(p[0].x, p[0].y, W, H), at(p[1].x, p[1].y, W, H),
+                                       at(p[2].x, p[2].y, W, H)};
     const auto count = coverage_count(W, H, v, Topology::Triangles, 1);
     // Snapped positions, exactly as the pipeline computes window coordinates.
     double X[3], Y[3];
@@ -189,7 +208,8 @@ TEST(Coverage, MatchesIndependentEdgeTest) {
           const bool owns = dy < 0 || (dy == 0 && dx > 0);
           inside = E > 0 || (E == 0 && owns);
         }
-        ASSERT_EQ(count[size_t(j) * W + i], inside ? 1.0f : 0.0f) << "triangle " << t << " pixel " << i << "," << j;
+        ASSERT_EQ(count[size_t(j) * W + i], inside ? 1.0f : 0.0f)
+            << "triangle " << t << " pixel " << i << "," << j;
       }
   }
 }
@@ -213,8 +233,11 @@ TEST(Order, OverlappingTinyTrianglesOfOneDrawBlendInOrder) {
     }
   }
   RenderState st;
-  st.blend[0] = {.enabled = true, .src_rgb = BlendFactor::SrcAlpha, .dst_rgb = BlendFactor::OneMinusSrcAlpha,
-                 .src_alpha = BlendFactor::One, .dst_alpha = BlendFactor::OneMinusSrcAlpha};
+  st.blend[0] = {.enabled = true,
+                 .src_rgb = BlendFactor::SrcAlpha,
+                 .dst_rgb = BlendFactor::OneMinusSrcAlpha,
+                 .src_alpha = BlendFactor::One,
+                 .dst_alpha = BlendFactor::OneMinusSrcAlpha};
   auto render = [&](bool one_draw, int threads) {
     Texture2D color(Format::RGBA32F, W, H);
     Framebuffer fb(&color);
@@ -247,13 +270,16 @@ namespace {
 // Colour from every fragment input: varyings, gl_FragCoord, gl_PrimitiveID, gl_FrontFacing.
 // With Packed the shader says its lanes are independent, so the raster phase packs the
 // covered pixels of several groups and triangles into one call.
-template <bool Packed> struct FragmentInputsShader : ColorShader {
+template <bool Packed>
+struct FragmentInputsShader : ColorShader {
   static constexpr bool lanes_independent = Packed;
-  template <class F> void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
+  template <class F>
+  void fragment(const Uniforms&, const Varyings<F>& v, Fragment<F>& f) const {
     const F id = to_float(f.primitive_id & IntOf<F>(7)) * F(1.0f / 7.0f);
     const F fx = f.coord.x * F(0.37f) + f.coord.y * F(0.11f) + v.color.x;
     f.color[0] = Vec4<F>(fx - floor(fx), mix(id, v.color.y, F(0.5f)),
-                         select(f.front_facing, v.color.z, F(1.0f) - v.color.z), f.coord.z * F(0.5f) + f.coord.w * F(0.5f));
+                         select(f.front_facing, v.color.z, F(1.0f) - v.color.z),
+                         f.coord.z * F(0.5f) + f.coord.w * F(0.5f));
   }
 };
 
@@ -269,17 +295,22 @@ TEST(Packed, IndependentLanesGiveWhatQuadsGive) {
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   std::vector<TestVertex> v;
   for (int t = 0; t < 900; ++t) {
-    const float cx = 54.0f + 20.0f * u(rng), cy = 10.0f + 16.0f * u(rng), size = t % 9 == 0 ? 30.0f : t % 3 == 0 ? 11.0f : 4.0f;
+    const float cx = 54.0f + 20.0f * u(rng), cy = 10.0f + 16.0f * u(rng),
+                size = t % 9 == 0   ? 30.0f
+                       : t % 3 == 0 ? 11.0f
+                                    : 4.0f;
     const float col[4] = {u(rng), u(rng), u(rng), 1.0f};
     for (int k = 0; k < 3; ++k) {
       TestVertex a{};
       const float w = 0.5f + 2.0f * u(rng);  // perspective: 1/w differs across the triangle
-      clip_from_window(cx + size * (u(rng) - 0.5f), cy + size * (u(rng) - 0.5f), 2.0f * u(rng) - 1.0f, w, W, H, a.pos);
+      clip_from_window(cx + size * (u(rng) - 0.5f), cy + size * (u(rng) - 0.5f), 2.0f * u(rng) - 1.0f, w, W,
+                       H, a.pos);
       std::copy_n(col, 4, a.color);
       v.push_back(a);
     }
   }
-  auto render = [&](auto shader, bool depth, int threads, std::vector<uint8_t>& pixels, std::vector<float>& depths) {
+  auto render = [&](auto shader, bool depth, int threads, std::vector<uint8_t>& pixels,
+                    std::vector<float>& depths) {
     Texture2D color(Format::RGBA8, W, H), z(Format::Depth32F, W, H);
     Framebuffer fb(&color, &z);
     Context ctx(threads);
@@ -313,7 +344,9 @@ TEST(Packed, IndependentLanesGiveWhatQuadsGive) {
       EXPECT_EQ(b.fragments_rejected, a.fragments_rejected);
     }
     EXPECT_GT(a.fragments_written, 1200u);
-    if (depth) EXPECT_GT(a.fragments_rejected, 500u);
+    if (depth) {
+      EXPECT_GT(a.fragments_rejected, 500u);
+    }
   }
 }
 
@@ -330,18 +363,21 @@ TEST(Setup, SmallCoverageIsTheEdgeTestAtEachPixelOfTheBbox) {
       X[k] = coord(rng);
       Y[k] = coord(rng);
     }
-    if ((X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]) <= 0) std::swap(X[1], X[2]), std::swap(Y[1], Y[2]);
+    if ((X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]) <= 0)
+      std::swap(X[1], X[2]), std::swap(Y[1], Y[2]);
     EdgeEq e[3];
     for (int i = 0; i < 3; ++i) {
       const int j = (i + 1) % 3;
       const int64_t dx = X[j] - X[i], dy = Y[j] - Y[i];
-      e[i] = {dy * X[i] - dx * Y[i] + ((dy < 0 || (dy == 0 && dx > 0)) ? 1 : 0), -dy * kSubpixelOne, dx * kSubpixelOne};
+      e[i] = {dy * X[i] - dx * Y[i] + ((dy < 0 || (dy == 0 && dx > 0)) ? 1 : 0), -dy * kSubpixelOne,
+              dx * kSubpixelOne};
     }
     if (!small_edges(e)) continue;
     // Any bbox inside the window from an aligned origin.
     const int gx0 = 4 * int(rng() % 3), gy0 = 2 * int(rng() % 5);
     const int minx = gx0 + int(rng() % 4), miny = gy0 + int(rng() % 2);
-    const int maxx = minx + int(rng() % unsigned(gx0 + 8 - minx)), maxy = miny + int(rng() % unsigned(gy0 + 8 - miny));
+    const int maxx = minx + int(rng() % unsigned(gx0 + 8 - minx)),
+              maxy = miny + int(rng() % unsigned(gy0 + 8 - miny));
     const uint64_t cover = small_coverage(e, minx, miny, maxx, maxy);
     for (int y = gy0; y < gy0 + 8; ++y)
       for (int x = gx0; x < gx0 + 8; ++x) {
@@ -350,7 +386,8 @@ TEST(Setup, SmallCoverageIsTheEdgeTestAtEachPixelOfTheBbox) {
         const int group = (oy >> 1) * 2 + (ox >> 2);
         bool inside = x >= minx && x <= maxx && y >= miny && y <= maxy;
         for (const EdgeEq& q : e) inside = inside && q.c + q.a * x + q.b * y > 0;
-        ASSERT_EQ(((cover >> (8 * group + lane)) & 1) != 0, inside) << "case " << t << " pixel " << x << "," << y;
+        ASSERT_EQ(((cover >> (8 * group + lane)) & 1) != 0, inside)
+            << "case " << t << " pixel " << x << "," << y;
       }
     ++tested;
     if (maxy >= gy0 + 4) ++tall;

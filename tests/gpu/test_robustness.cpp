@@ -14,7 +14,10 @@ namespace {
 
 TestVertex tv(float x, float y, float z, float w) {
   TestVertex v{};
-  v.pos[0] = x; v.pos[1] = y; v.pos[2] = z; v.pos[3] = w;
+  v.pos[0] = x;
+  v.pos[1] = y;
+  v.pos[2] = z;
+  v.pos[3] = w;
   v.color[0] = v.color[3] = 1.0f;
   return v;
 }
@@ -49,11 +52,14 @@ TEST(Robustness, IndexOutOfRangeIsAnError) {
     EXPECT_NE(std::string(e.what()).find("vertex attribute 0"), std::string::npos) << e.what();
   }
   // Index buffer too short for the count.
-  EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 6, .index_buffer = &ib}), Error);
+  EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 6, .index_buffer = &ib}),
+               Error);
   // Vertex range past the buffer.
   EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.first = 1, .count = 3}), Error);
   // Base vertex making an index negative.
-  EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 3, .index_buffer = &ib, .base_vertex = -5}), Error);
+  EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{},
+                          {.count = 3, .index_buffer = &ib, .base_vertex = -5}),
+               Error);
   EXPECT_EQ(s.lit(), 0u);  // nothing was queued
 }
 
@@ -144,10 +150,10 @@ TEST(Robustness, ZeroAndHugeSizes) {
 TEST(Robustness, NonFinitePositionsAreDropped) {
   const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
   Scene s;
-  Mesh m({tv(-1, -1, 0, 1), tv(1, -1, 0, 1), tv(0, 1, 0, nan),     // NaN w
-          tv(-1, -1, 0, 1), tv(inf, -1, 0, 1), tv(0, 1, 0, 1),     // Inf x
-          tv(nan, nan, nan, nan), tv(1, 1, 0, 1), tv(-1, 1, 0, 1), // all NaN
-          tv(-1, -1, 0, 1), tv(1, -1, 0, 1), tv(1, 1, 0, 1)});     // a good one
+  Mesh m({tv(-1, -1, 0, 1), tv(1, -1, 0, 1), tv(0, 1, 0, nan),      // NaN w
+          tv(-1, -1, 0, 1), tv(inf, -1, 0, 1), tv(0, 1, 0, 1),      // Inf x
+          tv(nan, nan, nan, nan), tv(1, 1, 0, 1), tv(-1, 1, 0, 1),  // all NaN
+          tv(-1, -1, 0, 1), tv(1, -1, 0, 1), tv(1, 1, 0, 1)});      // a good one
   s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 12});
   for (Topology t : {Topology::Lines, Topology::Points, Topology::LineLoop, Topology::TriangleStrip})
     s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.topology = t, .count = 9});
@@ -156,9 +162,9 @@ TEST(Robustness, NonFinitePositionsAreDropped) {
 
 TEST(Robustness, CoordinatesFarOutsideTheGuardBand) {
   Scene s;
-  Mesh m({tv(-1e30f, -1e30f, 0, 1), tv(1e30f, -1e30f, 0, 1), tv(0, 1e30f, 0, 1),
-          tv(-3e38f, 0, 0, 1e-30f), tv(3e38f, 1, 0, 1e-30f), tv(0, -3e38f, 0.5f, 1e-30f),
-          tv(1e20f, 1e20f, 1e20f, 1e-20f), tv(-1, -1, 0, 1), tv(1, -1, 0, -1e-20f)});
+  Mesh m({tv(-1e30f, -1e30f, 0, 1), tv(1e30f, -1e30f, 0, 1), tv(0, 1e30f, 0, 1), tv(-3e38f, 0, 0, 1e-30f),
+          tv(3e38f, 1, 0, 1e-30f), tv(0, -3e38f, 0.5f, 1e-30f), tv(1e20f, 1e20f, 1e20f, 1e-20f),
+          tv(-1, -1, 0, 1), tv(1, -1, 0, -1e-20f)});
   s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 9});
   RenderState st;
   st.polygon_mode = PolygonMode::Line;
@@ -185,8 +191,8 @@ TEST(Robustness, ResourceChangedWhileQueuedDrawsWait) {
 TEST(Robustness, ReviewedEdgeCases) {
   {  // gl_Position = vec4(0) hides a vertex; clipping must not produce w = 0 for setup.
     Scene s;
-    Mesh m({tv(0, 0, 0, 0), tv(1, 0, 0, 1), tv(0, 1, 0, 1), tv(0, 0, 0, 1e8f), tv(0, 0, -2, 1), tv(1, 0.5f, 0, 1),
-            tv(-3e38f, 0, 0, 1), tv(3e38f, 0, 0, 1), tv(0, 1, 0, 1)});
+    Mesh m({tv(0, 0, 0, 0), tv(1, 0, 0, 1), tv(0, 1, 0, 1), tv(0, 0, 0, 1e8f), tv(0, 0, -2, 1),
+            tv(1, 0.5f, 0, 1), tv(-3e38f, 0, 0, 1), tv(3e38f, 0, 0, 1), tv(0, 1, 0, 1)});
     s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 9});
     s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.topology = Topology::LineStrip, .count = 9});
     s.lit();
@@ -197,7 +203,8 @@ TEST(Robustness, ReviewedEdgeCases) {
     const uint32_t idx[] = {0, 1, 2};
     const Buffer ib(idx, sizeof idx);
     EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{},
-                            {.count = 3, .index_buffer = &ib, .index_offset = SIZE_MAX - 3}), Error);
+                            {.count = 3, .index_buffer = &ib, .index_offset = SIZE_MAX - 3}),
+                 Error);
     VertexLayout l = m.layout;
     l.bindings[0].offset = SIZE_MAX - 15;  // binding offset that wraps
     EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, l, RenderState{}, {.count = 3}), Error);
@@ -208,7 +215,9 @@ TEST(Robustness, ReviewedEdgeCases) {
     st.clip_plane_enable = 1;
     st.clip_planes[0] = {3e38f, 0, 0, 0};
     EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, m.layout, st, {.count = 3}), Error);
-    EXPECT_THROW(s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 3, .instance_count = 0xFFFFFFFFu}), Error);
+    EXPECT_THROW(
+        s.ctx.draw(ColorShader{}, {}, m.layout, RenderState{}, {.count = 3, .instance_count = 0xFFFFFFFFu}),
+        Error);
     EXPECT_THROW(s.ctx.clear({.depth = NAN}), Error);
   }
   {  // The framebuffer changed after binding: checked again when a frame starts.

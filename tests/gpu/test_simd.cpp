@@ -26,7 +26,10 @@ TEST(Lanes, TranscendentalsAreAccurateAndAgreeAcrossWidths) {
   std::uniform_real_distribution<float> u(-20.0f, 20.0f), pos(1e-6f, 100.0f);
   for (int i = 0; i < 2000; ++i) {
     float x[8], y[8];
-    for (int k = 0; k < 8; ++k) { x[k] = u(rng); y[k] = pos(rng); }
+    for (int k = 0; k < 8; ++k) {
+      x[k] = u(rng);
+      y[k] = pos(rng);
+    }
     const Float8 X = Float8::load(x), Y = Float8::load(y);
     const Float8 e = exp2(X), l = log2(Y), p = pow(Y, Float8(2.5f)), s = sin(X), c = cos(X);
     for (int k = 0; k < 8; ++k) {
@@ -56,7 +59,8 @@ TEST(Lanes, GeometricFunctions) {
   EXPECT_NEAR(length(normalize(a)), 1.0f, 1e-6f);
   const Vec3<float> r = reflect(Vec3<float>(1, -1, 0), Vec3<float>(0, 1, 0));
   EXPECT_EQ(r.y, 1.0f);
-  const Vec3<float> t = refract(Vec3<float>(0.8f, -0.6f, 0), Vec3<float>(0, 1, 0), 1.5f);  // total internal reflection
+  const Vec3<float> t =
+      refract(Vec3<float>(0.8f, -0.6f, 0), Vec3<float>(0, 1, 0), 1.5f);  // total internal reflection
   EXPECT_EQ(t.x, 0.0f);
   EXPECT_EQ(floor(-1.5f), -2.0f);
   EXPECT_EQ(fract(-1.25f), 0.75f);
@@ -67,8 +71,9 @@ TEST(Lanes, GeometricFunctions) {
 // floor on lanes is one rounding instruction: it must agree with std::floor everywhere,
 // including halves, values at and beyond 2^23, the largest floats, infinities and NaN.
 TEST(Lanes, FloorMatchesStdFloor) {
-  const float v[] = {-2.5f, -1.5f, -0.5f, -0.0f, 0.0f, 0.49999997f, 0.5f, 1.0f, 2.99999f, -1e-30f, 8388607.5f, -8388607.5f,
-                     8388608.0f, -8388609.0f, 1e20f, -1e20f, 3.4e38f, -3.4e38f, 1.0f / 0.0f, -1.0f / 0.0f};
+  const float v[] = {-2.5f, -1.5f,    -0.5f,   -0.0f,      0.0f,        0.49999997f, 0.5f,
+                     1.0f,  2.99999f, -1e-30f, 8388607.5f, -8388607.5f, 8388608.0f,  -8388609.0f,
+                     1e20f, -1e20f,   3.4e38f, -3.4e38f,   1.0f / 0.0f, -1.0f / 0.0f};
   for (float x : v) {
     Float8 a(1.0f);
     a[3] = x;

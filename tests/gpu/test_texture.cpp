@@ -31,7 +31,8 @@ float from_fbits(uint32_t u) {
 }
 
 // An RGBA32F texture whose texel (x, y) is given by fn(x, y), rows bottom-up.
-template <class Fn> Texture2D make_f32(int w, int h, Fn fn) {
+template <class Fn>
+Texture2D make_f32(int w, int h, Fn fn) {
   Texture2D t(Format::RGBA32F, w, h);
   std::vector<float> data;
   for (int y = 0; y < h; ++y)
@@ -116,12 +117,12 @@ TEST(Half, KnownValues) {
   EXPECT_EQ(float_to_half(65520.0f), 0x7C00);  // the tie rounds to even: infinity
   EXPECT_EQ(float_to_half(1.0e10f), 0x7C00);
   EXPECT_EQ(float_to_half(-INFINITY), 0xFC00);
-  EXPECT_EQ(float_to_half(std::ldexp(1.0f, -24)), 0x0001);     // smallest subnormal
-  EXPECT_EQ(float_to_half(std::ldexp(1.0f, -25)), 0x0000);     // tie -> even (0)
+  EXPECT_EQ(float_to_half(std::ldexp(1.0f, -24)), 0x0001);  // smallest subnormal
+  EXPECT_EQ(float_to_half(std::ldexp(1.0f, -25)), 0x0000);  // tie -> even (0)
   EXPECT_EQ(float_to_half(std::ldexp(1.5f, -25)), 0x0001);
-  EXPECT_EQ(float_to_half(std::ldexp(3.0f, -25)), 0x0002);     // 1.5 ulp ties to even 2
-  EXPECT_EQ(float_to_half(std::ldexp(1.0f, -14)), 0x0400);     // smallest normal
-  EXPECT_EQ(float_to_half(std::ldexp(1023.5f, -24)), 0x0400);  // subnormal rounding up into normal
+  EXPECT_EQ(float_to_half(std::ldexp(3.0f, -25)), 0x0002);             // 1.5 ulp ties to even 2
+  EXPECT_EQ(float_to_half(std::ldexp(1.0f, -14)), 0x0400);             // smallest normal
+  EXPECT_EQ(float_to_half(std::ldexp(1023.5f, -24)), 0x0400);          // subnormal rounding up into normal
   EXPECT_EQ(float_to_half(1.0f + std::ldexp(1.0f, -11)), 0x3C00);      // tie, even stays
   EXPECT_EQ(float_to_half(1.0f + 3 * std::ldexp(1.0f, -11)), 0x3C02);  // tie, odd rounds up
   EXPECT_EQ(float_to_half(0.1f), 0x2E66);
@@ -390,7 +391,8 @@ TEST(Mipmaps, FourByFourBoxFilter) {
 
 TEST(Mipmaps, OddSizesWeightEveryTexel) {
   // 3x3 -> 1x1 is the plain mean of all nine texels.
-  Texture2D t = make_f32(3, 3, [](int x, int y) { return glm::vec4(x == 2 && y == 2 ? 9.0f : 0.0f, float(x + 3 * y), 0, 1); });
+  Texture2D t = make_f32(
+      3, 3, [](int x, int y) { return glm::vec4(x == 2 && y == 2 ? 9.0f : 0.0f, float(x + 3 * y), 0, 1); });
   t.allocate_full_chain();
   ASSERT_EQ(t.levels(), 2);
   EXPECT_NEAR(t.fetch(1, 0, 0).x, 1.0f, 1e-6f);
@@ -477,8 +479,8 @@ TEST(Sampling, WrapModesLinear) {
     return texture(Sampler2D{&t, st}, Vec2<float>(s, 0.5f)).x;
   };
   // s = -0.25: u - 0.5 = -1.75 -> texels -2, -1 with weights .75, .25
-  EXPECT_FLOAT_EQ(at(Wrap::Repeat, -0.25f), 3.25f);      // texels 3, 4
-  EXPECT_FLOAT_EQ(at(Wrap::ClampToEdge, -0.25f), 0.0f);  // both clamp to 0
+  EXPECT_FLOAT_EQ(at(Wrap::Repeat, -0.25f), 3.25f);          // texels 3, 4
+  EXPECT_FLOAT_EQ(at(Wrap::ClampToEdge, -0.25f), 0.0f);      // both clamp to 0
   EXPECT_FLOAT_EQ(at(Wrap::MirroredRepeat, -0.25f), 0.75f);  // -2 -> 1 (.75), -1 -> 0 (.25)
   EXPECT_FLOAT_EQ(at(Wrap::ClampToBorder, -0.25f), 0.25f);
   // s = 1.25: u - 0.5 = 5.75 -> texels 5, 6 with weights .25, .75
@@ -578,7 +580,8 @@ TEST(Sampling, TexelFetchBoundsAndSize) {
   const Sampler2D s{&t, nearest()};
   Vec4<float> c = texelFetch(s, 2, 1, 0);
   EXPECT_EQ(glm::vec4(c.x, c.y, c.z, c.w), glm::vec4(2, 1, 5, 6));
-  const glm::ivec3 outside[] = {{3, 0, 0}, {0, 2, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {1 << 30, 0, 0}};
+  const glm::ivec3 outside[] = {{3, 0, 0}, {0, 2, 0},  {-1, 0, 0},     {0, -1, 0},
+                                {0, 0, 1}, {0, 0, -1}, {1 << 30, 0, 0}};
   for (const glm::ivec3& o : outside) {
     c = texelFetch(s, o.x, o.y, o.z);
     EXPECT_EQ(glm::vec4(c.x, c.y, c.z, c.w), glm::vec4(0.0f)) << o.x << "," << o.y << "," << o.z;
@@ -705,7 +708,8 @@ TEST(Lod, TrilinearBlendAtFractionalLod) {
   const Vec4<Float8> g = textureGrad(s, uv, dx, dy);
   EXPECT_FLOAT_EQ(g.y[0], 3.0f);
   EXPECT_FLOAT_EQ(g.y[7], 1.0f);
-  EXPECT_FLOAT_EQ(textureGrad(s, Vec2<float>(0.4f, 0.4f), Vec2<float>(0.5f, 0.0f), Vec2<float>(0.0f, 0.0f)).y, 3.0f);
+  EXPECT_FLOAT_EQ(textureGrad(s, Vec2<float>(0.4f, 0.4f), Vec2<float>(0.5f, 0.0f), Vec2<float>(0.0f, 0.0f)).y,
+                  3.0f);
   Float8 lods(2.25f);
   lods[3] = 0.75f;
   const Vec4<Float8> l8 = textureLod(s, uv, lods);
@@ -719,8 +723,8 @@ TEST(Lod, MagnificationSwitchUsesMagFilter) {
   SamplerState st;
   st.wrap_s = st.wrap_t = Wrap::ClampToEdge;
   const Sampler2D s{&t, st};
-  EXPECT_FLOAT_EQ(textureLod(s, Vec2<float>(0.5f, 0.5f), 0.0f).x, 0.5f);     // LINEAR
-  EXPECT_FLOAT_EQ(textureLod(s, Vec2<float>(0.5f, 0.5f), 0.25f).x, 1.0f);    // NEAREST (min)
+  EXPECT_FLOAT_EQ(textureLod(s, Vec2<float>(0.5f, 0.5f), 0.0f).x, 0.5f);   // LINEAR
+  EXPECT_FLOAT_EQ(textureLod(s, Vec2<float>(0.5f, 0.5f), 0.25f).x, 1.0f);  // NEAREST (min)
 }
 
 // --- cube maps --------------------------------------------------------------------------------
@@ -834,8 +838,8 @@ TEST(Wrap, LegacyClamp) {
   EXPECT_EQ(detail::sample_2d(s, -0.5f, 0.5f, 0.0f), glm::vec4(1, 0, 0, 1));  // s = 0: first texel
   s.state.min_filter = s.state.mag_filter = Filter::Linear;
   const glm::vec4 edge = detail::sample_2d(s, 2.0f, 0.5f, 0.0f);  // s = 1, on the texel row
-  EXPECT_NEAR(edge.b, 0.5f, 1e-6f);  // half the last texel ...
-  EXPECT_NEAR(edge.g, 0.5f, 1e-6f);  // ... half the border
+  EXPECT_NEAR(edge.b, 0.5f, 1e-6f);                               // half the last texel ...
+  EXPECT_NEAR(edge.g, 0.5f, 1e-6f);                               // ... half the border
 }
 
 // Sixteen lanes of trilinear RGBA8 have a path of their own (detail/texture_simd.hpp); it must
@@ -918,7 +922,8 @@ TEST(Sampling, SixteenLanesGiveTheBitsOfTwoHalvesOfEight) {
         Vec2<Float16> uv;
         const float x0 = pos(rng), y0 = pos(rng);
         float scale[4];
-        for (int q = 0; q < 4; ++q) scale[q] = (q == 0 || iter % 4 == 0) ? std::exp2(lod(rng)) / 256.0f : scale[0];
+        for (int q = 0; q < 4; ++q)
+          scale[q] = (q == 0 || iter % 4 == 0) ? std::exp2(lod(rng)) / 256.0f : scale[0];
         for (int l = 0; l < 16; ++l) {
           const int q = l / 4, g = l / 8;  // quad, 4x2 group
           const float px_x = float(detail::kLaneDx[l % 8] + 4 * g), px_y = float(detail::kLaneDy[l % 8]);
@@ -933,7 +938,8 @@ TEST(Sampling, SixteenLanesGiveTheBitsOfTwoHalvesOfEight) {
         for (int l = 0; l < 16; ++l) {
           const Vec4<Float8>& h = l < 8 ? lo : hi;
           const int i = l % 8;
-          ASSERT_EQ(fbits(a.x[l]), fbits(h.x[i])) << "wrap " << wrap << " variant " << variant << " iter " << iter << " lane " << l;
+          ASSERT_EQ(fbits(a.x[l]), fbits(h.x[i]))
+              << "wrap " << wrap << " variant " << variant << " iter " << iter << " lane " << l;
           ASSERT_EQ(fbits(a.y[l]), fbits(h.y[i])) << l;
           ASSERT_EQ(fbits(a.z[l]), fbits(h.z[i])) << l;
           ASSERT_EQ(fbits(a.w[l]), fbits(h.w[i])) << l;
@@ -956,10 +962,12 @@ TEST(Sampling, FixedPointLerpIsExactForEveryInput) {
       for (int b0 = 0; b0 < 256; b0 += 16) {
         alignas(32) int16_t bs[16], out[16];
         for (int k = 0; k < 16; ++k) bs[k] = int16_t(b0 + k);
-        const __m256i r = detail::lerp16(_mm256_set1_epi16(int16_t(a)), _mm256_load_si256(reinterpret_cast<const __m256i*>(bs)), m);
+        const __m256i r = detail::lerp16(_mm256_set1_epi16(int16_t(a)),
+                                         _mm256_load_si256(reinterpret_cast<const __m256i*>(bs)), m);
         _mm256_store_si256(reinterpret_cast<__m256i*>(out), r);
         for (int k = 0; k < 16; ++k)
-          ASSERT_EQ(out[k], (a * (256 - w) + (b0 + k) * w + 128) >> 8) << "a " << a << " b " << b0 + k << " w " << w;
+          ASSERT_EQ(out[k], (a * (256 - w) + (b0 + k) * w + 128) >> 8)
+              << "a " << a << " b " << b0 + k << " w " << w;
       }
     }
   }

@@ -14,7 +14,8 @@ using namespace tessel::gpu;
 namespace {
 
 // The message of the Error that fn throws ("" when it throws none).
-template <class Fn> std::string error_of(Fn&& fn) {
+template <class Fn>
+std::string error_of(Fn&& fn) {
   try {
     fn();
   } catch (const Error& e) {
@@ -23,15 +24,19 @@ template <class Fn> std::string error_of(Fn&& fn) {
   return "";
 }
 
-bool mentions(const std::string& message, const std::string& what) { return message.find(what) != std::string::npos; }
+bool mentions(const std::string& message, const std::string& what) {
+  return message.find(what) != std::string::npos;
+}
 
 // An RGBA32F 3D texture (or array) whose texel (x, y, z) is (x, y, z, 100 * level).
-template <class T> void fill_marked(T& t, int level) {
+template <class T>
+void fill_marked(T& t, int level) {
   const Level3D& l = t.level(level);
   std::vector<float> data;
   for (int z = 0; z < l.depth; ++z)
     for (int y = 0; y < l.height; ++y)
-      for (int x = 0; x < l.width; ++x) data.insert(data.end(), {float(x), float(y), float(z), 100.0f * float(level)});
+      for (int x = 0; x < l.width; ++x)
+        data.insert(data.end(), {float(x), float(y), float(z), 100.0f * float(level)});
   t.upload(level, data.data(), data.size() * sizeof(float));
 }
 
@@ -74,12 +79,14 @@ TEST(Texture3D, LevelSizesHalveAllThreeAxes) {
 TEST(Texture3D, UploadFetchAndStoreCheckTheirInput) {
   Texture3D t(Format::RGBA8, 4, 4, 2, 2);
   std::vector<uint8_t> data(4 * 4 * 2 * 4, 9);
-  EXPECT_TRUE(mentions(error_of([&] { t.upload(0, data.data(), data.size() - 1); }), "needs 128 bytes, got 127"));
+  EXPECT_TRUE(
+      mentions(error_of([&] { t.upload(0, data.data(), data.size() - 1); }), "needs 128 bytes, got 127"));
   EXPECT_THROW(t.upload(0, data.data(), data.size() + 4), Error);
-  EXPECT_THROW(t.upload(2, data.data(), data.size()), Error);   // no level 2
+  EXPECT_THROW(t.upload(2, data.data(), data.size()), Error);  // no level 2
   EXPECT_THROW(t.upload(-1, data.data(), data.size()), Error);
   EXPECT_THROW(t.upload(0, nullptr, data.size()), Error);
-  EXPECT_THROW(t.upload_rgba32f(0, reinterpret_cast<const float*>(data.data()), data.size()), Error);  // needs 512
+  EXPECT_THROW(t.upload_rgba32f(0, reinterpret_cast<const float*>(data.data()), data.size()),
+               Error);  // needs 512
   EXPECT_NO_THROW(t.upload(0, data.data(), data.size()));
   EXPECT_NEAR(t.fetch(0, 3, 3, 1).x, 9.0f / 255.0f, 1e-7f);
   EXPECT_TRUE(mentions(error_of([&] { (void)t.fetch(0, 0, 0, 2); }), "(0, 0, 2)"));
@@ -129,7 +136,8 @@ TEST(Texture3D, SamplingSelectsSlicesAndWrapsR) {
 TEST(Texture2DArray, BadSizesThrow) {
   EXPECT_TRUE(mentions(error_of([] { Texture2DArray(Format::RGBA8, 0, 4, 4); }), "0x4"));
   EXPECT_TRUE(mentions(error_of([] { Texture2DArray(Format::RGBA8, 4, 4, 0); }), "0 layers"));
-  EXPECT_TRUE(mentions(error_of([] { Texture2DArray(Format::RGBA8, 4, 4, kMaxArrayTextureLayers + 1); }), "2049 layers"));
+  EXPECT_TRUE(mentions(error_of([] { Texture2DArray(Format::RGBA8, 4, 4, kMaxArrayTextureLayers + 1); }),
+                       "2049 layers"));
   EXPECT_THROW(Texture2DArray(Format::RGBA8, kMaxTextureSize + 1, 1, 1), Error);
   EXPECT_THROW(Texture2DArray(Format::RGBA8, 4, 4, 2, 4), Error);  // 4x4 has 3 levels
   const std::string huge = error_of([] { Texture2DArray(Format::RGBA32F, 16384, 16384, 2048); });

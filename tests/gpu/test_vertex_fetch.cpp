@@ -41,7 +41,7 @@ TEST(VertexFetch, TypesAndNormalization) {
   fetch_attributes(l, 0, 0, out);
   EXPECT_EQ(out[0][0], -1.0f);  // -128 clamps to -1 (GL 4.6 eq. 2.2)
   EXPECT_EQ(out[0][1], 1.0f);
-  EXPECT_EQ(out[0][2], 0.0f);   // missing components: (0, 0, 0, 1)
+  EXPECT_EQ(out[0][2], 0.0f);  // missing components: (0, 0, 0, 1)
   EXPECT_EQ(out[0][3], 1.0f);
   EXPECT_EQ(out[1][1], 1.0f);
   EXPECT_EQ(out[2][0], -1.0f);
@@ -49,9 +49,9 @@ TEST(VertexFetch, TypesAndNormalization) {
   EXPECT_EQ(out[4][0], 1.5f);
   int32_t iv;
   std::memcpy(&iv, &out[5][0], 4);
-  EXPECT_EQ(iv, -7);               // integer attribute: the bits
+  EXPECT_EQ(iv, -7);  // integer attribute: the bits
   EXPECT_EQ(out[6][2], 3.0f);
-  EXPECT_EQ(out[7][0], 9.0f);      // disabled: the current value
+  EXPECT_EQ(out[7][0], 9.0f);  // disabled: the current value
   fetch_attributes(l, 1, 0, out);
   EXPECT_NEAR(out[0][0], 64.0f / 127.0f, 1e-7f);
   EXPECT_NEAR(out[1][0], 0.2f, 1e-7f);
@@ -95,7 +95,8 @@ std::vector<std::byte> random_bytes(size_t n, uint32_t seed) {
 }
 
 // fetch_attributes8 against fetch_attributes, lane by lane and bit for bit.
-void expect_same_as_scalar(const VertexLayout& l, const std::vector<uint32_t>& ids, int n, uint32_t instance) {
+void expect_same_as_scalar(const VertexLayout& l, const std::vector<uint32_t>& ids, int n,
+                           uint32_t instance) {
   VertexIn<Float8> in;
   fetch_attributes8(l, ids.data(), n, instance, in);
   for (int lane = 0; lane < kLanes; ++lane) {
@@ -108,8 +109,8 @@ void expect_same_as_scalar(const VertexLayout& l, const std::vector<uint32_t>& i
       const Vec4<Float8>& got = in.attr[size_t(a)];
       const float g[4] = {got.x[lane], got.y[lane], got.z[lane], got.w[lane]};
       for (int c = 0; c < 4; ++c)
-        EXPECT_EQ(bits(g[c]), bits(want[a][c]))
-            << "n " << n << " instance " << instance << " lane " << lane << " location " << a << " component " << c;
+        EXPECT_EQ(bits(g[c]), bits(want[a][c])) << "n " << n << " instance " << instance << " lane " << lane
+                                                << " location " << a << " component " << c;
     }
   }
 }
@@ -131,10 +132,10 @@ TEST(VertexFetch8, MatchesScalarFetchOverMixedLayouts) {
   l.attrib(4, per_instance, 2, AttribType::F32, 8, 0, false, 2);
   l.attrib(5, per_instance, 3, AttribType::U16, 0, 40, true, 1);
   // Other types per vertex.
-  l.attrib(6, inter, 4, AttribType::U8, kStride, 28, true);   // normalized
-  l.attrib(7, inter, 3, AttribType::I16, kStride, 32);        // plain integers as floats
+  l.attrib(6, inter, 4, AttribType::U8, kStride, 28, true);  // normalized
+  l.attrib(7, inter, 3, AttribType::I16, kStride, 32);       // plain integers as floats
   l.attrib(8, inter, 2, AttribType::I32, kStride, 40);
-  l.attribs[8].integer = true;                                // integer attribute: the bits
+  l.attribs[8].integer = true;  // integer attribute: the bits
   l.attrib(9, inter, 2, AttribType::F16, kStride, 48);
   l.attrib(10, inter, 1, AttribType::I8, kStride, 50, true);
   l.attrib(11, inter, 4, AttribType::U8, kStride, 28);

@@ -27,11 +27,11 @@ namespace {
 constexpr int kColorTolerance = 2;
 
 struct Compared {
-  size_t pixels = 0;      // pixels compared
-  size_t covered = 0;     // covered by either
+  size_t pixels = 0;   // pixels compared
+  size_t covered = 0;  // covered by either
   size_t coverage_mismatch = 0;
   int max_channel_diff = 0;
-  size_t over_one = 0;    // pixels with a channel off by more than 1 (both covered)
+  size_t over_one = 0;  // pixels with a channel off by more than 1 (both covered)
 };
 
 // Coverage: a pixel is covered when it differs from the clear colour (alpha 0 clear, every
@@ -82,8 +82,10 @@ std::vector<uint8_t> render_tessel(int w, int h, const std::vector<OracleVertex>
   ctx.bind_framebuffer(&t.fb);
   ctx.clear({.color = {0, 0, 0, 0}, .depth = clear_depth});
   Mesh m(to_test_vertices(verts));
-  if (flat) ctx.draw(FlatColorShader{}, {}, m.layout, st, {.topology = topo, .count = m.count});
-  else ctx.draw(ColorShader{}, {}, m.layout, st, {.topology = topo, .count = m.count});
+  if (flat)
+    ctx.draw(FlatColorShader{}, {}, m.layout, st, {.topology = topo, .count = m.count});
+  else
+    ctx.draw(ColorShader{}, {}, m.layout, st, {.topology = topo, .count = m.count});
   ctx.finish();
   return read_rgba8(t.color);
 }
@@ -233,7 +235,8 @@ TEST(Mesa, GouraudColoursMatch) {
     for (int cx = 0; cx < W / 32; ++cx)
       for (int k = 0; k < 3; ++k) {
         const float c[4] = {u(rng), u(rng), u(rng), 1.0f};
-        v.push_back(vertex_at(cx * 32 + 1 + 30 * u(rng), cy * 32 + 1 + 30 * u(rng), 0.0f, 0.5f + 3 * u(rng), W, H, c));
+        v.push_back(vertex_at(cx * 32 + 1 + 30 * u(rng), cy * 32 + 1 + 30 * u(rng), 0.0f, 0.5f + 3 * u(rng),
+                              W, H, c));
       }
   const auto ref = render_mesa(*o, v, OracleState{});
   const auto got = render_tessel(W, H, v, RenderState{}, Topology::Triangles, false);
@@ -294,8 +297,11 @@ TEST(Mesa, DepthTestedAndBlendedMatch) {
   s.blend_src_a = 1;
   s.blend_dst_a = 1;
   st = RenderState{};
-  st.blend[0] = {.enabled = true, .src_rgb = BlendFactor::SrcAlpha, .dst_rgb = BlendFactor::OneMinusSrcAlpha,
-                 .src_alpha = BlendFactor::One, .dst_alpha = BlendFactor::One};
+  st.blend[0] = {.enabled = true,
+                 .src_rgb = BlendFactor::SrcAlpha,
+                 .dst_rgb = BlendFactor::OneMinusSrcAlpha,
+                 .src_alpha = BlendFactor::One,
+                 .dst_alpha = BlendFactor::One};
   ref = render_mesa(*o, v, s);
   got = render_tessel(W, H, v, st, Topology::Triangles, false);
   c = compare(got, ref);
@@ -329,8 +335,9 @@ struct TexResult {
   size_t over_eight = 0;
 };
 
-TexResult compare_textured(int W, int H, const std::vector<OracleVertex>& v, const tessel::reference::OracleTexture& ot,
-                           Filter min, Filter mag, uint32_t gl_min, uint32_t gl_mag) {
+TexResult compare_textured(int W, int H, const std::vector<OracleVertex>& v,
+                           const tessel::reference::OracleTexture& ot, Filter min, Filter mag,
+                           uint32_t gl_min, uint32_t gl_mag) {
   auto o = make_oracle(W, H);
   if (!o) return {};
   tessel::reference::OracleTexture t = ot;
@@ -377,23 +384,28 @@ TexResult compare_textured(int W, int H, const std::vector<OracleVertex>& v, con
 std::vector<OracleVertex> tilted_quad(float repeat) {
   auto v = [&](float x, float z, float s, float t) {
     OracleVertex r{};
-    r.pos[0] = x; r.pos[1] = -0.6f; r.pos[2] = 0.0f; r.pos[3] = -z;
+    r.pos[0] = x;
+    r.pos[1] = -0.6f;
+    r.pos[2] = 0.0f;
+    r.pos[3] = -z;
     r.color[0] = r.color[1] = r.color[2] = r.color[3] = 1.0f;
-    r.uv[0] = s * repeat; r.uv[1] = t * repeat;
+    r.uv[0] = s * repeat;
+    r.uv[1] = t * repeat;
     return r;
   };
   return {v(-1.5f, -0.7f, 0, 0), v(1.5f, -0.7f, 1, 0), v(1.5f, -12, 1, 1),
-          v(-1.5f, -0.7f, 0, 0), v(1.5f, -12, 1, 1), v(-1.5f, -12, 0, 1)};
+          v(-1.5f, -0.7f, 0, 0), v(1.5f, -12, 1, 1),   v(-1.5f, -12, 0, 1)};
 }
 
 }  // namespace
 
 // Perspective-correct, bilinearly magnified texturing: within 2 steps of llvmpipe.
 TEST(Mesa, TexturedBilinearMatches) {
-  const auto r = compare_textured(256, 256, tilted_quad(0.5f), test_texture(64), Filter::Linear, Filter::Linear,
-                                  0x2601, 0x2601);
-  std::printf("textured bilinear: %zu covered, %zu coverage mismatches, max diff %d, %zu pixels > 1, mean %.3f\n",
-              r.c.covered, r.c.coverage_mismatch, r.c.max_channel_diff, r.c.over_one, r.mean_diff);
+  const auto r = compare_textured(256, 256, tilted_quad(0.5f), test_texture(64), Filter::Linear,
+                                  Filter::Linear, 0x2601, 0x2601);
+  std::printf(
+      "textured bilinear: %zu covered, %zu coverage mismatches, max diff %d, %zu pixels > 1, mean %.3f\n",
+      r.c.covered, r.c.coverage_mismatch, r.c.max_channel_diff, r.c.over_one, r.mean_diff);
   EXPECT_LE(double(r.c.coverage_mismatch), 1e-4 * double(r.c.covered));
   EXPECT_LE(r.c.max_channel_diff, kColorTolerance);
   EXPECT_GT(r.c.covered, 20000u);
@@ -406,8 +418,9 @@ TEST(Mesa, TexturedBilinearMatches) {
 TEST(Mesa, TexturedTrilinearMatches) {
   const auto r = compare_textured(256, 256, tilted_quad(8.0f), test_texture(64), Filter::LinearMipmapLinear,
                                   Filter::Linear, 0x2703, 0x2601);
-  std::printf("textured trilinear: %zu covered, %zu coverage mismatches, max diff %d, mean %.3f, %zu pixels > 8\n",
-              r.c.covered, r.c.coverage_mismatch, r.c.max_channel_diff, r.mean_diff, r.over_eight);
+  std::printf(
+      "textured trilinear: %zu covered, %zu coverage mismatches, max diff %d, mean %.3f, %zu pixels > 8\n",
+      r.c.covered, r.c.coverage_mismatch, r.c.max_channel_diff, r.mean_diff, r.over_eight);
   EXPECT_LE(double(r.c.coverage_mismatch), 1e-4 * double(r.c.covered));
   EXPECT_LE(r.c.max_channel_diff, 8);
   EXPECT_LT(r.mean_diff, 0.5);

@@ -25,13 +25,11 @@ namespace {
 using tessel::gl::gl_error_name;
 using tessel::gl::hex;
 
-
 // Mesa's text for each GL error (e.g. "glUniform1fv(count = 2 for non-array uniform)") says
 // far more than the bare enum, so API error messages are collected here and attached to the
 // error that glGetError reports next.
-void GLAPIENTRY debug_callback(GLenum /*source*/, GLenum type, GLuint /*id*/,
-                               GLenum /*severity*/, GLsizei length, const GLchar* message,
-                               const void* user) {
+void GLAPIENTRY debug_callback(GLenum /*source*/, GLenum type, GLuint /*id*/, GLenum /*severity*/,
+                               GLsizei length, const GLchar* message, const void* user) {
   // Only errors: Mesa also reports shader compile logs and performance notes here, which the
   // info logs already carry or which do not matter for results.
   if (type != GL_DEBUG_TYPE_ERROR || !message || !user) return;
@@ -63,22 +61,43 @@ struct UniformType {
 
 bool is_sampler(GLenum t) {
   switch (t) {
-    case GL_SAMPLER_1D: case GL_SAMPLER_2D: case GL_SAMPLER_3D: case GL_SAMPLER_CUBE:
-    case GL_SAMPLER_1D_SHADOW: case GL_SAMPLER_2D_SHADOW: case GL_SAMPLER_1D_ARRAY:
-    case GL_SAMPLER_2D_ARRAY: case GL_SAMPLER_1D_ARRAY_SHADOW:
-    case GL_SAMPLER_2D_ARRAY_SHADOW: case GL_SAMPLER_CUBE_SHADOW: case GL_SAMPLER_2D_RECT:
-    case GL_SAMPLER_2D_RECT_SHADOW: case GL_SAMPLER_BUFFER: case GL_SAMPLER_2D_MULTISAMPLE:
-    case GL_SAMPLER_2D_MULTISAMPLE_ARRAY: case GL_SAMPLER_CUBE_MAP_ARRAY:
+    case GL_SAMPLER_1D:
+    case GL_SAMPLER_2D:
+    case GL_SAMPLER_3D:
+    case GL_SAMPLER_CUBE:
+    case GL_SAMPLER_1D_SHADOW:
+    case GL_SAMPLER_2D_SHADOW:
+    case GL_SAMPLER_1D_ARRAY:
+    case GL_SAMPLER_2D_ARRAY:
+    case GL_SAMPLER_1D_ARRAY_SHADOW:
+    case GL_SAMPLER_2D_ARRAY_SHADOW:
+    case GL_SAMPLER_CUBE_SHADOW:
+    case GL_SAMPLER_2D_RECT:
+    case GL_SAMPLER_2D_RECT_SHADOW:
+    case GL_SAMPLER_BUFFER:
+    case GL_SAMPLER_2D_MULTISAMPLE:
+    case GL_SAMPLER_2D_MULTISAMPLE_ARRAY:
+    case GL_SAMPLER_CUBE_MAP_ARRAY:
     case GL_SAMPLER_CUBE_MAP_ARRAY_SHADOW:
-    case GL_INT_SAMPLER_1D: case GL_INT_SAMPLER_2D: case GL_INT_SAMPLER_3D:
-    case GL_INT_SAMPLER_CUBE: case GL_INT_SAMPLER_1D_ARRAY: case GL_INT_SAMPLER_2D_ARRAY:
-    case GL_INT_SAMPLER_2D_RECT: case GL_INT_SAMPLER_BUFFER:
-    case GL_INT_SAMPLER_2D_MULTISAMPLE: case GL_INT_SAMPLER_2D_MULTISAMPLE_ARRAY:
+    case GL_INT_SAMPLER_1D:
+    case GL_INT_SAMPLER_2D:
+    case GL_INT_SAMPLER_3D:
+    case GL_INT_SAMPLER_CUBE:
+    case GL_INT_SAMPLER_1D_ARRAY:
+    case GL_INT_SAMPLER_2D_ARRAY:
+    case GL_INT_SAMPLER_2D_RECT:
+    case GL_INT_SAMPLER_BUFFER:
+    case GL_INT_SAMPLER_2D_MULTISAMPLE:
+    case GL_INT_SAMPLER_2D_MULTISAMPLE_ARRAY:
     case GL_INT_SAMPLER_CUBE_MAP_ARRAY:
-    case GL_UNSIGNED_INT_SAMPLER_1D: case GL_UNSIGNED_INT_SAMPLER_2D:
-    case GL_UNSIGNED_INT_SAMPLER_3D: case GL_UNSIGNED_INT_SAMPLER_CUBE:
-    case GL_UNSIGNED_INT_SAMPLER_1D_ARRAY: case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
-    case GL_UNSIGNED_INT_SAMPLER_2D_RECT: case GL_UNSIGNED_INT_SAMPLER_BUFFER:
+    case GL_UNSIGNED_INT_SAMPLER_1D:
+    case GL_UNSIGNED_INT_SAMPLER_2D:
+    case GL_UNSIGNED_INT_SAMPLER_3D:
+    case GL_UNSIGNED_INT_SAMPLER_CUBE:
+    case GL_UNSIGNED_INT_SAMPLER_1D_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_2D_RECT:
+    case GL_UNSIGNED_INT_SAMPLER_BUFFER:
     case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE:
     case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE_ARRAY:
     case GL_UNSIGNED_INT_SAMPLER_CUBE_MAP_ARRAY:
@@ -94,31 +113,56 @@ bool uniform_type(GLenum t, UniformType* out) {
     return true;
   };
   switch (t) {
-    case GL_FLOAT: return set('f', 1, 1);
-    case GL_FLOAT_VEC2: return set('f', 1, 2);
-    case GL_FLOAT_VEC3: return set('f', 1, 3);
-    case GL_FLOAT_VEC4: return set('f', 1, 4);
-    case GL_INT: return set('i', 1, 1);
-    case GL_INT_VEC2: return set('i', 1, 2);
-    case GL_INT_VEC3: return set('i', 1, 3);
-    case GL_INT_VEC4: return set('i', 1, 4);
-    case GL_UNSIGNED_INT: return set('u', 1, 1);
-    case GL_UNSIGNED_INT_VEC2: return set('u', 1, 2);
-    case GL_UNSIGNED_INT_VEC3: return set('u', 1, 3);
-    case GL_UNSIGNED_INT_VEC4: return set('u', 1, 4);
-    case GL_BOOL: return set('b', 1, 1);
-    case GL_BOOL_VEC2: return set('b', 1, 2);
-    case GL_BOOL_VEC3: return set('b', 1, 3);
-    case GL_BOOL_VEC4: return set('b', 1, 4);
-    case GL_FLOAT_MAT2: return set('f', 2, 2);
-    case GL_FLOAT_MAT3: return set('f', 3, 3);
-    case GL_FLOAT_MAT4: return set('f', 4, 4);
-    case GL_FLOAT_MAT2x3: return set('f', 2, 3);
-    case GL_FLOAT_MAT2x4: return set('f', 2, 4);
-    case GL_FLOAT_MAT3x2: return set('f', 3, 2);
-    case GL_FLOAT_MAT3x4: return set('f', 3, 4);
-    case GL_FLOAT_MAT4x2: return set('f', 4, 2);
-    case GL_FLOAT_MAT4x3: return set('f', 4, 3);
+    case GL_FLOAT:
+      return set('f', 1, 1);
+    case GL_FLOAT_VEC2:
+      return set('f', 1, 2);
+    case GL_FLOAT_VEC3:
+      return set('f', 1, 3);
+    case GL_FLOAT_VEC4:
+      return set('f', 1, 4);
+    case GL_INT:
+      return set('i', 1, 1);
+    case GL_INT_VEC2:
+      return set('i', 1, 2);
+    case GL_INT_VEC3:
+      return set('i', 1, 3);
+    case GL_INT_VEC4:
+      return set('i', 1, 4);
+    case GL_UNSIGNED_INT:
+      return set('u', 1, 1);
+    case GL_UNSIGNED_INT_VEC2:
+      return set('u', 1, 2);
+    case GL_UNSIGNED_INT_VEC3:
+      return set('u', 1, 3);
+    case GL_UNSIGNED_INT_VEC4:
+      return set('u', 1, 4);
+    case GL_BOOL:
+      return set('b', 1, 1);
+    case GL_BOOL_VEC2:
+      return set('b', 1, 2);
+    case GL_BOOL_VEC3:
+      return set('b', 1, 3);
+    case GL_BOOL_VEC4:
+      return set('b', 1, 4);
+    case GL_FLOAT_MAT2:
+      return set('f', 2, 2);
+    case GL_FLOAT_MAT3:
+      return set('f', 3, 3);
+    case GL_FLOAT_MAT4:
+      return set('f', 4, 4);
+    case GL_FLOAT_MAT2x3:
+      return set('f', 2, 3);
+    case GL_FLOAT_MAT2x4:
+      return set('f', 2, 4);
+    case GL_FLOAT_MAT3x2:
+      return set('f', 3, 2);
+    case GL_FLOAT_MAT3x4:
+      return set('f', 3, 4);
+    case GL_FLOAT_MAT4x2:
+      return set('f', 4, 2);
+    case GL_FLOAT_MAT4x3:
+      return set('f', 4, 3);
     default:
       if (is_sampler(t)) return set('i', 1, 1);
       return false;
@@ -137,30 +181,49 @@ std::vector<To> convert(const std::vector<From>& v) {
 std::string set_uniform(GLint loc, const UniformType& t, const GlslUniform& u) {
   const int given = int(!u.f.empty()) + int(!u.i.empty()) + int(!u.u.empty());
   if (given != 1)
-    return given == 0 ? "no values (f, i and u are all empty)"
-                      : "values in more than one of f, i and u";
+    return given == 0 ? "no values (f, i and u are all empty)" : "values in more than one of f, i and u";
   const size_t n = !u.f.empty() ? u.f.size() : !u.i.empty() ? u.i.size() : u.u.size();
   const size_t comps = size_t(t.cols * t.rows);
   if (n % comps != 0)
-    return std::to_string(n) + " values are not a multiple of the type's " +
-           std::to_string(comps) + " components";
+    return std::to_string(n) + " values are not a multiple of the type's " + std::to_string(comps) +
+           " components";
   const GLsizei count = GLsizei(n / comps);
 
   if (t.cols > 1) {  // matrices: column-major, as given
-    const std::vector<float> f =
-        !u.f.empty() ? u.f : !u.i.empty() ? convert<float>(u.i) : convert<float>(u.u);
+    const std::vector<float> f = !u.f.empty()   ? u.f
+                                 : !u.i.empty() ? convert<float>(u.i)
+                                                : convert<float>(u.u);
     const float* p = f.data();
     switch (t.cols * 10 + t.rows) {
-      case 22: glUniformMatrix2fv(loc, count, GL_FALSE, p); break;
-      case 33: glUniformMatrix3fv(loc, count, GL_FALSE, p); break;
-      case 44: glUniformMatrix4fv(loc, count, GL_FALSE, p); break;
-      case 23: glUniformMatrix2x3fv(loc, count, GL_FALSE, p); break;
-      case 24: glUniformMatrix2x4fv(loc, count, GL_FALSE, p); break;
-      case 32: glUniformMatrix3x2fv(loc, count, GL_FALSE, p); break;
-      case 34: glUniformMatrix3x4fv(loc, count, GL_FALSE, p); break;
-      case 42: glUniformMatrix4x2fv(loc, count, GL_FALSE, p); break;
-      case 43: glUniformMatrix4x3fv(loc, count, GL_FALSE, p); break;
-      default: return "internal: bad matrix shape";
+      case 22:
+        glUniformMatrix2fv(loc, count, GL_FALSE, p);
+        break;
+      case 33:
+        glUniformMatrix3fv(loc, count, GL_FALSE, p);
+        break;
+      case 44:
+        glUniformMatrix4fv(loc, count, GL_FALSE, p);
+        break;
+      case 23:
+        glUniformMatrix2x3fv(loc, count, GL_FALSE, p);
+        break;
+      case 24:
+        glUniformMatrix2x4fv(loc, count, GL_FALSE, p);
+        break;
+      case 32:
+        glUniformMatrix3x2fv(loc, count, GL_FALSE, p);
+        break;
+      case 34:
+        glUniformMatrix3x4fv(loc, count, GL_FALSE, p);
+        break;
+      case 42:
+        glUniformMatrix4x2fv(loc, count, GL_FALSE, p);
+        break;
+      case 43:
+        glUniformMatrix4x3fv(loc, count, GL_FALSE, p);
+        break;
+      default:
+        return "internal: bad matrix shape";
     }
     return "";
   }
@@ -171,35 +234,62 @@ std::string set_uniform(GLint loc, const UniformType& t, const GlslUniform& u) {
   if (variant == 'b') variant = !u.f.empty() ? 'f' : !u.i.empty() ? 'i' : 'u';
   switch (variant) {
     case 'f': {
-      const std::vector<float> v =
-          !u.f.empty() ? u.f : !u.i.empty() ? convert<float>(u.i) : convert<float>(u.u);
+      const std::vector<float> v = !u.f.empty()   ? u.f
+                                   : !u.i.empty() ? convert<float>(u.i)
+                                                  : convert<float>(u.u);
       switch (t.rows) {
-        case 1: glUniform1fv(loc, count, v.data()); break;
-        case 2: glUniform2fv(loc, count, v.data()); break;
-        case 3: glUniform3fv(loc, count, v.data()); break;
-        default: glUniform4fv(loc, count, v.data()); break;
+        case 1:
+          glUniform1fv(loc, count, v.data());
+          break;
+        case 2:
+          glUniform2fv(loc, count, v.data());
+          break;
+        case 3:
+          glUniform3fv(loc, count, v.data());
+          break;
+        default:
+          glUniform4fv(loc, count, v.data());
+          break;
       }
       break;
     }
     case 'i': {
-      const std::vector<GLint> v =
-          !u.i.empty() ? u.i : !u.f.empty() ? convert<GLint>(u.f) : convert<GLint>(u.u);
+      const std::vector<GLint> v = !u.i.empty()   ? u.i
+                                   : !u.f.empty() ? convert<GLint>(u.f)
+                                                  : convert<GLint>(u.u);
       switch (t.rows) {
-        case 1: glUniform1iv(loc, count, v.data()); break;
-        case 2: glUniform2iv(loc, count, v.data()); break;
-        case 3: glUniform3iv(loc, count, v.data()); break;
-        default: glUniform4iv(loc, count, v.data()); break;
+        case 1:
+          glUniform1iv(loc, count, v.data());
+          break;
+        case 2:
+          glUniform2iv(loc, count, v.data());
+          break;
+        case 3:
+          glUniform3iv(loc, count, v.data());
+          break;
+        default:
+          glUniform4iv(loc, count, v.data());
+          break;
       }
       break;
     }
     default: {
-      const std::vector<GLuint> v =
-          !u.u.empty() ? u.u : !u.i.empty() ? convert<GLuint>(u.i) : convert<GLuint>(u.f);
+      const std::vector<GLuint> v = !u.u.empty()   ? u.u
+                                    : !u.i.empty() ? convert<GLuint>(u.i)
+                                                   : convert<GLuint>(u.f);
       switch (t.rows) {
-        case 1: glUniform1uiv(loc, count, v.data()); break;
-        case 2: glUniform2uiv(loc, count, v.data()); break;
-        case 3: glUniform3uiv(loc, count, v.data()); break;
-        default: glUniform4uiv(loc, count, v.data()); break;
+        case 1:
+          glUniform1uiv(loc, count, v.data());
+          break;
+        case 2:
+          glUniform2uiv(loc, count, v.data());
+          break;
+        case 3:
+          glUniform3uiv(loc, count, v.data());
+          break;
+        default:
+          glUniform4uiv(loc, count, v.data());
+          break;
       }
       break;
     }
@@ -210,8 +300,7 @@ std::string set_uniform(GLint loc, const UniformType& t, const GlslUniform& u) {
 // The type of the active uniform that `name` (as glGetUniformLocation takes it) falls in.
 // glGetActiveUniform lists arrays of basic types once, as "k[0]", but arrays of structs
 // member by member ("lights[1].pos"), so "k", "k[2]" and "lights[1].pos" are all found.
-bool find_uniform_type(const std::map<std::string, GLenum>& active, const std::string& name,
-                       GLenum* type) {
+bool find_uniform_type(const std::map<std::string, GLenum>& active, const std::string& name, GLenum* type) {
   auto try_name = [&](const std::string& n) {
     auto it = active.find(n);
     if (it == active.end()) return false;
@@ -237,13 +326,32 @@ bool is_depth_format(GLenum f) {
 // 0: not an integer format; 'i': signed; 'u': unsigned.
 char integer_format(GLenum f) {
   switch (f) {
-    case GL_R8I: case GL_R16I: case GL_R32I: case GL_RG8I: case GL_RG16I: case GL_RG32I:
-    case GL_RGB8I: case GL_RGB16I: case GL_RGB32I: case GL_RGBA8I: case GL_RGBA16I:
+    case GL_R8I:
+    case GL_R16I:
+    case GL_R32I:
+    case GL_RG8I:
+    case GL_RG16I:
+    case GL_RG32I:
+    case GL_RGB8I:
+    case GL_RGB16I:
+    case GL_RGB32I:
+    case GL_RGBA8I:
+    case GL_RGBA16I:
     case GL_RGBA32I:
       return 'i';
-    case GL_R8UI: case GL_R16UI: case GL_R32UI: case GL_RG8UI: case GL_RG16UI:
-    case GL_RG32UI: case GL_RGB8UI: case GL_RGB16UI: case GL_RGB32UI: case GL_RGBA8UI:
-    case GL_RGBA16UI: case GL_RGBA32UI: case GL_RGB10_A2UI:
+    case GL_R8UI:
+    case GL_R16UI:
+    case GL_R32UI:
+    case GL_RG8UI:
+    case GL_RG16UI:
+    case GL_RG32UI:
+    case GL_RGB8UI:
+    case GL_RGB16UI:
+    case GL_RGB32UI:
+    case GL_RGBA8UI:
+    case GL_RGBA16UI:
+    case GL_RGBA32UI:
+    case GL_RGB10_A2UI:
       return 'u';
     default:
       return 0;
@@ -253,16 +361,26 @@ char integer_format(GLenum f) {
 // A matrix attribute type as columns x rows; {1, 1} for anything else.
 std::pair<int, int> attribute_matrix_shape(GLenum t) {
   switch (t) {
-    case GL_FLOAT_MAT2: return {2, 2};
-    case GL_FLOAT_MAT3: return {3, 3};
-    case GL_FLOAT_MAT4: return {4, 4};
-    case GL_FLOAT_MAT2x3: return {2, 3};
-    case GL_FLOAT_MAT2x4: return {2, 4};
-    case GL_FLOAT_MAT3x2: return {3, 2};
-    case GL_FLOAT_MAT3x4: return {3, 4};
-    case GL_FLOAT_MAT4x2: return {4, 2};
-    case GL_FLOAT_MAT4x3: return {4, 3};
-    default: return {1, 1};
+    case GL_FLOAT_MAT2:
+      return {2, 2};
+    case GL_FLOAT_MAT3:
+      return {3, 3};
+    case GL_FLOAT_MAT4:
+      return {4, 4};
+    case GL_FLOAT_MAT2x3:
+      return {2, 3};
+    case GL_FLOAT_MAT2x4:
+      return {2, 4};
+    case GL_FLOAT_MAT3x2:
+      return {3, 2};
+    case GL_FLOAT_MAT3x4:
+      return {3, 4};
+    case GL_FLOAT_MAT4x2:
+      return {4, 2};
+    case GL_FLOAT_MAT4x3:
+      return {4, 3};
+    default:
+      return {1, 1};
   }
 }
 
@@ -354,8 +472,8 @@ struct GlslOracle::Impl {
       debug_pending.clear();
       return;
     }
-    std::string msg = std::string("GL error after ") + what + ": " + gl_error_name(first) +
-                      " (" + hex(first) + ")";
+    std::string msg =
+        std::string("GL error after ") + what + ": " + gl_error_name(first) + " (" + hex(first) + ")";
     // Drain any further queued errors so the next check starts clean.
     for (int i = 0; i < 16; ++i) {
       const GLenum e = glGetError();
@@ -501,8 +619,7 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
   if (!spec.modelview.empty() && spec.modelview.size() != 16)
     problems.add("modelview has " + std::to_string(spec.modelview.size()) + " floats, not 16");
   if (!spec.projection.empty() && spec.projection.size() != 16)
-    problems.add("projection has " + std::to_string(spec.projection.size()) +
-                 " floats, not 16");
+    problems.add("projection has " + std::to_string(spec.projection.size()) + " floats, not 16");
   if (problems.any) return finish();
 
   // Context state. Set in full every run (not only once) so that nothing a run or a caller
@@ -559,16 +676,14 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
     obj.color_rbs.push_back(rb);
     glBindRenderbuffer(GL_RENDERBUFFER, rb);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, W, H);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_RENDERBUFFER,
-                              rb);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_RENDERBUFFER, rb);
     draw_buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
   }
   if (spec.depth) {
     glGenRenderbuffers(1, &obj.depth_rb);
     glBindRenderbuffer(GL_RENDERBUFFER, obj.depth_rb);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, W, H);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                              obj.depth_rb);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, obj.depth_rb);
   }
   if (draw_buffers.empty()) {
     glDrawBuffer(GL_NONE);
@@ -599,17 +714,24 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
     }
     size_t texels = 0;
     switch (t.target) {
-      case GL_TEXTURE_1D: texels = size_t(t.width); break;
-      case GL_TEXTURE_2D: case GL_TEXTURE_RECTANGLE: case GL_TEXTURE_1D_ARRAY:
+      case GL_TEXTURE_1D:
+        texels = size_t(t.width);
+        break;
+      case GL_TEXTURE_2D:
+      case GL_TEXTURE_RECTANGLE:
+      case GL_TEXTURE_1D_ARRAY:
         texels = size_t(t.width) * size_t(t.height);
         break;
-      case GL_TEXTURE_3D: case GL_TEXTURE_2D_ARRAY:
+      case GL_TEXTURE_3D:
+      case GL_TEXTURE_2D_ARRAY:
         texels = size_t(t.width) * size_t(t.height) * size_t(t.depth);
         break;
       case GL_TEXTURE_CUBE_MAP:
         texels = size_t(t.width) * size_t(t.height) * 6;
         break;
-      case GL_TEXTURE_BUFFER: texels = size_t(t.width); break;
+      case GL_TEXTURE_BUFFER:
+        texels = size_t(t.width);
+        break;
       default:
         problems.add(tname + "unsupported target " + hex(t.target));
         continue;
@@ -652,10 +774,13 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
       case GL_TEXTURE_1D:
         glTexImage1D(t.target, 0, ifmt, t.width, 0, format, type, pixels);
         break;
-      case GL_TEXTURE_2D: case GL_TEXTURE_RECTANGLE: case GL_TEXTURE_1D_ARRAY:
+      case GL_TEXTURE_2D:
+      case GL_TEXTURE_RECTANGLE:
+      case GL_TEXTURE_1D_ARRAY:
         glTexImage2D(t.target, 0, ifmt, t.width, t.height, 0, format, type, pixels);
         break;
-      case GL_TEXTURE_3D: case GL_TEXTURE_2D_ARRAY:
+      case GL_TEXTURE_3D:
+      case GL_TEXTURE_2D_ARRAY:
         glTexImage3D(t.target, 0, ifmt, t.width, t.height, t.depth, 0, format, type, pixels);
         break;
       case GL_TEXTURE_BUFFER: {
@@ -673,9 +798,8 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
         // GL_TEXTURE_CUBE_MAP_POSITIVE_X + i runs +X -X +Y -Y +Z -Z, the order of the data.
         const size_t face_bytes = size_t(t.width) * size_t(t.height) * texel_bytes;
         for (int face = 0; face < 6; ++face)
-          glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, ifmt, t.width,
-                       t.height, 0, format, type,
-                       static_cast<const char*>(pixels) + face_bytes * size_t(face));
+          glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, ifmt, t.width, t.height, 0, format,
+                       type, static_cast<const char*>(pixels) + face_bytes * size_t(face));
         break;
       }
     }
@@ -700,8 +824,7 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
       glTexParameteri(t.target, GL_TEXTURE_WRAP_T, GLint(t.wrap));
       glTexParameteri(t.target, GL_TEXTURE_WRAP_R, GLint(t.wrap));
     }
-    glTexParameteri(t.target, GL_TEXTURE_COMPARE_MODE,
-                    t.compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+    glTexParameteri(t.target, GL_TEXTURE_COMPARE_MODE, t.compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
     glTexParameteri(t.target, GL_TEXTURE_COMPARE_FUNC, GLint(t.compare_func));
     check_gl(("uploading " + tname.substr(0, tname.size() - 2)).c_str(), &problems);
   }
@@ -720,8 +843,7 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
       GLsizei len = 0;
       GLint size = 0;
       GLenum type = 0;
-      glGetActiveUniform(obj.program, GLuint(i), GLsizei(buf.size()), &len, &size, &type,
-                         buf.data());
+      glGetActiveUniform(obj.program, GLuint(i), GLsizei(buf.size()), &len, &size, &type, buf.data());
       active_uniforms[std::string(buf.data(), size_t(len))] = type;
     }
   }
@@ -758,8 +880,7 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
       GLsizei len = 0;
       GLint size = 0;
       GLenum type = 0;
-      glGetActiveAttrib(obj.program, GLuint(i), GLsizei(buf.size()), &len, &size, &type,
-                        buf.data());
+      glGetActiveAttrib(obj.program, GLuint(i), GLsizei(buf.size()), &len, &size, &type, buf.data());
       active_attribs[std::string(buf.data(), size_t(len))] = type;
     }
   }
@@ -779,8 +900,8 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
     const size_t have = a.integer ? a.idata.size() : a.data.size();
     if (have < size_t(spec.count) * size_t(comps)) {
       problems.add(aname + "has " + std::to_string(have) + " values, needs " +
-                   std::to_string(size_t(spec.count) * size_t(comps)) + " (" +
-                   std::to_string(spec.count) + " vertices x " + std::to_string(comps) + ")");
+                   std::to_string(size_t(spec.count) * size_t(comps)) + " (" + std::to_string(spec.count) +
+                   " vertices x " + std::to_string(comps) + ")");
       continue;
     }
     GLuint vbo = 0;
@@ -788,11 +909,10 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
     obj.vbos.push_back(vbo);
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
     if (a.integer)
-      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(a.idata.size() * sizeof(int32_t)),
-                   a.idata.data(), GL_STATIC_DRAW);
-    else
-      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(a.data.size() * sizeof(float)), a.data.data(),
+      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(a.idata.size() * sizeof(int32_t)), a.idata.data(),
                    GL_STATIC_DRAW);
+    else
+      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(a.data.size() * sizeof(float)), a.data.data(), GL_STATIC_DRAW);
 
     if (builtin) {
       // Compatibility built-in inputs go through the fixed-function arrays.
@@ -824,8 +944,8 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
         if (!need(comps == 1, "1")) continue;
         glFogCoordPointer(GL_FLOAT, 0, nullptr);
         glEnableClientState(GL_FOG_COORD_ARRAY);
-      } else if (a.name.rfind("gl_MultiTexCoord", 0) == 0 && a.name.size() == 17 &&
-                 a.name[16] >= '0' && a.name[16] < char('0' + max_tex_coords)) {
+      } else if (a.name.rfind("gl_MultiTexCoord", 0) == 0 && a.name.size() == 17 && a.name[16] >= '0' &&
+                 a.name[16] < char('0' + max_tex_coords)) {
         if (!need(comps >= 1 && comps <= 4, "1..4")) continue;
         glClientActiveTexture(GLenum(GL_TEXTURE0 + (a.name[16] - '0')));
         glTexCoordPointer(comps, GL_FLOAT, 0, nullptr);
@@ -841,8 +961,7 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
 
     // A matrix attribute fills one location per column.
     const auto it = active_attribs.find(a.name);
-    const auto [cols, rows] =
-        attribute_matrix_shape(it == active_attribs.end() ? GL_FLOAT_VEC4 : it->second);
+    const auto [cols, rows] = attribute_matrix_shape(it == active_attribs.end() ? GL_FLOAT_VEC4 : it->second);
     if (cols > 1) {
       if (a.integer || comps != cols * rows) {
         problems.add(aname + "a mat" + std::to_string(cols) + "x" + std::to_string(rows) +
@@ -850,8 +969,7 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
         continue;
       }
       for (int c = 0; c < cols; ++c) {
-        glVertexAttribPointer(GLuint(loc + c), rows, GL_FLOAT, GL_FALSE,
-                              GLsizei(comps * sizeof(float)),
+        glVertexAttribPointer(GLuint(loc + c), rows, GL_FLOAT, GL_FALSE, GLsizei(comps * sizeof(float)),
                               reinterpret_cast<const void*>(size_t(c * rows) * sizeof(float)));
         glEnableVertexAttribArray(GLuint(loc + c));
       }

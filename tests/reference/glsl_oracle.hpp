@@ -82,16 +82,16 @@ struct GlslTexture {
                             // level 0, rows bottom-up, then layers / slices / faces
   bool mipmaps = false;     // true: glGenerateMipmap; false: GL_TEXTURE_MAX_LEVEL = 0
   uint32_t min_filter = 0x2600, mag_filter = 0x2600;  // GL_NEAREST
-  uint32_t wrap = 0x2901;  // GL_REPEAT, for S, T and R. A RECTANGLE texture cannot repeat:
-                           // there GL_REPEAT / GL_MIRRORED_REPEAT leave its CLAMP_TO_EDGE.
-  bool compare = false;    // GL_TEXTURE_COMPARE_MODE = GL_COMPARE_REF_TO_TEXTURE
+  uint32_t wrap = 0x2901;          // GL_REPEAT, for S, T and R. A RECTANGLE texture cannot repeat:
+                                   // there GL_REPEAT / GL_MIRRORED_REPEAT leave its CLAMP_TO_EDGE.
+  bool compare = false;            // GL_TEXTURE_COMPARE_MODE = GL_COMPARE_REF_TO_TEXTURE
   uint32_t compare_func = 0x0203;  // GL_LEQUAL
 };
 
 struct GlslDrawSpec {
-  std::string vertex, fragment;          // GLSL source, any #version 110..330 (+ compatibility)
+  std::string vertex, fragment;  // GLSL source, any #version 110..330 (+ compatibility)
   std::vector<GlslAttribute> attributes;
-  std::vector<GlslUniform> uniforms;     // set in this order after glUseProgram
+  std::vector<GlslUniform> uniforms;  // set in this order after glUseProgram
   std::vector<GlslTexture> textures;
   // Uniform blocks: the named block reads binding point i (glUniformBlockBinding), which holds
   // a buffer of these bytes (glBindBufferBase). Blocks not found are skipped.
@@ -100,11 +100,11 @@ struct GlslDrawSpec {
     std::vector<uint8_t> data;
   };
   std::vector<UniformBuffer> uniform_buffers;
-  uint32_t primitive = 0x0004;           // GL_TRIANGLES; glDrawArrays(primitive, 0, count)
+  uint32_t primitive = 0x0004;  // GL_TRIANGLES; glDrawArrays(primitive, 0, count)
   int count = 0;
   int width = 16, height = 16;
-  int outputs = 1;  // RGBA32F colour attachments 0..outputs-1, glDrawBuffers on all (0..8)
-  bool depth = false;  // a GL_DEPTH_COMPONENT32F attachment, cleared to 1, GL_LESS test
+  int outputs = 1;                // RGBA32F colour attachments 0..outputs-1, glDrawBuffers on all (0..8)
+  bool depth = false;             // a GL_DEPTH_COMPONENT32F attachment, cleared to 1, GL_LESS test
   float clear[4] = {0, 0, 0, 0};  // every colour attachment is cleared to this
   // Fixed-function state for the compatibility built-ins (gl_ModelViewMatrix, ...):
   // 16 floats, column-major, loaded with glLoadMatrixf when non-empty (else identity).

@@ -68,9 +68,7 @@ class GlslOracleTest : public ::testing::Test {
   }
   static void TearDownTestSuite() { oracle_.reset(); }
 
-  void SetUp() override {
-    ASSERT_NE(oracle_, nullptr) << "GLSL oracle unavailable: " << why_;
-  }
+  void SetUp() override { ASSERT_NE(oracle_, nullptr) << "GLSL oracle unavailable: " << why_; }
 
   static GlslResult run(const GlslDrawSpec& spec) { return oracle_->run(spec); }
 
@@ -81,11 +79,11 @@ class GlslOracleTest : public ::testing::Test {
 std::unique_ptr<GlslOracle> GlslOracleTest::oracle_;
 std::string GlslOracleTest::why_;
 
-#define EXPECT_RAN(r)                                         \
-  do {                                                        \
-    EXPECT_TRUE((r).compiled) << (r).log;                     \
-    EXPECT_TRUE((r).linked) << (r).log;                       \
-    ASSERT_TRUE((r).ok) << (r).log;                           \
+#define EXPECT_RAN(r)                     \
+  do {                                    \
+    EXPECT_TRUE((r).compiled) << (r).log; \
+    EXPECT_TRUE((r).linked) << (r).log;   \
+    ASSERT_TRUE((r).ok) << (r).log;       \
   } while (0)
 
 TEST_F(GlslOracleTest, CompatibilityContextOnLlvmpipe) {
@@ -248,10 +246,8 @@ TEST_F(GlslOracleTest, TwoOutputsUnclamped) {
     for (int x = 0; x < 8; ++x) {
       if (x == y) continue;  // on the diagonal edge: the tie-break rule decides
       const bool in = x > y;
-      EXPECT_EQ(px(r.outputs[0], 8, x, y), in ? (Px{1, 2, 3, 4}) : (Px{-2, 0, 0, 7}))
-          << x << "," << y;
-      EXPECT_EQ(px(r.outputs[1], 8, x, y), in ? (Px{-1, 0.5f, 100, -8}) : (Px{-2, 0, 0, 7}))
-          << x << "," << y;
+      EXPECT_EQ(px(r.outputs[0], 8, x, y), in ? (Px{1, 2, 3, 4}) : (Px{-2, 0, 0, 7})) << x << "," << y;
+      EXPECT_EQ(px(r.outputs[1], 8, x, y), in ? (Px{-1, 0.5f, 100, -8}) : (Px{-2, 0, 0, 7})) << x << "," << y;
     }
 }
 
@@ -313,8 +309,7 @@ TEST_F(GlslOracleTest, CompileAndLinkErrorsAreReported) {
 TEST_F(GlslOracleTest, TexelFetchRgba32fExact) {
   const int TW = 4, TH = 3;
   auto texel = [](int x, int y) -> Px {
-    return {float(x) + 0.125f, float(y) * 1000.5f - 3.0f, 0.3f * float(x + 1),
-            -1e-3f * float(y + 1)};
+    return {float(x) + 0.125f, float(y) * 1000.5f - 3.0f, 0.3f * float(x + 1), -1e-3f * float(y + 1)};
   };
   GlslTexture t;
   t.unit = 2;
@@ -444,8 +439,7 @@ TEST_F(GlslOracleTest, DepthAttachmentLess) {
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 8; ++x) {
       const bool left = x < 4;
-      EXPECT_EQ(px(r.outputs[0], 8, x, y), left ? (Px{0, 1, 0, 1}) : (Px{1, 0, 0, 1}))
-          << x << "," << y;
+      EXPECT_EQ(px(r.outputs[0], 8, x, y), left ? (Px{0, 1, 0, 1}) : (Px{1, 0, 0, 1})) << x << "," << y;
       EXPECT_FLOAT_EQ(r.depth[size_t(y * 8 + x)], left ? 0.5f : 0.75f) << x << "," << y;
     }
 }
@@ -505,8 +499,11 @@ TEST_F(GlslOracleTest, TextureTargetsLayout) {
   s.width = s.height = 4;
   s.outputs = 5;
   s.textures = {t1, t3, ta, tr, tc};
-  s.uniforms = {{"t1", {}, {0}, {}}, {"t3", {}, {1}, {}}, {"ta", {}, {2}, {}},
-                {"tr", {}, {3}, {}}, {"tc", {3.0f + 1.0f}, {}, {}}};  // f converted to int
+  s.uniforms = {{"t1", {}, {0}, {}},
+                {"t3", {}, {1}, {}},
+                {"ta", {}, {2}, {}},
+                {"tr", {}, {3}, {}},
+                {"tc", {3.0f + 1.0f}, {}, {}}};  // f converted to int
   const GlslResult r = run(s);
   EXPECT_RAN(r);
   ASSERT_EQ(r.outputs.size(), 5u);
@@ -514,10 +511,8 @@ TEST_F(GlslOracleTest, TextureTargetsLayout) {
     for (int x = 0; x < 4; ++x) {
       const float fx = float(x), fy = float(y);
       EXPECT_EQ(px(r.outputs[0], 4, x, y), (Px{1, fx, 0, 0})) << x << "," << y;
-      EXPECT_EQ(px(r.outputs[1], 4, x, y), (Px{2, fx, float(y % 2), float(y % 3)}))
-          << x << "," << y;
-      EXPECT_EQ(px(r.outputs[2], 4, x, y), (Px{3, fx, float(y % 2), float(y % 3)}))
-          << x << "," << y;
+      EXPECT_EQ(px(r.outputs[1], 4, x, y), (Px{2, fx, float(y % 2), float(y % 3)})) << x << "," << y;
+      EXPECT_EQ(px(r.outputs[2], 4, x, y), (Px{3, fx, float(y % 2), float(y % 3)})) << x << "," << y;
       EXPECT_EQ(px(r.outputs[3], 4, x, y), (Px{4, fx, fy, 0})) << x << "," << y;
       EXPECT_EQ(px(r.outputs[4], 4, x, y), (Px{5, float((x + y) % 6), 0, 0})) << x << "," << y;
     }

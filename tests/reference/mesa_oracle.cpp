@@ -22,12 +22,11 @@ namespace {
 using tessel::gl::gl_error_name;
 using tessel::gl::hex;
 
-
 void check_gl(const char* what) {
   GLenum first = glGetError();
   if (first == GL_NO_ERROR) return;
-  std::string msg = std::string("MesaOracle: GL error after ") + what + ": " +
-                    gl_error_name(first) + " (" + hex(first) + ")";
+  std::string msg = std::string("MesaOracle: GL error after ") + what + ": " + gl_error_name(first) + " (" +
+                    hex(first) + ")";
   // Drain any further queued errors so the next check starts clean.
   for (int i = 0; i < 16; ++i) {
     GLenum e = glGetError();
@@ -59,8 +58,7 @@ GLuint build_program(bool flat, bool textured) {
       "uniform sampler2D u_tex;\n"
       "layout(location = 0) out vec4 o_color;\n"
       "void main() {\n" +
-      (textured ? "  o_color = v_color * texture(u_tex, v_uv);\n" : "  o_color = v_color;\n") +
-      "}\n";
+      (textured ? "  o_color = v_color * texture(u_tex, v_uv);\n" : "  o_color = v_color;\n") + "}\n";
   GLuint prog = 0;
   try {
     prog = tessel::gl::build_program(vs, fs);
@@ -146,13 +144,11 @@ std::unique_ptr<MesaOracle> MesaOracle::create(int width, int height, std::strin
     glGenRenderbuffers(1, &impl->color_rb);
     glBindRenderbuffer(GL_RENDERBUFFER, impl->color_rb);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                              impl->color_rb);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, impl->color_rb);
     glGenRenderbuffers(1, &impl->depth_rb);
     glBindRenderbuffer(GL_RENDERBUFFER, impl->depth_rb);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                              impl->depth_rb);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, impl->depth_rb);
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
       *why = "MesaOracle: framebuffer incomplete (" + hex(status) + ")";
@@ -224,15 +220,13 @@ void MesaOracle::clear(const float rgba[4], float depth, int stencil) {
 }
 
 void MesaOracle::set_texture(const OracleTexture& t) {
-  if (t.width <= 0 || t.height <= 0 ||
-      t.rgba.size() < size_t(t.width) * size_t(t.height) * 4)
+  if (t.width <= 0 || t.height <= 0 || t.rgba.size() < size_t(t.width) * size_t(t.height) * 4)
     throw std::runtime_error("MesaOracle::set_texture: bad size / too little data");
   impl_->make_current();
   if (!impl_->texture) glGenTextures(1, &impl_->texture);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, impl_->texture);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-               t.rgba.data());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, t.rgba.data());
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
   if (t.mipmaps) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 1000);
@@ -259,26 +253,44 @@ void MesaOracle::draw(const std::vector<OracleVertex>& verts, const OracleState&
     glViewport(0, 0, width_, height_);
   glDepthRange(0.0, 1.0);
 
-  if (s.depth_test) glEnable(GL_DEPTH_TEST); else glDisable(GL_DEPTH_TEST);
+  if (s.depth_test)
+    glEnable(GL_DEPTH_TEST);
+  else
+    glDisable(GL_DEPTH_TEST);
   glDepthFunc(s.depth_func);
   glDepthMask(s.depth_write ? GL_TRUE : GL_FALSE);
 
-  if (s.cull) glEnable(GL_CULL_FACE); else glDisable(GL_CULL_FACE);
+  if (s.cull)
+    glEnable(GL_CULL_FACE);
+  else
+    glDisable(GL_CULL_FACE);
   glCullFace(s.cull_face);
   glFrontFace(s.front_face);
 
-  if (s.blend) glEnable(GL_BLEND); else glDisable(GL_BLEND);
+  if (s.blend)
+    glEnable(GL_BLEND);
+  else
+    glDisable(GL_BLEND);
   glBlendFuncSeparate(s.blend_src_rgb, s.blend_dst_rgb, s.blend_src_a, s.blend_dst_a);
   glBlendEquationSeparate(s.blend_eq_rgb, s.blend_eq_a);
   glBlendColor(s.blend_color[0], s.blend_color[1], s.blend_color[2], s.blend_color[3]);
 
-  if (s.scissor) glEnable(GL_SCISSOR_TEST); else glDisable(GL_SCISSOR_TEST);
+  if (s.scissor)
+    glEnable(GL_SCISSOR_TEST);
+  else
+    glDisable(GL_SCISSOR_TEST);
   glScissor(s.scissor_box[0], s.scissor_box[1], s.scissor_box[2], s.scissor_box[3]);
 
-  if (s.polygon_offset) glEnable(GL_POLYGON_OFFSET_FILL); else glDisable(GL_POLYGON_OFFSET_FILL);
+  if (s.polygon_offset)
+    glEnable(GL_POLYGON_OFFSET_FILL);
+  else
+    glDisable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(s.offset_factor, s.offset_units);
 
-  if (s.stencil_test) glEnable(GL_STENCIL_TEST); else glDisable(GL_STENCIL_TEST);
+  if (s.stencil_test)
+    glEnable(GL_STENCIL_TEST);
+  else
+    glDisable(GL_STENCIL_TEST);
   glStencilFunc(s.stencil_func, s.stencil_ref, s.stencil_mask);
   glStencilOp(s.stencil_fail, s.stencil_zfail, s.stencil_zpass);
   glStencilMask(s.stencil_write_mask);
@@ -296,8 +308,8 @@ void MesaOracle::draw(const std::vector<OracleVertex>& verts, const OracleState&
   glBindTexture(GL_TEXTURE_2D, s.textured ? impl_->texture : 0);
 
   if (!verts.empty()) {
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(verts.size() * sizeof(OracleVertex)),
-                 verts.data(), GL_STREAM_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(verts.size() * sizeof(OracleVertex)), verts.data(),
+                 GL_STREAM_DRAW);
     glDrawArrays(s.primitive, 0, GLsizei(verts.size()));
   }
   check_gl("glDrawArrays");

@@ -24,10 +24,10 @@ struct OracleVertex {
 
 struct OracleTexture {
   int width = 0, height = 0;
-  std::vector<uint8_t> rgba;  // level 0, width*height*4 bytes, rows bottom-up (t = 0 first)
-  bool mipmaps = false;       // true: glGenerateMipmap (Mesa's box-filter chain);
-                              // false: GL_TEXTURE_MAX_LEVEL = 0, so the texture is complete
-                              // even with a *_MIPMAP_* min filter (which then uses level 0).
+  std::vector<uint8_t> rgba;     // level 0, width*height*4 bytes, rows bottom-up (t = 0 first)
+  bool mipmaps = false;          // true: glGenerateMipmap (Mesa's box-filter chain);
+                                 // false: GL_TEXTURE_MAX_LEVEL = 0, so the texture is complete
+                                 // even with a *_MIPMAP_* min filter (which then uses level 0).
   uint32_t min_filter = 0x2600;  // GL_NEAREST
   uint32_t mag_filter = 0x2600;  // GL_NEAREST
   uint32_t wrap_s = 0x2901;      // GL_REPEAT
@@ -43,18 +43,18 @@ struct OracleState {
   uint32_t cull_face = 0x0405;   // GL_BACK
   uint32_t front_face = 0x0901;  // GL_CCW
   bool blend = false;
-  uint32_t blend_src_rgb = 1, blend_dst_rgb = 0;  // GL_ONE, GL_ZERO
-  uint32_t blend_src_a = 1, blend_dst_a = 0;      // GL_ONE, GL_ZERO
+  uint32_t blend_src_rgb = 1, blend_dst_rgb = 0;        // GL_ONE, GL_ZERO
+  uint32_t blend_src_a = 1, blend_dst_a = 0;            // GL_ONE, GL_ZERO
   uint32_t blend_eq_rgb = 0x8006, blend_eq_a = 0x8006;  // GL_FUNC_ADD
   float blend_color[4] = {0, 0, 0, 0};
   bool scissor = false;
   int scissor_box[4] = {0, 0, 0, 0};  // x, y, w, h
   bool polygon_offset = false;        // enables GL_POLYGON_OFFSET_FILL
   float offset_factor = 0, offset_units = 0;
-  bool textured = false;  // colour = vertex colour * texture(uv)   (texture unit 0)
-  bool flat = false;      // colour is 'flat' (provoking vertex = last, the GL default)
-  uint32_t primitive = 0x0004;  // GL_TRIANGLES; also GL_LINES, GL_LINE_STRIP, GL_POINTS,
-                                // GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN (any glDrawArrays mode)
+  bool textured = false;                 // colour = vertex colour * texture(uv)   (texture unit 0)
+  bool flat = false;                     // colour is 'flat' (provoking vertex = last, the GL default)
+  uint32_t primitive = 0x0004;           // GL_TRIANGLES; also GL_LINES, GL_LINE_STRIP, GL_POINTS,
+                                         // GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN (any glDrawArrays mode)
   float point_size = 1, line_width = 1;  // gl_PointSize (GL_PROGRAM_POINT_SIZE), glLineWidth
   bool stencil_test = false;
   uint32_t stencil_func = 0x0207;  // GL_ALWAYS
@@ -77,8 +77,8 @@ class MesaOracle {
 
   int width() const { return width_; }
   int height() const { return height_; }
-  std::string renderer() const;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
-  std::string version() const;   // GL_VERSION, e.g. "4.5 (Core Profile) Mesa 22.3.6"
+  std::string renderer() const;      // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+  std::string version() const;       // GL_VERSION, e.g. "4.5 (Core Profile) Mesa 22.3.6"
   std::string egl_platform() const;  // which EGL display route worked, e.g. "surfaceless"
 
   // Full-target clear of colour, depth and stencil (scissor off, all write masks on).
@@ -89,9 +89,9 @@ class MesaOracle {
   // `state`. Throws std::runtime_error on a GL error.
   void draw(const std::vector<OracleVertex>& verts, const OracleState& state);
 
-  std::vector<uint8_t> read_rgba8();   // width*height*4, rows bottom-up (glReadPixels)
-  std::vector<float> read_depth();     // width*height floats in [0,1] (GL_FLOAT readback)
-  std::vector<uint8_t> read_stencil(); // width*height
+  std::vector<uint8_t> read_rgba8();    // width*height*4, rows bottom-up (glReadPixels)
+  std::vector<float> read_depth();      // width*height floats in [0,1] (GL_FLOAT readback)
+  std::vector<uint8_t> read_stencil();  // width*height
   // Exact stored depth: width*height 24-bit unsigned normalized integers (0..0xFFFFFF),
   // read as GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8. Handy for exact comparisons.
   std::vector<uint32_t> read_depth24();

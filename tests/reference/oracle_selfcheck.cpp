@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -37,9 +37,7 @@ RGBA pixel(const std::vector<uint8_t>& img, int w, int x, int y) {
 }
 
 OracleVertex V(float x, float y, float z, float w, RGBA c, float u = 0, float v = 0) {
-  return OracleVertex{{x, y, z, w},
-                      {c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, c[3] / 255.0f},
-                      {u, v}};
+  return OracleVertex{{x, y, z, w}, {c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, c[3] / 255.0f}, {u, v}};
 }
 
 class OracleTest : public ::testing::Test {
@@ -56,8 +54,8 @@ TEST_F(OracleTest, IsLlvmpipe) {
   auto o = make(4, 4);
   ASSERT_NE(o, nullptr);
   EXPECT_NE(o->renderer().find("llvmpipe"), std::string::npos) << o->renderer();
-  std::printf("GL_RENDERER = %s\nGL_VERSION  = %s\nEGL platform = %s\n",
-              o->renderer().c_str(), o->version().c_str(), o->egl_platform().c_str());
+  std::printf("GL_RENDERER = %s\nGL_VERSION  = %s\nEGL platform = %s\n", o->renderer().c_str(),
+              o->version().c_str(), o->egl_platform().c_str());
 }
 
 TEST_F(OracleTest, CreateFailsCleanlyOnBadSize) {
@@ -76,8 +74,7 @@ TEST_F(OracleTest, TriangleColourClearAndDepth) {
   o->clear(clear, 1.0f, 0);
 
   const RGBA red = {255, 0, 0, 255};
-  std::vector<OracleVertex> tri = {V(-2, -2, 1, 2, red), V(2, -2, 1, 2, red),
-                                   V(-2, 2, 1, 2, red)};
+  std::vector<OracleVertex> tri = {V(-2, -2, 1, 2, red), V(2, -2, 1, 2, red), V(-2, 2, 1, 2, red)};
   OracleState st;
   st.depth_test = true;
   o->draw(tri, st);
@@ -87,7 +84,7 @@ TEST_F(OracleTest, TriangleColourClearAndDepth) {
   // Inside: pixel centres with x + y + 1 < 16. Outside: x + y + 1 > 16.
   EXPECT_EQ(pixel(img, W, 0, 0), red);
   EXPECT_EQ(pixel(img, W, 2, 3), red);
-  EXPECT_EQ(pixel(img, W, 14, 0), red);   // rows are bottom-up: y = 0 is the bottom row
+  EXPECT_EQ(pixel(img, W, 14, 0), red);  // rows are bottom-up: y = 0 is the bottom row
   EXPECT_EQ(pixel(img, W, 0, 14), red);
   EXPECT_EQ(pixel(img, W, 13, 13), (RGBA{0, 0, 255, 255}));
   EXPECT_EQ(pixel(img, W, 15, 15), (RGBA{0, 0, 255, 255}));
@@ -158,9 +155,11 @@ TEST_F(OracleTest, StencilReplaceThenEqual) {
   st2.stencil_test = true;
   st2.stencil_func = kGL_EQUAL;
   st2.stencil_ref = 5;
-  o->draw({V(-1, -1, 0, 1, white), V(1, -1, 0, 1, white), V(-1, 1, 0, 1, white),
-           V(1, 1, 0, 1, white)},
-          [&] { OracleState t = st2; t.primitive = kGL_TRIANGLE_STRIP; return t; }());
+  o->draw({V(-1, -1, 0, 1, white), V(1, -1, 0, 1, white), V(-1, 1, 0, 1, white), V(1, 1, 0, 1, white)}, [&] {
+    OracleState t = st2;
+    t.primitive = kGL_TRIANGLE_STRIP;
+    return t;
+  }());
   const auto img = o->read_rgba8();
   EXPECT_EQ(pixel(img, W, 2, 3), white);
   EXPECT_EQ(pixel(img, W, 13, 13), (RGBA{0, 0, 0, 255}));
@@ -175,8 +174,8 @@ TEST_F(OracleTest, NearestTextureQuadrants) {
   OracleTexture t;
   t.width = 2;
   t.height = 2;
-  t.rgba = {255, 0, 0, 255,   0, 255, 0, 255,      // row 0 (bottom): red, green
-            0, 0, 255, 255,   255, 255, 255, 255};  // row 1 (top): blue, white
+  t.rgba = {255, 0, 0,   255, 0,   255, 0,   255,   // row 0 (bottom): red, green
+            0,   0, 255, 255, 255, 255, 255, 255};  // row 1 (top): blue, white
   t.min_filter = t.mag_filter = kGL_NEAREST;
   t.wrap_s = t.wrap_t = kGL_CLAMP_TO_EDGE;
   o->set_texture(t);
@@ -186,8 +185,8 @@ TEST_F(OracleTest, NearestTextureQuadrants) {
   OracleState st;
   st.textured = true;
   st.primitive = kGL_TRIANGLE_STRIP;
-  o->draw({V(-1, -1, 0, 1, white, 0, 0), V(1, -1, 0, 1, white, 1, 0),
-           V(-1, 1, 0, 1, white, 0, 1), V(1, 1, 0, 1, white, 1, 1)},
+  o->draw({V(-1, -1, 0, 1, white, 0, 0), V(1, -1, 0, 1, white, 1, 0), V(-1, 1, 0, 1, white, 0, 1),
+           V(1, 1, 0, 1, white, 1, 1)},
           st);
   const auto img = o->read_rgba8();
   for (int y = 0; y < H; ++y) {
@@ -248,12 +247,16 @@ TEST_F(OracleTest, ViewportAndScissor) {
   const RGBA white = {255, 255, 255, 255};
   OracleState st;
   st.primitive = kGL_TRIANGLE_STRIP;
-  st.viewport[0] = 4; st.viewport[1] = 0; st.viewport[2] = 8; st.viewport[3] = 16;
+  st.viewport[0] = 4;
+  st.viewport[1] = 0;
+  st.viewport[2] = 8;
+  st.viewport[3] = 16;
   st.scissor = true;
-  st.scissor_box[0] = 0; st.scissor_box[1] = 0; st.scissor_box[2] = 16; st.scissor_box[3] = 8;
-  o->draw({V(-1, -1, 0, 1, white), V(1, -1, 0, 1, white), V(-1, 1, 0, 1, white),
-           V(1, 1, 0, 1, white)},
-          st);
+  st.scissor_box[0] = 0;
+  st.scissor_box[1] = 0;
+  st.scissor_box[2] = 16;
+  st.scissor_box[3] = 8;
+  o->draw({V(-1, -1, 0, 1, white), V(1, -1, 0, 1, white), V(-1, 1, 0, 1, white), V(1, 1, 0, 1, white)}, st);
   const auto img = o->read_rgba8();
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {

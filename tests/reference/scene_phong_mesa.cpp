@@ -141,10 +141,14 @@ std::vector<uint8_t> render_mesa(const Scene& s, float shine_scale) {
     glBindVertexArray(vao);
     glGenBuffers(2, buf);
     glBindBuffer(GL_ARRAY_BUFFER, buf[0]);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(m.vertices.size() * sizeof(VertexData)), m.vertices.data(), GL_STATIC_DRAW);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(VertexData), reinterpret_cast<void*>(offsetof(VertexData, pos)));
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(VertexData), reinterpret_cast<void*>(offsetof(VertexData, norm)));
-    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(VertexData), reinterpret_cast<void*>(offsetof(VertexData, tex)));
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(m.vertices.size() * sizeof(VertexData)), m.vertices.data(),
+                 GL_STATIC_DRAW);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(VertexData),
+                          reinterpret_cast<void*>(offsetof(VertexData, pos)));
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(VertexData),
+                          reinterpret_cast<void*>(offsetof(VertexData, norm)));
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(VertexData),
+                          reinterpret_cast<void*>(offsetof(VertexData, tex)));
     for (GLuint a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buf[1]);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(idx.size() * 4), idx.data(), GL_STATIC_DRAW);
@@ -156,7 +160,8 @@ std::vector<uint8_t> render_mesa(const Scene& s, float shine_scale) {
       glActiveTexture(GL_TEXTURE0);
       glBindTexture(GL_TEXTURE_2D, tex);
       glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width(), t.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, level0.data());
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width(), t.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                   level0.data());
       glGenerateMipmap(GL_TEXTURE_2D);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -172,8 +177,10 @@ std::vector<uint8_t> render_mesa(const Scene& s, float shine_scale) {
     glUniform3fv(loc("emission"), 1, glm::value_ptr(mat.emission));
     glUniform1f(loc("shine"), mat.shininess);
     glUniform1i(loc("textured"), mat.texture ? 1 : 0);
-    if (o->cull_back_faces) glEnable(GL_CULL_FACE);
-    else glDisable(GL_CULL_FACE);
+    if (o->cull_back_faces)
+      glEnable(GL_CULL_FACE);
+    else
+      glDisable(GL_CULL_FACE);
     glDrawElements(GL_TRIANGLES, GLsizei(idx.size()), GL_UNSIGNED_INT, nullptr);
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     glDeleteTextures(1, &tex);
@@ -200,8 +207,8 @@ TEST(SceneMesa, BlinnPhongAgreesWithAGlslPortOnLlvmpipe) {
   const std::vector<uint8_t> tessel_px = render_tessel(s);
   const std::vector<uint8_t> mesa_px = render_mesa(s, 1.0f);
   const test::ImageDiff d = test::diff_rgba(tessel_px, mesa_px);
-  std::printf("Blinn-Phong scene %dx%d: %d of %d pixels differ by more than 2/255 (max %d/255)\n", W, H, d.differing,
-              d.total, d.max_diff);
+  std::printf("Blinn-Phong scene %dx%d: %d of %d pixels differ by more than 2/255 (max %d/255)\n", W, H,
+              d.differing, d.total, d.max_diff);
   if (!d.passes()) {
     gpu::write_png("scene_phong_tessel.png", W, H, 4, tessel_px.data());
     gpu::write_png("scene_phong_mesa.png", W, H, 4, mesa_px.data());

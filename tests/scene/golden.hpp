@@ -52,8 +52,9 @@ inline void expect_golden(const std::string& name, const gpu::Texture2D& color) 
   ASSERT_EQ(want.height, color.height()) << name;
   const ImageDiff d = diff_rgba(got, want.pixels);
   if (!d.passes()) gpu::write_png(name + ".got.png", color.width(), color.height(), 4, got.data());
-  EXPECT_TRUE(d.passes()) << name << ": " << d.differing << " of " << d.total << " pixels differ by more than 2/255 (max "
-                          << d.max_diff << "); this run's image is " << name << ".got.png in the test's folder";
+  EXPECT_TRUE(d.passes()) << name << ": " << d.differing << " of " << d.total
+                          << " pixels differ by more than 2/255 (max " << d.max_diff
+                          << "); this run's image is " << name << ".got.png in the test's folder";
 }
 
 }  // namespace tessel::test

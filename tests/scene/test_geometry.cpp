@@ -48,7 +48,8 @@ void expect_watertight(const Mesh& m, const char* name) {
     const auto it = directed.find({e.second, e.first});
     if (n != 1 || it == directed.end() || it->second != 1) ++bad;
   }
-  EXPECT_EQ(bad, 0) << name << ": " << bad << " of " << directed.size() << " edges are not shared exactly once each way";
+  EXPECT_EQ(bad, 0) << name << ": " << bad << " of " << directed.size()
+                    << " edges are not shared exactly once each way";
   EXPECT_GT(directed.size(), 0u) << name;
   (void)degenerate;
 }
@@ -65,14 +66,16 @@ void expect_facing_normals(const Mesh& m, const char* name) {
     if (glm::dot(g, a.norm + b.norm + c.norm) <= 0.0f) ++wrong;
   }
   EXPECT_GT(counted, 0) << name;
-  EXPECT_EQ(wrong, 0) << name << ": " << wrong << " of " << counted << " triangles face away from their normals";
+  EXPECT_EQ(wrong, 0) << name << ": " << wrong << " of " << counted
+                      << " triangles face away from their normals";
 }
 
 }  // namespace
 
 TEST(Turns, ExactAtQuarterAndWholeTurns) {
-  const float quarters[][3] = {{0.0f, 0.0f, 1.0f}, {0.25f, 1.0f, 0.0f}, {0.5f, 0.0f, -1.0f}, {0.75f, -1.0f, 0.0f},
-                               {1.0f, 0.0f, 1.0f}, {-0.25f, -1.0f, 0.0f}, {3.5f, 0.0f, -1.0f}};
+  const float quarters[][3] = {{0.0f, 0.0f, 1.0f},   {0.25f, 1.0f, 0.0f}, {0.5f, 0.0f, -1.0f},
+                               {0.75f, -1.0f, 0.0f}, {1.0f, 0.0f, 1.0f},  {-0.25f, -1.0f, 0.0f},
+                               {3.5f, 0.0f, -1.0f}};
   for (const auto& q : quarters) {
     float s, c;
     sincos_turns(q[0], s, c);
@@ -125,7 +128,8 @@ TEST(ParamSurface, TrianglesFaceTheirNormals) {
   expect_facing_normals(Cylinder().create(4, 16), "cylinder");
   expect_facing_normals(Cone().create(4, 16), "cone");
   expect_facing_normals(Plane(3.0f).create(3, 3), "plane");
-  expect_facing_normals(FunctionSurface([](float u, float v) { return glm::vec3(u, v, u * v); }).create(5, 5), "function");
+  expect_facing_normals(FunctionSurface([](float u, float v) { return glm::vec3(u, v, u * v); }).create(5, 5),
+                        "function");
 }
 
 TEST(ParamSurface, AnalyticNormalsMatchFiniteDifferences) {
@@ -149,7 +153,8 @@ TEST(ParamSurface, AnalyticNormalsMatchFiniteDifferences) {
       surfaces[s]->eval(u, v - h, d, unused);
       const glm::dvec3 fd = glm::normalize(glm::cross(glm::dvec3(a - b), glm::dvec3(c - d)));
       // Same line (the orientation is the surface's convention; create() orders the strips).
-      EXPECT_GT(std::fabs(glm::dot(fd, glm::normalize(glm::dvec3(n)))), 0.9999) << "surface " << s << " at " << u << ", " << v;
+      EXPECT_GT(std::fabs(glm::dot(fd, glm::normalize(glm::dvec3(n)))), 0.9999)
+          << "surface " << s << " at " << u << ", " << v;
     }
   }
 }
@@ -161,7 +166,8 @@ TEST(ParamSurface, CreateNormalizesAndSphereNormalsAreRadial) {
     EXPECT_NEAR(glm::length(v.norm), 1.0f, 1e-6f);
     EXPECT_LT(glm::length(v.norm - (v.pos - c) / 2.0f), 1e-5f);
   }
-  for (const VertexData& v : Flag(2.0f, 1.0f, 0.5f, 4.0f).create(5, 40).vertices) EXPECT_NEAR(glm::length(v.norm), 1.0f, 1e-6f);
+  for (const VertexData& v : Flag(2.0f, 1.0f, 0.5f, 4.0f).create(5, 40).vertices)
+    EXPECT_NEAR(glm::length(v.norm), 1.0f, 1e-6f);
 }
 
 TEST(ParamSurface, BadSizesAndBadMeshesAreErrors) {
@@ -260,7 +266,8 @@ TEST(Transform, NormalsUseTheInverseTranspose) {
   t.scale = glm::vec3(4.0f, 1.0f, 1.0f);
   t.axis = glm::vec3(0, 0, 1);
   t.angle = 0.3f;
-  const glm::vec3 tangent = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f)), normal = glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f));
+  const glm::vec3 tangent = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f)),
+                  normal = glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f));
   const glm::vec3 wt = glm::mat3(t.world()) * tangent;
   const glm::vec3 good = t.normal_matrix() * normal;
   const glm::vec3 naive = glm::mat3(t.world()) * normal;

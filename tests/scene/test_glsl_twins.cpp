@@ -67,14 +67,16 @@ TEST_P(Twins, GlslRendersTheShippedScenesAsTheCppShaders) {
     const auto twin = render(path, shading, true, 320, 180);
     ASSERT_EQ(cpp.size(), twin.size());
     const double pct = percent_over(cpp, twin, 1);
-    EXPECT_LE(pct, 0.01) << shading << " on " << path << ": " << pct << "% of the pixels differ by more than 1/255";
+    EXPECT_LE(pct, 0.01) << shading << " on " << path << ": " << pct
+                         << "% of the pixels differ by more than 1/255";
     worst = std::max(worst, pct);
     ++compared;
   }
-  std::printf("%s: %d scenes compared, at most %.4f%% of a scene's pixels more than 1/255 apart\n", shading.c_str(),
-              compared, worst);
+  std::printf("%s: %d scenes compared, at most %.4f%% of a scene's pixels more than 1/255 apart\n",
+              shading.c_str(), compared, worst);
 }
-INSTANTIATE_TEST_SUITE_P(Scene, Twins, ::testing::Values("gouraud", "phong", "normalmap", "npr", "depth", "normal"));
+INSTANTIATE_TEST_SUITE_P(Scene, Twins,
+                         ::testing::Values("gouraud", "phong", "normalmap", "npr", "depth", "normal"));
 
 // The tolerance catches a real difference: the NPR twin against the C++ Phong shader.
 TEST(TwinsTolerance, CatchesADifferentShader) {

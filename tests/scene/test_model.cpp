@@ -52,12 +52,14 @@ TEST(Obj, ComputedNormalsKeepCreasesAndSmoothCurves) {
   const Model m = load_obj(std::string(TESSEL_SCENES_DIR) + "/models/house.obj");
   const Mesh& roof = m.parts[1].mesh;
   for (size_t i = 0; i < roof.indices.size(); i += 3) {
-    const VertexData &a = roof.vertices[roof.indices[i]], &b = roof.vertices[roof.indices[i + 1]], &c = roof.vertices[roof.indices[i + 2]];
+    const VertexData &a = roof.vertices[roof.indices[i]], &b = roof.vertices[roof.indices[i + 1]],
+                     &c = roof.vertices[roof.indices[i + 2]];
     const glm::vec3 n = glm::normalize(glm::cross(b.pos - a.pos, c.pos - a.pos));
     for (const VertexData* v : {&a, &b, &c}) EXPECT_GT(glm::dot(v->norm, n), 0.999f);
   }
   // A gently curved strip (faces 10 degrees apart) is smoothed: the shared edge gets the mean.
-  const Model strip = parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 2 0.176\nv 1 2 0.176\nf 1 2 4 3\nf 3 4 6 5\n", "", "strip");
+  const Model strip = parse_obj(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 2 0.176\nv 1 2 0.176\nf 1 2 4 3\nf 3 4 6 5\n", "", "strip");
   const Mesh& s = strip.parts[0].mesh;
   int between = 0;
   for (const VertexData& v : s.vertices)
@@ -70,19 +72,24 @@ TEST(Obj, ComputedNormalsKeepCreasesAndSmoothCurves) {
 }
 
 TEST(Obj, BadFilesAreErrorsNamingWhatAndWhere) {
-  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n").find("bad.obj: shape '', face 1: vertex index 99 is outside the 3 vertices"),
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n")
+                .find("bad.obj: shape '', face 1: vertex index 99 is outside the 3 vertices"),
             std::string::npos)
       << error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n");
-  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//4\n").find("normal index 4 is outside the 1 normals"),
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//4\n")
+                .find("normal index 4 is outside the 1 normals"),
             std::string::npos);
-  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/3 2/1 3/1\nvt 0 0\n").find("texture coordinate index 3"), std::string::npos)
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/3 2/1 3/1\nvt 0 0\n").find("texture coordinate index 3"),
+            std::string::npos)
       << error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/3 2/1 3/1\nvt 0 0\n");
-  EXPECT_NE(error_of("v 0 0 1e40\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").find("vertex 1 is not a finite number"), std::string::npos)
+  EXPECT_NE(error_of("v 0 0 1e40\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").find("vertex 1 is not a finite number"),
+            std::string::npos)
       << error_of("v 0 0 1e40\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   EXPECT_NE(error_of("").find("bad.obj: no triangles"), std::string::npos);
   EXPECT_NE(error_of("# nothing\nv 1 2 3\n").find("no triangles"), std::string::npos);
-  EXPECT_NE(error_of("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n", "newmtl m\nmap_Kd /no/such.png\n").find(
-                "bad.obj: material 'm': map_Kd: load_image: cannot open '/no/such.png'"),
+  EXPECT_NE(error_of("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n",
+                     "newmtl m\nmap_Kd /no/such.png\n")
+                .find("bad.obj: material 'm': map_Kd: load_image: cannot open '/no/such.png'"),
             std::string::npos);
   try {
     load_obj("/no/such/model.obj");
@@ -132,7 +139,8 @@ TEST(Gltf, NodeHierarchyMaterialsAndTexture) {
   // turned 45 degrees about y) lands at (1.5, 1.4, 0.4).
   bool found = false;
   for (const Model::Part& p : m.parts)
-    for (const VertexData& v : p.mesh.vertices) found = found || glm::length(v.pos - glm::vec3(1.5f, 1.4f, 0.4f)) < 1e-5f;
+    for (const VertexData& v : p.mesh.vertices)
+      found = found || glm::length(v.pos - glm::vec3(1.5f, 1.4f, 0.4f)) < 1e-5f;
   EXPECT_TRUE(found);
   // Every part, the mirrored one too, has its triangles facing its normals.
   for (const Model::Part& p : m.parts) {
@@ -163,11 +171,14 @@ TEST(Gltf, BadFilesAreErrorsNamingWhatAndWhere) {
   EXPECT_NE(gltf_error("").find("bad.gltf: "), std::string::npos);
   EXPECT_NE(gltf_error("glTF\x02\0\0\0garbage").find("bad.gltf: "), std::string::npos);
   // An accessor whose elements run past its view.
-  EXPECT_NE(gltf_error(replaced(good, "\"count\": 18,\n   \"type\": \"VEC2\"", "\"count\": 40,\n   \"type\": \"VEC2\"")).find(
-                "TEXCOORD_0: accessor 2 reads past the end of its buffer"),
+  EXPECT_NE(gltf_error(replaced(good, "\"count\": 18,\n   \"type\": \"VEC2\"",
+                                "\"count\": 40,\n   \"type\": \"VEC2\""))
+                .find("TEXCOORD_0: accessor 2 reads past the end of its buffer"),
             std::string::npos)
-      << gltf_error(replaced(good, "\"count\": 18,\n   \"type\": \"VEC2\"", "\"count\": 40,\n   \"type\": \"VEC2\""));
-  EXPECT_NE(gltf_error(replaced(good, "\"POSITION\": 0,", "\"POSITIONS\": 0,")).find("mesh 'stone' primitive 0 has no POSITION"),
+      << gltf_error(replaced(good, "\"count\": 18,\n   \"type\": \"VEC2\"",
+                             "\"count\": 40,\n   \"type\": \"VEC2\""));
+  EXPECT_NE(gltf_error(replaced(good, "\"POSITION\": 0,", "\"POSITIONS\": 0,"))
+                .find("mesh 'stone' primitive 0 has no POSITION"),
             std::string::npos);
   EXPECT_NE(gltf_error(replaced(good, "\"mesh\": 0,", "\"mesh\": 7,")).find("bad.gltf: "), std::string::npos);
   try {

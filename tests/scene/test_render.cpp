@@ -3,14 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <map>
-#include <string>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "golden.hpp"
-#include "test_scenes.hpp"
 #include "tessel/gpu/framebuffer.hpp"
 #include "tessel/scene/shaders.hpp"
+#include "test_scenes.hpp"
 
 using namespace tessel;
 using namespace tessel::scene;
@@ -118,7 +118,8 @@ TEST(SceneRender, NprHasFlatBandsAndAnOutline) {
   s.objects.pop_back();  // no floor
   const std::vector<uint8_t> px = render(s, 240, 120, 1);
   std::map<uint32_t, int> colours;
-  for (size_t i = 0; i < px.size(); i += 4) ++colours[uint32_t(px[i]) | uint32_t(px[i + 1]) << 8 | uint32_t(px[i + 2]) << 16];
+  for (size_t i = 0; i < px.size(); i += 4)
+    ++colours[uint32_t(px[i]) | uint32_t(px[i + 1]) << 8 | uint32_t(px[i + 2]) << 16];
   EXPECT_EQ(colours.size(), 4u);  // background, black, kd, kd / 2
   EXPECT_GT(colours[0], 50);      // the outline
 }
@@ -133,7 +134,8 @@ TEST(SceneRender, NormalAndDepthViewsEncodeWhatTheySay) {
   int top_y = -1, top_x = 0;
   for (int y = 119; y >= 0 && top_y < 0; --y)
     for (int x = 0; x < 240; ++x)
-      if (px[(size_t(y) * 240 + size_t(x)) * 4 + 3] == 255 && px[(size_t(y) * 240 + size_t(x)) * 4 + 1] > 200) {
+      if (px[(size_t(y) * 240 + size_t(x)) * 4 + 3] == 255 &&
+          px[(size_t(y) * 240 + size_t(x)) * 4 + 1] > 200) {
         top_y = y;
         top_x = x;
         break;
@@ -149,8 +151,10 @@ TEST(SceneRender, NormalAndDepthViewsEncodeWhatTheySay) {
   for (int y = 0; y < 120; ++y)
     for (int x = 0; x < 240; ++x) {
       const int g = grey_at(x, y);
-      if (x < 120) left = std::max(left, g);
-      else right = std::max(right, g);
+      if (x < 120)
+        left = std::max(left, g);
+      else
+        right = std::max(right, g);
     }
   EXPECT_GT(left, right + 10);
 }
@@ -181,9 +185,11 @@ Scene shadow_scene(bool with_cylinder, ShadowSettings settings) {
   grey->kd = glm::vec3(0.8f);
   grey->ka = glm::vec3(0.8f);
   grey->ks = glm::vec3(0.0f);
-  s.add(std::make_unique<Object>(std::make_shared<Geometry>(Plane(12.0f).create(4, 4), "floor"), grey, phong));
+  s.add(
+      std::make_unique<Object>(std::make_shared<Geometry>(Plane(12.0f).create(4, 4), "floor"), grey, phong));
   if (with_cylinder) {
-    auto& c = s.add(std::make_unique<Object>(std::make_shared<Geometry>(Cylinder(0.4f, 2.0f).create(1, 32), "post"), grey, phong));
+    auto& c = s.add(std::make_unique<Object>(
+        std::make_shared<Geometry>(Cylinder(0.4f, 2.0f).create(1, 32), "post"), grey, phong));
     c.cull_back_faces = false;
   }
   return s;
@@ -196,7 +202,8 @@ struct Shot {
   // The red channel where the world point p lands.
   int at(const glm::vec3& p) const {
     const glm::vec4 c = VP * glm::vec4(p, 1.0f);
-    const int x = int((c.x / c.w * 0.5f + 0.5f) * float(size)), y = int((c.y / c.w * 0.5f + 0.5f) * float(size));
+    const int x = int((c.x / c.w * 0.5f + 0.5f) * float(size)),
+              y = int((c.y / c.w * 0.5f + 0.5f) * float(size));
     return px[(size_t(y) * size_t(size) + size_t(x)) * 4];
   }
 };
@@ -226,7 +233,7 @@ TEST(Shadows, NoAcneOnAnUnoccludedFloor) {
 // constant bias far too large detaches it (which this test must notice).
 TEST(Shadows, TheShadowTouchesTheFootOfTheCaster) {
   const Shot s = shoot(shadow_scene(true, {}));
-  const int lit = s.at({-3.0f, 0.0f, 2.5f});       // open floor
+  const int lit = s.at({-3.0f, 0.0f, 2.5f});        // open floor
   const int near_foot = s.at({-0.5f, 0.0f, 0.0f});  // 0.1 past the post's radius, toward the shadow
   const int mid = s.at({-1.2f, 0.0f, 0.0f});
   EXPECT_LT(near_foot, lit * 6 / 10) << "lit " << lit << ", beside the foot " << near_foot;
@@ -287,7 +294,8 @@ TEST(Shadows, APointLightCastsShadowsInEveryDirection) {
     const glm::vec3 dir = glm::normalize(p);
     const int before = shot.at(dir * 1.2f), behind = shot.at(dir * 3.2f);
     EXPECT_GT(before, 40) << "between the light and the post at " << p.x << ", " << p.z;
-    EXPECT_LT(behind, before / 3) << "behind the post at " << p.x << ", " << p.z << ": " << behind << " vs " << before;
+    EXPECT_LT(behind, before / 3) << "behind the post at " << p.x << ", " << p.z << ": " << behind << " vs "
+                                  << before;
   }
 }
 
@@ -303,8 +311,9 @@ TEST(Shadows, PcfContinuesAcrossCubeFaceEdges) {
   s.lights[0].wLightPos = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
   s.camera.eye = glm::vec3(1.4f, 6.0f, 0.01f);
   s.camera.lookat = glm::vec3(1.4f, 0.0f, 0.0f);
-  auto& post = s.add(std::make_unique<Object>(std::make_shared<Geometry>(Cylinder(0.15f, 0.8f).create(1, 24), "post"),
-                                              s.objects[0]->material, std::make_shared<PhongShader>()));
+  auto& post =
+      s.add(std::make_unique<Object>(std::make_shared<Geometry>(Cylinder(0.15f, 0.8f).create(1, 24), "post"),
+                                     s.objects[0]->material, std::make_shared<PhongShader>()));
   post.transform.position = glm::vec3(0.5f, 0.0f, 0.0f);
   post.cull_back_faces = false;
   const Shot shot = shoot(s);
@@ -317,7 +326,8 @@ TEST(Shadows, PcfContinuesAcrossCubeFaceEdges) {
       where = x;
     }
   EXPECT_GT(lit, 60);
-  EXPECT_LT(brightest, lit / 3) << "in the shadow at x = " << where << ": " << brightest << ", lit floor " << lit;
+  EXPECT_LT(brightest, lit / 3) << "in the shadow at x = " << where << ": " << brightest << ", lit floor "
+                                << lit;
   // Nor may a lit floor darken along the edges: the taps' compares there are the receiver's.
   s.objects.pop_back();
   const std::vector<uint8_t> open = render(s, 256, 256, 2);
@@ -363,7 +373,8 @@ TEST(Deferred, AgreesWithForwardPhong) {
   const std::vector<uint8_t> b = render(def, 240, 120, 2);
   const test::ImageDiff d = test::diff_rgba(a, b);
   EXPECT_TRUE(d.passes()) << d.differing << " of " << d.total << " pixels differ (max " << d.max_diff << ")";
-  std::printf("deferred vs forward: %d of %d pixels differ by more than 2/255 (max %d)\n", d.differing, d.total, d.max_diff);
+  std::printf("deferred vs forward: %d of %d pixels differ by more than 2/255 (max %d)\n", d.differing,
+              d.total, d.max_diff);
   // Identical for any thread count, and it takes more lights than forward shading.
   EXPECT_EQ(b, render(def, 240, 120, 1));
   def.lights.resize(40, def.lights[1]);
@@ -389,8 +400,8 @@ TEST(NormalMap, TheMapTurnsTheSurfaceTheWayItSays) {
     t->generate_mipmaps();
     return t;
   };
-  auto centre_value = [&](std::shared_ptr<const Geometry> g, glm::vec3 light_dir, std::shared_ptr<gpu::Texture2D> map,
-                          std::shared_ptr<const Shader> shader) {
+  auto centre_value = [&](std::shared_ptr<const Geometry> g, glm::vec3 light_dir,
+                          std::shared_ptr<gpu::Texture2D> map, std::shared_ptr<const Shader> shader) {
     Scene s;
     s.camera.eye = glm::vec3(0.0f, 0.0f, 4.0f);
     s.camera.lookat = glm::vec3(0.0f);
@@ -410,7 +421,8 @@ TEST(NormalMap, TheMapTurnsTheSurfaceTheWayItSays) {
   const auto nm = std::make_shared<NormalMapShader>();
   const auto lean = constant_map({0.6f, 0.0f, 0.8f}), flat = constant_map({0.0f, 0.0f, 1.0f});
   // A square facing the camera: the plane turned up toward +z, so u runs along +x.
-  auto plane = std::make_shared<Object>(std::make_shared<Geometry>(Plane(2.0f).create(2, 2), "p"), nullptr, nm);
+  auto plane =
+      std::make_shared<Object>(std::make_shared<Geometry>(Plane(2.0f).create(2, 2), "p"), nullptr, nm);
   Mesh square = Plane(2.0f).create(2, 2);
   for (VertexData& v : square.vertices) {
     v.pos = glm::vec3(v.pos.x, -v.pos.z, 0.0f);
@@ -420,7 +432,8 @@ TEST(NormalMap, TheMapTurnsTheSurfaceTheWayItSays) {
   const glm::vec3 from_u(1.0f, 0.0f, 0.6f), from_minus_u(-1.0f, 0.0f, 0.6f);
   EXPECT_GT(centre_value(sq, from_u, lean, nm), centre_value(sq, from_u, flat, nm) + 20);
   EXPECT_LT(centre_value(sq, from_minus_u, lean, nm), centre_value(sq, from_minus_u, flat, nm) - 20);
-  EXPECT_NEAR(centre_value(sq, from_u, flat, nm), centre_value(sq, from_u, flat, std::make_shared<PhongShader>()), 1);
+  EXPECT_NEAR(centre_value(sq, from_u, flat, nm),
+              centre_value(sq, from_u, flat, std::make_shared<PhongShader>()), 1);
   // The sphere's front point (u = 0.25, v = 0.5 faces +y in the notes' parametrization, so
   // turn it toward the camera): d(position)/du there is the direction to light from.
   Transform t;
@@ -437,7 +450,8 @@ TEST(NormalMap, TheMapTurnsTheSurfaceTheWayItSays) {
   const glm::vec3 du = glm::normalize(glm::vec3(t.M() * glm::vec4(a - b, 0.0f)));
   const auto sphere = std::make_shared<Geometry>(ball, "ball");
   const glm::vec3 light = du + glm::vec3(0.0f, 0.0f, 0.6f);
-  EXPECT_GT(centre_value(sphere, light, lean, nm), centre_value(sphere, light, flat, nm) + 20) << "du " << du.x << " " << du.y << " " << du.z;
+  EXPECT_GT(centre_value(sphere, light, lean, nm), centre_value(sphere, light, flat, nm) + 20)
+      << "du " << du.x << " " << du.y << " " << du.z;
   (void)plane;
 }
 
@@ -534,12 +548,14 @@ TEST(SceneRender, PhongSpecularModelNarrowsTheHighlightAndDeferredAgrees) {
     return n;
   };
   const std::vector<uint8_t> phong = render(with_model(Specular::Phong, 60.0f, false), 240, 120, 2);
-  const int hb = highlight(render(with_model(Specular::Blinn, 60.0f, false), 240, 120, 2)), hp = highlight(phong);
+  const int hb = highlight(render(with_model(Specular::Blinn, 60.0f, false), 240, 120, 2)),
+            hp = highlight(phong);
   const int hq = highlight(render(with_model(Specular::Phong, 15.0f, false), 240, 120, 2));
   EXPECT_GT(hp, 5);
   EXPECT_GT(hb, 2 * hp) << "Blinn " << hb << " highlight pixels, Phong " << hp;
   EXPECT_GT(hq, hb * 2 / 3) << "Blinn at 60: " << hb << ", Phong at 15: " << hq;
   EXPECT_LT(hq, hb * 3 / 2) << "Blinn at 60: " << hb << ", Phong at 15: " << hq;
-  const test::ImageDiff d = test::diff_rgba(phong, render(with_model(Specular::Phong, 60.0f, true), 240, 120, 2));
+  const test::ImageDiff d =
+      test::diff_rgba(phong, render(with_model(Specular::Phong, 60.0f, true), 240, 120, 2));
   EXPECT_TRUE(d.passes()) << d.differing << " of " << d.total << " pixels differ (max " << d.max_diff << ")";
 }

@@ -61,7 +61,8 @@ TEST(SceneFile, FieldsReachTheScene) {
                  "material": "m", "shader": "gouraud", "position": [1, 0, 0], "scale": 2,
                  "rotation": {"axis": [0, 0, 1], "angle": 90}, "animate": {"spin": 180, "velocity": [0, 1, 0]}},
                 {"parent": "a", "geometry": {"type": "plane"}}]
-  })", "fields.json");
+  })",
+                            "fields.json");
   EXPECT_EQ(f.render.width, 320);
   EXPECT_EQ(f.render.threads, 2);
   EXPECT_FLOAT_EQ(f.render.fps, 24.0f);
@@ -86,7 +87,8 @@ TEST(SceneFile, FieldsReachTheScene) {
 
 TEST(SceneFile, TheFlagWaves) {
   SceneFile f = parse_scene(R"({"objects": [{"geometry": {"type": "flag", "rows": 2, "columns": 8},
-                                "animate": {"flag_phase": 1.5}}]})", "flag.json");
+                                "animate": {"flag_phase": 1.5}}]})",
+                            "flag.json");
   const auto before = f.scene.objects[0]->geometry;
   f.scene.Animate(0.25f);
   const auto after = f.scene.objects[0]->geometry;
@@ -96,31 +98,45 @@ TEST(SceneFile, TheFlagWaves) {
 
 TEST(SceneFile, MistakesNameTheFileThePlaceAndTheProblem) {
   const std::pair<const char*, const char*> cases[] = {
-      {"{\n  \"objects\": [\n    {\"geometry\": }\n  ]\n}", "bad.json:3:18: syntax error while parsing value"},
+      {"{\n  \"objects\": [\n    {\"geometry\": }\n  ]\n}",
+       "bad.json:3:18: syntax error while parsing value"},
       {"[1, 2]", "bad.json: scene: expected an object"},
-      {"444e440000000088", "bad.json: number overflow parsing '444e440000000088'"},  // found by fuzz_scene_file
+      {"444e440000000088",
+       "bad.json: number overflow parsing '444e440000000088'"},  // found by fuzz_scene_file
       {R"({"objectz": []})", "bad.json: scene: unknown field 'objectz'"},
-      {R"({"objects": [{"geometry": {"type": "cubee"}}]})", "bad.json: scene.objects[0].geometry.type: unknown surface 'cubee'"},
+      {R"({"objects": [{"geometry": {"type": "cubee"}}]})",
+       "bad.json: scene.objects[0].geometry.type: unknown surface 'cubee'"},
       {R"({"objects": [{"material": "x"}]})", "bad.json: scene.objects[0]: missing field 'geometry'"},
-      {R"({"objects": [{"geometry": {"type": "sphere"}, "material": "gold"}]})", "scene.objects[0].material: no material named 'gold'"},
-      {R"({"objects": [{"geometry": {"type": "sphere", "rows": 0}}]})", "scene.objects[0].geometry.rows: value 0 is outside 1 .. 4096"},
-      {R"({"objects": [{"geometry": {"type": "sphere", "radius": "big"}}]})", "scene.objects[0].geometry.radius: expected a number"},
-      {R"({"objects": [{"geometry": {"type": "sphere"}, "position": [1, 2]}]})", "scene.objects[0].position: expected an array of 3 numbers"},
-      {R"({"objects": [{"geometry": {"type": "sphere"}, "shader": "toon"}]})", "scene.objects[0].shader: unknown shader 'toon'"},
+      {R"({"objects": [{"geometry": {"type": "sphere"}, "material": "gold"}]})",
+       "scene.objects[0].material: no material named 'gold'"},
+      {R"({"objects": [{"geometry": {"type": "sphere", "rows": 0}}]})",
+       "scene.objects[0].geometry.rows: value 0 is outside 1 .. 4096"},
+      {R"({"objects": [{"geometry": {"type": "sphere", "radius": "big"}}]})",
+       "scene.objects[0].geometry.radius: expected a number"},
+      {R"({"objects": [{"geometry": {"type": "sphere"}, "position": [1, 2]}]})",
+       "scene.objects[0].position: expected an array of 3 numbers"},
+      {R"({"objects": [{"geometry": {"type": "sphere"}, "shader": "toon"}]})",
+       "scene.objects[0].shader: unknown shader 'toon'"},
       {R"({"objects": [{"name": "a", "parent": "b", "geometry": {"type": "sphere"}},
-                       {"name": "b", "parent": "a", "geometry": {"type": "sphere"}}]})", "the parents form a cycle"},
-      {R"({"objects": [{"parent": "nobody", "geometry": {"type": "sphere"}}]})", "scene.objects[0].parent: no object named 'nobody'"},
-      {R"({"camera": {"eye": [0, 0, 0], "lookat": [0, 0, 0]}})", "bad.json: camera: eye and lookat are the same point"},
+                       {"name": "b", "parent": "a", "geometry": {"type": "sphere"}}]})",
+       "the parents form a cycle"},
+      {R"({"objects": [{"parent": "nobody", "geometry": {"type": "sphere"}}]})",
+       "scene.objects[0].parent: no object named 'nobody'"},
+      {R"({"camera": {"eye": [0, 0, 0], "lookat": [0, 0, 0]}})",
+       "bad.json: camera: eye and lookat are the same point"},
       {R"({"lights": [{"color": 1}]})", "scene.lights[0]: give either 'position'"},
       {R"({"render": {"size": [0, 10]}})", "scene.render.size[0]: value 0 is outside 1 .. 16384"},
       {R"({"textures": {"t": {"file": "no/such.png"}}})", "scene.textures.t: "},
       {R"({"materials": {"m": {"texture": "t"}}})", "scene.materials.m.texture: no texture named 't'"},
-      {R"({"materials": {"m": {"specular": "cook"}}})", "scene.materials.m.specular: unknown specular model 'cook' (expected blinn or phong)"},
-      {R"({"objects": [{"geometry": {"type": "sphere"}, "animate": {"flag_phase": 1}}]})", "only a flag has a phase"},
+      {R"({"materials": {"m": {"specular": "cook"}}})",
+       "scene.materials.m.specular: unknown specular model 'cook' (expected blinn or phong)"},
+      {R"({"objects": [{"geometry": {"type": "sphere"}, "animate": {"flag_phase": 1}}]})",
+       "only a flag has a phase"},
   };
   for (const auto& [text, expect] : cases) {
     const std::string e = error_of(text);
-    EXPECT_NE(e.find(expect), std::string::npos) << "for " << text << "\n got: " << e << "\n want: " << expect;
+    EXPECT_NE(e.find(expect), std::string::npos)
+        << "for " << text << "\n got: " << e << "\n want: " << expect;
   }
   try {
     load_scene_file("/no/such/scene.json");

@@ -63,7 +63,8 @@ inline Scene make_scene(float shininess = 40.0f, bool gouraud_left = true) {
   tiles->texture = checker_texture();
   auto gouraud = std::make_shared<GouraudShader>();
   auto phong = std::make_shared<PhongShader>();
-  auto& a = s.add(std::make_unique<Object>(sphere, red, gouraud_left ? std::shared_ptr<const Shader>(gouraud) : phong));
+  auto& a = s.add(
+      std::make_unique<Object>(sphere, red, gouraud_left ? std::shared_ptr<const Shader>(gouraud) : phong));
   a.transform.position = glm::vec3(-1.2f, 1.0f, 0.0f);
   auto& b = s.add(std::make_unique<Object>(sphere, red, phong));
   b.transform.position = glm::vec3(1.2f, 1.0f, 0.0f);

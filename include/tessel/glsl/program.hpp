@@ -46,9 +46,9 @@ class Shader {
 
 // An active attribute, uniform or fragment output, as GL reports it.
 struct Variable {
-  std::string name;      // uniforms of arrays end in "[0]", as glGetActiveUniform gives them
-  uint32_t type = 0;     // GL type enum (GL_FLOAT_VEC3, GL_SAMPLER_2D, ...)
-  int size = 1;          // array elements
+  std::string name;   // uniforms of arrays end in "[0]", as glGetActiveUniform gives them
+  uint32_t type = 0;  // GL type enum (GL_FLOAT_VEC3, GL_SAMPLER_2D, ...)
+  int size = 1;       // array elements
   int location = -1;
 };
 
@@ -86,26 +86,27 @@ struct BufferBinding {
 struct UniformBlockMember {
   std::string name;  // "member", or "Block.member" when the block has an instance name
   uint32_t type = 0;
-  int size = 1;      // array elements
+  int size = 1;                                         // array elements
   int offset = 0, array_stride = 0, matrix_stride = 0;  // bytes
   bool row_major = false;
 };
 struct UniformBlock {
   std::string name;
-  int size = 0;      // GL_UNIFORM_BLOCK_DATA_SIZE, bytes
-  int binding = 0;   // the binding point it reads (glUniformBlockBinding)
+  int size = 0;     // GL_UNIFORM_BLOCK_DATA_SIZE, bytes
+  int binding = 0;  // the binding point it reads (glUniformBlockBinding)
   std::vector<UniformBlockMember> members;
 };
 
 // Fixed attribute locations of the compatibility attributes (as NVIDIA aliases them).
-inline constexpr int kLocationVertex = 0, kLocationNormal = 2, kLocationColor = 3, kLocationSecondaryColor = 4,
-                     kLocationFogCoord = 5, kLocationMultiTexCoord0 = 8;
+inline constexpr int kLocationVertex = 0, kLocationNormal = 2, kLocationColor = 3,
+                     kLocationSecondaryColor = 4, kLocationFogCoord = 5, kLocationMultiTexCoord0 = 8;
 
 class Program {
  public:
   // Links a vertex and a fragment shader. Never throws; a program that failed to link has
   // ok() false and says why in info_log().
-  static std::shared_ptr<Program> link(const Shader& vertex, const Shader& fragment, const LinkOptions& options = {});
+  static std::shared_ptr<Program> link(const Shader& vertex, const Shader& fragment,
+                                       const LinkOptions& options = {});
   ~Program();
 
   bool ok() const;
@@ -115,9 +116,9 @@ class Program {
   bool native() const;
   bool from_cache() const;
 
-  const std::vector<Variable>& attributes() const;  // active, user-declared
-  const std::vector<Variable>& uniforms() const;    // active, user-declared (gl_ state excluded)
-  const std::vector<Variable>& outputs() const;     // fragment outputs
+  const std::vector<Variable>& attributes() const;      // active, user-declared
+  const std::vector<Variable>& uniforms() const;        // active, user-declared (gl_ state excluded)
+  const std::vector<Variable>& outputs() const;         // fragment outputs
   int attribute_location(std::string_view name) const;  // -1 when not an active attribute
   // The location of a uniform, array element or struct member ("m", "k[2]", "l[1].pos"),
   // or -1. Compatibility state has locations too ("gl_ModelViewMatrix").
@@ -156,8 +157,9 @@ class Program {
                                                  std::span<const BufferBinding> uniform_buffers = {}) const;
   // Queues a draw (bind() and gpu::Context::draw). Throws gpu::Error as draw does, and for a
   // program that did not link.
-  void draw(gpu::Context& ctx, const gpu::VertexLayout& layout, const gpu::RenderState& state, const gpu::DrawCall& call,
-            std::span<const TextureBinding> units = {}, std::span<const BufferBinding> uniform_buffers = {}) const;
+  void draw(gpu::Context& ctx, const gpu::VertexLayout& layout, const gpu::RenderState& state,
+            const gpu::DrawCall& call, std::span<const TextureBinding> units = {},
+            std::span<const BufferBinding> uniform_buffers = {}) const;
 
   struct Impl;
 

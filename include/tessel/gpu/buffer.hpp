@@ -22,8 +22,14 @@ class Buffer : public Resource {
   Buffer() = default;
   explicit Buffer(size_t bytes) : data_(bytes) {}
   Buffer(const void* data, size_t bytes) { assign(data, bytes); }
-  template <class T> explicit Buffer(std::span<const T> items) { assign(items.data(), items.size_bytes()); }
-  template <class T> explicit Buffer(const std::vector<T>& items) { assign(items.data(), items.size() * sizeof(T)); }
+  template <class T>
+  explicit Buffer(std::span<const T> items) {
+    assign(items.data(), items.size_bytes());
+  }
+  template <class T>
+  explicit Buffer(const std::vector<T>& items) {
+    assign(items.data(), items.size() * sizeof(T));
+  }
   // Queued draws that read this buffer run before its memory goes.
   ~Buffer() override { flush_before_destruction(); }
 
@@ -56,8 +62,8 @@ enum class AttribType : uint8_t { F32, F16, I8, U8, I16, U16, I32, U32 };
 
 struct VertexAttrib {
   bool enabled = false;
-  int binding = 0;       // which VertexBinding supplies it
-  int components = 4;    // 1..4; missing components read as (0, 0, 0, 1)
+  int binding = 0;     // which VertexBinding supplies it
+  int components = 4;  // 1..4; missing components read as (0, 0, 0, 1)
   AttribType type = AttribType::F32;
   bool normalized = false;  // integer types: map to [0,1] / [-1,1] (GL 4.6 §2.3.5.1)
   bool integer = false;     // glVertexAttribIPointer: the shader reads the integer bits
@@ -82,9 +88,8 @@ struct VertexLayout {
     for (auto& c : current) c = {0.0f, 0.0f, 0.0f, 1.0f};
   }
   // Convenience: location reads `components` values of `type` from `buffer`.
-  VertexLayout& attrib(int location, const Buffer& buffer, int components, AttribType type,
-                       uint32_t stride, uint32_t offset, bool normalized = false,
-                       uint32_t divisor = 0) {
+  VertexLayout& attrib(int location, const Buffer& buffer, int components, AttribType type, uint32_t stride,
+                       uint32_t offset, bool normalized = false, uint32_t divisor = 0) {
     auto& a = attribs.at(location);
     a = {true, location, components, type, normalized, false, offset};
     bindings.at(location) = {&buffer, 0, stride, divisor};

@@ -30,8 +30,8 @@ namespace tessel::gpu {
 
 struct DrawCall {
   Topology topology = Topology::Triangles;
-  uint32_t first = 0;   // first vertex (arrays) or first index (indexed)
-  uint32_t count = 0;   // vertices or indices
+  uint32_t first = 0;                    // first vertex (arrays) or first index (indexed)
+  uint32_t count = 0;                    // vertices or indices
   const Buffer* index_buffer = nullptr;  // indexed draw when set
   IndexType index_type = IndexType::U32;
   size_t index_offset = 0;  // bytes into index_buffer

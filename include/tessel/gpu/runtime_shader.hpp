@@ -30,14 +30,14 @@ inline constexpr int kRuntimeLanes = 16;
 
 // What the pipeline must know of a program before it runs it.
 struct RuntimeShape {
-  int varyings = 0;               // float components from vertex to fragment (<= kMaxVaryings)
-  uint64_t flat = 0;              // components taken from the provoking vertex, bit for bit
-  uint64_t noperspective = 0;     // components interpolated linearly in screen space
-  bool discards = false;          // fragment() may set `killed`
-  bool writes_depth = false;      // fragment() sets `depth`
-  bool lanes_independent = false; // no derivatives and no implicit-LOD sampling
-  int outputs = 1;                // colour outputs 0..outputs-1 (MRT)
-  uint32_t attributes = 0;        // attribute locations the vertex stage reads
+  int varyings = 0;                // float components from vertex to fragment (<= kMaxVaryings)
+  uint64_t flat = 0;               // components taken from the provoking vertex, bit for bit
+  uint64_t noperspective = 0;      // components interpolated linearly in screen space
+  bool discards = false;           // fragment() may set `killed`
+  bool writes_depth = false;       // fragment() sets `depth`
+  bool lanes_independent = false;  // no derivatives and no implicit-LOD sampling
+  int outputs = 1;                 // colour outputs 0..outputs-1 (MRT)
+  uint32_t attributes = 0;         // attribute locations the vertex stage reads
   // The shader's float arithmetic must run with denormals flushed (SSE flush-to-zero and
   // denormals-are-zero), as llvmpipe runs GLSL. vertex() and fragment() do not set the mode
   // themselves: the pipeline sets it around its work for the draw (the shading loops and

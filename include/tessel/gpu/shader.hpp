@@ -37,7 +37,8 @@ namespace tessel::gpu {
 
 inline constexpr int kMaxVaryings = 64;  // float components
 
-template <class F> struct VertexIn {
+template <class F>
+struct VertexIn {
   std::array<Vec4<F>, kMaxVertexAttribs> attr;  // attribute locations, as floats
   IntOf<F> vertex_id;                           // gl_VertexID (the index, base vertex added)
   IntOf<F> instance_id;                         // gl_InstanceID
@@ -48,45 +49,79 @@ template <class F> struct VertexIn {
   }
 };
 
-template <class F> struct Fragment {
-  Vec4<F> coord;             // gl_FragCoord: pixel centre x, y; window z; 1/w
-  MaskOf<F> front_facing;    // gl_FrontFacing
-  IntOf<F> primitive_id;     // gl_PrimitiveID
+template <class F>
+struct Fragment {
+  Vec4<F> coord;                                    // gl_FragCoord: pixel centre x, y; window z; 1/w
+  MaskOf<F> front_facing;                           // gl_FrontFacing
+  IntOf<F> primitive_id;                            // gl_PrimitiveID
   std::array<Vec4<F>, kMaxColorAttachments> color;  // outputs; color[0] is the usual one
-  F depth;                   // gl_FragDepth, read when the shader writes depth
-  MaskOf<F> killed;          // lanes discarded
+  F depth;                                          // gl_FragDepth, read when the shader writes depth
+  MaskOf<F> killed;                                 // lanes discarded
   void discard(MaskOf<F> m) { killed = killed | m; }
   void discard() { killed = MaskOf<F>(true); }
 };
 
 namespace detail {
-template <class S> constexpr bool shader_discards() {
-  if constexpr (requires { S::discards; }) return S::discards; else return false;
+template <class S>
+constexpr bool shader_discards() {
+  if constexpr (requires { S::discards; })
+    return S::discards;
+  else
+    return false;
 }
-template <class S> constexpr bool shader_writes_depth() {
-  if constexpr (requires { S::writes_depth; }) return S::writes_depth; else return false;
+template <class S>
+constexpr bool shader_writes_depth() {
+  if constexpr (requires { S::writes_depth; })
+    return S::writes_depth;
+  else
+    return false;
 }
-template <class S> constexpr uint64_t shader_flat() {
-  if constexpr (requires { S::flat; }) return S::flat; else return 0;
+template <class S>
+constexpr uint64_t shader_flat() {
+  if constexpr (requires { S::flat; })
+    return S::flat;
+  else
+    return 0;
 }
-template <class S> constexpr uint64_t shader_noperspective() {
-  if constexpr (requires { S::noperspective; }) return S::noperspective; else return 0;
+template <class S>
+constexpr uint64_t shader_noperspective() {
+  if constexpr (requires { S::noperspective; })
+    return S::noperspective;
+  else
+    return 0;
 }
-template <class S> constexpr uint32_t shader_attributes() {
-  if constexpr (requires { S::attributes; }) return S::attributes; else return 0;
+template <class S>
+constexpr uint32_t shader_attributes() {
+  if constexpr (requires { S::attributes; })
+    return S::attributes;
+  else
+    return 0;
 }
-template <class S> constexpr bool shader_lanes_independent() {
-  if constexpr (requires { S::lanes_independent; }) return S::lanes_independent; else return false;
+template <class S>
+constexpr bool shader_lanes_independent() {
+  if constexpr (requires { S::lanes_independent; })
+    return S::lanes_independent;
+  else
+    return false;
 }
 // A bridge to a shader known only at run time (runtime_shader.hpp): its flat components are
 // copied bit for bit, and its number of outputs is ProgramBase::outputs.
-template <class S> constexpr bool shader_runtime() {
-  if constexpr (requires { S::runtime; }) return S::runtime; else return false;
+template <class S>
+constexpr bool shader_runtime() {
+  if constexpr (requires { S::runtime; })
+    return S::runtime;
+  else
+    return false;
 }
-template <class S> constexpr int shader_outputs() {
-  if constexpr (requires { S::outputs; }) return S::outputs; else return 1;
+template <class S>
+constexpr int shader_outputs() {
+  if constexpr (requires { S::outputs; })
+    return S::outputs;
+  else
+    return 1;
 }
-template <class S> constexpr int varying_count() {
+template <class S>
+constexpr int varying_count() {
   using V1 = typename S::template Varyings<float>;
   using V8 = typename S::template Varyings<Float8>;
   using V16 = typename S::template Varyings<Float16>;

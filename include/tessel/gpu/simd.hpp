@@ -22,8 +22,10 @@ namespace vx {
 using f32x8 = float __attribute__((vector_size(32)));
 using i32x8 = int32_t __attribute__((vector_size(32)));
 using u32x8 = uint32_t __attribute__((vector_size(32)));
-template <int N> struct Vectors;
-template <> struct Vectors<8> {
+template <int N>
+struct Vectors;
+template <>
+struct Vectors<8> {
   using f = f32x8;
   using i = i32x8;
   using u = u32x8;
@@ -33,11 +35,14 @@ template <> struct Vectors<8> {
 // Eight lanes: one 256-bit vector. The free functions are hidden friends: found by
 // argument-dependent lookup, and plain (non-template) functions, so a float argument
 // converts implicitly. Sixteen lanes (below) are two eight-lane halves.
-template <int N> struct FloatN;
-template <int N> struct IntN;
+template <int N>
+struct FloatN;
+template <int N>
+struct IntN;
 
 // Lane predicates; each lane is all ones (true) or zero (false).
-template <int N> struct MaskN {
+template <int N>
+struct MaskN {
   using V = typename vx::Vectors<N>::i;
   V v;
   MaskN() = default;
@@ -65,8 +70,14 @@ template <int N> struct MaskN {
   friend MaskN operator~(MaskN a) { return MaskN(~a.v); }
   friend MaskN operator&&(MaskN a, MaskN b) { return a & b; }
   friend MaskN operator||(MaskN a, MaskN b) { return a | b; }
-  MaskN& operator&=(MaskN b) { v &= b.v; return *this; }
-  MaskN& operator|=(MaskN b) { v |= b.v; return *this; }
+  MaskN& operator&=(MaskN b) {
+    v &= b.v;
+    return *this;
+  }
+  MaskN& operator|=(MaskN b) {
+    v |= b.v;
+    return *this;
+  }
   friend bool any(MaskN m) { return m.bits() != 0; }
   friend bool all(MaskN m) { return m.bits() == (1u << N) - 1u; }
   friend bool none(MaskN m) { return m.bits() == 0; }
@@ -74,7 +85,8 @@ template <int N> struct MaskN {
 };
 
 // 32-bit integers.
-template <int N> struct IntN {
+template <int N>
+struct IntN {
   using V = typename vx::Vectors<N>::i;
   V v;
   IntN() = default;
@@ -88,7 +100,9 @@ template <int N> struct IntN {
   void store(int32_t* p) const { std::memcpy(p, &v, sizeof v); }
   int32_t operator[](int i) const { return v[i]; }
 #if defined(__clang__)
-  int32_t& operator[](int i) { return reinterpret_cast<int32_t*>(&v)[i]; }  // clang: no references to vector elements
+  int32_t& operator[](int i) {
+    return reinterpret_cast<int32_t*>(&v)[i];
+  }  // clang: no references to vector elements
 #else
   int32_t& operator[](int i) { return v[i]; }
 #endif
@@ -112,7 +126,8 @@ template <int N> struct IntN {
 };
 
 // Floats.
-template <int N> struct FloatN {
+template <int N>
+struct FloatN {
   using V = typename vx::Vectors<N>::f;
   using I = typename vx::Vectors<N>::i;
   V v;
@@ -138,10 +153,22 @@ template <int N> struct FloatN {
   friend FloatN operator*(FloatN a, FloatN b) { return a.v * b.v; }
   friend FloatN operator/(FloatN a, FloatN b) { return a.v / b.v; }
   friend FloatN operator-(FloatN a) { return -a.v; }
-  FloatN& operator+=(FloatN b) { v += b.v; return *this; }
-  FloatN& operator-=(FloatN b) { v -= b.v; return *this; }
-  FloatN& operator*=(FloatN b) { v *= b.v; return *this; }
-  FloatN& operator/=(FloatN b) { v /= b.v; return *this; }
+  FloatN& operator+=(FloatN b) {
+    v += b.v;
+    return *this;
+  }
+  FloatN& operator-=(FloatN b) {
+    v -= b.v;
+    return *this;
+  }
+  FloatN& operator*=(FloatN b) {
+    v *= b.v;
+    return *this;
+  }
+  FloatN& operator/=(FloatN b) {
+    v /= b.v;
+    return *this;
+  }
   friend MaskN<N> operator<(FloatN a, FloatN b) { return MaskN<N>(a.v < b.v); }
   friend MaskN<N> operator<=(FloatN a, FloatN b) { return MaskN<N>(a.v <= b.v); }
   friend MaskN<N> operator>(FloatN a, FloatN b) { return MaskN<N>(a.v > b.v); }
@@ -152,7 +179,9 @@ template <int N> struct FloatN {
   friend IntN<N> bits_of(FloatN a) { return IntN<N>((I)a.v); }
   // Truncation toward zero, like a C cast.
   friend IntN<N> to_int(FloatN a) { return __builtin_convertvector(a.v, I); }
-  friend FloatN select(MaskN<N> m, FloatN a, FloatN b) { return FloatN((V)((((I)a.v) & m.v) | (((I)b.v) & ~m.v))); }
+  friend FloatN select(MaskN<N> m, FloatN a, FloatN b) {
+    return FloatN((V)((((I)a.v) & m.v) | (((I)b.v) & ~m.v)));
+  }
   friend FloatN min(FloatN a, FloatN b) { return FloatN(a.v < b.v ? a.v : b.v); }
   friend FloatN max(FloatN a, FloatN b) { return FloatN(a.v > b.v ? a.v : b.v); }
   friend FloatN abs(FloatN a) { return FloatN((V)(((I)a.v) & 0x7FFFFFFF)); }
@@ -184,11 +213,14 @@ template <int N> struct FloatN {
     return FloatN(1.0f) / sqrt(a);
 #endif
   }
-
 };
 
-template <int N> inline FloatN<N> float_from_bits(IntN<N> a) { return FloatN<N>((typename vx::Vectors<N>::f)a.v); }
-template <int N> inline FloatN<N> to_float(IntN<N> a) {
+template <int N>
+inline FloatN<N> float_from_bits(IntN<N> a) {
+  return FloatN<N>((typename vx::Vectors<N>::f)a.v);
+}
+template <int N>
+inline FloatN<N> to_float(IntN<N> a) {
   return FloatN<N>(__builtin_convertvector(a.v, typename vx::Vectors<N>::f));
 }
 
@@ -202,12 +234,15 @@ using Float8 = FloatN<8>;
 using Mask16 = MaskN<16>;
 using Int16 = IntN<16>;
 using Float16 = FloatN<16>;
-template <> struct MaskN<16> {
+template <>
+struct MaskN<16> {
   Mask8 lo, hi;
   MaskN() = default;
   MaskN(Mask8 l, Mask8 h) : lo(l), hi(h) {}
   explicit MaskN(bool b) : lo(b), hi(b) {}
-  static MaskN from_bits(unsigned bits) { return {Mask8::from_bits(bits & 0xFF), Mask8::from_bits(bits >> 8)}; }
+  static MaskN from_bits(unsigned bits) {
+    return {Mask8::from_bits(bits & 0xFF), Mask8::from_bits(bits >> 8)};
+  }
   unsigned bits() const { return lo.bits() | (hi.bits() << 8); }
   bool operator[](int i) const { return i < 8 ? lo[i] : hi[i - 8]; }
   friend MaskN operator&(MaskN a, MaskN b) { return {a.lo & b.lo, a.hi & b.hi}; }
@@ -222,16 +257,20 @@ template <> struct MaskN<16> {
   friend bool any(MaskN m) { return m.bits() != 0; }
   friend bool all(MaskN m) { return m.bits() == 0xFFFFu; }
   friend bool none(MaskN m) { return m.bits() == 0; }
-  friend MaskN select(MaskN m, MaskN a, MaskN b) { return {select(m.lo, a.lo, b.lo), select(m.hi, a.hi, b.hi)}; }
+  friend MaskN select(MaskN m, MaskN a, MaskN b) {
+    return {select(m.lo, a.lo, b.lo), select(m.hi, a.hi, b.hi)};
+  }
 };
 
-template <> struct IntN<16> {
+template <>
+struct IntN<16> {
   Int8 lo, hi;
   IntN() = default;
   IntN(Int8 l, Int8 h) : lo(l), hi(h) {}
   IntN(int32_t s) : lo(s), hi(s) {}
   int32_t operator[](int i) const { return i < 8 ? lo[i] : hi[i - 8]; }
   int32_t& operator[](int i) { return i < 8 ? lo[i] : hi[i - 8]; }
+// clang-format off
 #define TESSEL_TWIN_OP(op) \
   friend IntN operator op(IntN a, IntN b) { return {a.lo op b.lo, a.hi op b.hi}; }
   TESSEL_TWIN_OP(+) TESSEL_TWIN_OP(-) TESSEL_TWIN_OP(*) TESSEL_TWIN_OP(&) TESSEL_TWIN_OP(|) TESSEL_TWIN_OP(^)
@@ -242,12 +281,16 @@ template <> struct IntN<16> {
   friend Mask16 operator op(IntN a, IntN b) { return {a.lo op b.lo, a.hi op b.hi}; }
   TESSEL_TWIN_CMP(==) TESSEL_TWIN_CMP(!=) TESSEL_TWIN_CMP(<) TESSEL_TWIN_CMP(<=) TESSEL_TWIN_CMP(>) TESSEL_TWIN_CMP(>=)
 #undef TESSEL_TWIN_CMP
-  friend IntN select(Mask16 m, IntN a, IntN b) { return {select(m.lo, a.lo, b.lo), select(m.hi, a.hi, b.hi)}; }
+      // clang-format on
+      friend IntN select(Mask16 m, IntN a, IntN b) {
+    return {select(m.lo, a.lo, b.lo), select(m.hi, a.hi, b.hi)};
+  }
   friend IntN min(IntN a, IntN b) { return {min(a.lo, b.lo), min(a.hi, b.hi)}; }
   friend IntN max(IntN a, IntN b) { return {max(a.lo, b.lo), max(a.hi, b.hi)}; }
 };
 
-template <> struct FloatN<16> {
+template <>
+struct FloatN<16> {
   Float8 lo, hi;
   FloatN() = default;
   FloatN(Float8 l, Float8 h) : lo(l), hi(h) {}
@@ -259,6 +302,7 @@ template <> struct FloatN<16> {
   }
   float operator[](int i) const { return i < 8 ? lo[i] : hi[i - 8]; }
   float& operator[](int i) { return i < 8 ? lo[i] : hi[i - 8]; }
+// clang-format off
 #define TESSEL_TWIN_OP(op) \
   friend FloatN operator op(FloatN a, FloatN b) { return {a.lo op b.lo, a.hi op b.hi}; } \
   FloatN& operator op##=(FloatN b) { return *this = *this op b; }
@@ -269,9 +313,14 @@ template <> struct FloatN<16> {
   friend Mask16 operator op(FloatN a, FloatN b) { return {a.lo op b.lo, a.hi op b.hi}; }
   TESSEL_TWIN_CMP(==) TESSEL_TWIN_CMP(!=) TESSEL_TWIN_CMP(<) TESSEL_TWIN_CMP(<=) TESSEL_TWIN_CMP(>) TESSEL_TWIN_CMP(>=)
 #undef TESSEL_TWIN_CMP
-  friend Int16 bits_of(FloatN a) { return {bits_of(a.lo), bits_of(a.hi)}; }
+      // clang-format on
+      friend Int16 bits_of(FloatN a) {
+    return {bits_of(a.lo), bits_of(a.hi)};
+  }
   friend Int16 to_int(FloatN a) { return {to_int(a.lo), to_int(a.hi)}; }
-  friend FloatN select(Mask16 m, FloatN a, FloatN b) { return {select(m.lo, a.lo, b.lo), select(m.hi, a.hi, b.hi)}; }
+  friend FloatN select(Mask16 m, FloatN a, FloatN b) {
+    return {select(m.lo, a.lo, b.lo), select(m.hi, a.hi, b.hi)};
+  }
   friend FloatN min(FloatN a, FloatN b) { return {min(a.lo, b.lo), min(a.hi, b.hi)}; }
   friend FloatN max(FloatN a, FloatN b) { return {max(a.lo, b.lo), max(a.hi, b.hi)}; }
   friend FloatN abs(FloatN a) { return {abs(a.lo), abs(a.hi)}; }
@@ -298,25 +347,40 @@ inline bool all(bool b) { return b; }
 inline bool none(bool b) { return !b; }
 
 // --- what goes with a float type ----------------------------------------------------------
-template <class F> struct LaneTraits;
-template <> struct LaneTraits<float> {
+template <class F>
+struct LaneTraits;
+template <>
+struct LaneTraits<float> {
   using Mask = bool;
   using Int = int32_t;
   static constexpr int width = 1;
 };
-template <int N> struct LaneTraits<FloatN<N>> {
+template <int N>
+struct LaneTraits<FloatN<N>> {
   using Mask = MaskN<N>;
   using Int = IntN<N>;
   static constexpr int width = N;
 };
-template <class F> using MaskOf = typename LaneTraits<F>::Mask;
-template <class F> using IntOf = typename LaneTraits<F>::Int;
-template <class F> inline constexpr int lane_width = LaneTraits<F>::width;
-template <class F> inline constexpr bool is_lanes = lane_width<F> > 1;
+template <class F>
+using MaskOf = typename LaneTraits<F>::Mask;
+template <class F>
+using IntOf = typename LaneTraits<F>::Int;
+template <class F>
+inline constexpr int lane_width = LaneTraits<F>::width;
+template <class F>
+inline constexpr bool is_lanes = lane_width<F> > 1;
 
 // --- one lane -------------------------------------------------------------------------------
-inline int32_t bits_of(float a) { int32_t r; std::memcpy(&r, &a, 4); return r; }
-inline float float_from_bits(int32_t a) { float r; std::memcpy(&r, &a, 4); return r; }
+inline int32_t bits_of(float a) {
+  int32_t r;
+  std::memcpy(&r, &a, 4);
+  return r;
+}
+inline float float_from_bits(int32_t a) {
+  float r;
+  std::memcpy(&r, &a, 4);
+  return r;
+}
 inline float to_float(int32_t a) { return float(a); }
 inline int32_t to_int(float a) { return int32_t(a); }
 inline float select(bool m, float a, float b) { return m ? a : b; }
@@ -339,35 +403,65 @@ inline float inversesqrt(float a) {
 
 // floor/ceil/round via the conversion instructions; valid for |x| < 2^31, and values beyond
 // 2^23 are already integers.
-template <class F> inline F floor(F a) {
+template <class F>
+inline F floor(F a) {
   F t = to_float(to_int(a));
   t = select(t > a, t - F(1.0f), t);
   return select(abs(a) < F(8388608.0f), t, a);
 }
 #if defined(__AVX__)
 // One rounding instruction (the result differs from the above only for -0.0, kept here).
-inline Float8 floor(Float8 a) { return Float8(__builtin_ia32_roundps256(a.v, 0x9)); }  // toward -inf, no exceptions
+inline Float8 floor(Float8 a) {
+  return Float8(__builtin_ia32_roundps256(a.v, 0x9));
+}  // toward -inf, no exceptions
 inline Float16 floor(Float16 a) { return {floor(a.lo), floor(a.hi)}; }
 #endif
-template <class F> inline F ceil(F a) { return -floor(-a); }
-template <class F> inline F fract(F a) { return a - floor(a); }
-template <class F> inline F trunc(F a) { return select(abs(a) < F(8388608.0f), to_float(to_int(a)), a); }
-template <class F> inline F mod(F a, F b) { return a - b * floor(a / b); }
-template <class F> inline F sign(F a) {
+template <class F>
+inline F ceil(F a) {
+  return -floor(-a);
+}
+template <class F>
+inline F fract(F a) {
+  return a - floor(a);
+}
+template <class F>
+inline F trunc(F a) {
+  return select(abs(a) < F(8388608.0f), to_float(to_int(a)), a);
+}
+template <class F>
+inline F mod(F a, F b) {
+  return a - b * floor(a / b);
+}
+template <class F>
+inline F sign(F a) {
   return select(a > F(0.0f), F(1.0f), select(a < F(0.0f), F(-1.0f), F(0.0f)));
 }
-template <class F> inline F clamp(F x, F lo, F hi) { return min(max(x, lo), hi); }
-template <class F> inline F saturate(F x) { return clamp(x, F(0.0f), F(1.0f)); }
-template <class F> inline F mix(F a, F b, F t) { return a + (b - a) * t; }
-template <class F> inline F step(F edge, F x) { return select(x < edge, F(0.0f), F(1.0f)); }
-template <class F> inline F smoothstep(F e0, F e1, F x) {
+template <class F>
+inline F clamp(F x, F lo, F hi) {
+  return min(max(x, lo), hi);
+}
+template <class F>
+inline F saturate(F x) {
+  return clamp(x, F(0.0f), F(1.0f));
+}
+template <class F>
+inline F mix(F a, F b, F t) {
+  return a + (b - a) * t;
+}
+template <class F>
+inline F step(F edge, F x) {
+  return select(x < edge, F(0.0f), F(1.0f));
+}
+template <class F>
+inline F smoothstep(F e0, F e1, F x) {
   F t = saturate((x - e0) / (e1 - e0));
   return t * t * (F(3.0f) - F(2.0f) * t);
 }
 // exp2 and log2 by range reduction and minimax polynomials (relative error about 2e-7).
 // The same code runs for one lane and eight, so the reference path and the fast path agree
 // to the last bit.
-template <class F> inline F exp2(F x) {
+template <class F>
+inline F exp2(F x) {
   using I = IntOf<F>;
   x = clamp(x, F(-126.0f), F(127.0f));
   // Nearest integer: adding and subtracting 1.5 * 2^23 rounds to nearest even (exact for
@@ -385,7 +479,8 @@ template <class F> inline F exp2(F x) {
 }
 namespace detail {
 // log2 for finite x > 0 (no special cases).
-template <class F> inline F log2_positive(F x) {
+template <class F>
+inline F log2_positive(F x) {
   using I = IntOf<F>;
   // x = m * 2^e with m in [sqrt(1/2), sqrt(2)); log2(m) through atanh-series in s=(m-1)/(m+1).
   I bits = bits_of(x);
@@ -398,11 +493,13 @@ template <class F> inline F log2_positive(F x) {
   F s2 = s * s;
   const F s4 = s2 * s2;
   // 2 + 2/3 s2 + 2/5 s2^2 + 2/7 s2^3 + 2/9 s2^4, by Estrin's scheme (short dependency chain).
-  const F p = fma(fma(F(0.2222222f), s4, fma(F(0.2857143f), s2, F(0.4f))), s4, fma(F(0.6666667f), s2, F(2.0f)));
+  const F p =
+      fma(fma(F(0.2222222f), s4, fma(F(0.2857143f), s2, F(0.4f))), s4, fma(F(0.6666667f), s2, F(2.0f)));
   return fma(s * p, F(1.44269504f), ef);
 }
 }  // namespace detail
-template <class F> inline F log2(F x) {
+template <class F>
+inline F log2(F x) {
   F r = detail::log2_positive(x);
   // log2 of 0 is -inf, of a negative or NaN is NaN, of +inf is +inf.
   r = select(x == F(0.0f), F(-INFINITY), r);
@@ -410,13 +507,23 @@ template <class F> inline F log2(F x) {
   r = select(x == F(INFINITY), F(INFINITY), r);
   return r;
 }
-template <class F> inline F exp(F x) { return exp2(x * F(1.44269504f)); }
-template <class F> inline F log(F x) { return log2(x) * F(0.69314718f); }
+template <class F>
+inline F exp(F x) {
+  return exp2(x * F(1.44269504f));
+}
+template <class F>
+inline F log(F x) {
+  return log2(x) * F(0.69314718f);
+}
 namespace detail {
 inline float first_lane(float v) { return v; }
-template <int N> inline float first_lane(const FloatN<N>& v) { return v[0]; }
+template <int N>
+inline float first_lane(const FloatN<N>& v) {
+  return v[0];
+}
 // x^n for n >= 1 by repeated squaring.
-template <class F> inline F pow_int(F x, int n) {
+template <class F>
+inline F pow_int(F x, int n) {
   F r(1.0f);
   for (;;) {
     if (n & 1) r = r * x;
@@ -430,16 +537,19 @@ template <class F> inline F pow_int(F x, int n) {
 // the same whole number 1..64 in every lane (a material's shininess, usually a constant the
 // compiler sees) is computed by repeated squaring: exact to a few roundings and a fraction
 // of the cost of exp2(y log2 x).
-template <class F> inline F pow(F x, F y) {
+template <class F>
+inline F pow(F x, F y) {
   const float y0 = detail::first_lane(y);
-  if (y0 >= 1.0f && y0 <= 64.0f && y0 == float(int(y0)) && all(y == F(y0))) return detail::pow_int(x, int(y0));
+  if (y0 >= 1.0f && y0 <= 64.0f && y0 == float(int(y0)) && all(y == F(y0)))
+    return detail::pow_int(x, int(y0));
   F r = exp2(y * detail::log2_positive(x));
   r = select(x == F(0.0f), select(y == F(0.0f), F(1.0f), F(0.0f)), r);
   return select(y == F(0.0f), F(1.0f), r);
 }
 
 // sin and cos: Cody-Waite reduction to [-pi/4, pi/4] and minimax polynomials.
-template <class F> inline void sincos(F x, F& s, F& c) {
+template <class F>
+inline void sincos(F x, F& s, F& c) {
   using I = IntOf<F>;
   F q = floor(x * F(0.63661977f) + F(0.5f));  // nearest multiple of pi/2
   F r = x - q * F(1.5707963f);
@@ -460,7 +570,17 @@ template <class F> inline void sincos(F x, F& s, F& c) {
   s = select((qi & I(2)) != I(0), -s0, s0);
   c = select(((qi + I(1)) & I(2)) != I(0), -c0, c0);
 }
-template <class F> inline F sin(F x) { F s, c; sincos(x, s, c); return s; }
-template <class F> inline F cos(F x) { F s, c; sincos(x, s, c); return c; }
+template <class F>
+inline F sin(F x) {
+  F s, c;
+  sincos(x, s, c);
+  return s;
+}
+template <class F>
+inline F cos(F x) {
+  F s, c;
+  sincos(x, s, c);
+  return c;
+}
 
 }  // namespace tessel::gpu

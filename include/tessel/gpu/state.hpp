@@ -24,10 +24,20 @@ enum class IndexType : uint8_t { U8, U16, U32 };
 enum class StencilOp : uint8_t { Keep, Zero, Replace, Incr, IncrWrap, Decr, DecrWrap, Invert };
 enum class BlendEquation : uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
 enum class BlendFactor : uint8_t {
-  Zero, One,
-  SrcColor, OneMinusSrcColor, DstColor, OneMinusDstColor,
-  SrcAlpha, OneMinusSrcAlpha, DstAlpha, OneMinusDstAlpha,
-  ConstantColor, OneMinusConstantColor, ConstantAlpha, OneMinusConstantAlpha,
+  Zero,
+  One,
+  SrcColor,
+  OneMinusSrcColor,
+  DstColor,
+  OneMinusDstColor,
+  SrcAlpha,
+  OneMinusSrcAlpha,
+  DstAlpha,
+  OneMinusDstAlpha,
+  ConstantColor,
+  OneMinusConstantColor,
+  ConstantAlpha,
+  OneMinusConstantAlpha,
   SrcAlphaSaturate,
 };
 

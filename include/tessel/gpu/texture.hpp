@@ -41,16 +41,25 @@ enum class CompareFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEq
 
 // Whether `a <func> b` passes: the depth test, the stencil test and shadow comparisons. For
 // scalars the result is a bool; for lane types (Float8, Int8) a mask per lane.
-template <class T, class R = decltype(T() < T())> __attribute__((always_inline)) constexpr R compare(CompareFunc f, T a, T b) {
+template <class T, class R = decltype(T() < T())>
+__attribute__((always_inline)) constexpr R compare(CompareFunc f, T a, T b) {
   switch (f) {
-    case CompareFunc::Never: return R(false);
-    case CompareFunc::Less: return a < b;
-    case CompareFunc::Equal: return a == b;
-    case CompareFunc::LessEqual: return a <= b;
-    case CompareFunc::Greater: return a > b;
-    case CompareFunc::NotEqual: return a != b;
-    case CompareFunc::GreaterEqual: return a >= b;
-    case CompareFunc::Always: return R(true);
+    case CompareFunc::Never:
+      return R(false);
+    case CompareFunc::Less:
+      return a < b;
+    case CompareFunc::Equal:
+      return a == b;
+    case CompareFunc::LessEqual:
+      return a <= b;
+    case CompareFunc::Greater:
+      return a > b;
+    case CompareFunc::NotEqual:
+      return a != b;
+    case CompareFunc::GreaterEqual:
+      return a >= b;
+    case CompareFunc::Always:
+      return R(true);
   }
   return R(false);
 }
@@ -247,9 +256,12 @@ struct SamplerCube {
 // A depth texture with comparison on (sampler2DShadow).
 struct Sampler2DShadow {
   const Texture2D* texture = nullptr;
-  SamplerState state{.min_filter = Filter::Linear, .mag_filter = Filter::Linear,
-                     .wrap_s = Wrap::ClampToEdge, .wrap_t = Wrap::ClampToEdge,
-                     .wrap_r = Wrap::ClampToEdge, .border_color = glm::vec4(1.0f),
+  SamplerState state{.min_filter = Filter::Linear,
+                     .mag_filter = Filter::Linear,
+                     .wrap_s = Wrap::ClampToEdge,
+                     .wrap_t = Wrap::ClampToEdge,
+                     .wrap_r = Wrap::ClampToEdge,
+                     .border_color = glm::vec4(1.0f),
                      .compare = true};
 };
 
@@ -282,7 +294,8 @@ glm::vec4 texel_fetch(const Texture2D* t, int x, int y, int level);
 // (0,0,0,1), a missing shadow texture as 0.
 glm::vec4 sample_3d(const Sampler3D& s, float u, float v, float w, float lod, glm::ivec3 offset = {});
 // The layer is round(layer) clamped to [0, layers - 1] (array_layer).
-glm::vec4 sample_2d_array(const Sampler2DArray& s, float u, float v, float layer, float lod, glm::ivec2 offset = {});
+glm::vec4 sample_2d_array(const Sampler2DArray& s, float u, float v, float layer, float lod,
+                          glm::ivec2 offset = {});
 // state.compare on: the filtered fraction of texels that pass the comparison with ref.
 float sample_2d_array_compare(const Sampler2DArray& s, float u, float v, float layer, float ref, float lod,
                               glm::ivec2 offset = {});
@@ -308,13 +321,17 @@ Vec4<float> texture(const Sampler2D& s, const Vec2<float>& uv);
 Vec4<Float8> texture(const Sampler2D& s, const Vec2<Float8>& uv);
 Vec4<float> textureLod(const Sampler2D& s, const Vec2<float>& uv, float lod);
 Vec4<Float8> textureLod(const Sampler2D& s, const Vec2<Float8>& uv, Float8 lod);
-Vec4<float> textureGrad(const Sampler2D& s, const Vec2<float>& uv, const Vec2<float>& dx, const Vec2<float>& dy);
-Vec4<Float8> textureGrad(const Sampler2D& s, const Vec2<Float8>& uv, const Vec2<Float8>& dx, const Vec2<Float8>& dy);
+Vec4<float> textureGrad(const Sampler2D& s, const Vec2<float>& uv, const Vec2<float>& dx,
+                        const Vec2<float>& dy);
+Vec4<Float8> textureGrad(const Sampler2D& s, const Vec2<Float8>& uv, const Vec2<Float8>& dx,
+                         const Vec2<Float8>& dy);
 // textureProj: uv divided by the last component.
-template <class F> Vec4<F> textureProj(const Sampler2D& s, const Vec3<F>& uvq) {
+template <class F>
+Vec4<F> textureProj(const Sampler2D& s, const Vec3<F>& uvq) {
   return texture(s, Vec2<F>(uvq.x / uvq.z, uvq.y / uvq.z));
 }
-template <class F> Vec4<F> textureProj(const Sampler2D& s, const Vec4<F>& uvzq) {
+template <class F>
+Vec4<F> textureProj(const Sampler2D& s, const Vec4<F>& uvzq) {
   return texture(s, Vec2<F>(uvzq.x / uvzq.w, uvzq.y / uvzq.w));
 }
 Vec4<float> texture(const SamplerCube& s, const Vec3<float>& dir);
@@ -323,7 +340,8 @@ Vec4<Float8> texture(const SamplerCube& s, const Vec3<Float8>& dir);
 // four texels' comparisons are bilinearly weighted (hardware PCF).
 float texture(const Sampler2DShadow& s, const Vec3<float>& uvr);
 Float8 texture(const Sampler2DShadow& s, const Vec3<Float8>& uvr);
-template <class F> F textureProj(const Sampler2DShadow& s, const Vec4<F>& p) {
+template <class F>
+F textureProj(const Sampler2DShadow& s, const Vec4<F>& p) {
   return texture(s, Vec3<F>(p.x / p.w, p.y / p.w, p.z / p.w));
 }
 Vec4<float> texelFetch(const Sampler2D& s, int x, int y, int level);
@@ -345,7 +363,8 @@ glm::ivec3 textureSize(const Sampler2DArray& s, int level);  // (width, height, 
 // Sixteen lanes (two 4x2 groups side by side) sample as their two halves of eight; trilinear
 // RGBA8 has a path of its own for sixteen lanes (detail/texture_simd.hpp), with the same result.
 namespace detail {
-inline bool trilinear16(const Texture2D& tex, const SamplerState& st, const Vec2<Float16>& uv, Vec4<Float16>& out);
+inline bool trilinear16(const Texture2D& tex, const SamplerState& st, const Vec2<Float16>& uv,
+                        Vec4<Float16>& out);
 }
 __attribute__((always_inline)) inline Vec4<Float16> texture(const Sampler2D& s, const Vec2<Float16>& uv) {
 #if defined(__AVX2__)
@@ -359,7 +378,8 @@ inline Vec4<Float16> textureLod(const Sampler2D& s, const Vec2<Float16>& uv, Flo
 }
 inline Vec4<Float16> textureGrad(const Sampler2D& s, const Vec2<Float16>& uv, const Vec2<Float16>& dx,
                                  const Vec2<Float16>& dy) {
-  return join(textureGrad(s, lo_half(uv), lo_half(dx), lo_half(dy)), textureGrad(s, hi_half(uv), hi_half(dx), hi_half(dy)));
+  return join(textureGrad(s, lo_half(uv), lo_half(dx), lo_half(dy)),
+              textureGrad(s, hi_half(uv), hi_half(dx), hi_half(dy)));
 }
 inline Vec4<Float16> texture(const SamplerCube& s, const Vec3<Float16>& dir) {
   return join(texture(s, lo_half(dir)), texture(s, hi_half(dir)));

@@ -61,7 +61,8 @@ class ParamSurface {
 // The notes' sphere: centre + r (cos U sin V, sin U sin V, cos V), U = 2 pi u, V = pi v.
 class Sphere : public ParamSurface {
  public:
-  explicit Sphere(float radius = 1.0f, glm::vec3 center = glm::vec3(0.0f)) : radius_(radius), center_(center) {}
+  explicit Sphere(float radius = 1.0f, glm::vec3 center = glm::vec3(0.0f))
+      : radius_(radius), center_(center) {}
   void eval(float u, float v, glm::vec3& pos, glm::vec3& norm) const override;
 
  private:

@@ -195,7 +195,8 @@ class Scene {
   class PassClock;
   void draw_planar_shadows(gpu::Context& ctx, const RenderState& state) const;
   void render_deferred(gpu::Context& ctx, const RenderState& state, PassClock& clock) const;
-  mutable std::vector<std::unique_ptr<gpu::Texture2D>> gbuffer_;  // positions, normals, kd, ks, ka, emission, depth
+  mutable std::vector<std::unique_ptr<gpu::Texture2D>>
+      gbuffer_;  // positions, normals, kd, ks, ka, emission, depth
   mutable std::vector<std::unique_ptr<gpu::Texture2D>> shadow_maps_;  // 1 or 6 (a point light's cube), reused
 };
 

@@ -13,8 +13,8 @@ namespace tessel::scene {
 
 struct RenderSettings {
   int width = 800, height = 600;
-  int threads = 0;       // 0: one per hardware thread
-  float fps = 30.0f;     // frames per second of animation (--frames)
+  int threads = 0;    // 0: one per hardware thread
+  float fps = 30.0f;  // frames per second of animation (--frames)
 };
 
 struct SceneFile {

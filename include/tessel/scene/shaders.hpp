@@ -19,7 +19,8 @@ class GouraudShader : public Shader {
 };
 
 // The light pass of shadow mapping: the geometry's depth through MVP, nothing else.
-void draw_shadow_depth(gpu::Context& ctx, const glm::mat4& MVP, const Geometry& geometry, const gpu::RenderState& pipeline);
+void draw_shadow_depth(gpu::Context& ctx, const glm::mat4& MVP, const Geometry& geometry,
+                       const gpu::RenderState& pipeline);
 
 // A projected planar shadow: the geometry through MVP (which includes the projection onto
 // the plane), in one colour.
@@ -33,8 +34,8 @@ void draw_flat(gpu::Context& ctx, const glm::mat4& MVP, const glm::vec3& color, 
 // pixel takes Blinn's N.H without looking).
 void draw_gbuffer(gpu::Context& ctx, const RenderState& state, const Geometry& geometry);
 void draw_deferred_lighting(gpu::Context& ctx, const std::vector<const gpu::Texture2D*>& gbuffer,
-                            const std::vector<Light>& lights, const glm::vec3& eye, const glm::vec4& background,
-                            bool phong_specular);
+                            const std::vector<Light>& lights, const glm::vec3& eye,
+                            const glm::vec4& background, bool phong_specular);
 
 // Per-pixel (Phong) shading with the Blinn-Phong specular term: the normal and the position
 // are interpolated and the formula is evaluated at each pixel. With a shadow map in the
@@ -59,7 +60,8 @@ class NormalMapShader : public Shader {
 // and black where |N.V| < silhouette, the outline of the object.
 class NprShader : public Shader {
  public:
-  explicit NprShader(int bands = 2, float silhouette = 0.2f) : bands_(bands < 1 ? 1 : bands), silhouette_(silhouette) {}
+  explicit NprShader(int bands = 2, float silhouette = 0.2f)
+      : bands_(bands < 1 ? 1 : bands), silhouette_(silhouette) {}
   void draw(gpu::Context& ctx, const RenderState& state, const Geometry& geometry) const override;
 
  private:

@@ -16,7 +16,8 @@ static void reshape(int w, int h) {
 }
 
 static void hue(double t) { /* a colour wheel, t in [0,1) */
-  glColor3d(0.5 + 0.5 * cos(2 * PI * t), 0.5 + 0.5 * cos(2 * PI * (t - 1.0 / 3)), 0.5 + 0.5 * cos(2 * PI * (t - 2.0 / 3)));
+  glColor3d(0.5 + 0.5 * cos(2 * PI * t), 0.5 + 0.5 * cos(2 * PI * (t - 1.0 / 3)),
+            0.5 + 0.5 * cos(2 * PI * (t - 2.0 / 3)));
 }
 
 /* Each cell is 64 x 120 pixels; (x, y) is its lower-left corner. */
@@ -68,12 +69,18 @@ static void cell_line_loop(float x, float y) {
 
 static void cell_triangles(float x, float y) {
   glBegin(GL_TRIANGLES);
-  glColor3f(1, 0, 0); glVertex2f(x + 2, y + 4);
-  glColor3f(0, 1, 0); glVertex2f(x + 62, y + 10);
-  glColor3f(0, 0, 1); glVertex2f(x + 20, y + 70);
-  glColor3f(1, 1, 0); glVertex2f(x + 60, y + 40);
-  glColor3f(0, 1, 1); glVertex2f(x + 58, y + 117);
-  glColor3f(1, 0, 1); glVertex2f(x + 5, y + 100);
+  glColor3f(1, 0, 0);
+  glVertex2f(x + 2, y + 4);
+  glColor3f(0, 1, 0);
+  glVertex2f(x + 62, y + 10);
+  glColor3f(0, 0, 1);
+  glVertex2f(x + 20, y + 70);
+  glColor3f(1, 1, 0);
+  glVertex2f(x + 60, y + 40);
+  glColor3f(0, 1, 1);
+  glVertex2f(x + 58, y + 117);
+  glColor3f(1, 0, 1);
+  glVertex2f(x + 5, y + 100);
   glEnd();
 }
 
@@ -100,14 +107,22 @@ static void cell_triangle_fan(float x, float y) {
 
 static void cell_quads(float x, float y) {
   glBegin(GL_QUADS);
-  glColor3f(1, 0, 0); glVertex2f(x + 3, y + 3);
-  glColor3f(1, 1, 0); glVertex2f(x + 60, y + 8);
-  glColor3f(0, 1, 0); glVertex2f(x + 55, y + 55);
-  glColor3f(0, 0, 1); glVertex2f(x + 6, y + 50);
-  glColor3f(0, 1, 1); glVertex2f(x + 10, y + 64);
-  glColor3f(1, 0, 1); glVertex2f(x + 61, y + 70);
-  glColor3f(1, 1, 1); glVertex2f(x + 50, y + 116);
-  glColor3f(0.3f, 0.3f, 0.3f); glVertex2f(x + 2, y + 110);
+  glColor3f(1, 0, 0);
+  glVertex2f(x + 3, y + 3);
+  glColor3f(1, 1, 0);
+  glVertex2f(x + 60, y + 8);
+  glColor3f(0, 1, 0);
+  glVertex2f(x + 55, y + 55);
+  glColor3f(0, 0, 1);
+  glVertex2f(x + 6, y + 50);
+  glColor3f(0, 1, 1);
+  glVertex2f(x + 10, y + 64);
+  glColor3f(1, 0, 1);
+  glVertex2f(x + 61, y + 70);
+  glColor3f(1, 1, 1);
+  glVertex2f(x + 50, y + 116);
+  glColor3f(0.3f, 0.3f, 0.3f);
+  glVertex2f(x + 2, y + 110);
   glEnd();
 }
 

@@ -44,13 +44,18 @@ static void build(void) {
       const float dzdx = 0.25f * 2.5f * cosf(2.5f * x) * cosf(2.0f * y);
       const float dzdy = -0.25f * 2.0f * sinf(2.5f * x) * sinf(2.0f * y);
       const float len = sqrtf(dzdx * dzdx + dzdy * dzdy + 1.0f);
-      v->pos[0] = x; v->pos[1] = y; v->pos[2] = z;
-      v->normal[0] = -dzdx / len; v->normal[1] = -dzdy / len; v->normal[2] = 1.0f / len;
+      v->pos[0] = x;
+      v->pos[1] = y;
+      v->pos[2] = z;
+      v->normal[0] = -dzdx / len;
+      v->normal[1] = -dzdy / len;
+      v->normal[2] = 1.0f / len;
       v->colour[0] = (GLubyte)(255 * i / GRID);
       v->colour[1] = (GLubyte)(255 - 255 * j / GRID);
       v->colour[2] = 200;
       v->colour[3] = 255;
-      v->uv[0] = 2.0f * i / GRID; v->uv[1] = 2.0f * j / GRID;
+      v->uv[0] = 2.0f * i / GRID;
+      v->uv[1] = 2.0f * j / GRID;
       v->pad = 0.0f;
     }
   GLubyte texels[8 * 8 * 3];
@@ -58,7 +63,9 @@ static void build(void) {
     for (int i = 0; i < 8; ++i) {
       GLubyte* t = &texels[(j * 8 + i) * 3];
       const int on = (i + j) % 2;
-      t[0] = on ? 255 : 90; t[1] = on ? 255 : 90; t[2] = on ? 255 : 160;
+      t[0] = on ? 255 : 90;
+      t[1] = on ? 255 : 90;
+      t[2] = on ? 255 : 160;
     }
   glGenTextures(1, &tex);
   glBindTexture(GL_TEXTURE_2D, tex);
@@ -113,8 +120,12 @@ static void draw_disc(void) {
   static GLshort pos[(1 + 24) * 3];
   static GLfloat col[(1 + 24) * 4];
   static GLuint tris[24 * 3];
-  pos[0] = 0; pos[1] = 0;
-  col[0] = 1; col[1] = 1; col[2] = 1; col[3] = 1;
+  pos[0] = 0;
+  pos[1] = 0;
+  col[0] = 1;
+  col[1] = 1;
+  col[2] = 1;
+  col[3] = 1;
   for (int i = 0; i < 24; ++i) {
     const double a = 2 * PI * i / 24;
     pos[(i + 1) * 3 + 0] = (GLshort)lround(100 * cos(a));
@@ -158,9 +169,14 @@ static void draw_grid(void) {
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i) {
       if ((i + j) % 4 == 3) continue; /* leave some holes */
-      const GLushort a = (GLushort)(j * 5 + i), b = (GLushort)(a + 1), c = (GLushort)(a + 6), d = (GLushort)(a + 5);
-      tris[n++] = a; tris[n++] = b; tris[n++] = c;
-      tris[n++] = a; tris[n++] = c; tris[n++] = d;
+      const GLushort a = (GLushort)(j * 5 + i), b = (GLushort)(a + 1), c = (GLushort)(a + 6),
+                     d = (GLushort)(a + 5);
+      tris[n++] = a;
+      tris[n++] = b;
+      tris[n++] = c;
+      tris[n++] = a;
+      tris[n++] = c;
+      tris[n++] = d;
     }
   glEnableClientState(GL_VERTEX_ARRAY);
   glEnableClientState(GL_COLOR_ARRAY);

@@ -7,11 +7,11 @@
  * names (nothing drawn) and glIsList (green marks). Single-buffered (glFlush). */
 #include <GL/glut.h>
 
-static GLuint digits;  /* 10 lists: '0'..'9' */
-static GLuint tile;    /* compiled and executed in display() */
-static GLuint row;     /* calls tile 5 times */
-static GLuint panel;   /* calls row 3 times */
-static GLuint doomed;  /* 3 lists deleted after compilation */
+static GLuint digits; /* 10 lists: '0'..'9' */
+static GLuint tile;   /* compiled and executed in display() */
+static GLuint row;    /* calls tile 5 times */
+static GLuint panel;  /* calls row 3 times */
+static GLuint doomed; /* 3 lists deleted after compilation */
 
 static void reshape(int w, int h) {
   glViewport(0, 0, w, h);
@@ -24,8 +24,8 @@ static void reshape(int w, int h) {
 
 /* Segments a-g of a digit 12 wide, 24 high, drawn as quads. */
 static void segment(int s) {
-  static const float box[7][4] = {
-      {2, 21, 10, 24}, {10, 12, 13, 22}, {10, 1, 13, 11}, {2, 0, 10, 3}, {-1, 1, 2, 11}, {-1, 12, 2, 22}, {2, 10.5f, 10, 13.5f}};
+  static const float box[7][4] = {{2, 21, 10, 24}, {10, 12, 13, 22}, {10, 1, 13, 11},      {2, 0, 10, 3},
+                                  {-1, 1, 2, 11},  {-1, 12, 2, 22},  {2, 10.5f, 10, 13.5f}};
   glRectf(box[s][0], box[s][1], box[s][2], box[s][3]);
 }
 
@@ -82,10 +82,14 @@ static void display(void) {
   glNewList(tile, GL_COMPILE_AND_EXECUTE);
   glShadeModel(GL_SMOOTH);
   glBegin(GL_QUADS);
-  glColor3f(1.0f, 0.8f, 0.2f); glVertex2i(0, 0);
-  glColor3f(0.9f, 0.3f, 0.1f); glVertex2i(20, 0);
-  glColor3f(0.2f, 0.4f, 0.9f); glVertex2i(20, 20);
-  glColor3f(0.3f, 0.9f, 0.5f); glVertex2i(0, 20);
+  glColor3f(1.0f, 0.8f, 0.2f);
+  glVertex2i(0, 0);
+  glColor3f(0.9f, 0.3f, 0.1f);
+  glVertex2i(20, 0);
+  glColor3f(0.2f, 0.4f, 0.9f);
+  glVertex2i(20, 20);
+  glColor3f(0.3f, 0.9f, 0.5f);
+  glVertex2i(0, 20);
   glEnd();
   glEndList();
   glPopMatrix();
@@ -127,7 +131,8 @@ static void display(void) {
   glTranslatef(10, 20, 0);
   glScalef(1.0f, 1.4f, 1);
   {
-    static const GLint names[12] = {-8, -5, -9, -4, -3, -6, -7, -1, -6, -9, -6, -7}; /* with the base: 140563283032 */
+    static const GLint names[12] = {-8, -5, -9, -4, -3, -6,
+                                    -7, -1, -6, -9, -6, -7}; /* with the base: 140563283032 */
     glCallLists(12, GL_INT, names);
   }
   glPopMatrix();

@@ -74,10 +74,19 @@ static void look_at(GLfloat m[16], const float eye[3], const float centre[3], co
   for (int i = 0; i < 3; ++i) s[i] /= sl;
   const float u[3] = {s[1] * f[2] - s[2] * f[1], s[2] * f[0] - s[0] * f[2], s[0] * f[1] - s[1] * f[0]};
   /* Column-major: m[col * 4 + row]. */
-  m[0] = s[0]; m[4] = s[1]; m[8] = s[2];
-  m[1] = u[0]; m[5] = u[1]; m[9] = u[2];
-  m[2] = -f[0]; m[6] = -f[1]; m[10] = -f[2];
-  m[3] = 0; m[7] = 0; m[11] = 0; m[15] = 1;
+  m[0] = s[0];
+  m[4] = s[1];
+  m[8] = s[2];
+  m[1] = u[0];
+  m[5] = u[1];
+  m[9] = u[2];
+  m[2] = -f[0];
+  m[6] = -f[1];
+  m[10] = -f[2];
+  m[3] = 0;
+  m[7] = 0;
+  m[11] = 0;
+  m[15] = 1;
   m[12] = -(s[0] * eye[0] + s[1] * eye[1] + s[2] * eye[2]);
   m[13] = -(u[0] * eye[0] + u[1] * eye[1] + u[2] * eye[2]);
   m[14] = (f[0] * eye[0] + f[1] * eye[1] + f[2] * eye[2]);

@@ -17,11 +17,12 @@ static void reshape(int w, int h) {
 }
 
 static void cube(void) {
-  static const GLfloat c[6][3] = {{1, 0.2f, 0.2f}, {0.2f, 1, 0.2f}, {0.2f, 0.2f, 1}, {1, 1, 0.2f}, {1, 0.2f, 1}, {0.2f, 1, 1}};
+  static const GLfloat c[6][3] = {{1, 0.2f, 0.2f}, {0.2f, 1, 0.2f}, {0.2f, 0.2f, 1},
+                                  {1, 1, 0.2f},    {1, 0.2f, 1},    {0.2f, 1, 1}};
   static const GLfloat v[6][4][3] = {
-      {{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}},     {{-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}, {-1, -1, -1}},
-      {{-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}},     {{-1, -1, 1}, {-1, -1, -1}, {1, -1, -1}, {1, -1, 1}},
-      {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}},     {{1, -1, -1}, {-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}}};
+      {{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}}, {{-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}, {-1, -1, -1}},
+      {{-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}}, {{-1, -1, 1}, {-1, -1, -1}, {1, -1, -1}, {1, -1, 1}},
+      {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}, {{1, -1, -1}, {-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}}};
   glBegin(GL_QUADS);
   for (int f = 0; f < 6; ++f) {
     glColor3fv(c[f]);
@@ -35,10 +36,14 @@ static void square(void) {
   glRotatef(35, 1, 0, 0);
   glRotatef(-20, 0, 1, 0);
   glBegin(GL_QUADS);
-  glColor3f(0.95f, 0.95f, 0.95f); glVertex3f(-2.2f, 0, -2.2f);
-  glColor3f(0.6f, 0.6f, 0.65f); glVertex3f(-2.2f, 0, 2.2f);
-  glColor3f(0.35f, 0.35f, 0.4f); glVertex3f(2.2f, 0, 2.2f);
-  glColor3f(0.75f, 0.75f, 0.8f); glVertex3f(2.2f, 0, -2.2f);
+  glColor3f(0.95f, 0.95f, 0.95f);
+  glVertex3f(-2.2f, 0, -2.2f);
+  glColor3f(0.6f, 0.6f, 0.65f);
+  glVertex3f(-2.2f, 0, 2.2f);
+  glColor3f(0.35f, 0.35f, 0.4f);
+  glVertex3f(2.2f, 0, 2.2f);
+  glColor3f(0.75f, 0.75f, 0.8f);
+  glVertex3f(2.2f, 0, -2.2f);
   glEnd();
   glPopMatrix();
 }
@@ -47,12 +52,18 @@ static void pyramid(void) {
   glPushMatrix();
   glTranslatef(2.3f, -1.0f, 0.6f);
   glBegin(GL_TRIANGLE_FAN);
-  glColor3f(1, 1, 1); glVertex3f(0, 1.6f, 0);
-  glColor3f(1, 0.5f, 0); glVertex3f(-0.7f, 0, 0.7f);
-  glColor3f(0.5f, 0, 1); glVertex3f(0.7f, 0, 0.7f);
-  glColor3f(0, 0.6f, 0.3f); glVertex3f(0.7f, 0, -0.7f);
-  glColor3f(0.6f, 0.1f, 0.1f); glVertex3f(-0.7f, 0, -0.7f);
-  glColor3f(1, 0.5f, 0); glVertex3f(-0.7f, 0, 0.7f);
+  glColor3f(1, 1, 1);
+  glVertex3f(0, 1.6f, 0);
+  glColor3f(1, 0.5f, 0);
+  glVertex3f(-0.7f, 0, 0.7f);
+  glColor3f(0.5f, 0, 1);
+  glVertex3f(0.7f, 0, 0.7f);
+  glColor3f(0, 0.6f, 0.3f);
+  glVertex3f(0.7f, 0, -0.7f);
+  glColor3f(0.6f, 0.1f, 0.1f);
+  glVertex3f(-0.7f, 0, -0.7f);
+  glColor3f(1, 0.5f, 0);
+  glVertex3f(-0.7f, 0, 0.7f);
   glEnd();
   glPopMatrix();
 }

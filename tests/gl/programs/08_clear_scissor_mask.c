@@ -29,10 +29,14 @@ static void clear_rect(int x, int y, int w, int h, GLbitfield mask) {
    at the top: window depth 0.05 .. 0.95. */
 static void slanted_quad(int x0, int y0, int x1, int y1) {
   glBegin(GL_QUADS);
-  glColor3f(1.0f, 0.6f, 0.1f); glVertex3f((float)x0, (float)y0, 0.9f);
-  glColor3f(0.9f, 0.1f, 0.5f); glVertex3f((float)x1, (float)y0, 0.9f);
-  glColor3f(0.2f, 0.3f, 1.0f); glVertex3f((float)x1, (float)y1, -0.9f);
-  glColor3f(0.1f, 0.9f, 0.6f); glVertex3f((float)x0, (float)y1, -0.9f);
+  glColor3f(1.0f, 0.6f, 0.1f);
+  glVertex3f((float)x0, (float)y0, 0.9f);
+  glColor3f(0.9f, 0.1f, 0.5f);
+  glVertex3f((float)x1, (float)y0, 0.9f);
+  glColor3f(0.2f, 0.3f, 1.0f);
+  glVertex3f((float)x1, (float)y1, -0.9f);
+  glColor3f(0.1f, 0.9f, 0.6f);
+  glVertex3f((float)x0, (float)y1, -0.9f);
   glEnd();
 }
 
@@ -65,10 +69,14 @@ static void display(void) {
   /* Colour-masked drawing: a gradient band over the cleared cells, green channel locked. */
   glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE);
   glBegin(GL_QUADS);
-  glColor3f(0.0f, 1.0f, 0.3f); glVertex2i(4, 150);
-  glColor3f(1.0f, 1.0f, 0.8f); glVertex2i(316, 150);
-  glColor3f(1.0f, 1.0f, 0.8f); glVertex2i(316, 166);
-  glColor3f(0.0f, 1.0f, 0.3f); glVertex2i(4, 166);
+  glColor3f(0.0f, 1.0f, 0.3f);
+  glVertex2i(4, 150);
+  glColor3f(1.0f, 1.0f, 0.8f);
+  glVertex2i(316, 150);
+  glColor3f(1.0f, 1.0f, 0.8f);
+  glVertex2i(316, 166);
+  glColor3f(0.0f, 1.0f, 0.3f);
+  glVertex2i(4, 166);
   glEnd();
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 

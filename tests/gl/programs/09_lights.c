@@ -82,7 +82,8 @@ static void display(void) {
   glLightf(GL_LIGHT1, GL_LINEAR_ATTENUATION, 0.5f);
 
   /* LIGHT2: green spot from above, pointing down and forward. */
-  const GLfloat l2_pos[4] = {1.5f, 4.0f, 2.0f, 1.0f}, l2_dir[3] = {0.2f, -1.0f, 0.3f}, l2_col[4] = {0.2f, 1.0f, 0.3f, 1};
+  const GLfloat l2_pos[4] = {1.5f, 4.0f, 2.0f, 1.0f}, l2_dir[3] = {0.2f, -1.0f, 0.3f},
+                l2_col[4] = {0.2f, 1.0f, 0.3f, 1};
   glLightfv(GL_LIGHT2, GL_POSITION, l2_pos);
   glLightfv(GL_LIGHT2, GL_SPOT_DIRECTION, l2_dir);
   glLightfv(GL_LIGHT2, GL_DIFFUSE, l2_col);
@@ -91,7 +92,8 @@ static void display(void) {
   glLightf(GL_LIGHT2, GL_SPOT_EXPONENT, 8.0f);
 
   /* LIGHT3: blue spot from the back right, quadratic attenuation. */
-  const GLfloat l3_pos[4] = {3.5f, 2.5f, -3.0f, 1.0f}, l3_dir[3] = {-0.6f, -1.0f, 0.5f}, l3_col[4] = {0.4f, 0.5f, 1.0f, 1};
+  const GLfloat l3_pos[4] = {3.5f, 2.5f, -3.0f, 1.0f}, l3_dir[3] = {-0.6f, -1.0f, 0.5f},
+                l3_col[4] = {0.4f, 0.5f, 1.0f, 1};
   glLightfv(GL_LIGHT3, GL_POSITION, l3_pos);
   glLightfv(GL_LIGHT3, GL_SPOT_DIRECTION, l3_dir);
   glLightfv(GL_LIGHT3, GL_DIFFUSE, l3_col);
@@ -102,7 +104,8 @@ static void display(void) {
   glLightf(GL_LIGHT3, GL_QUADRATIC_ATTENUATION, 0.04f);
 
   /* LIGHT4: white positional key light with specular, in front. */
-  const GLfloat l4_pos[4] = {2.0f, 3.0f, 5.0f, 1.0f}, l4_col[4] = {0.5f, 0.5f, 0.5f, 1}, l4_spec[4] = {1, 1, 1, 1};
+  const GLfloat l4_pos[4] = {2.0f, 3.0f, 5.0f, 1.0f}, l4_col[4] = {0.5f, 0.5f, 0.5f, 1},
+                l4_spec[4] = {1, 1, 1, 1};
   glLightfv(GL_LIGHT4, GL_POSITION, l4_pos);
   glLightfv(GL_LIGHT4, GL_DIFFUSE, l4_col);
   glLightfv(GL_LIGHT4, GL_SPECULAR, l4_spec);

@@ -18,7 +18,8 @@ static void reshape(int w, int h) {
 }
 
 static void rainbow(double u, double v) {
-  glColor3d(0.5 + 0.5 * cos(2 * PI * u), 0.5 + 0.5 * cos(2 * PI * (u - 1.0 / 3) + v), 0.5 + 0.5 * cos(2 * PI * (u - 2.0 / 3)));
+  glColor3d(0.5 + 0.5 * cos(2 * PI * u), 0.5 + 0.5 * cos(2 * PI * (u - 1.0 / 3) + v),
+            0.5 + 0.5 * cos(2 * PI * (u - 2.0 / 3)));
 }
 
 /* A unit sphere with unit normals, optionally coloured per vertex. */
@@ -81,8 +82,10 @@ static void display(void) {
     glPushMatrix();
     glTranslatef(-1.98f + 1.32f * i, -0.95f, 0);
     glRotatef(30, 0, 0, 1);
-    if (i == 0 || i == 3) glScalef(0.62f, 0.42f, 0.9f);
-    else glScalef(0.6f, 0.6f, 0.6f);
+    if (i == 0 || i == 3)
+      glScalef(0.62f, 0.42f, 0.9f);
+    else
+      glScalef(0.6f, 0.6f, 0.6f);
     if (i == 0) glEnable(GL_NORMALIZE);
     if (i == 1) glEnable(GL_RESCALE_NORMAL);
     sphere(0);

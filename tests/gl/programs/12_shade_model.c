@@ -19,21 +19,27 @@ static void reshape(int w, int h) {
 }
 
 static void hue(int i) {
-  static const GLfloat c[12][3] = {{1, 0, 0},     {1, 0.6f, 0},   {1, 1, 0},       {0.4f, 1, 0},
-                                   {0, 1, 0.5f},  {0, 1, 1},      {0, 0.5f, 1},    {0.3f, 0, 1},
-                                   {0.8f, 0, 1},  {1, 0, 0.6f},   {1, 1, 1},       {0.5f, 0.5f, 0.5f}};
+  static const GLfloat c[12][3] = {{1, 0, 0},    {1, 0.6f, 0}, {1, 1, 0},    {0.4f, 1, 0},
+                                   {0, 1, 0.5f}, {0, 1, 1},    {0, 0.5f, 1}, {0.3f, 0, 1},
+                                   {0.8f, 0, 1}, {1, 0, 0.6f}, {1, 1, 1},    {0.5f, 0.5f, 0.5f}};
   glColor3fv(c[i % 12]);
 }
 
 /* The cells are 80 x 72; (x, y) is the lower-left corner. */
 static void triangles(float x, float y) {
   glBegin(GL_TRIANGLES);
-  hue(0); glVertex2f(x + 4, y + 4);
-  hue(1); glVertex2f(x + 74, y + 8);
-  hue(2); glVertex2f(x + 10, y + 50);
-  hue(3); glVertex2f(x + 76, y + 20);
-  hue(4); glVertex2f(x + 70, y + 68);
-  hue(5); glVertex2f(x + 22, y + 62);
+  hue(0);
+  glVertex2f(x + 4, y + 4);
+  hue(1);
+  glVertex2f(x + 74, y + 8);
+  hue(2);
+  glVertex2f(x + 10, y + 50);
+  hue(3);
+  glVertex2f(x + 76, y + 20);
+  hue(4);
+  glVertex2f(x + 70, y + 68);
+  hue(5);
+  glVertex2f(x + 22, y + 62);
   glEnd();
 }
 
@@ -60,14 +66,22 @@ static void fan(float x, float y) {
 
 static void quads(float x, float y) {
   glBegin(GL_QUADS);
-  hue(0); glVertex2f(x + 3, y + 3);
-  hue(2); glVertex2f(x + 38, y + 5);
-  hue(4); glVertex2f(x + 36, y + 68);
-  hue(6); glVertex2f(x + 5, y + 66);
-  hue(8); glVertex2f(x + 42, y + 4);
-  hue(9); glVertex2f(x + 77, y + 3);
-  hue(1); glVertex2f(x + 76, y + 69);
-  hue(5); glVertex2f(x + 41, y + 64);
+  hue(0);
+  glVertex2f(x + 3, y + 3);
+  hue(2);
+  glVertex2f(x + 38, y + 5);
+  hue(4);
+  glVertex2f(x + 36, y + 68);
+  hue(6);
+  glVertex2f(x + 5, y + 66);
+  hue(8);
+  glVertex2f(x + 42, y + 4);
+  hue(9);
+  glVertex2f(x + 77, y + 3);
+  hue(1);
+  glVertex2f(x + 76, y + 69);
+  hue(5);
+  glVertex2f(x + 41, y + 64);
   glEnd();
 }
 

@@ -42,10 +42,18 @@ static void make_textures(void) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     switch (t) {
-      case TEX_RGB: glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 8, 8, 0, GL_RGB, GL_UNSIGNED_BYTE, rgb); break;
-      case TEX_RGBA: glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba); break;
-      case TEX_LUM: glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 8, 8, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, lum); break;
-      default: glTexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, 8, 8, 0, GL_ALPHA, GL_UNSIGNED_BYTE, alpha); break;
+      case TEX_RGB:
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 8, 8, 0, GL_RGB, GL_UNSIGNED_BYTE, rgb);
+        break;
+      case TEX_RGBA:
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+        break;
+      case TEX_LUM:
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 8, 8, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, lum);
+        break;
+      default:
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, 8, 8, 0, GL_ALPHA, GL_UNSIGNED_BYTE, alpha);
+        break;
     }
   }
   const GLfloat env_colour[4] = {0.2f, 0.4f, 1.0f, 0.5f};
@@ -76,10 +84,18 @@ static void display(void) {
       glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)mode);
       const int x = col * 64 + 4, y = (2 - row) * 80 + 4;
       glBegin(GL_QUADS);
-      glColor4f(1.0f, 0.3f, 0.3f, 1.0f); glTexCoord2f(0, 0); glVertex2i(x, y);
-      glColor4f(0.3f, 1.0f, 0.3f, 0.6f); glTexCoord2f(1, 0); glVertex2i(x + 56, y);
-      glColor4f(0.3f, 0.3f, 1.0f, 1.0f); glTexCoord2f(1, 1); glVertex2i(x + 56, y + 72);
-      glColor4f(1.0f, 1.0f, 0.3f, 0.8f); glTexCoord2f(0, 1); glVertex2i(x, y + 72);
+      glColor4f(1.0f, 0.3f, 0.3f, 1.0f);
+      glTexCoord2f(0, 0);
+      glVertex2i(x, y);
+      glColor4f(0.3f, 1.0f, 0.3f, 0.6f);
+      glTexCoord2f(1, 0);
+      glVertex2i(x + 56, y);
+      glColor4f(0.3f, 0.3f, 1.0f, 1.0f);
+      glTexCoord2f(1, 1);
+      glVertex2i(x + 56, y + 72);
+      glColor4f(1.0f, 1.0f, 0.3f, 0.8f);
+      glTexCoord2f(0, 1);
+      glVertex2i(x, y + 72);
       glEnd();
     }
   glDisable(GL_TEXTURE_2D);

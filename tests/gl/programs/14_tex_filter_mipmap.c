@@ -38,7 +38,8 @@ static void make_textures(void) {
   const GLfloat border[4] = {1.0f, 0.0f, 0.8f, 1.0f};
   glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
 
-  static const GLubyte level_colour[6][3] = {{230, 70, 60}, {60, 200, 70}, {70, 80, 230}, {220, 220, 60}, {220, 60, 220}, {60, 220, 220}};
+  static const GLubyte level_colour[6][3] = {{230, 70, 60},  {60, 200, 70},  {70, 80, 230},
+                                             {220, 220, 60}, {220, 60, 220}, {60, 220, 220}};
   static GLubyte texels[32 * 32 * 3];
   glGenTextures(1, &mipmapped);
   glBindTexture(GL_TEXTURE_2D, mipmapped);
@@ -46,7 +47,8 @@ static void make_textures(void) {
     for (int j = 0; j < size; ++j)
       for (int i = 0; i < size; ++i) {
         const float shade = (i + j) % 2 ? 1.0f : 0.55f;
-        for (int c = 0; c < 3; ++c) texels[(j * size + i) * 3 + c] = (GLubyte)(level_colour[level][c] * shade);
+        for (int c = 0; c < 3; ++c)
+          texels[(j * size + i) * 3 + c] = (GLubyte)(level_colour[level][c] * shade);
       }
     glTexImage2D(GL_TEXTURE_2D, level, GL_RGB, size, size, 0, GL_RGB, GL_UNSIGNED_BYTE, texels);
   }
@@ -56,10 +58,14 @@ static void make_textures(void) {
 
 static void quad(int x, int y, int size, float s0, float s1) {
   glBegin(GL_QUADS);
-  glTexCoord2f(s0, s0); glVertex2i(x, y);
-  glTexCoord2f(s1, s0); glVertex2i(x + size, y);
-  glTexCoord2f(s1, s1); glVertex2i(x + size, y + size);
-  glTexCoord2f(s0, s1); glVertex2i(x, y + size);
+  glTexCoord2f(s0, s0);
+  glVertex2i(x, y);
+  glTexCoord2f(s1, s0);
+  glVertex2i(x + size, y);
+  glTexCoord2f(s1, s1);
+  glVertex2i(x + size, y + size);
+  glTexCoord2f(s0, s1);
+  glVertex2i(x, y + size);
   glEnd();
 }
 
@@ -112,10 +118,14 @@ static void display(void) {
   glTranslatef(-0.5f, -0.5f, 0.0f);
   glMatrixMode(GL_MODELVIEW);
   glBegin(GL_QUADS);
-  glTexCoord2f(0, 0); glVertex2i(162, 12);
-  glTexCoord2f(1, 0); glVertex2i(310, 12);
-  glTexCoord2f(1, 1); glVertex2i(310, 76);
-  glTexCoord2f(0, 1); glVertex2i(162, 76);
+  glTexCoord2f(0, 0);
+  glVertex2i(162, 12);
+  glTexCoord2f(1, 0);
+  glVertex2i(310, 12);
+  glTexCoord2f(1, 1);
+  glVertex2i(310, 76);
+  glTexCoord2f(0, 1);
+  glVertex2i(162, 76);
   glEnd();
   glMatrixMode(GL_TEXTURE);
   glPopMatrix();

@@ -96,9 +96,12 @@ static void draw_source(int variant) {
   glClearColor(variant ? 0.9f : 0.1f, 0.2f, variant ? 0.2f : 0.4f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   glBegin(GL_TRIANGLES);
-  glColor3f(1, 0, 0); glVertex2f(4, 4);
-  glColor3f(0, 1, 0); glVertex2f(60, 10);
-  glColor3f(0, 0, 1); glVertex2f(variant ? 50.0f : 20.0f, 60);
+  glColor3f(1, 0, 0);
+  glVertex2f(4, 4);
+  glColor3f(0, 1, 0);
+  glVertex2f(60, 10);
+  glColor3f(0, 0, 1);
+  glVertex2f(variant ? 50.0f : 20.0f, 60);
   glEnd();
   glColor3f(1, 1, variant ? 1.0f : 0.0f);
   glBegin(GL_QUAD_STRIP);
@@ -127,10 +130,14 @@ static void display(void) {
   /* The patched texture at 2x. */
   glBindTexture(GL_TEXTURE_2D, patched);
   glBegin(GL_QUADS);
-  glTexCoord2f(0, 0); glVertex2i(16, 56);
-  glTexCoord2f(1, 0); glVertex2i(144, 56);
-  glTexCoord2f(1, 1); glVertex2i(144, 184);
-  glTexCoord2f(0, 1); glVertex2i(16, 184);
+  glTexCoord2f(0, 0);
+  glVertex2i(16, 56);
+  glTexCoord2f(1, 0);
+  glVertex2i(144, 56);
+  glTexCoord2f(1, 1);
+  glVertex2i(144, 184);
+  glTexCoord2f(0, 1);
+  glVertex2i(16, 184);
   glEnd();
 
   /* The copied texture, rotated, and straight at 1.5x. */
@@ -139,17 +146,25 @@ static void display(void) {
   glTranslatef(230, 150, 0);
   glRotatef(20, 0, 0, 1);
   glBegin(GL_QUADS);
-  glTexCoord2f(0, 0); glVertex2f(-60, -60);
-  glTexCoord2f(1, 0); glVertex2f(60, -60);
-  glTexCoord2f(1, 1); glVertex2f(60, 60);
-  glTexCoord2f(0, 1); glVertex2f(-60, 60);
+  glTexCoord2f(0, 0);
+  glVertex2f(-60, -60);
+  glTexCoord2f(1, 0);
+  glVertex2f(60, -60);
+  glTexCoord2f(1, 1);
+  glVertex2f(60, 60);
+  glTexCoord2f(0, 1);
+  glVertex2f(-60, 60);
   glEnd();
   glPopMatrix();
   glBegin(GL_QUADS);
-  glTexCoord2f(0, 0); glVertex2i(180, 4);
-  glTexCoord2f(1, 0); glVertex2i(276, 4);
-  glTexCoord2f(1, 1); glVertex2i(276, 52);
-  glTexCoord2f(0, 1); glVertex2i(180, 52);
+  glTexCoord2f(0, 0);
+  glVertex2i(180, 4);
+  glTexCoord2f(1, 0);
+  glVertex2i(276, 4);
+  glTexCoord2f(1, 1);
+  glVertex2i(276, 52);
+  glTexCoord2f(0, 1);
+  glVertex2i(180, 52);
   glEnd();
   glDisable(GL_TEXTURE_2D);
   glutSwapBuffers();

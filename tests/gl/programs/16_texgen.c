@@ -63,8 +63,15 @@ static void make_textures(void) {
     for (int i = 0; i < 64; ++i) {
       GLubyte* t = &e[(j * 64 + i) * 3];
       const int grid = i % 16 == 0 || j % 16 == 0;
-      if (j >= 32) { t[0] = (GLubyte)(90 + j); t[1] = (GLubyte)(140 + j); t[2] = 255; }
-      else { t[0] = (GLubyte)(110 + 2 * j); t[1] = (GLubyte)(70 + j); t[2] = 40; }
+      if (j >= 32) {
+        t[0] = (GLubyte)(90 + j);
+        t[1] = (GLubyte)(140 + j);
+        t[2] = 255;
+      } else {
+        t[0] = (GLubyte)(110 + 2 * j);
+        t[1] = (GLubyte)(70 + j);
+        t[2] = 40;
+      }
       if (grid) t[0] = t[1] = t[2] = 250;
     }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);

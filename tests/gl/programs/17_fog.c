@@ -38,8 +38,10 @@ static void floor_grid(void) {
   glBegin(GL_QUADS);
   for (int z = 0; z < 24; ++z)
     for (int x = -8; x < 8; ++x) {
-      if ((x + z) % 2) glColor3f(0.15f, 0.5f, 0.2f);
-      else glColor3f(0.9f, 0.9f, 0.6f);
+      if ((x + z) % 2)
+        glColor3f(0.15f, 0.5f, 0.2f);
+      else
+        glColor3f(0.9f, 0.9f, 0.6f);
       glVertex3f((float)x, 0, (float)-z);
       glVertex3f((float)x + 1, 0, (float)-z);
       glVertex3f((float)x + 1, 0, (float)-z - 1);

@@ -54,10 +54,14 @@ static void disc(double cx, double cy, double r, float red, float green, float b
 
 static void gradient(int x, int y, int w, int h) {
   glBegin(GL_QUADS);
-  glColor3f(0.1f, 0.1f, 0.4f); glVertex2i(x, y);
-  glColor3f(0.9f, 0.3f, 0.2f); glVertex2i(x + w, y);
-  glColor3f(0.9f, 0.9f, 0.4f); glVertex2i(x + w, y + h);
-  glColor3f(0.2f, 0.7f, 0.6f); glVertex2i(x, y + h);
+  glColor3f(0.1f, 0.1f, 0.4f);
+  glVertex2i(x, y);
+  glColor3f(0.9f, 0.3f, 0.2f);
+  glVertex2i(x + w, y);
+  glColor3f(0.9f, 0.9f, 0.4f);
+  glVertex2i(x + w, y + h);
+  glColor3f(0.2f, 0.7f, 0.6f);
+  glVertex2i(x, y + h);
   glEnd();
 }
 
@@ -80,19 +84,26 @@ static void display(void) {
     glAlphaFunc(funcs[i], refs[i]);
     const int x = 8 + 80 * i, y = 170;
     glBegin(GL_QUADS);
-    glTexCoord2f(0, 0); glVertex2i(x, y);
-    glTexCoord2f(1, 0); glVertex2i(x + 64, y);
-    glTexCoord2f(1, 1); glVertex2i(x + 64, y + 64);
-    glTexCoord2f(0, 1); glVertex2i(x, y + 64);
+    glTexCoord2f(0, 0);
+    glVertex2i(x, y);
+    glTexCoord2f(1, 0);
+    glVertex2i(x + 64, y);
+    glTexCoord2f(1, 1);
+    glVertex2i(x + 64, y + 64);
+    glTexCoord2f(0, 1);
+    glVertex2i(x, y + 64);
     glEnd();
   }
   glDisable(GL_ALPHA_TEST);
   glDisable(GL_TEXTURE_2D);
 
   /* Blending. */
-  static const GLenum blend[6][2] = {{GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA}, {GL_ONE, GL_ONE},
-                                     {GL_SRC_ALPHA, GL_ONE},                 {GL_DST_COLOR, GL_ZERO},
-                                     {GL_ONE_MINUS_DST_COLOR, GL_ZERO},      {GL_ZERO, GL_ONE_MINUS_SRC_COLOR}};
+  static const GLenum blend[6][2] = {{GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA},
+                                     {GL_ONE, GL_ONE},
+                                     {GL_SRC_ALPHA, GL_ONE},
+                                     {GL_DST_COLOR, GL_ZERO},
+                                     {GL_ONE_MINUS_DST_COLOR, GL_ZERO},
+                                     {GL_ZERO, GL_ONE_MINUS_SRC_COLOR}};
   for (int i = 0; i < 6; ++i) {
     const int x = 4 + 106 * (i % 3), y = 84 - 82 * (i / 3);
     gradient(x, y, 100, 78);

@@ -26,7 +26,8 @@ static void sphere(float r, float g, float b) {
     glBegin(GL_QUAD_STRIP);
     for (int i = 0; i <= slices; ++i) {
       const double p = 2 * PI * i / slices;
-      const float s1 = (float)(0.45 + 0.35 * sin(t1) + 0.2 * cos(p)), s0 = (float)(0.45 + 0.35 * sin(t0) + 0.2 * cos(p));
+      const float s1 = (float)(0.45 + 0.35 * sin(t1) + 0.2 * cos(p)),
+                  s0 = (float)(0.45 + 0.35 * sin(t0) + 0.2 * cos(p));
       glColor3f(r * s1, g * s1, b * s1);
       glVertex3d(cos(t1) * sin(p), sin(t1), cos(t1) * cos(p));
       glColor3f(r * s0, g * s0, b * s0);
@@ -41,16 +42,21 @@ static void square(void) {
   glRotatef(50, 1, 0, 0);
   glRotatef(25, 0, 1, 0);
   glBegin(GL_QUADS);
-  glColor3f(0.2f, 0.8f, 0.2f); glVertex3f(-1.6f, -1.6f, 0);
-  glColor3f(0.9f, 0.9f, 0.2f); glVertex3f(1.6f, -1.6f, 0);
-  glColor3f(0.6f, 1.0f, 0.5f); glVertex3f(1.6f, 1.6f, 0);
-  glColor3f(0.9f, 0.7f, 0.1f); glVertex3f(-1.6f, 1.6f, 0);
+  glColor3f(0.2f, 0.8f, 0.2f);
+  glVertex3f(-1.6f, -1.6f, 0);
+  glColor3f(0.9f, 0.9f, 0.2f);
+  glVertex3f(1.6f, -1.6f, 0);
+  glColor3f(0.6f, 1.0f, 0.5f);
+  glVertex3f(1.6f, 1.6f, 0);
+  glColor3f(0.9f, 0.7f, 0.1f);
+  glVertex3f(-1.6f, 1.6f, 0);
   glEnd();
   glPopMatrix();
 }
 
 static void display(void) {
-  static const GLenum funcs[8] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
+  static const GLenum funcs[8] = {GL_NEVER,   GL_LESS,     GL_EQUAL,  GL_LEQUAL,
+                                  GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
   const int cw = win_w / 3, ch = win_h / 3;
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_SCISSOR_TEST);

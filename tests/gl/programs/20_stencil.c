@@ -85,8 +85,9 @@ static void display(void) {
   glStencilMask(0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  static const GLfloat level[8][3] = {{0.1f, 0.1f, 0.1f}, {0.2f, 0.4f, 0.9f}, {0.2f, 0.8f, 0.3f}, {1.0f, 0.9f, 0.2f},
-                                      {0.9f, 0.2f, 0.7f}, {1.0f, 0.5f, 0.1f}, {0.5f, 1.0f, 1.0f}, {1.0f, 1.0f, 1.0f}};
+  static const GLfloat level[8][3] = {{0.1f, 0.1f, 0.1f}, {0.2f, 0.4f, 0.9f}, {0.2f, 0.8f, 0.3f},
+                                      {1.0f, 0.9f, 0.2f}, {0.9f, 0.2f, 0.7f}, {1.0f, 0.5f, 0.1f},
+                                      {0.5f, 1.0f, 1.0f}, {1.0f, 1.0f, 1.0f}};
   for (int k = 0; k < 8; ++k) {
     glStencilFunc(GL_EQUAL, k, 0xff);
     glColor3fv(level[k]);

@@ -15,11 +15,13 @@ static void reshape(int w, int h) {
 
 static void open_box(void) {
   /* Faces wound counter-clockwise seen from outside; the +z face is left out. */
-  static const GLfloat c[5][3] = {{0.9f, 0.2f, 0.2f}, {0.2f, 0.8f, 0.2f}, {0.2f, 0.4f, 1.0f}, {0.95f, 0.85f, 0.2f}, {0.8f, 0.3f, 0.9f}};
-  static const GLfloat v[5][4][3] = {
-      {{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}},   {{-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}, {-1, -1, -1}},
-      {{-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}},   {{-1, -1, 1}, {-1, -1, -1}, {1, -1, -1}, {1, -1, 1}},
-      {{1, -1, -1}, {-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}}};
+  static const GLfloat c[5][3] = {
+      {0.9f, 0.2f, 0.2f}, {0.2f, 0.8f, 0.2f}, {0.2f, 0.4f, 1.0f}, {0.95f, 0.85f, 0.2f}, {0.8f, 0.3f, 0.9f}};
+  static const GLfloat v[5][4][3] = {{{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}},
+                                     {{-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}, {-1, -1, -1}},
+                                     {{-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}},
+                                     {{-1, -1, 1}, {-1, -1, -1}, {1, -1, -1}, {1, -1, 1}},
+                                     {{1, -1, -1}, {-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}}};
   glBegin(GL_QUADS);
   for (int f = 0; f < 5; ++f) {
     glColor3fv(c[f]);
@@ -31,10 +33,11 @@ static void open_box(void) {
 /* The box's edges as lines, drawn without the depth test (lines lying on polygon edges
    would otherwise z-fight with them, which conforming implementations resolve differently). */
 static void box_edges(void) {
-  static const GLfloat v[5][4][3] = {
-      {{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}},   {{-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}, {-1, -1, -1}},
-      {{-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}},   {{-1, -1, 1}, {-1, -1, -1}, {1, -1, -1}, {1, -1, 1}},
-      {{1, -1, -1}, {-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}}};
+  static const GLfloat v[5][4][3] = {{{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}},
+                                     {{-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}, {-1, -1, -1}},
+                                     {{-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}},
+                                     {{-1, -1, 1}, {-1, -1, -1}, {1, -1, -1}, {1, -1, 1}},
+                                     {{1, -1, -1}, {-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}}};
   glDisable(GL_DEPTH_TEST);
   glColor3f(1, 1, 1);
   for (int f = 0; f < 5; ++f) {
@@ -48,7 +51,8 @@ static void box_edges(void) {
 static void pyramid(void) {
   glBegin(GL_TRIANGLES);
   static const GLfloat apex[3] = {0, 1.2f, 0};
-  static const GLfloat base[4][3] = {{-0.8f, -0.6f, 0.8f}, {0.8f, -0.6f, 0.8f}, {0.8f, -0.6f, -0.8f}, {-0.8f, -0.6f, -0.8f}};
+  static const GLfloat base[4][3] = {
+      {-0.8f, -0.6f, 0.8f}, {0.8f, -0.6f, 0.8f}, {0.8f, -0.6f, -0.8f}, {-0.8f, -0.6f, -0.8f}};
   for (int i = 0; i < 4; ++i) {
     glColor3f(0.3f + 0.2f * i, 0.9f - 0.2f * i, 0.5f);
     glVertex3fv(base[i]);
@@ -56,8 +60,12 @@ static void pyramid(void) {
     glVertex3fv(apex);
   }
   glColor3f(0.4f, 0.4f, 0.4f);
-  glVertex3fv(base[0]); glVertex3fv(base[2]); glVertex3fv(base[1]);
-  glVertex3fv(base[0]); glVertex3fv(base[3]); glVertex3fv(base[2]);
+  glVertex3fv(base[0]);
+  glVertex3fv(base[2]);
+  glVertex3fv(base[1]);
+  glVertex3fv(base[0]);
+  glVertex3fv(base[3]);
+  glVertex3fv(base[2]);
   glEnd();
 }
 
@@ -81,12 +89,29 @@ static void display(void) {
     glFrontFace(GL_CCW);
     glDisable(GL_CULL_FACE);
     switch (cell) {
-      case 1: glEnable(GL_CULL_FACE); glCullFace(GL_BACK); break;
-      case 2: glEnable(GL_CULL_FACE); glCullFace(GL_FRONT); break;
-      case 3: glEnable(GL_CULL_FACE); glCullFace(GL_FRONT_AND_BACK); break;
-      case 4: glEnable(GL_CULL_FACE); glCullFace(GL_BACK); glFrontFace(GL_CW); break;
-      case 5: glEnable(GL_CULL_FACE); glCullFace(GL_BACK); break;
-      default: break;
+      case 1:
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        break;
+      case 2:
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_FRONT);
+        break;
+      case 3:
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_FRONT_AND_BACK);
+        break;
+      case 4:
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        glFrontFace(GL_CW);
+        break;
+      case 5:
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        break;
+      default:
+        break;
     }
     glPushMatrix();
     glTranslatef(-0.4f, 0, 0.3f);

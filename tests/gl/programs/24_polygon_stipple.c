@@ -47,9 +47,12 @@ static void display(void) {
   glColor3f(0.9f, 0.6f, 0.2f);
   glRecti(13, 117, 151, 231);
   glBegin(GL_TRIANGLES);
-  glColor3f(0.2f, 0.9f, 0.3f); glVertex2f(90, 130);
-  glColor3f(0.2f, 0.3f, 1.0f); glVertex2f(230, 150);
-  glColor3f(1.0f, 1.0f, 1.0f); glVertex2f(160, 236);
+  glColor3f(0.2f, 0.9f, 0.3f);
+  glVertex2f(90, 130);
+  glColor3f(0.2f, 0.3f, 1.0f);
+  glVertex2f(230, 150);
+  glColor3f(1.0f, 1.0f, 1.0f);
+  glVertex2f(160, 236);
   glEnd();
 
   glPolygonStipple(stripes);
@@ -74,9 +77,12 @@ static void display(void) {
   glColor3f(0.4f, 0.8f, 1.0f);
   glRecti(170, 5, 313, 103);
   glBegin(GL_TRIANGLES);
-  glColor3f(1.0f, 0.3f, 0.6f); glVertex2f(120, 20);
-  glColor3f(1.0f, 1.0f, 0.3f); glVertex2f(250, 60);
-  glColor3f(0.5f, 0.2f, 1.0f); glVertex2f(140, 120);
+  glColor3f(1.0f, 0.3f, 0.6f);
+  glVertex2f(120, 20);
+  glColor3f(1.0f, 1.0f, 0.3f);
+  glVertex2f(250, 60);
+  glColor3f(0.5f, 0.2f, 1.0f);
+  glVertex2f(140, 120);
   glEnd();
 
   glDisable(GL_POLYGON_STIPPLE);

@@ -53,8 +53,10 @@ static void checkerboard(void) {
   for (int j = -5; j < 5; ++j)
     for (int i = -5; i < 5; ++i) {
       const float t = (float)(i + 5) / 10.0f, s = (float)(j + 5) / 10.0f;
-      if ((i + j) % 2) glColor3f(0.9f * t + 0.1f, 0.3f, 0.9f - 0.6f * s);
-      else glColor3f(0.95f, 0.95f, 0.8f);
+      if ((i + j) % 2)
+        glColor3f(0.9f * t + 0.1f, 0.3f, 0.9f - 0.6f * s);
+      else
+        glColor3f(0.95f, 0.95f, 0.8f);
       glVertex2f(0.2f * i, 0.2f * j);
       glVertex2f(0.2f * (i + 1), 0.2f * j);
       glVertex2f(0.2f * (i + 1), 0.2f * (j + 1));

@@ -53,9 +53,12 @@ static void make_images(void) {
 
 static void scene(void) {
   glBegin(GL_TRIANGLES);
-  glColor3f(1, 0.2f, 0.2f); glVertex2i(10, 150);
-  glColor3f(0.2f, 1, 0.2f); glVertex2i(110, 160);
-  glColor3f(0.2f, 0.2f, 1); glVertex2i(50, 232);
+  glColor3f(1, 0.2f, 0.2f);
+  glVertex2i(10, 150);
+  glColor3f(0.2f, 1, 0.2f);
+  glVertex2i(110, 160);
+  glColor3f(0.2f, 0.2f, 1);
+  glVertex2i(50, 232);
   glEnd();
   glColor3f(1, 0.9f, 0.2f);
   glBegin(GL_TRIANGLE_FAN);

@@ -16,15 +16,30 @@ static void box(float x, float z, float w, float d, float h, float r, float g, f
   const float x0 = x - w / 2, x1 = x + w / 2, z0 = z - d / 2, z1 = z + d / 2;
   glBegin(GL_QUADS);
   glColor3f(r, g, b); /* +z */
-  glVertex3f(x0, 0, z1); glVertex3f(x1, 0, z1); glVertex3f(x1, h, z1); glVertex3f(x0, h, z1);
+  glVertex3f(x0, 0, z1);
+  glVertex3f(x1, 0, z1);
+  glVertex3f(x1, h, z1);
+  glVertex3f(x0, h, z1);
   glColor3f(r * 0.7f, g * 0.7f, b * 0.7f); /* +x */
-  glVertex3f(x1, 0, z1); glVertex3f(x1, 0, z0); glVertex3f(x1, h, z0); glVertex3f(x1, h, z1);
+  glVertex3f(x1, 0, z1);
+  glVertex3f(x1, 0, z0);
+  glVertex3f(x1, h, z0);
+  glVertex3f(x1, h, z1);
   glColor3f(r * 0.5f, g * 0.5f, b * 0.5f); /* -z */
-  glVertex3f(x1, 0, z0); glVertex3f(x0, 0, z0); glVertex3f(x0, h, z0); glVertex3f(x1, h, z0);
+  glVertex3f(x1, 0, z0);
+  glVertex3f(x0, 0, z0);
+  glVertex3f(x0, h, z0);
+  glVertex3f(x1, h, z0);
   glColor3f(r * 0.6f, g * 0.6f, b * 0.6f); /* -x */
-  glVertex3f(x0, 0, z0); glVertex3f(x0, 0, z1); glVertex3f(x0, h, z1); glVertex3f(x0, h, z0);
+  glVertex3f(x0, 0, z0);
+  glVertex3f(x0, 0, z1);
+  glVertex3f(x0, h, z1);
+  glVertex3f(x0, h, z0);
   glColor3f(r * 0.9f + 0.1f, g * 0.9f + 0.1f, b * 0.9f + 0.1f); /* top */
-  glVertex3f(x0, h, z1); glVertex3f(x1, h, z1); glVertex3f(x1, h, z0); glVertex3f(x0, h, z0);
+  glVertex3f(x0, h, z1);
+  glVertex3f(x1, h, z1);
+  glVertex3f(x1, h, z0);
+  glVertex3f(x0, h, z0);
   glEnd();
 }
 
@@ -32,8 +47,10 @@ static void town(void) {
   glBegin(GL_QUADS);
   for (int j = -6; j < 6; ++j)
     for (int i = -6; i < 6; ++i) {
-      if ((i + j) % 2) glColor3f(0.35f, 0.45f, 0.35f);
-      else glColor3f(0.55f, 0.6f, 0.5f);
+      if ((i + j) % 2)
+        glColor3f(0.35f, 0.45f, 0.35f);
+      else
+        glColor3f(0.55f, 0.6f, 0.5f);
       glVertex3f((float)i, 0, (float)j + 1);
       glVertex3f((float)i + 1, 0, (float)j + 1);
       glVertex3f((float)i + 1, 0, (float)j);

@@ -8,30 +8,37 @@
 
 static const int W = 320, H = 240;
 
-static void projection(void) {
-  gluPerspective(50.0, (double)W / H, 1.0, 20.0);
-}
+static void projection(void) { gluPerspective(50.0, (double)W / H, 1.0, 20.0); }
 
 static void scene(void) {
   glLoadName(1); /* a large quad at z = -8 */
   glColor3f(0.2f, 0.3f, 0.8f);
   glBegin(GL_QUADS);
-  glVertex3f(-4, -2.5f, -8); glVertex3f(1, -2.5f, -8); glVertex3f(1, 2.5f, -8); glVertex3f(-4, 2.5f, -8);
+  glVertex3f(-4, -2.5f, -8);
+  glVertex3f(1, -2.5f, -8);
+  glVertex3f(1, 2.5f, -8);
+  glVertex3f(-4, 2.5f, -8);
   glEnd();
   glLoadName(2); /* a nearer quad overlapping it */
   glColor3f(0.8f, 0.3f, 0.2f);
   glBegin(GL_QUADS);
-  glVertex3f(-1.5f, -1.5f, -5); glVertex3f(1.5f, -1.5f, -5); glVertex3f(1.5f, 1, -5); glVertex3f(-1.5f, 1, -5);
+  glVertex3f(-1.5f, -1.5f, -5);
+  glVertex3f(1.5f, -1.5f, -5);
+  glVertex3f(1.5f, 1, -5);
+  glVertex3f(-1.5f, 1, -5);
   glEnd();
   glLoadName(3); /* a tilted triangle crossing both */
   glColor3f(0.2f, 0.8f, 0.3f);
   glBegin(GL_TRIANGLES);
-  glVertex3f(0.5f, -2, -4); glVertex3f(3.5f, -1, -9); glVertex3f(2, 2.5f, -6);
+  glVertex3f(0.5f, -2, -4);
+  glVertex3f(3.5f, -1, -9);
+  glVertex3f(2, 2.5f, -6);
   glEnd();
   glLoadName(4); /* a line */
   glColor3f(1, 1, 0.3f);
   glBegin(GL_LINES);
-  glVertex3f(-3.5f, -2.2f, -6); glVertex3f(3.5f, 2.2f, -7);
+  glVertex3f(-3.5f, -2.2f, -6);
+  glVertex3f(3.5f, 2.2f, -7);
   glEnd();
   glLoadName(5); /* points */
   glPointSize(5);
@@ -42,11 +49,17 @@ static void scene(void) {
   glLoadName(6); /* back-facing (clockwise): culled, never a hit */
   glColor3f(1, 1, 1);
   glBegin(GL_QUADS);
-  glVertex3f(-3.5f, -2.6f, -4.5f); glVertex3f(-3.5f, -0.5f, -4.5f); glVertex3f(-1.8f, -0.5f, -4.5f); glVertex3f(-1.8f, -2.6f, -4.5f);
+  glVertex3f(-3.5f, -2.6f, -4.5f);
+  glVertex3f(-3.5f, -0.5f, -4.5f);
+  glVertex3f(-1.8f, -0.5f, -4.5f);
+  glVertex3f(-1.8f, -2.6f, -4.5f);
   glEnd();
   glPushName(7); /* beyond the far plane: clipped away */
   glBegin(GL_QUADS);
-  glVertex3f(-5, -5, -30); glVertex3f(5, -5, -30); glVertex3f(5, 5, -30); glVertex3f(-5, 5, -30);
+  glVertex3f(-5, -5, -30);
+  glVertex3f(5, -5, -30);
+  glVertex3f(5, 5, -30);
+  glVertex3f(-5, 5, -30);
   glEnd();
   glPopName();
 }

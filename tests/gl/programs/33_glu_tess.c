@@ -35,7 +35,9 @@ static void combine(GLdouble coords[3], void* data[4], GLfloat weight[4], void**
   *out = v;
 }
 
-static void tess_error(GLenum code) { fprintf(stderr, "tessellation error: %s\n", (const char*)gluErrorString(code)); }
+static void tess_error(GLenum code) {
+  fprintf(stderr, "tessellation error: %s\n", (const char*)gluErrorString(code));
+}
 
 /* _DATA callbacks: the polygon data is the colour. */
 static void begin_data(GLenum type, void* polygon) {
@@ -75,7 +77,7 @@ static void contour(GLdouble (*v)[3], int n) {
 static void rule(GLenum r) { gluTessProperty(tess, GLU_TESS_WINDING_RULE, r); }
 
 /* Shapes. */
-static GLdouble arrow[7][3] = {{8.3, 30.2, 0}, {44.1, 30.2, 0}, {44.1, 12.6, 0}, {72.4, 40.3, 0},
+static GLdouble arrow[7][3] = {{8.3, 30.2, 0},  {44.1, 30.2, 0}, {44.1, 12.6, 0}, {72.4, 40.3, 0},
                                {44.1, 68.1, 0}, {44.1, 50.4, 0}, {8.3, 50.4, 0}};
 static GLdouble square[4][3] = {{8.3, 8.6, 0}, {71.7, 8.6, 0}, {71.7, 71.4, 0}, {8.3, 71.4, 0}};
 static GLdouble diamond[4][3]; /* clockwise */
@@ -88,7 +90,7 @@ static GLdouble star7[7][3];
 
 static void make_shapes(void) {
   for (int i = 0; i < 4; ++i) {
-    const double a = -2 * PI * i / 4;  /* clockwise */
+    const double a = -2 * PI * i / 4; /* clockwise */
     diamond[i][0] = 40.2 + 21.0 * cos(a);
     diamond[i][1] = 39.7 + 21.0 * sin(a);
   }

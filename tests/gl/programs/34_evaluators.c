@@ -21,7 +21,7 @@ static void init(void) {
       patch[j][i][0] = -1.5f + i;
       patch[j][i][1] = -1.5f + j;
       patch[j][i][2] = ((i == 1 || i == 2) && (j == 1 || j == 2)) ? 2.0f : -0.5f + 0.3f * i;
-      const float w = (i + j) % 2 ? 2.0f : 1.0f;  /* weights: a rational patch */
+      const float w = (i + j) % 2 ? 2.0f : 1.0f; /* weights: a rational patch */
       patch4[j][i][0] = (-1.2f + 0.8f * i) * w;
       patch4[j][i][1] = (-1.2f + 0.8f * j) * w;
       patch4[j][i][2] = 0.4f * (float)((i * j) % 3) * w;
@@ -74,7 +74,8 @@ static void display(void) {
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
-  const GLfloat light[4] = {-1, -4, 6, 1}, diffuse[4] = {0.9f, 0.6f, 0.3f, 1}, spec[4] = {0.6f, 0.6f, 0.6f, 1};
+  const GLfloat light[4] = {-1, -4, 6, 1}, diffuse[4] = {0.9f, 0.6f, 0.3f, 1},
+                spec[4] = {0.6f, 0.6f, 0.6f, 1};
   glLightfv(GL_LIGHT0, GL_POSITION, light);
   glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, diffuse);
   glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec);

@@ -12,17 +12,27 @@ static GLfloat buffer[4096];
 static void scene(void) {
   glPassThrough(1.0f);
   glBegin(GL_TRIANGLES); /* crosses the near plane: clipped into a quadrilateral */
-  glColor3f(1, 0.3f, 0.2f); glVertex3f(-2.5f, -1.5f, -2);
-  glColor3f(0.2f, 1, 0.3f); glVertex3f(-0.5f, -1.5f, 0.5f);
-  glColor3f(0.3f, 0.3f, 1); glVertex3f(-1.5f, 1.0f, -4);
+  glColor3f(1, 0.3f, 0.2f);
+  glVertex3f(-2.5f, -1.5f, -2);
+  glColor3f(0.2f, 1, 0.3f);
+  glVertex3f(-0.5f, -1.5f, 0.5f);
+  glColor3f(0.3f, 0.3f, 1);
+  glVertex3f(-1.5f, 1.0f, -4);
   glEnd();
   glPassThrough(2.0f);
   glBegin(GL_QUADS); /* partly outside on the right */
-  glColor3f(1, 1, 0.2f); glVertex3f(0.5f, -1, -5); glVertex3f(4.5f, -1, -5);
-  glColor3f(0.2f, 1, 1); glVertex3f(4.5f, 1, -5); glVertex3f(0.5f, 1, -5);
+  glColor3f(1, 1, 0.2f);
+  glVertex3f(0.5f, -1, -5);
+  glVertex3f(4.5f, -1, -5);
+  glColor3f(0.2f, 1, 1);
+  glVertex3f(4.5f, 1, -5);
+  glVertex3f(0.5f, 1, -5);
   glEnd();
   glBegin(GL_QUADS); /* clockwise: culled */
-  glVertex3f(-1, 1.2f, -4); glVertex3f(-1, 2, -4); glVertex3f(1, 2, -4); glVertex3f(1, 1.2f, -4);
+  glVertex3f(-1, 1.2f, -4);
+  glVertex3f(-1, 2, -4);
+  glVertex3f(1, 2, -4);
+  glVertex3f(1, 1.2f, -4);
   glEnd();
   glPassThrough(3.0f);
   glBegin(GL_LINE_STRIP);

@@ -53,7 +53,8 @@ TESSEL_FAST_INLINE Int8 quantize24x8(const Float8& z) {
 
 // Depth test (and write) of the group at (gx, gy); needs d.fast_depth and the group inside
 // the target. Returns the passing lanes.
-TESSEL_FAST_INLINE unsigned depth_test8(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask, const Float8& z) {
+TESSEL_FAST_INLINE unsigned depth_test8(const DrawRecord& d, const TargetView& t, int gx, int gy,
+                                        unsigned mask, const Float8& z) {
   std::byte* row0 = t.depth + size_t(gy) * t.depth_row_bytes + size_t(gx) * 4;
   std::byte* row1 = row0 + t.depth_row_bytes;
   const Int8 stored = load_group(row0, row1);
@@ -85,7 +86,8 @@ TESSEL_FAST_INLINE Int8 to_unorm8(Float8 c) {
 }
 
 // Unblended write of all four channels of an RGBA8 attachment (d.fast_color).
-TESSEL_FAST_INLINE void write_rgba8(const ColorTarget& ct, int gx, int gy, unsigned mask, const Vec4<Float8>& c) {
+TESSEL_FAST_INLINE void write_rgba8(const ColorTarget& ct, int gx, int gy, unsigned mask,
+                                    const Vec4<Float8>& c) {
   std::byte* row0 = ct.data + size_t(gy) * ct.row_bytes + size_t(gx) * 4;
   std::byte* row1 = row0 + ct.row_bytes;
   const Int8 px = to_unorm8(c.x) | (to_unorm8(c.y) << 8) | (to_unorm8(c.z) << 16) | (to_unorm8(c.w) << 24);

@@ -65,11 +65,13 @@ struct SmallEdgeLanes {
     for (int i = 0; i < 3; ++i) {
       sa[i] = int32_t(e[i].a);
       sb[i] = int32_t(e[i].b);
-      base[i] = Int8(int32_t(e[i].c + e[i].a * gx0 + e[i].b * gy0)) + Int8(sa[i]) * lane_dx + Int8(sb[i]) * lane_dy;
+      base[i] =
+          Int8(int32_t(e[i].c + e[i].a * gx0 + e[i].b * gy0)) + Int8(sa[i]) * lane_dx + Int8(sb[i]) * lane_dy;
     }
   }
   unsigned at(int ox, int oy) const {
-    return (((base[0] + Int8(sa[0] * ox + sb[0] * oy)) > Int8(0)) & ((base[1] + Int8(sa[1] * ox + sb[1] * oy)) > Int8(0)) &
+    return (((base[0] + Int8(sa[0] * ox + sb[0] * oy)) > Int8(0)) &
+            ((base[1] + Int8(sa[1] * ox + sb[1] * oy)) > Int8(0)) &
             ((base[2] + Int8(sa[2] * ox + sb[2] * oy)) > Int8(0)))
         .bits();
   }
@@ -89,9 +91,9 @@ struct Prim {
   // in kLaneDx/kLaneDy order, already cut to the bbox. The raster phase then needs no edges,
   // and the Prim has none.
   uint64_t cover = 0;
-  float xr = 0, yr = 0;     // anchor of the planes, window coordinates
-  float z[3] = {0, 0, 0};   // window depth plane
-  float oow[3] = {0, 0, 0}; // 1/w plane
+  float xr = 0, yr = 0;      // anchor of the planes, window coordinates
+  float z[3] = {0, 0, 0};    // window depth plane
+  float oow[3] = {0, 0, 0};  // 1/w plane
   const float* planes() const { return reinterpret_cast<const float*>(this + 1); }
   float* planes() { return reinterpret_cast<float*>(this + 1); }
   // The edges (only when cover == 0), after the planes of `varyings` components.
@@ -111,7 +113,7 @@ static_assert(sizeof(Prim) == 64);
 
 // What a clear command does to the pixels in its rectangle.
 struct ClearPrim {
-  Prim base;  // kind == Clear; minx..maxy is the rectangle
+  Prim base;                    // kind == Clear; minx..maxy is the rectangle
   uint8_t color_mask_bits = 0;  // attachments to clear
   std::array<glm::vec4, kMaxColorAttachments> color{};
   std::array<uint8_t, kMaxColorAttachments> write_mask{};  // per attachment RGBA mask
@@ -182,7 +184,7 @@ struct DrawRecord {
   // scissor and framebuffer).
   float vp_scale[3], vp_offset[3];
   int area_x0, area_y0, area_x1, area_y1;  // inclusive-exclusive pixel rectangle
-  float guard_x, guard_y;                   // |x_clip| <= guard * w keeps x within the guard band
+  float guard_x, guard_y;                  // |x_clip| <= guard * w keeps x within the guard band
   float depth_min, depth_max;
   float depth_resolution;  // r of GL 4.6 §14.6.5 for units of polygon offset (fixed formats)
   bool depth_float = false;
@@ -210,8 +212,8 @@ class ProgramBase {
   // Rasterizes and shades n consecutive triangles of one draw, in order, inside the tile
   // rectangle [x0,x1) x [y0,y1), writing through `t` (the draw's attachments, or the raster
   // phase's tile-local copies of them).
-  virtual void raster(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0, int y0,
-                      int x1, int y1, Counters& c) const = 0;
+  virtual void raster(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0,
+                      int y0, int x1, int y1, Counters& c) const = 0;
 };
 
 // --- stage functions (each in its own .cpp) --------------------------------------------------
@@ -232,10 +234,10 @@ void validate_vertex_range(const VertexLayout& layout, uint32_t max_id, uint32_t
 
 // fragment_ops.cpp: the per-sample tests and writes for one 4x2 group of lanes at pixel
 // (gx, gy); lanes are laid out as in vec.hpp's dFdx. `mask` bit i = lane i alive.
-unsigned depth_stencil_test(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask, const Float8& z,
-                            bool front);
-void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask, const Vec4<Float8>* colors,
-                  int outputs);
+unsigned depth_stencil_test(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask,
+                            const Float8& z, bool front);
+void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsigned mask,
+                  const Vec4<Float8>* colors, int outputs);
 // `stream`: the rectangle is in the whole target (not a tile-local copy) and nothing will read
 // it back soon, so whole rows are written with non-temporal stores, without first reading
 // the lines they overwrite.
@@ -243,8 +245,8 @@ void clear_rect(const TargetView& t, const ClearPrim& c, int x0, int y0, int x1,
 // Copies `rows` rows of `row_bytes` (between a tile-local buffer and the target); with
 // `stream`, into the target with non-temporal stores where the addresses allow (16-byte
 // aligned).
-void copy_rows(std::byte* dst, size_t dst_stride, const std::byte* src, size_t src_stride, size_t row_bytes, int rows,
-               bool stream = false);
+void copy_rows(std::byte* dst, size_t dst_stride, const std::byte* src, size_t src_stride, size_t row_bytes,
+               int rows, bool stream = false);
 
 // Lane offsets of a 4x2 group (two 2x2 quads side by side).
 inline constexpr int kLaneDx[8] = {0, 1, 0, 1, 2, 3, 2, 3};

@@ -12,18 +12,22 @@
 
 namespace tessel::gpu::detail {
 
-template <class S> class Program final : public ProgramBase {
+template <class S>
+class Program final : public ProgramBase {
  public:
   // The floating-point mode of the program's work: a run-time shader may ask for denormals
   // flushed (RuntimeShape::flush_denormals), set once per call here rather than per lane
   // group; C++ shaders run in the caller's mode.
   struct NoMode {};
   auto float_mode() const {
-    if constexpr (shader_runtime<S>()) return S::float_mode(uniforms_);
-    else return NoMode{};
+    if constexpr (shader_runtime<S>())
+      return S::float_mode(uniforms_);
+    else
+      return NoMode{};
   }
   using Uniforms = typename S::Uniforms;
-  template <class F> using Varyings = typename S::template Varyings<F>;
+  template <class F>
+  using Varyings = typename S::template Varyings<F>;
 
   Program(const S& s, const Uniforms& u) : shader_(s), uniforms_(u) {
     varyings = varying_count<S>();
@@ -34,8 +38,8 @@ template <class S> class Program final : public ProgramBase {
     outputs = shader_outputs<S>();
   }
 
-  void shade_vertices(const DrawRecord& d, const uint32_t* ids, int n, uint32_t instance,
-                      glm::vec4* pos, float* vars, float* soa) const override {
+  void shade_vertices(const DrawRecord& d, const uint32_t* ids, int n, uint32_t instance, glm::vec4* pos,
+                      float* vars, float* soa) const override {
     [[maybe_unused]] const auto mode = float_mode();
     constexpr int K = varying_count<S>();
     VertexIn<Float8> in;  // the constant locations are written by the first batch only
@@ -61,8 +65,8 @@ template <class S> class Program final : public ProgramBase {
     }
   }
 
-  void raster(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0, int y0, int x1,
-              int y1, Counters& counters) const override {
+  void raster(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0, int y0,
+              int x1, int y1, Counters& counters) const override {
     [[maybe_unused]] const auto mode = float_mode();
     // Fragment counts are kept in registers here and added to the worker's counters once.
     FragmentCounts c;
@@ -134,7 +138,8 @@ template <class S> class Program final : public ProgramBase {
   static constexpr Float8 kCentreY{vx::f32x8{0.5f, 0.5f, 1.5f, 1.5f, 0.5f, 0.5f, 1.5f, 1.5f}};
 
   // Shaders whose lanes are independent (shader.hpp), with early depth, may be packed.
-  static constexpr bool kPacked = shader_lanes_independent<S>() && !shader_discards<S>() && !shader_writes_depth<S>();
+  static constexpr bool kPacked =
+      shader_lanes_independent<S>() && !shader_discards<S>() && !shader_writes_depth<S>();
   // What a packed lane carries: the varyings (value/w for perspective-correct ones), then the
   // pixel centre x and y, window z, 1/w, the facing (mask bits) and the primitive id (integer
   // bits).
@@ -154,8 +159,9 @@ template <class S> class Program final : public ProgramBase {
   // it shades its pending group before it calls this, and this shades every staged lane
   // before it returns. Runs prims[i..) while they are packable and returns the index of the
   // first that is not (or n); prefetches kAhead places on, as raster() does.
-  __attribute__((noinline)) int raster_packed(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int i,
-                                              int n, int x0, int y0, int x1, int y1, FragmentCounts& c) const {
+  __attribute__((noinline)) int raster_packed(const DrawRecord& d, const TargetView& t,
+                                              const Prim* const* prims, int i, int n, int x0, int y0, int x1,
+                                              int y1, FragmentCounts& c) const {
     constexpr int K = varying_count<S>();
     Stage st;
     const bool tests = d.state.depth_test || d.state.stencil_test;
@@ -242,13 +248,15 @@ template <class S> class Program final : public ProgramBase {
 
   // Runs the shader on the first sixteen staged lanes and writes the colours of the lanes
   // in `mask` (an unblended RGBA8 attachment, DrawRecord::fast_color), in lane order.
-  __attribute__((flatten, noinline)) void shade_staged(const TargetView& t, const Stage& st, unsigned mask) const {
+  __attribute__((flatten, noinline)) void shade_staged(const TargetView& t, const Stage& st,
+                                                       unsigned mask) const {
     constexpr int K = varying_count<S>();
     using F = Float16;
     Varyings<F> vary;
     const F oow = F::load(st.v[K + 3]);
     if constexpr (K > 0) {
-      const uint64_t linear = shader_runtime<S>() ? flat | noperspective : shader_flat<S>() | shader_noperspective<S>();
+      const uint64_t linear =
+          shader_runtime<S>() ? flat | noperspective : shader_flat<S>() | shader_noperspective<S>();
       const F w = F(1.0f) / oow;
       F lanes[K];
       for (int k = 0; k < K; ++k) {
@@ -268,12 +276,18 @@ template <class S> class Program final : public ProgramBase {
     for (int i = 0; i < shader_outputs<S>(); ++i) f.color[size_t(i)] = Vec4<F>(F(0.0f));
     f.depth = f.coord.z;
     f.killed = MaskOf<F>(false);
-    if constexpr (shader_runtime<S>()) shader_.fragment_stored(uniforms_, f);
-    else shader_.fragment(uniforms_, vary, f);
+    if constexpr (shader_runtime<S>())
+      shader_.fragment_stored(uniforms_, f);
+    else
+      shader_.fragment(uniforms_, vary, f);
     const Vec4<F>& col = f.color[0];
     alignas(32) int32_t px[16], xs[16], ys[16];
-    (to_unorm8(col.x.lo) | (to_unorm8(col.y.lo) << 8) | (to_unorm8(col.z.lo) << 16) | (to_unorm8(col.w.lo) << 24)).store(px);
-    (to_unorm8(col.x.hi) | (to_unorm8(col.y.hi) << 8) | (to_unorm8(col.z.hi) << 16) | (to_unorm8(col.w.hi) << 24)).store(px + 8);
+    (to_unorm8(col.x.lo) | (to_unorm8(col.y.lo) << 8) | (to_unorm8(col.z.lo) << 16) |
+     (to_unorm8(col.w.lo) << 24))
+        .store(px);
+    (to_unorm8(col.x.hi) | (to_unorm8(col.y.hi) << 8) | (to_unorm8(col.z.hi) << 16) |
+     (to_unorm8(col.w.hi) << 24))
+        .store(px + 8);
     to_int(cx.lo).store(xs);
     to_int(cx.hi).store(xs + 8);
     to_int(cy.lo).store(ys);
@@ -287,7 +301,8 @@ template <class S> class Program final : public ProgramBase {
 
   // The lanes of the 4x2 group at (gx, gy) inside the bbox [minx, maxx] x [miny, maxy] (all
   // of them, away from its border).
-  __attribute__((always_inline)) static unsigned bbox_mask(int gx, int gy, int minx, int miny, int maxx, int maxy) {
+  __attribute__((always_inline)) static unsigned bbox_mask(int gx, int gy, int minx, int miny, int maxx,
+                                                           int maxy) {
     if (gx >= minx && gx + 3 <= maxx && gy >= miny && gy + 1 <= maxy) return 0xFF;
     const Int8 lane_dx(vx::i32x8{0, 1, 0, 1, 2, 3, 2, 3}), lane_dy(vx::i32x8{0, 0, 1, 1, 0, 0, 1, 1});
     const Int8 px = Int8(gx) + lane_dx, py = Int8(gy) + lane_dy;
@@ -297,7 +312,8 @@ template <class S> class Program final : public ProgramBase {
   // The covered groups of a triangle with a cover (found at setup, Prim::cover) in the tile
   // rectangle, as emit(p, group, lane mask): only the cut to the tile is left to do.
   template <class Emit>
-  __attribute__((always_inline)) static void raster_cover(const Prim& p, int x0, int y0, int x1, int y1, Emit& emit) {
+  __attribute__((always_inline)) static void raster_cover(const Prim& p, int x0, int y0, int x1, int y1,
+                                                          Emit& emit) {
     const int minx = std::max(p.minx, x0), maxx = std::min(p.maxx, x1 - 1);
     const int miny = std::max(p.miny, y0), maxy = std::min(p.maxy, y1 - 1);
     if (minx > maxx || miny > maxy) return;
@@ -316,7 +332,8 @@ template <class S> class Program final : public ProgramBase {
   // The coverage of one triangle in the tile rectangle, as emit(p, group, lane mask) per
   // covered 4x2 group.
   template <class Emit>
-  __attribute__((always_inline)) static void raster_one(const Prim& p, int x0, int y0, int x1, int y1, Emit& emit) {
+  __attribute__((always_inline)) static void raster_one(const Prim& p, int x0, int y0, int x1, int y1,
+                                                        Emit& emit) {
     const int minx = std::max(p.minx, x0), maxx = std::min(p.maxx, x1 - 1);
     const int miny = std::max(p.miny, y0), maxy = std::min(p.maxy, y1 - 1);
     if (minx > maxx || miny > maxy) return;
@@ -356,7 +373,10 @@ template <class S> class Program final : public ProgramBase {
           e00[i] = e.c + e.a * bx + e.b * by;
           const int64_t lo = e00[i] + std::min<int64_t>(0, e.a * 7) + std::min<int64_t>(0, e.b * 7);
           const int64_t hi = e00[i] + std::max<int64_t>(0, e.a * 7) + std::max<int64_t>(0, e.b * 7);
-          if (hi <= 0) { outside = true; break; }
+          if (hi <= 0) {
+            outside = true;
+            break;
+          }
           if (lo <= 0) crossing |= 1u << i;
         }
         if (outside) continue;
@@ -385,7 +405,8 @@ template <class S> class Program final : public ProgramBase {
               for (int l = 0; l < kLanes; ++l) {
                 const int px = gx + kLaneDx[l], py = gy + kLaneDy[l];
                 for (int i = 0; i < 3; ++i)
-                  if ((crossing & (1u << i)) && !(pe[i].c + pe[i].a * px + pe[i].b * py > 0)) mask &= ~(1u << l);
+                  if ((crossing & (1u << i)) && !(pe[i].c + pe[i].a * px + pe[i].b * py > 0))
+                    mask &= ~(1u << l);
               }
             }
           }
@@ -403,13 +424,15 @@ template <class S> class Program final : public ProgramBase {
   }
 
   // Depth/stencil test of the 8 lanes of group a, or the 16 of groups a and b.
-  __attribute__((always_inline)) static unsigned test8(const DrawRecord& d, const TargetView& t, Pos a, unsigned mask, const Float8& z, bool front) {
-    if (d.fast_depth && a.x + 4 <= t.width && a.y + 2 <= t.height) return depth_test8(d, t, a.x, a.y, mask, z);
+  __attribute__((always_inline)) static unsigned test8(const DrawRecord& d, const TargetView& t, Pos a,
+                                                       unsigned mask, const Float8& z, bool front) {
+    if (d.fast_depth && a.x + 4 <= t.width && a.y + 2 <= t.height)
+      return depth_test8(d, t, a.x, a.y, mask, z);
     return depth_stencil_test(d, t, a.x, a.y, mask, z, front);
   }
   template <class F>
-  __attribute__((always_inline)) static unsigned test(const DrawRecord& d, const TargetView& t, Pos a, Pos b, unsigned mask,
-                                                      const F& z, bool front_a, bool front_b) {
+  __attribute__((always_inline)) static unsigned test(const DrawRecord& d, const TargetView& t, Pos a, Pos b,
+                                                      unsigned mask, const F& z, bool front_a, bool front_b) {
     if constexpr (lane_width<F> == 8) {
       return test8(d, t, a, mask, z, front_a);
     } else {
@@ -419,27 +442,35 @@ template <class S> class Program final : public ProgramBase {
       return lo | (hi << 8);
     }
   }
-  __attribute__((always_inline)) static void write8(const DrawRecord& d, const TargetView& t, Pos a, unsigned mask, const Vec4<Float8>* colors,
-                     int outputs) {
-    if (d.fast_color && a.x + 4 <= t.width && a.y + 2 <= t.height) return write_rgba8(t.color[0], a.x, a.y, mask, colors[0]);
+  __attribute__((always_inline)) static void write8(const DrawRecord& d, const TargetView& t, Pos a,
+                                                    unsigned mask, const Vec4<Float8>* colors, int outputs) {
+    if (d.fast_color && a.x + 4 <= t.width && a.y + 2 <= t.height)
+      return write_rgba8(t.color[0], a.x, a.y, mask, colors[0]);
     write_colors(d, t, a.x, a.y, mask, colors, outputs);
   }
 
   // A value per half: x on eight lanes; x in lanes 0-7 and y in lanes 8-15 on sixteen.
   // V is F, MaskOf<F> or IntOf<F>.
-  template <class F, class V, class T> __attribute__((always_inline)) static V halves(T x, T y) {
-    if constexpr (lane_width<F> == 8) return V(x);
-    else return join(decltype(lo_half(V()))(x), decltype(lo_half(V()))(y));
+  template <class F, class V, class T>
+  __attribute__((always_inline)) static V halves(T x, T y) {
+    if constexpr (lane_width<F> == 8)
+      return V(x);
+    else
+      return join(decltype(lo_half(V()))(x), decltype(lo_half(V()))(y));
   }
-  template <class F> __attribute__((always_inline)) static F halves(float x, float y) { return halves<F, F>(x, y); }
+  template <class F>
+  __attribute__((always_inline)) static F halves(float x, float y) {
+    return halves<F, F>(x, y);
+  }
 
   // Shades the 4x2 group at a of triangle pa (eight lanes; pb is pa), or also the group at b
   // of triangle pb (sixteen lanes: a in lanes 0-7, b in lanes 8-15). flatten: the shader and
-  // every GLSL function it calls are inlined here, so lane values stay in registers (lane values passed to an out-of-line
-  // call go through memory); always_inline: with two call sites GCC would outline it.
+  // every GLSL function it calls are inlined here, so lane values stay in registers (lane values passed to an
+  // out-of-line call go through memory); always_inline: with two call sites GCC would outline it.
   template <class F>
-  __attribute__((flatten, always_inline)) inline void shade(const DrawRecord& d, const TargetView& t, const Prim& pa, const Prim& pb,
-                                                                  Pos a, Pos b, unsigned mask, FragmentCounts& c) const {
+  __attribute__((flatten, always_inline)) inline void shade(const DrawRecord& d, const TargetView& t,
+                                                            const Prim& pa, const Prim& pb, Pos a, Pos b,
+                                                            unsigned mask, FragmentCounts& c) const {
     constexpr int K = varying_count<S>();
     constexpr int N = lane_width<F>;
     constexpr int max_outputs = shader_outputs<S>();
@@ -481,8 +512,10 @@ template <class S> class Program final : public ProgramBase {
           v = plane(pla + k, plb + k, K, fx, fy);
           if (!(((flat | noperspective) >> k) & 1)) v = v * w;
         }
-        if constexpr (shader_runtime<S>()) v.store(S::fragment_lanes().varyings[k]);
-        else lanes[k] = v;
+        if constexpr (shader_runtime<S>())
+          v.store(S::fragment_lanes().varyings[k]);
+        else
+          lanes[k] = v;
       }
       if constexpr (!shader_runtime<S>()) std::memcpy(&vary, lanes, sizeof lanes);
     }
@@ -493,8 +526,10 @@ template <class S> class Program final : public ProgramBase {
     for (int i = 0; i < outputs; ++i) f.color[size_t(i)] = Vec4<F>(F(0.0f));
     f.depth = z;
     f.killed = MaskOf<F>(false);
-    if constexpr (shader_runtime<S>()) shader_.fragment_stored(uniforms_, f);
-    else shader_.fragment(uniforms_, vary, f);
+    if constexpr (shader_runtime<S>())
+      shader_.fragment_stored(uniforms_, f);
+    else
+      shader_.fragment(uniforms_, vary, f);
     if constexpr (shader_discards<S>()) mask &= ~f.killed.bits();
     if constexpr (shader_writes_depth<S>()) z = clamp(f.depth, F(0.0f), F(1.0f));
     c.fragments_shaded += unsigned(__builtin_popcount(mask));

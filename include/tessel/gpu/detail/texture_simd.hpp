@@ -57,13 +57,13 @@ TESSEL_ALWAYS_INLINE Int8 integral_to_int(Float8 f) {
 
 TESSEL_ALWAYS_INLINE Int8 wrap8(Int8 i, int size, Wrap mode) {
   if (mode == Wrap::Repeat) return i & Int8(size - 1);  // power-of-two size
-  return min(max(i, Int8(0)), Int8(size - 1));           // ClampToEdge
+  return min(max(i, Int8(0)), Int8(size - 1));          // ClampToEdge
 }
 
 TESSEL_ALWAYS_INLINE Vec4<Float8> decode_rgba8(Int8 t) {
   const Float8 k(1.0f / 255.0f);
-  return {to_float(t & Int8(0xFF)) * k, to_float((t >> 8) & Int8(0xFF)) * k, to_float((t >> 16) & Int8(0xFF)) * k,
-          to_float(Int8(vx::i32x8((vx::u32x8)t.v >> 24))) * k};
+  return {to_float(t & Int8(0xFF)) * k, to_float((t >> 8) & Int8(0xFF)) * k,
+          to_float((t >> 16) & Int8(0xFF)) * k, to_float(Int8(vx::i32x8((vx::u32x8)t.v >> 24))) * k};
 }
 
 TESSEL_ALWAYS_INLINE Vec4<Float8> lerp8(const Vec4<Float8>& a, const Vec4<Float8>& b, Float8 t) {
@@ -72,7 +72,8 @@ TESSEL_ALWAYS_INLINE Vec4<Float8> lerp8(const Vec4<Float8>& a, const Vec4<Float8
 
 inline bool vector_path(const Texture2D& tex, const SamplerState& st) {
   if (tex.format() != Format::RGBA8) return false;
-  const bool pow2_w = (tex.width() & (tex.width() - 1)) == 0, pow2_h = (tex.height() & (tex.height() - 1)) == 0;
+  const bool pow2_w = (tex.width() & (tex.width() - 1)) == 0,
+             pow2_h = (tex.height() & (tex.height() - 1)) == 0;
   const bool ok_s = st.wrap_s == Wrap::ClampToEdge || (st.wrap_s == Wrap::Repeat && pow2_w);
   const bool ok_t = st.wrap_t == Wrap::ClampToEdge || (st.wrap_t == Wrap::Repeat && pow2_h);
   // Gather indices are 32-bit: y * width + x must fit.
@@ -94,7 +95,9 @@ struct Rgba16 {
 TESSEL_ALWAYS_INLINE void gather_pairs(const std::byte* base, Int8 index, Int8& first, Int8& second) {
   alignas(32) int32_t at[8];
   index.store(at);
-  auto pair = [&](int l) { return _mm_loadl_epi64(reinterpret_cast<const __m128i*>(base + size_t(uint32_t(at[l])) * 4)); };
+  auto pair = [&](int l) {
+    return _mm_loadl_epi64(reinterpret_cast<const __m128i*>(base + size_t(uint32_t(at[l])) * 4));
+  };
   auto two = [&](int l0, int l1) { return _mm_unpacklo_epi64(pair(l0), pair(l1)); };
   const __m256 a = _mm256_castsi256_ps(_mm256_set_m128i(two(4, 5), two(0, 1)));
   const __m256 b = _mm256_castsi256_ps(_mm256_set_m128i(two(6, 7), two(2, 3)));
@@ -118,8 +121,8 @@ TESSEL_ALWAYS_INLINE __m256i lerp16(__m256i a, __m256i b, __m256i m) {
 TESSEL_ALWAYS_INLINE Rgba16 split(Int8 texels) {
   const __m256i t = (__m256i)texels.v;
   // Bytes 1 and 3 of each lane to 16-bit fields by one shuffle (-1: zero).
-  const __m256i odd = _mm256_setr_epi8(1, -1, 3, -1, 5, -1, 7, -1, 9, -1, 11, -1, 13, -1, 15, -1,
-                                       1, -1, 3, -1, 5, -1, 7, -1, 9, -1, 11, -1, 13, -1, 15, -1);
+  const __m256i odd = _mm256_setr_epi8(1, -1, 3, -1, 5, -1, 7, -1, 9, -1, 11, -1, 13, -1, 15, -1, 1, -1, 3,
+                                       -1, 5, -1, 7, -1, 9, -1, 11, -1, 13, -1, 15, -1);
   return {_mm256_and_si256(t, _mm256_set1_epi32(0x00FF00FF)), _mm256_shuffle_epi8(t, odd)};
 }
 TESSEL_ALWAYS_INLINE Rgba16 lerp16(const Rgba16& a, const Rgba16& b, __m256i w) {
@@ -202,7 +205,8 @@ TESSEL_ALWAYS_INLINE Float8 quad_rho2(const Float8& u, const Float8& v, int w, i
 // on vectors (no per-quad plan), and both halves' texel addresses and gathers side by side,
 // so that their latencies overlap. The arithmetic is that of texture() on eight lanes, step
 // for step, so the result is bit-identical; false (nothing written) when it does not apply.
-TESSEL_ALWAYS_INLINE bool trilinear16(const Texture2D& tex, const SamplerState& st, const Vec2<Float16>& uv, Vec4<Float16>& out) {
+TESSEL_ALWAYS_INLINE bool trilinear16(const Texture2D& tex, const SamplerState& st, const Vec2<Float16>& uv,
+                                      Vec4<Float16>& out) {
   if (st.min_filter != Filter::LinearMipmapLinear || tex.levels() < 2 || !vector_path(tex, st)) return false;
   const int W = tex.width(), H = tex.height();
   const Float8 r_lo = quad_rho2(uv.x.lo, uv.y.lo, W, H), r_hi = quad_rho2(uv.x.hi, uv.y.hi, W, H);
@@ -229,11 +233,14 @@ TESSEL_ALWAYS_INLINE bool trilinear16(const Texture2D& tex, const SamplerState& 
   const int level = lv_lo[0];
   if (((lv_lo == Int8(level)) & (lv_hi == Int8(level))).bits() != 0xFF) return false;
   // The mip blend of each lane's quad as a 16-bit weight, lrint(blend * 256) as run_plan has it.
-  const __m256i w_lo = weight_pair(Int8((vx::i32x8)_mm256_cvtps_epi32((__m256)((l_lo - d_lo) * Float8(256.0f)).v)));
-  const __m256i w_hi = weight_pair(Int8((vx::i32x8)_mm256_cvtps_epi32((__m256)((l_hi - d_hi) * Float8(256.0f)).v)));
+  const __m256i w_lo =
+      weight_pair(Int8((vx::i32x8)_mm256_cvtps_epi32((__m256)((l_lo - d_lo) * Float8(256.0f)).v)));
+  const __m256i w_hi =
+      weight_pair(Int8((vx::i32x8)_mm256_cvtps_epi32((__m256)((l_hi - d_hi) * Float8(256.0f)).v)));
 
   const LevelRef L0 = level_ref(tex, level), L1 = level_ref(tex, level + 1);
-  const Float8 s_lo = sane8_fixed(uv.x.lo), t_lo = sane8_fixed(uv.y.lo), s_hi = sane8_fixed(uv.x.hi), t_hi = sane8_fixed(uv.y.hi);
+  const Float8 s_lo = sane8_fixed(uv.x.lo), t_lo = sane8_fixed(uv.y.lo), s_hi = sane8_fixed(uv.x.hi),
+               t_hi = sane8_fixed(uv.y.hi);
   const Rgba16 a_lo = bilinear_rgba16_sane(L0, st.wrap_s, st.wrap_t, s_lo, t_lo);
   const Rgba16 a_hi = bilinear_rgba16_sane(L0, st.wrap_s, st.wrap_t, s_hi, t_hi);
   const Rgba16 b_lo = bilinear_rgba16_sane(L1, st.wrap_s, st.wrap_t, s_lo, t_lo);
