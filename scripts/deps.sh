@@ -5,6 +5,8 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config ccache
+  # the format check of make test (scripts/check_format.sh)
+  clang-format
   libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev libtinygltf-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   # the GLSL front end and the shader JIT (src/glsl)
