@@ -89,13 +89,19 @@ class Bound final : public gpu::RuntimeShader {
   Bound(std::shared_ptr<const Linked> l, std::vector<uint32_t> u, std::vector<TextureUnit> t)
       : l_(std::move(l)), uniforms_(std::move(u)), units_(std::move(t)) {
     if (uniforms_.empty()) uniforms_.push_back(0);  // the code clamps word indices to the last word
+    // What every call passes, worked out once: the calls come per sixteen lanes.
+    vs_in_ = inputs(false);
+    fs_in_ = inputs(true);
+    if (l_->jit) {
+      vs_fn_ = l_->jit->function(0);
+      fs_fn_ = l_->jit->function(1);
+    }
   }
   const gpu::RuntimeShape& shape() const override { return l_->shape; }
 
   void vertex(gpu::VertexLanes& lanes) const override {
-    if (l_->jit) {
-      const RunInputs in = inputs(false);
-      l_->jit->function(0)(&lanes, uniforms_.data(), uint32_t(uniforms_.size()), &in, 0xFFFFu);
+    if (vs_fn_) {
+      vs_fn_(&lanes, vs_in_.uniforms, vs_in_.uniform_words, &vs_in_, 0xFFFFu);
       return;
     }
     LaneReg* r = regs(l_->vs.registers);
@@ -107,9 +113,8 @@ class Bound final : public gpu::RuntimeShader {
   }
 
   void fragment(gpu::FragmentLanes& lanes) const override {
-    if (l_->jit) {
-      const RunInputs in = inputs(true);
-      lanes.killed = l_->jit->function(1)(&lanes, uniforms_.data(), uint32_t(uniforms_.size()), &in, 0xFFFFu);
+    if (fs_fn_) {
+      lanes.killed = fs_fn_(&lanes, fs_in_.uniforms, fs_in_.uniform_words, &fs_in_, 0xFFFFu);
       return;
     }
     LaneReg* r = regs(l_->fs.registers);
@@ -131,6 +136,8 @@ class Bound final : public gpu::RuntimeShader {
   std::shared_ptr<const Linked> l_;
   std::vector<uint32_t> uniforms_;
   std::vector<TextureUnit> units_;
+  RunInputs vs_in_, fs_in_;
+  StageFn vs_fn_ = nullptr, fs_fn_ = nullptr;
 
   RunInputs inputs(bool fragment) const {
     RunInputs in;

@@ -27,6 +27,8 @@ struct RuntimeBridge {
   using Uniforms = std::shared_ptr<const RuntimeShader>;
   template <class F>
   using Varyings = std::conditional_t<K == 0, NoVaryings, VaryingArray<F, (K > 0 ? K : 1)>>;
+  // The program's shape, copied when the draw is made (shape() is a virtual call).
+  RuntimeShape shape_;
   static constexpr bool runtime = true;
   // Without packing, discarding and depth writes are taken as possible: when the program
   // does neither, `killed` stays clear and `depth` holds the interpolated depth, so the
@@ -43,7 +45,7 @@ struct RuntimeBridge {
   Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
     constexpr int N = lane_width<F>;
     thread_local VertexLanes lanes;
-    const RuntimeShape& shape = u->shape();
+    const RuntimeShape& shape = shape_;
     for (uint32_t m = shape.attributes; m; m &= m - 1) {
       const int loc = __builtin_ctz(m);
       if (loc >= kMaxVertexAttribs) break;
@@ -83,7 +85,7 @@ struct RuntimeBridge {
   void fragment_stored(const Uniforms& u, Fragment<F>& f) const {
     constexpr int N = lane_width<F>;
     FragmentLanes& lanes = fragment_lanes();
-    const RuntimeShape& shape = u->shape();
+    const RuntimeShape& shape = shape_;
     f.coord.x.store(lanes.coord[0]);
     f.coord.y.store(lanes.coord[1]);
     f.coord.z.store(lanes.coord[2]);
@@ -110,7 +112,8 @@ constexpr std::array<int, 7> kSizes = {0, 4, 8, 16, 24, 32, kMaxVaryings};
 
 template <int K, bool Packed>
 std::unique_ptr<detail::ProgramBase> make_bridge(const std::shared_ptr<const RuntimeShader>& s) {
-  auto p = std::make_unique<detail::Program<RuntimeBridge<K, Packed>>>(RuntimeBridge<K, Packed>{}, s);
+  auto p =
+      std::make_unique<detail::Program<RuntimeBridge<K, Packed>>>(RuntimeBridge<K, Packed>{s->shape()}, s);
   const RuntimeShape& shape = s->shape();
   p->flat = shape.flat;
   p->noperspective = shape.noperspective;
