@@ -30,6 +30,12 @@ bool parse(glslang::TShader& sh, const std::string& source, std::string& log) {
   const char* text = source.c_str();
   const int length = int(std::min<size_t>(source.size(), size_t(INT32_MAX)));
   sh.setStringsWithLengths(&text, &length, 1);
+  // ftransform() (GLSL 1.20 section 8.5, compatibility vertex shaders) is the fixed-function
+  // transform, gl_ModelViewProjectionMatrix * gl_Vertex, which is how Mesa defines it too:
+  // given as that expression it lowers to the same operations as the product written out.
+  // (In a core shader gl_Vertex is not declared, and the compile fails there.)
+  if (sh.getStage() == EShLangVertex)
+    sh.setPreamble("#define ftransform() (gl_ModelViewProjectionMatrix * gl_Vertex)\n");
   const bool ok = sh.parse(GetDefaultResources(), 110, ENoProfile, false, false, EShMsgDefault);
   log = sh.getInfoLog();
   return ok;

@@ -1717,7 +1717,7 @@ class Lowerer {
       case glslang::EOpIMulExtended:
         fail(a, "umulExtended/imulExtended are not supported");
       case glslang::EOpFtransform:
-        fail(a, "ftransform() is not supported yet");
+        fail(a, "ftransform() is only in compatibility vertex shaders");
       default:
         break;
     }

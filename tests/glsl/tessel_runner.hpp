@@ -62,11 +62,32 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
     r.log = prog->info_log();
     return r;
   }
+  // The fixed-function matrices of a compatibility shader (identity unless given).
+  if (!spec.modelview.empty() || !spec.projection.empty()) {
+    glm::mat4 mv(1.0f), pr(1.0f);
+    if (spec.modelview.size() == 16) std::memcpy(&mv[0][0], spec.modelview.data(), 64);
+    if (spec.projection.size() == 16) std::memcpy(&pr[0][0], spec.projection.data(), 64);
+    prog->set_compat_matrices(mv, pr);
+  }
   // Attributes.
   std::vector<std::unique_ptr<gpu::Buffer>> buffers;
   gpu::VertexLayout layout;
   for (const auto& a : spec.attributes) {
-    const int loc = prog->attribute_location(a.name);
+    int loc = prog->attribute_location(a.name);
+    // The compatibility built-ins are not active attributes (GL reports -1 for them too);
+    // they have fixed locations, as the GL layer feeds them from glVertexPointer & co.
+    if (a.name == "gl_Vertex")
+      loc = glsl::kLocationVertex;
+    else if (a.name == "gl_Normal")
+      loc = glsl::kLocationNormal;
+    else if (a.name == "gl_Color")
+      loc = glsl::kLocationColor;
+    else if (a.name == "gl_SecondaryColor")
+      loc = glsl::kLocationSecondaryColor;
+    else if (a.name == "gl_FogCoord")
+      loc = glsl::kLocationFogCoord;
+    else if (a.name.rfind("gl_MultiTexCoord", 0) == 0 && a.name.size() == 17)
+      loc = glsl::kLocationMultiTexCoord0 + (a.name[16] - '0');
     if (loc < 0) continue;
     if (a.integer) {
       buffers.push_back(std::make_unique<gpu::Buffer>(a.idata.data(), a.idata.size() * 4));

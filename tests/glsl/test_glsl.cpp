@@ -63,6 +63,10 @@ TEST(Glsl, VersionsAndCompatibilityBuiltinsCompile) {
           ->ok());
   EXPECT_TRUE(
       Shader::compile(Stage::Fragment, "#version 150\nout vec4 c; void main() { c = vec4(1.0); }")->ok());
+  // ftransform() is in compatibility vertex shaders only: a core one gets an error on its line.
+  auto core = Shader::compile(Stage::Vertex, "#version 330\n\nvoid main() { gl_Position = ftransform(); }\n");
+  EXPECT_FALSE(core->ok());
+  EXPECT_NE(core->info_log().find("0:3"), std::string::npos) << core->info_log();
 }
 
 TEST(Glsl, LinkErrors) {

@@ -408,6 +408,32 @@ void main() {
   EXPECT_EQ(m.count, 0) << m.first;
 }
 
+// ftransform() in a compatibility vertex shader is the fixed-function transform of gl_Vertex:
+// a tilted quad through a perspective projection and a modelview with rotation, the varying
+// clip position and gl_FragCoord.z compared with Mesa (to a few ulp: perspective-correct
+// interpolation and window z round differently from llvmpipe's, as in the conformance set's
+// varyings), and the same for the product written out in the shader.
+TEST(GlslMesa, FtransformIsTheFixedFunctionTransform) {
+  reference::GlslDrawSpec spec;
+  spec.fragment = R"(#version 120
+varying vec4 q;
+void main() { gl_FragColor = vec4(q.xy / q.w, gl_FragCoord.z, q.w); })";
+  spec.attributes.push_back({"gl_Vertex", 4, {-1, -1, 0, 1, 1, -1, 0.3f, 1, 1,  1, 0,     1,
+                                              -1, -1, 0, 1, 1, 1,  0,    1, -1, 1, -0.4f, 1}});
+  spec.count = 6;
+  // Column-major: a rotation about y and a translation back; a GL perspective (fovy 60,
+  // aspect 1, near 0.5, far 10).
+  const float c = 0.8f, s = 0.6f;
+  spec.modelview = {c, 0, -s, 0, 0, 1, 0, 0, s, 0, c, 0, 0.1f, -0.2f, -3.0f, 1};
+  const float f = 1.7320508f, n = 0.5f, fa = 10.0f;
+  spec.projection = {f, 0, 0, 0, 0, f, 0, 0, 0, 0, (fa + n) / (n - fa), -1, 0, 0, 2 * fa * n / (n - fa), 0};
+  for (const char* position : {"ftransform()", "gl_ModelViewProjectionMatrix * gl_Vertex"}) {
+    spec.vertex = std::string("#version 120\nvarying vec4 q;\nvoid main() { gl_Position = ") + position +
+                  "; q = gl_Position; }\n";
+    run_spec(position, spec, {1e-6f, 1e-6f});
+  }
+}
+
 // A wrong result must fail: the comparison of a shader against a slightly different one.
 TEST(GlslMesa, ToleranceCatchesAWrongResult) {
   if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
