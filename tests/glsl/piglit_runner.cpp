@@ -294,7 +294,9 @@ struct Runner {
         vs = "#version 110\nvoid main() { gl_Position = gl_Vertex; }\n";
     }
     std::string fs = t.fs;
-    if (fs.empty()) fs = "void main() { gl_FragColor = vec4(0.0); }\n";
+    // Without a fragment shader GL's fixed-function fragment stage runs: with texturing and
+    // fog off (what the runner sets up), it writes the interpolated primary colour.
+    if (fs.empty()) fs = "void main() { gl_FragColor = gl_Color; }\n";
     // A shader without #version is compiled at the version the test requires, as shader_runner
     // does.
     auto versioned = [&](const std::string& src) {
