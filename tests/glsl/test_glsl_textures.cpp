@@ -11,22 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "compare.hpp"
-#include "glsl_oracle.hpp"
-#include "tessel_runner.hpp"
+#include "mesa_case.hpp"
 
 namespace tessel::testing {
 namespace {
-
-reference::GlslOracle* oracle() {
-  static std::unique_ptr<reference::GlslOracle> o = [] {
-    std::string why;
-    auto p = reference::GlslOracle::create(&why);
-    if (!p) std::fprintf(stderr, "no Mesa oracle: %s\n", why.c_str());
-    return p;
-  }();
-  return o.get();
-}
 
 // GL enums.
 constexpr uint32_t kNearest = 0x2600, kLinear = 0x2601, kNearestMipmapNearest = 0x2700,
@@ -36,48 +24,13 @@ constexpr uint32_t kTex1D = 0x0DE0, kTex3D = 0x806F, kTexCube = 0x8513, kTex2DAr
                    kTex1DArray = 0x8C18, kTexBuffer = 0x8C2A;
 constexpr uint32_t kDepth32F = 0x8CAC, kRGBA32I = 0x8D82, kRGBA32UI = 0x8D70, kRGBA8 = 0x8058;
 
-// The fragment shader: `body` runs with p in [0, 1]^2 (the pixel's centre), i the pixel
-// index 0..255 and t = i / 255, and writes vec4 c.
-std::string fragment(const std::string& decl, const std::string& body) {
-  return "#version 330\nin vec2 p;\nout vec4 c;\n" + decl +
-         "\nvoid main() {\n  int i = int(gl_FragCoord.x) + 16 * int(gl_FragCoord.y);\n  float t = float(i) / "
-         "255.0;\n  " +
-         body + "\n}\n";
-}
-
-reference::GlslDrawSpec quad(const std::string& fs) {
-  reference::GlslDrawSpec s;
-  s.vertex = R"(#version 330
-layout(location = 0) in vec2 pos;
-out vec2 p;
-void main() { p = pos * 0.5 + 0.5; gl_Position = vec4(pos, 0.0, 1.0); }
-)";
-  s.fragment = fs;
-  s.attributes.push_back({"pos", 2, {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1}});
-  s.count = 6;
-  return s;
-}
-
 // Draws `body` with `tex` on unit 0 (sampler uniform `tex`, declared by `decl`) on both sides.
 void run(const std::string& decl, const std::string& body, const reference::GlslTexture& tex, Tolerance tol) {
   SCOPED_TRACE(body);
-  if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
-  reference::GlslDrawSpec spec = quad(fragment(decl, body));
+  reference::GlslDrawSpec spec = quad_spec(kVertex330, fragment330(decl, body));
   spec.textures = {tex};
   spec.uniforms = {{"tex", {}, {0}}};
-  const reference::GlslResult mesa = oracle()->run(spec);
-  ASSERT_TRUE(mesa.ok) << "Mesa: " << mesa.log << "\n" << spec.fragment;
-  const TesselResult ours = run_tessel(spec);
-  ASSERT_TRUE(ours.ok) << "Tessel: " << ours.log << "\n" << spec.fragment;
-  const Mismatch m = compare_floats(ours.outputs[0], mesa.outputs[0], spec.width, tol);
-  EXPECT_EQ(m.count, 0) << m.first << "\n" << spec.fragment;
-  ::setenv("TESSEL_GLSL", "interp", 1);
-  const TesselResult interp = run_tessel(spec);
-  ::unsetenv("TESSEL_GLSL");
-  ASSERT_TRUE(interp.ok) << interp.log;
-  EXPECT_EQ(0, std::memcmp(interp.outputs[0].data(), ours.outputs[0].data(), ours.outputs[0].size() * 4))
-      << "the interpreter and the JIT differ\n"
-      << spec.fragment;
+  run_spec(body, spec, tol);
 }
 
 // A colour texture of w x h x d texels (d slices, layers, or 1): red, green and blue ramp
@@ -191,7 +144,6 @@ TEST(GlslTextures, Sampler3DIntegerAndOldName) {
   run("uniform usampler3D tex;", "c = vec4(texture(tex, vec3(p.yx, t))) + vec4(textureSize(tex, 0), 0.0);",
       integer_texture(kTex3D, 4, 2, 8, true), kExact);
   // GLSL 1.10's texture3D, in a 1.20 shader.
-  if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
   reference::GlslDrawSpec spec;
   spec.vertex =
       "#version 120\nattribute vec2 pos;\nvarying vec2 p;\nvoid main() { p = pos * 0.5 + 0.5; gl_Position = "
@@ -204,12 +156,7 @@ TEST(GlslTextures, Sampler3DIntegerAndOldName) {
   spec.count = 6;
   spec.textures = {filtered(colour_texture(kTex3D, 8, 8, 4), kLinearMipmapLinear, kLinear, kRepeat, true)};
   spec.uniforms = {{"tex", {}, {0}}};
-  const reference::GlslResult mesa = oracle()->run(spec);
-  ASSERT_TRUE(mesa.ok) << mesa.log;
-  const TesselResult ours = run_tessel(spec);
-  ASSERT_TRUE(ours.ok) << ours.log;
-  const Mismatch m = compare_floats(ours.outputs[0], mesa.outputs[0], spec.width, kFiltered);
-  EXPECT_EQ(m.count, 0) << m.first;
+  run_spec("texture3D", spec, kFiltered);
 }
 
 // --- sampler2DArray and sampler1DArray ------------------------------------------------------------
@@ -375,7 +322,7 @@ TEST(GlslTextures, Rgba8WithinTwoSteps) {
 // Reflection: the GL type enums of the new sampler types.
 TEST(GlslTextures, SamplerTypeEnums) {
   const char* vs = "#version 330\nvoid main() { gl_Position = vec4(0.0); }\n";
-  const std::string fs = fragment(
+  const std::string fs = fragment330(
       "uniform sampler3D a; uniform sampler2DArray b; uniform sampler1DArray c1; uniform sampler1DShadow d;"
       " uniform sampler2DArrayShadow e; uniform samplerCubeShadow f; uniform samplerBuffer g; uniform "
       "isampler3D h;"
