@@ -127,9 +127,7 @@ void keyboard(unsigned char key, int x, int y) {
   (void)y;
   switch (key) {
     case 's':
-    case 'S':
-      smooth = !smooth;
-      break;
+    case 'S': smooth = !smooth; break;
     case '0':
       light0_on = !light0_on;
       if (light0_on)
@@ -146,10 +144,8 @@ void keyboard(unsigned char key, int x, int y) {
       break;
     case 'q':
     case 'Q':
-    case 27:
-      exit(0);
-    default:
-      return;
+    case 27: exit(0);
+    default: return;
   }
   glutPostRedisplay();
 }

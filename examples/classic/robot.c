@@ -191,78 +191,32 @@ void keyboard(unsigned char key, int x, int y) {
   (void)x;
   (void)y;
   switch (key) {
-    case 'n':
-      neck_x += d;
-      break;
-    case 'N':
-      neck_x -= d;
-      break;
-    case 'h':
-      neck_y += d;
-      break;
-    case 'H':
-      neck_y -= d;
-      break;
-    case 'a':
-      l_shoulder_x -= d;
-      break;
-    case 'A':
-      l_shoulder_x += d;
-      break;
-    case 's':
-      l_elbow_x -= d;
-      break;
-    case 'S':
-      l_elbow_x += d;
-      break;
-    case 'd':
-      r_shoulder_x -= d;
-      break;
-    case 'D':
-      r_shoulder_x += d;
-      break;
-    case 'f':
-      r_elbow_x -= d;
-      break;
-    case 'F':
-      r_elbow_x += d;
-      break;
-    case 'z':
-      l_hip_x -= d;
-      break;
-    case 'Z':
-      l_hip_x += d;
-      break;
-    case 'x':
-      l_knee_x += d;
-      break;
-    case 'X':
-      l_knee_x -= d;
-      break;
-    case 'c':
-      r_hip_x -= d;
-      break;
-    case 'C':
-      r_hip_x += d;
-      break;
-    case 'v':
-      r_knee_x += d;
-      break;
-    case 'V':
-      r_knee_x -= d;
-      break;
-    case 'r':
-      startPose();
-      break;
-    case '0':
-      straightPose();
-      break;
+    case 'n': neck_x += d; break;
+    case 'N': neck_x -= d; break;
+    case 'h': neck_y += d; break;
+    case 'H': neck_y -= d; break;
+    case 'a': l_shoulder_x -= d; break;
+    case 'A': l_shoulder_x += d; break;
+    case 's': l_elbow_x -= d; break;
+    case 'S': l_elbow_x += d; break;
+    case 'd': r_shoulder_x -= d; break;
+    case 'D': r_shoulder_x += d; break;
+    case 'f': r_elbow_x -= d; break;
+    case 'F': r_elbow_x += d; break;
+    case 'z': l_hip_x -= d; break;
+    case 'Z': l_hip_x += d; break;
+    case 'x': l_knee_x += d; break;
+    case 'X': l_knee_x -= d; break;
+    case 'c': r_hip_x -= d; break;
+    case 'C': r_hip_x += d; break;
+    case 'v': r_knee_x += d; break;
+    case 'V': r_knee_x -= d; break;
+    case 'r': startPose(); break;
+    case '0': straightPose(); break;
     case 'q':
     case 'Q':
-    case 27:
-      exit(0);
-    default:
-      return;
+    case 27: exit(0);
+    default: return;
   }
   /* joints that only bend one way */
   neck_x = clamp(neck_x, -40.0f, 40.0f);
@@ -278,20 +232,11 @@ void special(int key, int x, int y) {
   (void)x;
   (void)y;
   switch (key) {
-    case GLUT_KEY_LEFT:
-      view_y -= 5.0f;
-      break;
-    case GLUT_KEY_RIGHT:
-      view_y += 5.0f;
-      break;
-    case GLUT_KEY_UP:
-      view_x += 5.0f;
-      break;
-    case GLUT_KEY_DOWN:
-      view_x -= 5.0f;
-      break;
-    default:
-      return;
+    case GLUT_KEY_LEFT: view_y -= 5.0f; break;
+    case GLUT_KEY_RIGHT: view_y += 5.0f; break;
+    case GLUT_KEY_UP: view_x += 5.0f; break;
+    case GLUT_KEY_DOWN: view_x -= 5.0f; break;
+    default: return;
   }
   glutPostRedisplay();
 }

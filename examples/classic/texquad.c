@@ -120,10 +120,8 @@ void keyboard(unsigned char key, int x, int y) {
       break;
     case 'q':
     case 'Q':
-    case 27:
-      exit(0);
-    default:
-      break;
+    case 27: exit(0);
+    default: break;
   }
 }
 

@@ -15,19 +15,14 @@ namespace {
 int component_bytes(GLenum type) {
   switch (type) {
     case GL_BYTE:
-    case GL_UNSIGNED_BYTE:
-      return 1;
+    case GL_UNSIGNED_BYTE: return 1;
     case GL_SHORT:
-    case GL_UNSIGNED_SHORT:
-      return 2;
+    case GL_UNSIGNED_SHORT: return 2;
     case GL_INT:
     case GL_UNSIGNED_INT:
-    case GL_FLOAT:
-      return 4;
-    case GL_DOUBLE:
-      return 8;
-    default:
-      return 0;
+    case GL_FLOAT: return 4;
+    case GL_DOUBLE: return 8;
+    default: return 0;
   }
 }
 
@@ -39,8 +34,7 @@ float read(const uint8_t* p, GLenum type, bool normalized) {
       std::memcpy(&v, p, 1);
       return normalized ? (2.0f * v + 1.0f) / 255.0f : float(v);
     }
-    case GL_UNSIGNED_BYTE:
-      return normalized ? float(*p) / 255.0f : float(*p);
+    case GL_UNSIGNED_BYTE: return normalized ? float(*p) / 255.0f : float(*p);
     case GL_SHORT: {
       int16_t v;
       std::memcpy(&v, p, 2);
@@ -71,8 +65,7 @@ float read(const uint8_t* p, GLenum type, bool normalized) {
       std::memcpy(&v, p, 8);
       return float(v);
     }
-    default:
-      return 0.0f;
+    default: return 0.0f;
   }
 }
 
@@ -199,20 +192,13 @@ void set_pointer(Context& c, ArrayPointer& a, GLint size, GLenum type, GLsizei s
 
 ArrayPointer* client_array(Context& c, GLenum cap) {
   switch (cap) {
-    case GL_VERTEX_ARRAY:
-      return &c.c.vertex;
-    case GL_NORMAL_ARRAY:
-      return &c.c.normal;
-    case GL_COLOR_ARRAY:
-      return &c.c.color;
-    case GL_TEXTURE_COORD_ARRAY:
-      return &c.c.tex;
-    case GL_EDGE_FLAG_ARRAY:
-      return &c.c.edge;
-    case GL_INDEX_ARRAY:
-      return &c.c.index;
-    default:
-      return nullptr;
+    case GL_VERTEX_ARRAY: return &c.c.vertex;
+    case GL_NORMAL_ARRAY: return &c.c.normal;
+    case GL_COLOR_ARRAY: return &c.c.color;
+    case GL_TEXTURE_COORD_ARRAY: return &c.c.tex;
+    case GL_EDGE_FLAG_ARRAY: return &c.c.edge;
+    case GL_INDEX_ARRAY: return &c.c.index;
+    default: return nullptr;
   }
 }
 
@@ -325,27 +311,13 @@ void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid** out) {
   GL_OUTSIDE_BEGIN();
   if (!out) return;
   switch (pname) {
-    case GL_VERTEX_ARRAY_POINTER:
-      *out = const_cast<void*>(c.c.vertex.pointer);
-      break;
-    case GL_NORMAL_ARRAY_POINTER:
-      *out = const_cast<void*>(c.c.normal.pointer);
-      break;
-    case GL_COLOR_ARRAY_POINTER:
-      *out = const_cast<void*>(c.c.color.pointer);
-      break;
-    case GL_TEXTURE_COORD_ARRAY_POINTER:
-      *out = const_cast<void*>(c.c.tex.pointer);
-      break;
-    case GL_EDGE_FLAG_ARRAY_POINTER:
-      *out = const_cast<void*>(c.c.edge.pointer);
-      break;
-    case GL_INDEX_ARRAY_POINTER:
-      *out = const_cast<void*>(c.c.index.pointer);
-      break;
-    default:
-      c.error(GL_INVALID_ENUM);
-      break;
+    case GL_VERTEX_ARRAY_POINTER: *out = const_cast<void*>(c.c.vertex.pointer); break;
+    case GL_NORMAL_ARRAY_POINTER: *out = const_cast<void*>(c.c.normal.pointer); break;
+    case GL_COLOR_ARRAY_POINTER: *out = const_cast<void*>(c.c.color.pointer); break;
+    case GL_TEXTURE_COORD_ARRAY_POINTER: *out = const_cast<void*>(c.c.tex.pointer); break;
+    case GL_EDGE_FLAG_ARRAY_POINTER: *out = const_cast<void*>(c.c.edge.pointer); break;
+    case GL_INDEX_ARRAY_POINTER: *out = const_cast<void*>(c.c.index.pointer); break;
+    default: c.error(GL_INVALID_ENUM); break;
   }
 }
 

@@ -52,590 +52,243 @@ bool query(Context& c, GLenum pname, Values& out) {
       out.kind = Kind::Color;
       put(out, {s.current.normal.x, s.current.normal.y, s.current.normal.z});
       return true;
-    case GL_CURRENT_TEXTURE_COORDS:
-      put4(out, s.current.tex);
-      return true;
-    case GL_CURRENT_RASTER_POSITION:
-      put4(out, s.current.raster_pos);
-      return true;
+    case GL_CURRENT_TEXTURE_COORDS: put4(out, s.current.tex); return true;
+    case GL_CURRENT_RASTER_POSITION: put4(out, s.current.raster_pos); return true;
     case GL_CURRENT_RASTER_COLOR:
       out.kind = Kind::Color;
       put4(out, s.current.raster_color);
       return true;
-    case GL_CURRENT_RASTER_TEXTURE_COORDS:
-      put4(out, s.current.raster_tex);
-      return true;
-    case GL_CURRENT_RASTER_DISTANCE:
-      put(out, {s.current.raster_distance});
-      return true;
-    case GL_CURRENT_RASTER_POSITION_VALID:
-      b(s.current.raster_valid);
-      return true;
-    case GL_EDGE_FLAG:
-      b(s.current.edge);
-      return true;
+    case GL_CURRENT_RASTER_TEXTURE_COORDS: put4(out, s.current.raster_tex); return true;
+    case GL_CURRENT_RASTER_DISTANCE: put(out, {s.current.raster_distance}); return true;
+    case GL_CURRENT_RASTER_POSITION_VALID: b(s.current.raster_valid); return true;
+    case GL_EDGE_FLAG: b(s.current.edge); return true;
     // Transformation.
-    case GL_MATRIX_MODE:
-      e(s.transform.matrix_mode);
-      return true;
-    case GL_MODELVIEW_MATRIX:
-      put_mat(out, c.matrices[0].back());
-      return true;
-    case GL_PROJECTION_MATRIX:
-      put_mat(out, c.matrices[1].back());
-      return true;
-    case GL_TEXTURE_MATRIX:
-      put_mat(out, c.matrices[2].back());
-      return true;
-    case GL_MODELVIEW_STACK_DEPTH:
-      put(out, {double(c.matrices[0].size())});
-      return true;
-    case GL_PROJECTION_STACK_DEPTH:
-      put(out, {double(c.matrices[1].size())});
-      return true;
-    case GL_TEXTURE_STACK_DEPTH:
-      put(out, {double(c.matrices[2].size())});
-      return true;
+    case GL_MATRIX_MODE: e(s.transform.matrix_mode); return true;
+    case GL_MODELVIEW_MATRIX: put_mat(out, c.matrices[0].back()); return true;
+    case GL_PROJECTION_MATRIX: put_mat(out, c.matrices[1].back()); return true;
+    case GL_TEXTURE_MATRIX: put_mat(out, c.matrices[2].back()); return true;
+    case GL_MODELVIEW_STACK_DEPTH: put(out, {double(c.matrices[0].size())}); return true;
+    case GL_PROJECTION_STACK_DEPTH: put(out, {double(c.matrices[1].size())}); return true;
+    case GL_TEXTURE_STACK_DEPTH: put(out, {double(c.matrices[2].size())}); return true;
     case GL_VIEWPORT:
       put(out,
           {double(s.viewport.x), double(s.viewport.y), double(s.viewport.width), double(s.viewport.height)});
       return true;
-    case GL_DEPTH_RANGE:
-      put(out, {s.viewport.near_, s.viewport.far_});
-      return true;
-    case GL_NORMALIZE:
-      b(s.transform.normalize);
-      return true;
-    case GL_RESCALE_NORMAL:
-      b(s.transform.rescale_normal);
-      return true;
+    case GL_DEPTH_RANGE: put(out, {s.viewport.near_, s.viewport.far_}); return true;
+    case GL_NORMALIZE: b(s.transform.normalize); return true;
+    case GL_RESCALE_NORMAL: b(s.transform.rescale_normal); return true;
     // Colouring and lighting.
-    case GL_FOG:
-      b(s.fog.enabled);
-      return true;
+    case GL_FOG: b(s.fog.enabled); return true;
     case GL_FOG_COLOR:
       out.kind = Kind::Color;
       put4(out, s.fog.color);
       return true;
-    case GL_FOG_DENSITY:
-      put(out, {s.fog.density});
-      return true;
-    case GL_FOG_START:
-      put(out, {s.fog.start});
-      return true;
-    case GL_FOG_END:
-      put(out, {s.fog.end});
-      return true;
-    case GL_FOG_MODE:
-      e(s.fog.mode);
-      return true;
-    case GL_FOG_INDEX:
-      put(out, {0.0});
-      return true;
-    case GL_SHADE_MODEL:
-      e(s.light.shade_model);
-      return true;
-    case GL_LIGHTING:
-      b(s.light.lighting);
-      return true;
-    case GL_COLOR_MATERIAL:
-      b(s.light.color_material);
-      return true;
-    case GL_COLOR_MATERIAL_PARAMETER:
-      e(s.light.color_material_mode);
-      return true;
-    case GL_COLOR_MATERIAL_FACE:
-      e(s.light.color_material_face);
-      return true;
+    case GL_FOG_DENSITY: put(out, {s.fog.density}); return true;
+    case GL_FOG_START: put(out, {s.fog.start}); return true;
+    case GL_FOG_END: put(out, {s.fog.end}); return true;
+    case GL_FOG_MODE: e(s.fog.mode); return true;
+    case GL_FOG_INDEX: put(out, {0.0}); return true;
+    case GL_SHADE_MODEL: e(s.light.shade_model); return true;
+    case GL_LIGHTING: b(s.light.lighting); return true;
+    case GL_COLOR_MATERIAL: b(s.light.color_material); return true;
+    case GL_COLOR_MATERIAL_PARAMETER: e(s.light.color_material_mode); return true;
+    case GL_COLOR_MATERIAL_FACE: e(s.light.color_material_face); return true;
     case GL_LIGHT_MODEL_AMBIENT:
       out.kind = Kind::Color;
       put4(out, s.light.model_ambient);
       return true;
-    case GL_LIGHT_MODEL_LOCAL_VIEWER:
-      b(s.light.local_viewer);
-      return true;
-    case GL_LIGHT_MODEL_TWO_SIDE:
-      b(s.light.two_side);
-      return true;
-    case GL_LIGHT_MODEL_COLOR_CONTROL:
-      e(GL_SINGLE_COLOR);
-      return true;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: b(s.light.local_viewer); return true;
+    case GL_LIGHT_MODEL_TWO_SIDE: b(s.light.two_side); return true;
+    case GL_LIGHT_MODEL_COLOR_CONTROL: e(GL_SINGLE_COLOR); return true;
     // Rasterization.
-    case GL_POINT_SIZE:
-      put(out, {s.point.size});
-      return true;
-    case GL_POINT_SMOOTH:
-      b(s.point.smooth);
-      return true;
-    case GL_LINE_WIDTH:
-      put(out, {s.line.width});
-      return true;
-    case GL_LINE_SMOOTH:
-      b(s.line.smooth);
-      return true;
-    case GL_LINE_STIPPLE:
-      b(s.line.stipple);
-      return true;
-    case GL_LINE_STIPPLE_PATTERN:
-      put(out, {double(s.line.stipple_pattern)});
-      return true;
-    case GL_LINE_STIPPLE_REPEAT:
-      put(out, {double(s.line.stipple_factor)});
-      return true;
-    case GL_CULL_FACE:
-      b(s.polygon.cull);
-      return true;
-    case GL_CULL_FACE_MODE:
-      e(s.polygon.cull_face);
-      return true;
-    case GL_FRONT_FACE:
-      e(s.polygon.front_face);
-      return true;
-    case GL_POLYGON_SMOOTH:
-      b(s.polygon.smooth);
-      return true;
-    case GL_POLYGON_MODE:
-      put(out, {double(s.polygon.mode_front), double(s.polygon.mode_back)});
-      return true;
-    case GL_POLYGON_OFFSET_FACTOR:
-      put(out, {s.polygon.offset_factor});
-      return true;
-    case GL_POLYGON_OFFSET_UNITS:
-      put(out, {s.polygon.offset_units});
-      return true;
-    case GL_POLYGON_OFFSET_FILL:
-      b(s.polygon.offset_fill);
-      return true;
-    case GL_POLYGON_OFFSET_LINE:
-      b(s.polygon.offset_line);
-      return true;
-    case GL_POLYGON_OFFSET_POINT:
-      b(s.polygon.offset_point);
-      return true;
-    case GL_POLYGON_STIPPLE:
-      b(s.polygon.stipple);
-      return true;
+    case GL_POINT_SIZE: put(out, {s.point.size}); return true;
+    case GL_POINT_SMOOTH: b(s.point.smooth); return true;
+    case GL_LINE_WIDTH: put(out, {s.line.width}); return true;
+    case GL_LINE_SMOOTH: b(s.line.smooth); return true;
+    case GL_LINE_STIPPLE: b(s.line.stipple); return true;
+    case GL_LINE_STIPPLE_PATTERN: put(out, {double(s.line.stipple_pattern)}); return true;
+    case GL_LINE_STIPPLE_REPEAT: put(out, {double(s.line.stipple_factor)}); return true;
+    case GL_CULL_FACE: b(s.polygon.cull); return true;
+    case GL_CULL_FACE_MODE: e(s.polygon.cull_face); return true;
+    case GL_FRONT_FACE: e(s.polygon.front_face); return true;
+    case GL_POLYGON_SMOOTH: b(s.polygon.smooth); return true;
+    case GL_POLYGON_MODE: put(out, {double(s.polygon.mode_front), double(s.polygon.mode_back)}); return true;
+    case GL_POLYGON_OFFSET_FACTOR: put(out, {s.polygon.offset_factor}); return true;
+    case GL_POLYGON_OFFSET_UNITS: put(out, {s.polygon.offset_units}); return true;
+    case GL_POLYGON_OFFSET_FILL: b(s.polygon.offset_fill); return true;
+    case GL_POLYGON_OFFSET_LINE: b(s.polygon.offset_line); return true;
+    case GL_POLYGON_OFFSET_POINT: b(s.polygon.offset_point); return true;
+    case GL_POLYGON_STIPPLE: b(s.polygon.stipple); return true;
     // Texturing.
-    case GL_TEXTURE_2D:
-      b(s.texture.enabled_2d);
-      return true;
-    case GL_TEXTURE_1D:
-      b(false);
-      return true;
-    case GL_TEXTURE_BINDING_2D:
-      put(out, {double(s.texture.bound_2d)});
-      return true;
-    case GL_TEXTURE_BINDING_1D:
-      put(out, {0.0});
-      return true;
-    case GL_TEXTURE_GEN_S:
-      b(s.texture.gen_enabled[0]);
-      return true;
-    case GL_TEXTURE_GEN_T:
-      b(s.texture.gen_enabled[1]);
-      return true;
-    case GL_TEXTURE_GEN_R:
-      b(s.texture.gen_enabled[2]);
-      return true;
-    case GL_TEXTURE_GEN_Q:
-      b(s.texture.gen_enabled[3]);
-      return true;
+    case GL_TEXTURE_2D: b(s.texture.enabled_2d); return true;
+    case GL_TEXTURE_1D: b(false); return true;
+    case GL_TEXTURE_BINDING_2D: put(out, {double(s.texture.bound_2d)}); return true;
+    case GL_TEXTURE_BINDING_1D: put(out, {0.0}); return true;
+    case GL_TEXTURE_GEN_S: b(s.texture.gen_enabled[0]); return true;
+    case GL_TEXTURE_GEN_T: b(s.texture.gen_enabled[1]); return true;
+    case GL_TEXTURE_GEN_R: b(s.texture.gen_enabled[2]); return true;
+    case GL_TEXTURE_GEN_Q: b(s.texture.gen_enabled[3]); return true;
     case GL_ACTIVE_TEXTURE:
-    case GL_CLIENT_ACTIVE_TEXTURE:
-      e(GL_TEXTURE0);
-      return true;
+    case GL_CLIENT_ACTIVE_TEXTURE: e(GL_TEXTURE0); return true;
     // Pixel operations.
-    case GL_SCISSOR_TEST:
-      b(s.scissor.test);
-      return true;
+    case GL_SCISSOR_TEST: b(s.scissor.test); return true;
     case GL_SCISSOR_BOX:
       put(out, {double(s.scissor.x), double(s.scissor.y), double(s.scissor.width), double(s.scissor.height)});
       return true;
-    case GL_ALPHA_TEST:
-      b(s.color.alpha_test);
-      return true;
-    case GL_ALPHA_TEST_FUNC:
-      e(s.color.alpha_func);
-      return true;
+    case GL_ALPHA_TEST: b(s.color.alpha_test); return true;
+    case GL_ALPHA_TEST_FUNC: e(s.color.alpha_func); return true;
     case GL_ALPHA_TEST_REF:
       out.kind = Kind::Color;
       put(out, {s.color.alpha_ref});
       return true;
-    case GL_STENCIL_TEST:
-      b(s.stencil.test);
-      return true;
-    case GL_STENCIL_FUNC:
-      e(s.stencil.func);
-      return true;
-    case GL_STENCIL_VALUE_MASK:
-      put(out, {double(s.stencil.value_mask)});
-      return true;
-    case GL_STENCIL_REF:
-      put(out, {double(s.stencil.ref)});
-      return true;
-    case GL_STENCIL_FAIL:
-      e(s.stencil.fail);
-      return true;
-    case GL_STENCIL_PASS_DEPTH_FAIL:
-      e(s.stencil.zfail);
-      return true;
-    case GL_STENCIL_PASS_DEPTH_PASS:
-      e(s.stencil.zpass);
-      return true;
-    case GL_DEPTH_TEST:
-      b(s.depth.test);
-      return true;
-    case GL_DEPTH_FUNC:
-      e(s.depth.func);
-      return true;
-    case GL_BLEND:
-      b(s.color.blend);
-      return true;
-    case GL_BLEND_SRC:
-      e(s.color.blend_src);
-      return true;
-    case GL_BLEND_DST:
-      e(s.color.blend_dst);
-      return true;
-    case GL_DITHER:
-      b(s.color.dither);
-      return true;
-    case GL_COLOR_LOGIC_OP:
-      b(s.color.logic_op);
-      return true;
-    case GL_LOGIC_OP_MODE:
-      e(s.color.logic_op_mode);
-      return true;
+    case GL_STENCIL_TEST: b(s.stencil.test); return true;
+    case GL_STENCIL_FUNC: e(s.stencil.func); return true;
+    case GL_STENCIL_VALUE_MASK: put(out, {double(s.stencil.value_mask)}); return true;
+    case GL_STENCIL_REF: put(out, {double(s.stencil.ref)}); return true;
+    case GL_STENCIL_FAIL: e(s.stencil.fail); return true;
+    case GL_STENCIL_PASS_DEPTH_FAIL: e(s.stencil.zfail); return true;
+    case GL_STENCIL_PASS_DEPTH_PASS: e(s.stencil.zpass); return true;
+    case GL_DEPTH_TEST: b(s.depth.test); return true;
+    case GL_DEPTH_FUNC: e(s.depth.func); return true;
+    case GL_BLEND: b(s.color.blend); return true;
+    case GL_BLEND_SRC: e(s.color.blend_src); return true;
+    case GL_BLEND_DST: e(s.color.blend_dst); return true;
+    case GL_DITHER: b(s.color.dither); return true;
+    case GL_COLOR_LOGIC_OP: b(s.color.logic_op); return true;
+    case GL_LOGIC_OP_MODE: e(s.color.logic_op_mode); return true;
     // Framebuffer control.
-    case GL_DRAW_BUFFER:
-      e(s.color.draw_buffer);
-      return true;
-    case GL_READ_BUFFER:
-      e(s.pixel.read_buffer);
-      return true;
+    case GL_DRAW_BUFFER: e(s.color.draw_buffer); return true;
+    case GL_READ_BUFFER: e(s.pixel.read_buffer); return true;
     case GL_COLOR_WRITEMASK:
       out.kind = Kind::Bool;
       for (bool m : s.color.color_mask) out.v.push_back(m ? 1.0 : 0.0);
       return true;
-    case GL_DEPTH_WRITEMASK:
-      b(s.depth.mask);
-      return true;
-    case GL_STENCIL_WRITEMASK:
-      put(out, {double(s.stencil.write_mask)});
-      return true;
+    case GL_DEPTH_WRITEMASK: b(s.depth.mask); return true;
+    case GL_STENCIL_WRITEMASK: put(out, {double(s.stencil.write_mask)}); return true;
     case GL_COLOR_CLEAR_VALUE:
       out.kind = Kind::Color;
       put4(out, s.color.clear_color);
       return true;
-    case GL_DEPTH_CLEAR_VALUE:
-      put(out, {s.depth.clear});
-      return true;
-    case GL_STENCIL_CLEAR_VALUE:
-      put(out, {double(s.stencil.clear)});
-      return true;
+    case GL_DEPTH_CLEAR_VALUE: put(out, {s.depth.clear}); return true;
+    case GL_STENCIL_CLEAR_VALUE: put(out, {double(s.stencil.clear)}); return true;
     case GL_ACCUM_CLEAR_VALUE:
       out.kind = Kind::Color;
       put4(out, s.accum_clear);
       return true;
     case GL_INDEX_CLEAR_VALUE:
-    case GL_INDEX_WRITEMASK:
-      put(out, {0.0});
-      return true;
+    case GL_INDEX_WRITEMASK: put(out, {0.0}); return true;
     // Pixels.
-    case GL_UNPACK_SWAP_BYTES:
-      b(c.c.unpack.swap_bytes);
-      return true;
-    case GL_UNPACK_LSB_FIRST:
-      b(c.c.unpack.lsb_first);
-      return true;
-    case GL_UNPACK_ROW_LENGTH:
-      put(out, {double(c.c.unpack.row_length)});
-      return true;
-    case GL_UNPACK_SKIP_ROWS:
-      put(out, {double(c.c.unpack.skip_rows)});
-      return true;
-    case GL_UNPACK_SKIP_PIXELS:
-      put(out, {double(c.c.unpack.skip_pixels)});
-      return true;
-    case GL_UNPACK_ALIGNMENT:
-      put(out, {double(c.c.unpack.alignment)});
-      return true;
-    case GL_PACK_SWAP_BYTES:
-      b(c.c.pack.swap_bytes);
-      return true;
-    case GL_PACK_LSB_FIRST:
-      b(c.c.pack.lsb_first);
-      return true;
-    case GL_PACK_ROW_LENGTH:
-      put(out, {double(c.c.pack.row_length)});
-      return true;
-    case GL_PACK_SKIP_ROWS:
-      put(out, {double(c.c.pack.skip_rows)});
-      return true;
-    case GL_PACK_SKIP_PIXELS:
-      put(out, {double(c.c.pack.skip_pixels)});
-      return true;
-    case GL_PACK_ALIGNMENT:
-      put(out, {double(c.c.pack.alignment)});
-      return true;
-    case GL_ZOOM_X:
-      put(out, {s.pixel.zoom_x});
-      return true;
-    case GL_ZOOM_Y:
-      put(out, {s.pixel.zoom_y});
-      return true;
-    case GL_RED_SCALE:
-      put(out, {s.pixel.red_scale});
-      return true;
-    case GL_RED_BIAS:
-      put(out, {s.pixel.red_bias});
-      return true;
-    case GL_GREEN_SCALE:
-      put(out, {s.pixel.green_scale});
-      return true;
-    case GL_GREEN_BIAS:
-      put(out, {s.pixel.green_bias});
-      return true;
-    case GL_BLUE_SCALE:
-      put(out, {s.pixel.blue_scale});
-      return true;
-    case GL_BLUE_BIAS:
-      put(out, {s.pixel.blue_bias});
-      return true;
-    case GL_ALPHA_SCALE:
-      put(out, {s.pixel.alpha_scale});
-      return true;
-    case GL_ALPHA_BIAS:
-      put(out, {s.pixel.alpha_bias});
-      return true;
-    case GL_DEPTH_SCALE:
-      put(out, {s.pixel.depth_scale});
-      return true;
-    case GL_DEPTH_BIAS:
-      put(out, {s.pixel.depth_bias});
-      return true;
-    case GL_MAP_COLOR:
-      b(s.pixel.map_color);
-      return true;
-    case GL_MAP_STENCIL:
-      b(s.pixel.map_stencil);
-      return true;
-    case GL_INDEX_SHIFT:
-      put(out, {double(s.pixel.index_shift)});
-      return true;
-    case GL_INDEX_OFFSET:
-      put(out, {double(s.pixel.index_offset)});
-      return true;
+    case GL_UNPACK_SWAP_BYTES: b(c.c.unpack.swap_bytes); return true;
+    case GL_UNPACK_LSB_FIRST: b(c.c.unpack.lsb_first); return true;
+    case GL_UNPACK_ROW_LENGTH: put(out, {double(c.c.unpack.row_length)}); return true;
+    case GL_UNPACK_SKIP_ROWS: put(out, {double(c.c.unpack.skip_rows)}); return true;
+    case GL_UNPACK_SKIP_PIXELS: put(out, {double(c.c.unpack.skip_pixels)}); return true;
+    case GL_UNPACK_ALIGNMENT: put(out, {double(c.c.unpack.alignment)}); return true;
+    case GL_PACK_SWAP_BYTES: b(c.c.pack.swap_bytes); return true;
+    case GL_PACK_LSB_FIRST: b(c.c.pack.lsb_first); return true;
+    case GL_PACK_ROW_LENGTH: put(out, {double(c.c.pack.row_length)}); return true;
+    case GL_PACK_SKIP_ROWS: put(out, {double(c.c.pack.skip_rows)}); return true;
+    case GL_PACK_SKIP_PIXELS: put(out, {double(c.c.pack.skip_pixels)}); return true;
+    case GL_PACK_ALIGNMENT: put(out, {double(c.c.pack.alignment)}); return true;
+    case GL_ZOOM_X: put(out, {s.pixel.zoom_x}); return true;
+    case GL_ZOOM_Y: put(out, {s.pixel.zoom_y}); return true;
+    case GL_RED_SCALE: put(out, {s.pixel.red_scale}); return true;
+    case GL_RED_BIAS: put(out, {s.pixel.red_bias}); return true;
+    case GL_GREEN_SCALE: put(out, {s.pixel.green_scale}); return true;
+    case GL_GREEN_BIAS: put(out, {s.pixel.green_bias}); return true;
+    case GL_BLUE_SCALE: put(out, {s.pixel.blue_scale}); return true;
+    case GL_BLUE_BIAS: put(out, {s.pixel.blue_bias}); return true;
+    case GL_ALPHA_SCALE: put(out, {s.pixel.alpha_scale}); return true;
+    case GL_ALPHA_BIAS: put(out, {s.pixel.alpha_bias}); return true;
+    case GL_DEPTH_SCALE: put(out, {s.pixel.depth_scale}); return true;
+    case GL_DEPTH_BIAS: put(out, {s.pixel.depth_bias}); return true;
+    case GL_MAP_COLOR: b(s.pixel.map_color); return true;
+    case GL_MAP_STENCIL: b(s.pixel.map_stencil); return true;
+    case GL_INDEX_SHIFT: put(out, {double(s.pixel.index_shift)}); return true;
+    case GL_INDEX_OFFSET: put(out, {double(s.pixel.index_offset)}); return true;
     // Hints.
-    case GL_PERSPECTIVE_CORRECTION_HINT:
-      e(s.hint.perspective);
-      return true;
-    case GL_POINT_SMOOTH_HINT:
-      e(s.hint.point);
-      return true;
-    case GL_LINE_SMOOTH_HINT:
-      e(s.hint.line);
-      return true;
-    case GL_POLYGON_SMOOTH_HINT:
-      e(s.hint.polygon);
-      return true;
-    case GL_FOG_HINT:
-      e(s.hint.fog);
-      return true;
+    case GL_PERSPECTIVE_CORRECTION_HINT: e(s.hint.perspective); return true;
+    case GL_POINT_SMOOTH_HINT: e(s.hint.point); return true;
+    case GL_LINE_SMOOTH_HINT: e(s.hint.line); return true;
+    case GL_POLYGON_SMOOTH_HINT: e(s.hint.polygon); return true;
+    case GL_FOG_HINT: e(s.hint.fog); return true;
     // Lists and stacks.
-    case GL_LIST_BASE:
-      put(out, {double(s.list_base)});
-      return true;
-    case GL_LIST_INDEX:
-      put(out, {double(c.compiling_list)});
-      return true;
-    case GL_LIST_MODE:
-      e(c.compiling_list ? c.compile_mode : 0);
-      return true;
-    case GL_ATTRIB_STACK_DEPTH:
-      put(out, {double(c.attrib_stack.size())});
-      return true;
-    case GL_CLIENT_ATTRIB_STACK_DEPTH:
-      put(out, {double(c.client_stack.size())});
-      return true;
-    case GL_RENDER_MODE:
-      e(c.render_mode());
-      return true;
-    case GL_AUTO_NORMAL:
-      b(s.eval.auto_normal);
-      return true;
-    case GL_MAP1_GRID_DOMAIN:
-      put(out, {s.eval.grid1.u1, s.eval.grid1.u2});
-      return true;
-    case GL_MAP1_GRID_SEGMENTS:
-      put(out, {double(s.eval.grid1.n)});
-      return true;
+    case GL_LIST_BASE: put(out, {double(s.list_base)}); return true;
+    case GL_LIST_INDEX: put(out, {double(c.compiling_list)}); return true;
+    case GL_LIST_MODE: e(c.compiling_list ? c.compile_mode : 0); return true;
+    case GL_ATTRIB_STACK_DEPTH: put(out, {double(c.attrib_stack.size())}); return true;
+    case GL_CLIENT_ATTRIB_STACK_DEPTH: put(out, {double(c.client_stack.size())}); return true;
+    case GL_RENDER_MODE: e(c.render_mode()); return true;
+    case GL_AUTO_NORMAL: b(s.eval.auto_normal); return true;
+    case GL_MAP1_GRID_DOMAIN: put(out, {s.eval.grid1.u1, s.eval.grid1.u2}); return true;
+    case GL_MAP1_GRID_SEGMENTS: put(out, {double(s.eval.grid1.n)}); return true;
     case GL_MAP2_GRID_DOMAIN:
       put(out, {s.eval.grid2u.u1, s.eval.grid2u.u2, s.eval.grid2v.u1, s.eval.grid2v.u2});
       return true;
-    case GL_MAP2_GRID_SEGMENTS:
-      put(out, {double(s.eval.grid2u.n), double(s.eval.grid2v.n)});
-      return true;
-    case GL_NAME_STACK_DEPTH:
-      put(out, {double(c.name_stack().size())});
-      return true;
+    case GL_MAP2_GRID_SEGMENTS: put(out, {double(s.eval.grid2u.n), double(s.eval.grid2v.n)}); return true;
+    case GL_NAME_STACK_DEPTH: put(out, {double(c.name_stack().size())}); return true;
     // Vertex arrays.
-    case GL_VERTEX_ARRAY:
-      b(c.c.vertex.enabled);
-      return true;
-    case GL_VERTEX_ARRAY_SIZE:
-      put(out, {double(c.c.vertex.size)});
-      return true;
-    case GL_VERTEX_ARRAY_TYPE:
-      e(c.c.vertex.type);
-      return true;
-    case GL_VERTEX_ARRAY_STRIDE:
-      put(out, {double(c.c.vertex.stride)});
-      return true;
-    case GL_NORMAL_ARRAY:
-      b(c.c.normal.enabled);
-      return true;
-    case GL_NORMAL_ARRAY_TYPE:
-      e(c.c.normal.type);
-      return true;
-    case GL_NORMAL_ARRAY_STRIDE:
-      put(out, {double(c.c.normal.stride)});
-      return true;
-    case GL_COLOR_ARRAY:
-      b(c.c.color.enabled);
-      return true;
-    case GL_COLOR_ARRAY_SIZE:
-      put(out, {double(c.c.color.size)});
-      return true;
-    case GL_COLOR_ARRAY_TYPE:
-      e(c.c.color.type);
-      return true;
-    case GL_COLOR_ARRAY_STRIDE:
-      put(out, {double(c.c.color.stride)});
-      return true;
-    case GL_TEXTURE_COORD_ARRAY:
-      b(c.c.tex.enabled);
-      return true;
-    case GL_TEXTURE_COORD_ARRAY_SIZE:
-      put(out, {double(c.c.tex.size)});
-      return true;
-    case GL_TEXTURE_COORD_ARRAY_TYPE:
-      e(c.c.tex.type);
-      return true;
-    case GL_TEXTURE_COORD_ARRAY_STRIDE:
-      put(out, {double(c.c.tex.stride)});
-      return true;
-    case GL_EDGE_FLAG_ARRAY:
-      b(c.c.edge.enabled);
-      return true;
-    case GL_EDGE_FLAG_ARRAY_STRIDE:
-      put(out, {double(c.c.edge.stride)});
-      return true;
-    case GL_INDEX_ARRAY:
-      b(c.c.index.enabled);
-      return true;
+    case GL_VERTEX_ARRAY: b(c.c.vertex.enabled); return true;
+    case GL_VERTEX_ARRAY_SIZE: put(out, {double(c.c.vertex.size)}); return true;
+    case GL_VERTEX_ARRAY_TYPE: e(c.c.vertex.type); return true;
+    case GL_VERTEX_ARRAY_STRIDE: put(out, {double(c.c.vertex.stride)}); return true;
+    case GL_NORMAL_ARRAY: b(c.c.normal.enabled); return true;
+    case GL_NORMAL_ARRAY_TYPE: e(c.c.normal.type); return true;
+    case GL_NORMAL_ARRAY_STRIDE: put(out, {double(c.c.normal.stride)}); return true;
+    case GL_COLOR_ARRAY: b(c.c.color.enabled); return true;
+    case GL_COLOR_ARRAY_SIZE: put(out, {double(c.c.color.size)}); return true;
+    case GL_COLOR_ARRAY_TYPE: e(c.c.color.type); return true;
+    case GL_COLOR_ARRAY_STRIDE: put(out, {double(c.c.color.stride)}); return true;
+    case GL_TEXTURE_COORD_ARRAY: b(c.c.tex.enabled); return true;
+    case GL_TEXTURE_COORD_ARRAY_SIZE: put(out, {double(c.c.tex.size)}); return true;
+    case GL_TEXTURE_COORD_ARRAY_TYPE: e(c.c.tex.type); return true;
+    case GL_TEXTURE_COORD_ARRAY_STRIDE: put(out, {double(c.c.tex.stride)}); return true;
+    case GL_EDGE_FLAG_ARRAY: b(c.c.edge.enabled); return true;
+    case GL_EDGE_FLAG_ARRAY_STRIDE: put(out, {double(c.c.edge.stride)}); return true;
+    case GL_INDEX_ARRAY: b(c.c.index.enabled); return true;
     // Implementation limits (GL 2.1 Tables 6.36-6.39).
-    case GL_MAX_LIGHTS:
-      put(out, {double(kMaxLights)});
-      return true;
-    case GL_MAX_CLIP_PLANES:
-      put(out, {double(kMaxClipPlanes)});
-      return true;
-    case GL_MAX_MODELVIEW_STACK_DEPTH:
-      put(out, {double(kModelviewDepth)});
-      return true;
-    case GL_MAX_PROJECTION_STACK_DEPTH:
-      put(out, {double(kProjectionDepth)});
-      return true;
-    case GL_MAX_TEXTURE_STACK_DEPTH:
-      put(out, {double(kTextureDepth)});
-      return true;
-    case GL_MAX_ATTRIB_STACK_DEPTH:
-      put(out, {double(kAttribDepth)});
-      return true;
-    case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH:
-      put(out, {double(kClientAttribDepth)});
-      return true;
-    case GL_MAX_LIST_NESTING:
-      put(out, {double(kMaxListNesting)});
-      return true;
-    case GL_MAX_TEXTURE_SIZE:
-      put(out, {double(kMaxTextureSize)});
-      return true;
-    case GL_MAX_TEXTURE_UNITS:
-      put(out, {1.0});
-      return true;
+    case GL_MAX_LIGHTS: put(out, {double(kMaxLights)}); return true;
+    case GL_MAX_CLIP_PLANES: put(out, {double(kMaxClipPlanes)}); return true;
+    case GL_MAX_MODELVIEW_STACK_DEPTH: put(out, {double(kModelviewDepth)}); return true;
+    case GL_MAX_PROJECTION_STACK_DEPTH: put(out, {double(kProjectionDepth)}); return true;
+    case GL_MAX_TEXTURE_STACK_DEPTH: put(out, {double(kTextureDepth)}); return true;
+    case GL_MAX_ATTRIB_STACK_DEPTH: put(out, {double(kAttribDepth)}); return true;
+    case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: put(out, {double(kClientAttribDepth)}); return true;
+    case GL_MAX_LIST_NESTING: put(out, {double(kMaxListNesting)}); return true;
+    case GL_MAX_TEXTURE_SIZE: put(out, {double(kMaxTextureSize)}); return true;
+    case GL_MAX_TEXTURE_UNITS: put(out, {1.0}); return true;
     case GL_MAX_VIEWPORT_DIMS:
       put(out, {double(gpu::kMaxViewportSize), double(gpu::kMaxViewportSize)});
       return true;
-    case GL_MAX_EVAL_ORDER:
-      put(out, {8.0});
-      return true;
-    case GL_MAX_PIXEL_MAP_TABLE:
-      put(out, {256.0});
-      return true;
-    case GL_MAX_NAME_STACK_DEPTH:
-      put(out, {64.0});
-      return true;
+    case GL_MAX_EVAL_ORDER: put(out, {8.0}); return true;
+    case GL_MAX_PIXEL_MAP_TABLE: put(out, {256.0}); return true;
+    case GL_MAX_NAME_STACK_DEPTH: put(out, {64.0}); return true;
     case GL_MAX_ELEMENTS_VERTICES:
-    case GL_MAX_ELEMENTS_INDICES:
-      put(out, {1048576.0});
-      return true;
-    case GL_SUBPIXEL_BITS:
-      put(out, {8.0});
-      return true;
-    case GL_POINT_SIZE_RANGE:
-      put(out, {1.0, 255.0});
-      return true;
-    case GL_POINT_SIZE_GRANULARITY:
-      put(out, {0.125});
-      return true;
-    case GL_LINE_WIDTH_RANGE:
-      put(out, {1.0, 255.0});
-      return true;
-    case GL_LINE_WIDTH_GRANULARITY:
-      put(out, {0.125});
-      return true;
-    case GL_ALIASED_POINT_SIZE_RANGE:
-      put(out, {1.0, 255.0});
-      return true;
-    case GL_ALIASED_LINE_WIDTH_RANGE:
-      put(out, {1.0, 255.0});
-      return true;
+    case GL_MAX_ELEMENTS_INDICES: put(out, {1048576.0}); return true;
+    case GL_SUBPIXEL_BITS: put(out, {8.0}); return true;
+    case GL_POINT_SIZE_RANGE: put(out, {1.0, 255.0}); return true;
+    case GL_POINT_SIZE_GRANULARITY: put(out, {0.125}); return true;
+    case GL_LINE_WIDTH_RANGE: put(out, {1.0, 255.0}); return true;
+    case GL_LINE_WIDTH_GRANULARITY: put(out, {0.125}); return true;
+    case GL_ALIASED_POINT_SIZE_RANGE: put(out, {1.0, 255.0}); return true;
+    case GL_ALIASED_LINE_WIDTH_RANGE: put(out, {1.0, 255.0}); return true;
     case GL_RED_BITS:
     case GL_GREEN_BITS:
     case GL_BLUE_BITS:
-    case GL_ALPHA_BITS:
-      put(out, {8.0});
-      return true;
-    case GL_DEPTH_BITS:
-      put(out, {c.has_depth() ? 24.0 : 0.0});
-      return true;
-    case GL_STENCIL_BITS:
-      put(out, {c.has_stencil() ? 8.0 : 0.0});
-      return true;
+    case GL_ALPHA_BITS: put(out, {8.0}); return true;
+    case GL_DEPTH_BITS: put(out, {c.has_depth() ? 24.0 : 0.0}); return true;
+    case GL_STENCIL_BITS: put(out, {c.has_stencil() ? 8.0 : 0.0}); return true;
     case GL_INDEX_BITS:
     case GL_ACCUM_RED_BITS:
     case GL_ACCUM_GREEN_BITS:
     case GL_ACCUM_BLUE_BITS:
     case GL_ACCUM_ALPHA_BITS:
-    case GL_AUX_BUFFERS:
-      put(out, {0.0});
-      return true;
-    case GL_RGBA_MODE:
-      b(true);
-      return true;
-    case GL_INDEX_MODE:
-      b(false);
-      return true;
-    case GL_DOUBLEBUFFER:
-      b(c.double_buffered());
-      return true;
-    case GL_STEREO:
-      b(false);
-      return true;
-    default:
-      return false;
+    case GL_AUX_BUFFERS: put(out, {0.0}); return true;
+    case GL_RGBA_MODE: b(true); return true;
+    case GL_INDEX_MODE: b(false); return true;
+    case GL_DOUBLEBUFFER: b(c.double_buffered()); return true;
+    case GL_STEREO: b(false); return true;
+    default: return false;
   }
 }
 
@@ -685,38 +338,19 @@ void GLAPIENTRY glGetLightfv(GLenum light, GLenum pname, GLfloat* out) {
     for (int k = 0; k < 4; ++k) out[k] = v[k];
   };
   switch (pname) {
-    case GL_AMBIENT:
-      v4(L.ambient);
-      break;
-    case GL_DIFFUSE:
-      v4(L.diffuse);
-      break;
-    case GL_SPECULAR:
-      v4(L.specular);
-      break;
-    case GL_POSITION:
-      v4(L.position);
-      break;
+    case GL_AMBIENT: v4(L.ambient); break;
+    case GL_DIFFUSE: v4(L.diffuse); break;
+    case GL_SPECULAR: v4(L.specular); break;
+    case GL_POSITION: v4(L.position); break;
     case GL_SPOT_DIRECTION:
       for (int k = 0; k < 3; ++k) out[k] = L.spot_direction[k];
       break;
-    case GL_SPOT_EXPONENT:
-      out[0] = L.spot_exponent;
-      break;
-    case GL_SPOT_CUTOFF:
-      out[0] = c.s.light.spot_cutoff[i];
-      break;
-    case GL_CONSTANT_ATTENUATION:
-      out[0] = L.k0;
-      break;
-    case GL_LINEAR_ATTENUATION:
-      out[0] = L.k1;
-      break;
-    case GL_QUADRATIC_ATTENUATION:
-      out[0] = L.k2;
-      break;
-    default:
-      break;
+    case GL_SPOT_EXPONENT: out[0] = L.spot_exponent; break;
+    case GL_SPOT_CUTOFF: out[0] = c.s.light.spot_cutoff[i]; break;
+    case GL_CONSTANT_ATTENUATION: out[0] = L.k0; break;
+    case GL_LINEAR_ATTENUATION: out[0] = L.k1; break;
+    case GL_QUADRATIC_ATTENUATION: out[0] = L.k2; break;
+    default: break;
   }
 }
 void GLAPIENTRY glGetLightiv(GLenum light, GLenum pname, GLint* out) {
@@ -741,26 +375,13 @@ void GLAPIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
     for (int k = 0; k < 4; ++k) out[k] = v[k];
   };
   switch (pname) {
-    case GL_AMBIENT:
-      v4(m.ambient);
-      break;
-    case GL_DIFFUSE:
-      v4(m.diffuse);
-      break;
-    case GL_SPECULAR:
-      v4(m.specular);
-      break;
-    case GL_EMISSION:
-      v4(m.emission);
-      break;
-    case GL_SHININESS:
-      out[0] = m.shininess;
-      break;
-    case GL_COLOR_INDEXES:
-      out[0] = 0, out[1] = 1, out[2] = 1;
-      break;
-    default:
-      break;
+    case GL_AMBIENT: v4(m.ambient); break;
+    case GL_DIFFUSE: v4(m.diffuse); break;
+    case GL_SPECULAR: v4(m.specular); break;
+    case GL_EMISSION: v4(m.emission); break;
+    case GL_SHININESS: out[0] = m.shininess; break;
+    case GL_COLOR_INDEXES: out[0] = 0, out[1] = 1, out[2] = 1; break;
+    default: break;
   }
 }
 void GLAPIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint* out) {

@@ -14,18 +14,14 @@ int light_param_count(GLenum pname) {
     case GL_AMBIENT:
     case GL_DIFFUSE:
     case GL_SPECULAR:
-    case GL_POSITION:
-      return 4;
-    case GL_SPOT_DIRECTION:
-      return 3;
+    case GL_POSITION: return 4;
+    case GL_SPOT_DIRECTION: return 3;
     case GL_SPOT_EXPONENT:
     case GL_SPOT_CUTOFF:
     case GL_CONSTANT_ATTENUATION:
     case GL_LINEAR_ATTENUATION:
-    case GL_QUADRATIC_ATTENUATION:
-      return 1;
-    default:
-      return 0;
+    case GL_QUADRATIC_ATTENUATION: return 1;
+    default: return 0;
   }
 }
 
@@ -35,14 +31,10 @@ int material_param_count(GLenum pname) {
     case GL_DIFFUSE:
     case GL_SPECULAR:
     case GL_EMISSION:
-    case GL_AMBIENT_AND_DIFFUSE:
-      return 4;
-    case GL_SHININESS:
-      return 1;
-    case GL_COLOR_INDEXES:
-      return 3;
-    default:
-      return 0;
+    case GL_AMBIENT_AND_DIFFUSE: return 4;
+    case GL_SHININESS: return 1;
+    case GL_COLOR_INDEXES: return 3;
+    default: return 0;
   }
 }
 
@@ -69,47 +61,27 @@ void light(Context& c, GLenum which, GLenum pname, Vec4Arg p) {
     case GL_QUADRATIC_ATTENUATION:
       if (p[0] < 0.0f) return c.error(GL_INVALID_VALUE);
       break;
-    default:
-      break;
+    default: break;
   }
   c.touch();
   switch (pname) {
-    case GL_AMBIENT:
-      L.ambient = v;
-      break;
-    case GL_DIFFUSE:
-      L.diffuse = v;
-      break;
-    case GL_SPECULAR:
-      L.specular = v;
-      break;
+    case GL_AMBIENT: L.ambient = v; break;
+    case GL_DIFFUSE: L.diffuse = v; break;
+    case GL_SPECULAR: L.specular = v; break;
     // Positions and directions are stored in eye coordinates, transformed by the model-view
     // matrix current when they are specified (GL 2.1 §2.14.2).
-    case GL_POSITION:
-      L.position = c.modelview() * v;
-      break;
-    case GL_SPOT_DIRECTION:
-      L.spot_direction = glm::mat3(c.modelview()) * glm::vec3(v);
-      break;
-    case GL_SPOT_EXPONENT:
-      L.spot_exponent = p[0];
-      break;
+    case GL_POSITION: L.position = c.modelview() * v; break;
+    case GL_SPOT_DIRECTION: L.spot_direction = glm::mat3(c.modelview()) * glm::vec3(v); break;
+    case GL_SPOT_EXPONENT: L.spot_exponent = p[0]; break;
     case GL_SPOT_CUTOFF:
       c.s.light.spot_cutoff[i] = p[0];
       L.spot = p[0] != 180.0f;
       L.spot_cos_cutoff = std::cos(p[0] * float(M_PI / 180.0));
       break;
-    case GL_CONSTANT_ATTENUATION:
-      L.k0 = p[0];
-      break;
-    case GL_LINEAR_ATTENUATION:
-      L.k1 = p[0];
-      break;
-    case GL_QUADRATIC_ATTENUATION:
-      L.k2 = p[0];
-      break;
-    default:
-      break;
+    case GL_CONSTANT_ATTENUATION: L.k0 = p[0]; break;
+    case GL_LINEAR_ATTENUATION: L.k1 = p[0]; break;
+    case GL_QUADRATIC_ATTENUATION: L.k2 = p[0]; break;
+    default: break;
   }
 }
 
@@ -117,22 +89,14 @@ void light_model(Context& c, GLenum pname, Vec4Arg p) {
   GL_OUTSIDE_BEGIN();
   c.touch();
   switch (pname) {
-    case GL_LIGHT_MODEL_AMBIENT:
-      c.s.light.model_ambient = glm::vec4(p[0], p[1], p[2], p[3]);
-      break;
-    case GL_LIGHT_MODEL_LOCAL_VIEWER:
-      c.s.light.local_viewer = p[0] != 0.0f;
-      break;
-    case GL_LIGHT_MODEL_TWO_SIDE:
-      c.s.light.two_side = p[0] != 0.0f;
-      break;
+    case GL_LIGHT_MODEL_AMBIENT: c.s.light.model_ambient = glm::vec4(p[0], p[1], p[2], p[3]); break;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: c.s.light.local_viewer = p[0] != 0.0f; break;
+    case GL_LIGHT_MODEL_TWO_SIDE: c.s.light.two_side = p[0] != 0.0f; break;
     case GL_LIGHT_MODEL_COLOR_CONTROL:
       if (p[0] != float(GL_SINGLE_COLOR) && p[0] != float(GL_SEPARATE_SPECULAR_COLOR))
         c.error(GL_INVALID_ENUM);
       break;
-    default:
-      c.error(GL_INVALID_ENUM);
-      break;
+    default: c.error(GL_INVALID_ENUM); break;
   }
 }
 
@@ -154,26 +118,13 @@ void material(Context& c, GLenum face, GLenum pname, Vec4Arg p) {
     if ((f == 0 && face == GL_BACK) || (f == 1 && face == GL_FRONT)) continue;
     FFMaterial& m = c.s.light.material[size_t(f)];
     switch (pname) {
-      case GL_AMBIENT:
-        m.ambient = v;
-        break;
-      case GL_DIFFUSE:
-        m.diffuse = v;
-        break;
-      case GL_SPECULAR:
-        m.specular = v;
-        break;
-      case GL_EMISSION:
-        m.emission = v;
-        break;
-      case GL_AMBIENT_AND_DIFFUSE:
-        m.ambient = m.diffuse = v;
-        break;
-      case GL_SHININESS:
-        m.shininess = p[0];
-        break;
-      default:
-        break;  // colour indexes: no colour-index mode
+      case GL_AMBIENT: m.ambient = v; break;
+      case GL_DIFFUSE: m.diffuse = v; break;
+      case GL_SPECULAR: m.specular = v; break;
+      case GL_EMISSION: m.emission = v; break;
+      case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = v; break;
+      case GL_SHININESS: m.shininess = p[0]; break;
+      default: break;  // colour indexes: no colour-index mode
     }
   }
 }
@@ -226,11 +177,8 @@ void fog(Context& c, GLenum pname, Vec4Arg p) {
       c.touch();
       f.color = glm::clamp(glm::vec4(p[0], p[1], p[2], p[3]), 0.0f, 1.0f);
       break;
-    case GL_FOG_INDEX:
-      break;
-    default:
-      c.error(GL_INVALID_ENUM);
-      break;
+    case GL_FOG_INDEX: break;
+    default: c.error(GL_INVALID_ENUM); break;
   }
 }
 

@@ -116,30 +116,21 @@ void pixel_store(Context& c, GLenum pname, float v) {
     case GL_PACK_ROW_LENGTH:
     case GL_PACK_SKIP_ROWS:
     case GL_PACK_SKIP_PIXELS:
-    case GL_PACK_ALIGNMENT:
-      ps = &c.c.pack;
-      break;
+    case GL_PACK_ALIGNMENT: ps = &c.c.pack; break;
     case GL_UNPACK_SWAP_BYTES:
     case GL_UNPACK_LSB_FIRST:
     case GL_UNPACK_ROW_LENGTH:
     case GL_UNPACK_SKIP_ROWS:
     case GL_UNPACK_SKIP_PIXELS:
-    case GL_UNPACK_ALIGNMENT:
-      ps = &c.c.unpack;
-      break;
-    default:
-      return c.error(GL_INVALID_ENUM);
+    case GL_UNPACK_ALIGNMENT: ps = &c.c.unpack; break;
+    default: return c.error(GL_INVALID_ENUM);
   }
   const GLint i = GLint(std::lround(v));
   switch (pname) {
     case GL_PACK_SWAP_BYTES:
-    case GL_UNPACK_SWAP_BYTES:
-      ps->swap_bytes = v != 0.0f;
-      break;
+    case GL_UNPACK_SWAP_BYTES: ps->swap_bytes = v != 0.0f; break;
     case GL_PACK_LSB_FIRST:
-    case GL_UNPACK_LSB_FIRST:
-      ps->lsb_first = v != 0.0f;
-      break;
+    case GL_UNPACK_LSB_FIRST: ps->lsb_first = v != 0.0f; break;
     case GL_PACK_ALIGNMENT:
     case GL_UNPACK_ALIGNMENT:
       if (i != 1 && i != 2 && i != 4 && i != 8) return c.error(GL_INVALID_VALUE);
@@ -167,51 +158,21 @@ void pixel_transfer(Context& c, GLenum pname, float v) {
   GL_OUTSIDE_BEGIN();
   PixelModeState& p = c.s.pixel;
   switch (pname) {
-    case GL_MAP_COLOR:
-      p.map_color = v != 0.0f;
-      break;
-    case GL_MAP_STENCIL:
-      p.map_stencil = v != 0.0f;
-      break;
-    case GL_INDEX_SHIFT:
-      p.index_shift = GLint(v);
-      break;
-    case GL_INDEX_OFFSET:
-      p.index_offset = GLint(v);
-      break;
-    case GL_RED_SCALE:
-      p.red_scale = v;
-      break;
-    case GL_RED_BIAS:
-      p.red_bias = v;
-      break;
-    case GL_GREEN_SCALE:
-      p.green_scale = v;
-      break;
-    case GL_GREEN_BIAS:
-      p.green_bias = v;
-      break;
-    case GL_BLUE_SCALE:
-      p.blue_scale = v;
-      break;
-    case GL_BLUE_BIAS:
-      p.blue_bias = v;
-      break;
-    case GL_ALPHA_SCALE:
-      p.alpha_scale = v;
-      break;
-    case GL_ALPHA_BIAS:
-      p.alpha_bias = v;
-      break;
-    case GL_DEPTH_SCALE:
-      p.depth_scale = v;
-      break;
-    case GL_DEPTH_BIAS:
-      p.depth_bias = v;
-      break;
-    default:
-      c.error(GL_INVALID_ENUM);
-      break;
+    case GL_MAP_COLOR: p.map_color = v != 0.0f; break;
+    case GL_MAP_STENCIL: p.map_stencil = v != 0.0f; break;
+    case GL_INDEX_SHIFT: p.index_shift = GLint(v); break;
+    case GL_INDEX_OFFSET: p.index_offset = GLint(v); break;
+    case GL_RED_SCALE: p.red_scale = v; break;
+    case GL_RED_BIAS: p.red_bias = v; break;
+    case GL_GREEN_SCALE: p.green_scale = v; break;
+    case GL_GREEN_BIAS: p.green_bias = v; break;
+    case GL_BLUE_SCALE: p.blue_scale = v; break;
+    case GL_BLUE_BIAS: p.blue_bias = v; break;
+    case GL_ALPHA_SCALE: p.alpha_scale = v; break;
+    case GL_ALPHA_BIAS: p.alpha_bias = v; break;
+    case GL_DEPTH_SCALE: p.depth_scale = v; break;
+    case GL_DEPTH_BIAS: p.depth_bias = v; break;
+    default: c.error(GL_INVALID_ENUM); break;
   }
 }
 

@@ -21,62 +21,34 @@ bool* capability(Context& c, GLenum cap) {
   if (cap >= GL_MAP1_COLOR_4 && cap <= GL_MAP1_VERTEX_4) return &s.eval.map1_enabled[cap - GL_MAP1_COLOR_4];
   if (cap >= GL_MAP2_COLOR_4 && cap <= GL_MAP2_VERTEX_4) return &s.eval.map2_enabled[cap - GL_MAP2_COLOR_4];
   switch (cap) {
-    case GL_AUTO_NORMAL:
-      return &s.eval.auto_normal;
-    case GL_LIGHTING:
-      return &s.light.lighting;
-    case GL_COLOR_MATERIAL:
-      return &s.light.color_material;
-    case GL_FOG:
-      return &s.fog.enabled;
-    case GL_ALPHA_TEST:
-      return &s.color.alpha_test;
-    case GL_BLEND:
-      return &s.color.blend;
-    case GL_DITHER:
-      return &s.color.dither;
-    case GL_COLOR_LOGIC_OP:
-      return &s.color.logic_op;
-    case GL_DEPTH_TEST:
-      return &s.depth.test;
-    case GL_STENCIL_TEST:
-      return &s.stencil.test;
-    case GL_SCISSOR_TEST:
-      return &s.scissor.test;
-    case GL_CULL_FACE:
-      return &s.polygon.cull;
-    case GL_POLYGON_OFFSET_FILL:
-      return &s.polygon.offset_fill;
-    case GL_POLYGON_OFFSET_LINE:
-      return &s.polygon.offset_line;
-    case GL_POLYGON_OFFSET_POINT:
-      return &s.polygon.offset_point;
-    case GL_POLYGON_SMOOTH:
-      return &s.polygon.smooth;
-    case GL_POLYGON_STIPPLE:
-      return &s.polygon.stipple;
-    case GL_LINE_SMOOTH:
-      return &s.line.smooth;
-    case GL_LINE_STIPPLE:
-      return &s.line.stipple;
-    case GL_POINT_SMOOTH:
-      return &s.point.smooth;
-    case GL_NORMALIZE:
-      return &s.transform.normalize;
-    case GL_RESCALE_NORMAL:
-      return &s.transform.rescale_normal;
-    case GL_TEXTURE_2D:
-      return &s.texture.enabled_2d;
-    case GL_TEXTURE_GEN_S:
-      return &s.texture.gen_enabled[0];
-    case GL_TEXTURE_GEN_T:
-      return &s.texture.gen_enabled[1];
-    case GL_TEXTURE_GEN_R:
-      return &s.texture.gen_enabled[2];
-    case GL_TEXTURE_GEN_Q:
-      return &s.texture.gen_enabled[3];
-    default:
-      return nullptr;
+    case GL_AUTO_NORMAL: return &s.eval.auto_normal;
+    case GL_LIGHTING: return &s.light.lighting;
+    case GL_COLOR_MATERIAL: return &s.light.color_material;
+    case GL_FOG: return &s.fog.enabled;
+    case GL_ALPHA_TEST: return &s.color.alpha_test;
+    case GL_BLEND: return &s.color.blend;
+    case GL_DITHER: return &s.color.dither;
+    case GL_COLOR_LOGIC_OP: return &s.color.logic_op;
+    case GL_DEPTH_TEST: return &s.depth.test;
+    case GL_STENCIL_TEST: return &s.stencil.test;
+    case GL_SCISSOR_TEST: return &s.scissor.test;
+    case GL_CULL_FACE: return &s.polygon.cull;
+    case GL_POLYGON_OFFSET_FILL: return &s.polygon.offset_fill;
+    case GL_POLYGON_OFFSET_LINE: return &s.polygon.offset_line;
+    case GL_POLYGON_OFFSET_POINT: return &s.polygon.offset_point;
+    case GL_POLYGON_SMOOTH: return &s.polygon.smooth;
+    case GL_POLYGON_STIPPLE: return &s.polygon.stipple;
+    case GL_LINE_SMOOTH: return &s.line.smooth;
+    case GL_LINE_STIPPLE: return &s.line.stipple;
+    case GL_POINT_SMOOTH: return &s.point.smooth;
+    case GL_NORMALIZE: return &s.transform.normalize;
+    case GL_RESCALE_NORMAL: return &s.transform.rescale_normal;
+    case GL_TEXTURE_2D: return &s.texture.enabled_2d;
+    case GL_TEXTURE_GEN_S: return &s.texture.gen_enabled[0];
+    case GL_TEXTURE_GEN_T: return &s.texture.gen_enabled[1];
+    case GL_TEXTURE_GEN_R: return &s.texture.gen_enabled[2];
+    case GL_TEXTURE_GEN_Q: return &s.texture.gen_enabled[3];
+    default: return nullptr;
   }
 }
 
@@ -85,14 +57,10 @@ bool* capability(Context& c, GLenum cap) {
 bool* inert_capability(GLenum cap) {
   static bool inert[4] = {};
   switch (cap) {
-    case GL_TEXTURE_1D:
-      return &inert[0];
-    case GL_INDEX_LOGIC_OP:
-      return &inert[1];
-    case GL_MULTISAMPLE:
-      return &inert[2];
-    default:
-      return nullptr;
+    case GL_TEXTURE_1D: return &inert[0];
+    case GL_INDEX_LOGIC_OP: return &inert[1];
+    case GL_MULTISAMPLE: return &inert[2];
+    default: return nullptr;
   }
 }
 
@@ -111,17 +79,13 @@ bool valid_blend(GLenum f, bool src) {
     case GL_SRC_ALPHA:
     case GL_ONE_MINUS_SRC_ALPHA:
     case GL_DST_ALPHA:
-    case GL_ONE_MINUS_DST_ALPHA:
-      return true;
+    case GL_ONE_MINUS_DST_ALPHA: return true;
     case GL_DST_COLOR:
     case GL_ONE_MINUS_DST_COLOR:
     case GL_SRC_COLOR:
-    case GL_ONE_MINUS_SRC_COLOR:
-      return true;
-    case GL_SRC_ALPHA_SATURATE:
-      return src;
-    default:
-      return false;
+    case GL_ONE_MINUS_SRC_COLOR: return true;
+    case GL_SRC_ALPHA_SATURATE: return src;
+    default: return false;
   }
 }
 
@@ -273,26 +237,13 @@ void hint(Context& c, GLenum target, GLenum mode) {
   if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) return c.error(GL_INVALID_ENUM);
   HintState& h = c.s.hint;
   switch (target) {
-    case GL_PERSPECTIVE_CORRECTION_HINT:
-      h.perspective = mode;
-      break;
-    case GL_POINT_SMOOTH_HINT:
-      h.point = mode;
-      break;
-    case GL_LINE_SMOOTH_HINT:
-      h.line = mode;
-      break;
-    case GL_POLYGON_SMOOTH_HINT:
-      h.polygon = mode;
-      break;
-    case GL_FOG_HINT:
-      h.fog = mode;
-      break;
-    case GL_GENERATE_MIPMAP_HINT:
-      break;
-    default:
-      c.error(GL_INVALID_ENUM);
-      break;
+    case GL_PERSPECTIVE_CORRECTION_HINT: h.perspective = mode; break;
+    case GL_POINT_SMOOTH_HINT: h.point = mode; break;
+    case GL_LINE_SMOOTH_HINT: h.line = mode; break;
+    case GL_POLYGON_SMOOTH_HINT: h.polygon = mode; break;
+    case GL_FOG_HINT: h.fog = mode; break;
+    case GL_GENERATE_MIPMAP_HINT: break;
+    default: c.error(GL_INVALID_ENUM); break;
   }
 }
 
@@ -469,17 +420,11 @@ const GLubyte* GLAPIENTRY glGetString(GLenum name) {
     return nullptr;
   }
   switch (name) {
-    case GL_VENDOR:
-      return reinterpret_cast<const GLubyte*>("Tessel");
-    case GL_RENDERER:
-      return reinterpret_cast<const GLubyte*>("Tessel software rasterizer (CPU)");
-    case GL_VERSION:
-      return reinterpret_cast<const GLubyte*>("1.1 Tessel 0.1");
-    case GL_EXTENSIONS:
-      return reinterpret_cast<const GLubyte*>("");
-    default:
-      c.error(GL_INVALID_ENUM);
-      return nullptr;
+    case GL_VENDOR: return reinterpret_cast<const GLubyte*>("Tessel");
+    case GL_RENDERER: return reinterpret_cast<const GLubyte*>("Tessel software rasterizer (CPU)");
+    case GL_VERSION: return reinterpret_cast<const GLubyte*>("1.1 Tessel 0.1");
+    case GL_EXTENSIONS: return reinterpret_cast<const GLubyte*>("");
+    default: c.error(GL_INVALID_ENUM); return nullptr;
   }
 }
 
@@ -493,21 +438,13 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap) {
   if (!flag) {
     // Client-state arrays are queried with glIsEnabled too.
     switch (cap) {
-      case GL_VERTEX_ARRAY:
-        return c.c.vertex.enabled;
-      case GL_NORMAL_ARRAY:
-        return c.c.normal.enabled;
-      case GL_COLOR_ARRAY:
-        return c.c.color.enabled;
-      case GL_TEXTURE_COORD_ARRAY:
-        return c.c.tex.enabled;
-      case GL_EDGE_FLAG_ARRAY:
-        return c.c.edge.enabled;
-      case GL_INDEX_ARRAY:
-        return c.c.index.enabled;
-      default:
-        c.error(GL_INVALID_ENUM);
-        return GL_FALSE;
+      case GL_VERTEX_ARRAY: return c.c.vertex.enabled;
+      case GL_NORMAL_ARRAY: return c.c.normal.enabled;
+      case GL_COLOR_ARRAY: return c.c.color.enabled;
+      case GL_TEXTURE_COORD_ARRAY: return c.c.tex.enabled;
+      case GL_EDGE_FLAG_ARRAY: return c.c.edge.enabled;
+      case GL_INDEX_ARRAY: return c.c.index.enabled;
+      default: c.error(GL_INVALID_ENUM); return GL_FALSE;
     }
   }
   return *flag ? GL_TRUE : GL_FALSE;
@@ -711,8 +648,7 @@ void GLAPIENTRY glCallLists(GLsizei n, GLenum type, const GLvoid* lists) {
         names.push_back((at(4 * i, 1) << 24) + (at(4 * i + 1, 1) << 16) + (at(4 * i + 2, 1) << 8) +
                         at(4 * i + 3, 1));
       break;
-    default:
-      return c.error(GL_INVALID_ENUM);
+    default: return c.error(GL_INVALID_ENUM);
   }
   auto run = [names](Context& c) {
     for (GLuint name : names) call_list(c, name + c.s.list_base);

@@ -194,9 +194,7 @@ void tex_parameter(Context& c, GLenum target, GLenum pname, Vec4Arg p) {
       c.touch();
       t->border = glm::clamp(glm::vec4(p[0], p[1], p[2], p[3]), 0.0f, 1.0f);
       break;
-    case GL_TEXTURE_PRIORITY:
-      t->priority = std::clamp(p[0], 0.0f, 1.0f);
-      break;
+    case GL_TEXTURE_PRIORITY: t->priority = std::clamp(p[0], 0.0f, 1.0f); break;
     case GL_TEXTURE_BASE_LEVEL:
       if (p[0] < 0.0f) return c.error(GL_INVALID_VALUE);
       mark_changed(c, *t);
@@ -207,12 +205,8 @@ void tex_parameter(Context& c, GLenum target, GLenum pname, Vec4Arg p) {
       mark_changed(c, *t);
       t->max_level = int(p[0]);
       break;
-    case GL_GENERATE_MIPMAP:
-      t->generate_mipmap = p[0] != 0.0f;
-      break;
-    default:
-      c.error(GL_INVALID_ENUM);
-      break;
+    case GL_GENERATE_MIPMAP: t->generate_mipmap = p[0] != 0.0f; break;
+    default: c.error(GL_INVALID_ENUM); break;
   }
 }
 
@@ -232,9 +226,7 @@ void tex_env(Context& c, GLenum target, GLenum pname, Vec4Arg p) {
       c.touch();
       c.s.texture.env_color = glm::clamp(glm::vec4(p[0], p[1], p[2], p[3]), 0.0f, 1.0f);
       break;
-    default:
-      c.error(GL_INVALID_ENUM);
-      break;
+    default: c.error(GL_INVALID_ENUM); break;
   }
 }
 
@@ -260,9 +252,7 @@ void tex_gen(Context& c, GLenum coord, GLenum pname, Vec4Arg p) {
       // GL 2.1 §2.12.4: (p1 p2 p3 p4) M^-1 with M the model-view matrix when specified.
       c.s.texture.eye_plane[i] = glm::vec4(p[0], p[1], p[2], p[3]) * glm::inverse(c.modelview());
       break;
-    default:
-      c.error(GL_INVALID_ENUM);
-      break;
+    default: c.error(GL_INVALID_ENUM); break;
   }
 }
 
@@ -457,39 +447,19 @@ void GLAPIENTRY glGetTexParameterfv(GLenum target, GLenum pname, GLfloat* out) {
   TextureObject* t = target_texture(c, target);
   if (!t || !out) return;
   switch (pname) {
-    case GL_TEXTURE_MIN_FILTER:
-      out[0] = float(t->min_filter);
-      break;
-    case GL_TEXTURE_MAG_FILTER:
-      out[0] = float(t->mag_filter);
-      break;
-    case GL_TEXTURE_WRAP_S:
-      out[0] = float(t->wrap_s);
-      break;
-    case GL_TEXTURE_WRAP_T:
-      out[0] = float(t->wrap_t);
-      break;
+    case GL_TEXTURE_MIN_FILTER: out[0] = float(t->min_filter); break;
+    case GL_TEXTURE_MAG_FILTER: out[0] = float(t->mag_filter); break;
+    case GL_TEXTURE_WRAP_S: out[0] = float(t->wrap_s); break;
+    case GL_TEXTURE_WRAP_T: out[0] = float(t->wrap_t); break;
     case GL_TEXTURE_BORDER_COLOR:
       for (int i = 0; i < 4; ++i) out[i] = t->border[i];
       break;
-    case GL_TEXTURE_PRIORITY:
-      out[0] = t->priority;
-      break;
-    case GL_TEXTURE_RESIDENT:
-      out[0] = 1.0f;
-      break;
-    case GL_TEXTURE_BASE_LEVEL:
-      out[0] = float(t->base_level);
-      break;
-    case GL_TEXTURE_MAX_LEVEL:
-      out[0] = float(t->max_level);
-      break;
-    case GL_GENERATE_MIPMAP:
-      out[0] = t->generate_mipmap ? 1.0f : 0.0f;
-      break;
-    default:
-      c.error(GL_INVALID_ENUM);
-      break;
+    case GL_TEXTURE_PRIORITY: out[0] = t->priority; break;
+    case GL_TEXTURE_RESIDENT: out[0] = 1.0f; break;
+    case GL_TEXTURE_BASE_LEVEL: out[0] = float(t->base_level); break;
+    case GL_TEXTURE_MAX_LEVEL: out[0] = float(t->max_level); break;
+    case GL_GENERATE_MIPMAP: out[0] = t->generate_mipmap ? 1.0f : 0.0f; break;
+    default: c.error(GL_INVALID_ENUM); break;
   }
 }
 void GLAPIENTRY glGetTexParameteriv(GLenum target, GLenum pname, GLint* out) {
@@ -511,35 +481,21 @@ void GLAPIENTRY glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pnam
   const bool d = img.defined();
   auto bits = [&](bool has) { return d && has ? 8.0f : 0.0f; };
   switch (pname) {
-    case GL_TEXTURE_WIDTH:
-      out[0] = float(img.width);
-      break;
-    case GL_TEXTURE_HEIGHT:
-      out[0] = float(img.height);
-      break;
-    case GL_TEXTURE_BORDER:
-      out[0] = 0.0f;
-      break;
-    case GL_TEXTURE_INTERNAL_FORMAT:
-      out[0] = d ? float(img.internal_format) : 1.0f;
-      break;
+    case GL_TEXTURE_WIDTH: out[0] = float(img.width); break;
+    case GL_TEXTURE_HEIGHT: out[0] = float(img.height); break;
+    case GL_TEXTURE_BORDER: out[0] = 0.0f; break;
+    case GL_TEXTURE_INTERNAL_FORMAT: out[0] = d ? float(img.internal_format) : 1.0f; break;
     case GL_TEXTURE_RED_SIZE:
     case GL_TEXTURE_GREEN_SIZE:
-    case GL_TEXTURE_BLUE_SIZE:
-      out[0] = bits(b == BaseFormat::RGB || b == BaseFormat::RGBA);
-      break;
+    case GL_TEXTURE_BLUE_SIZE: out[0] = bits(b == BaseFormat::RGB || b == BaseFormat::RGBA); break;
     case GL_TEXTURE_ALPHA_SIZE:
       out[0] = bits(b == BaseFormat::Alpha || b == BaseFormat::LuminanceAlpha || b == BaseFormat::RGBA);
       break;
     case GL_TEXTURE_LUMINANCE_SIZE:
       out[0] = bits(b == BaseFormat::Luminance || b == BaseFormat::LuminanceAlpha);
       break;
-    case GL_TEXTURE_INTENSITY_SIZE:
-      out[0] = bits(b == BaseFormat::Intensity);
-      break;
-    default:
-      c.error(GL_INVALID_ENUM);
-      break;
+    case GL_TEXTURE_INTENSITY_SIZE: out[0] = bits(b == BaseFormat::Intensity); break;
+    default: c.error(GL_INVALID_ENUM); break;
   }
 }
 void GLAPIENTRY glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint* out) {
@@ -646,18 +602,14 @@ void GLAPIENTRY glGetTexGenfv(GLenum coord, GLenum pname, GLfloat* out) {
   if (!out) return;
   const size_t i = coord - GL_S;
   switch (pname) {
-    case GL_TEXTURE_GEN_MODE:
-      out[0] = float(c.s.texture.gen_mode[i]);
-      break;
+    case GL_TEXTURE_GEN_MODE: out[0] = float(c.s.texture.gen_mode[i]); break;
     case GL_OBJECT_PLANE:
       for (int k = 0; k < 4; ++k) out[k] = c.s.texture.object_plane[i][k];
       break;
     case GL_EYE_PLANE:
       for (int k = 0; k < 4; ++k) out[k] = c.s.texture.eye_plane[i][k];
       break;
-    default:
-      c.error(GL_INVALID_ENUM);
-      break;
+    default: c.error(GL_INVALID_ENUM); break;
   }
 }
 void GLAPIENTRY glGetTexGeniv(GLenum coord, GLenum pname, GLint* out) {

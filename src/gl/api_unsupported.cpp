@@ -51,12 +51,8 @@ void accum(Context& c, GLenum op, float value) {
         case GL_LOAD:
           if (read) v = read->fetch(0, x, y) * value;
           break;
-        case GL_MULT:
-          v *= value;
-          break;
-        case GL_ADD:
-          v += glm::vec4(value);
-          break;
+        case GL_MULT: v *= value; break;
+        case GL_ADD: v += glm::vec4(value); break;
         case GL_RETURN:
           if (draw) {
             glm::vec4 out = glm::clamp(v * value, 0.0f, 1.0f);
@@ -66,8 +62,7 @@ void accum(Context& c, GLenum op, float value) {
             draw->store(0, x, y, out);
           }
           break;
-        default:
-          break;
+        default: break;
       }
     }
 }

@@ -16,48 +16,30 @@ thread_local Context* g_current = nullptr;
 
 gpu::StencilOp stencil_op_of(GLenum op) {
   switch (op) {
-    case GL_ZERO:
-      return gpu::StencilOp::Zero;
-    case GL_REPLACE:
-      return gpu::StencilOp::Replace;
-    case GL_INCR:
-      return gpu::StencilOp::Incr;
-    case GL_DECR:
-      return gpu::StencilOp::Decr;
-    case GL_INVERT:
-      return gpu::StencilOp::Invert;
-    default:
-      return gpu::StencilOp::Keep;
+    case GL_ZERO: return gpu::StencilOp::Zero;
+    case GL_REPLACE: return gpu::StencilOp::Replace;
+    case GL_INCR: return gpu::StencilOp::Incr;
+    case GL_DECR: return gpu::StencilOp::Decr;
+    case GL_INVERT: return gpu::StencilOp::Invert;
+    default: return gpu::StencilOp::Keep;
   }
 }
 
 gpu::BlendFactor blend_of(GLenum f) {
   using B = gpu::BlendFactor;
   switch (f) {
-    case GL_ZERO:
-      return B::Zero;
-    case GL_ONE:
-      return B::One;
-    case GL_SRC_COLOR:
-      return B::SrcColor;
-    case GL_ONE_MINUS_SRC_COLOR:
-      return B::OneMinusSrcColor;
-    case GL_DST_COLOR:
-      return B::DstColor;
-    case GL_ONE_MINUS_DST_COLOR:
-      return B::OneMinusDstColor;
-    case GL_SRC_ALPHA:
-      return B::SrcAlpha;
-    case GL_ONE_MINUS_SRC_ALPHA:
-      return B::OneMinusSrcAlpha;
-    case GL_DST_ALPHA:
-      return B::DstAlpha;
-    case GL_ONE_MINUS_DST_ALPHA:
-      return B::OneMinusDstAlpha;
-    case GL_SRC_ALPHA_SATURATE:
-      return B::SrcAlphaSaturate;
-    default:
-      return B::One;
+    case GL_ZERO: return B::Zero;
+    case GL_ONE: return B::One;
+    case GL_SRC_COLOR: return B::SrcColor;
+    case GL_ONE_MINUS_SRC_COLOR: return B::OneMinusSrcColor;
+    case GL_DST_COLOR: return B::DstColor;
+    case GL_ONE_MINUS_DST_COLOR: return B::OneMinusDstColor;
+    case GL_SRC_ALPHA: return B::SrcAlpha;
+    case GL_ONE_MINUS_SRC_ALPHA: return B::OneMinusSrcAlpha;
+    case GL_DST_ALPHA: return B::DstAlpha;
+    case GL_ONE_MINUS_DST_ALPHA: return B::OneMinusDstAlpha;
+    case GL_SRC_ALPHA_SATURATE: return B::SrcAlphaSaturate;
+    default: return B::One;
   }
 }
 
@@ -69,29 +51,20 @@ gpu::PolygonMode polygon_mode_of(GLenum m) {
 
 gpu::Filter filter_of(GLenum f) {
   switch (f) {
-    case GL_NEAREST:
-      return gpu::Filter::Nearest;
-    case GL_LINEAR:
-      return gpu::Filter::Linear;
-    case GL_NEAREST_MIPMAP_NEAREST:
-      return gpu::Filter::NearestMipmapNearest;
-    case GL_LINEAR_MIPMAP_NEAREST:
-      return gpu::Filter::LinearMipmapNearest;
-    case GL_NEAREST_MIPMAP_LINEAR:
-      return gpu::Filter::NearestMipmapLinear;
-    default:
-      return gpu::Filter::LinearMipmapLinear;
+    case GL_NEAREST: return gpu::Filter::Nearest;
+    case GL_LINEAR: return gpu::Filter::Linear;
+    case GL_NEAREST_MIPMAP_NEAREST: return gpu::Filter::NearestMipmapNearest;
+    case GL_LINEAR_MIPMAP_NEAREST: return gpu::Filter::LinearMipmapNearest;
+    case GL_NEAREST_MIPMAP_LINEAR: return gpu::Filter::NearestMipmapLinear;
+    default: return gpu::Filter::LinearMipmapLinear;
   }
 }
 
 gpu::Wrap wrap_of(GLenum w) {
   switch (w) {
-    case GL_CLAMP:
-      return gpu::Wrap::Clamp;
-    case GL_CLAMP_TO_EDGE:
-      return gpu::Wrap::ClampToEdge;
-    default:
-      return gpu::Wrap::Repeat;
+    case GL_CLAMP: return gpu::Wrap::Clamp;
+    case GL_CLAMP_TO_EDGE: return gpu::Wrap::ClampToEdge;
+    default: return gpu::Wrap::Repeat;
   }
 }
 
@@ -103,22 +76,14 @@ void make_current(Context* c) { g_current = c; }
 
 gpu::CompareFunc compare_of(GLenum f) {
   switch (f) {
-    case GL_NEVER:
-      return gpu::CompareFunc::Never;
-    case GL_LESS:
-      return gpu::CompareFunc::Less;
-    case GL_EQUAL:
-      return gpu::CompareFunc::Equal;
-    case GL_LEQUAL:
-      return gpu::CompareFunc::LessEqual;
-    case GL_GREATER:
-      return gpu::CompareFunc::Greater;
-    case GL_NOTEQUAL:
-      return gpu::CompareFunc::NotEqual;
-    case GL_GEQUAL:
-      return gpu::CompareFunc::GreaterEqual;
-    default:
-      return gpu::CompareFunc::Always;
+    case GL_NEVER: return gpu::CompareFunc::Never;
+    case GL_LESS: return gpu::CompareFunc::Less;
+    case GL_EQUAL: return gpu::CompareFunc::Equal;
+    case GL_LEQUAL: return gpu::CompareFunc::LessEqual;
+    case GL_GREATER: return gpu::CompareFunc::Greater;
+    case GL_NOTEQUAL: return gpu::CompareFunc::NotEqual;
+    case GL_GEQUAL: return gpu::CompareFunc::GreaterEqual;
+    default: return gpu::CompareFunc::Always;
   }
 }
 
@@ -187,13 +152,10 @@ gpu::Texture2D* Context::color_buffer(GLenum which) {
     case GL_FRONT:
     case GL_FRONT_LEFT:
     case GL_LEFT:
-    case GL_FRONT_AND_BACK:
-      return color_[0].get();
+    case GL_FRONT_AND_BACK: return color_[0].get();
     case GL_BACK:
-    case GL_BACK_LEFT:
-      return double_buffer_ ? color_[1].get() : nullptr;
-    default:
-      return nullptr;
+    case GL_BACK_LEFT: return double_buffer_ ? color_[1].get() : nullptr;
+    default: return nullptr;
   }
 }
 
@@ -353,8 +315,7 @@ void Context::emit_mode(GLenum mode, std::vector<FFVertex>&& v) {
       v = std::move(out);
       break;
     }
-    default:
-      return;
+    default: return;
   }
   if (idx.empty()) return;
   emit(cls, std::move(v), std::move(idx));
@@ -493,21 +454,11 @@ void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
     if (L.color_material) {
       uint8_t bits = 0;
       switch (L.color_material_mode) {
-        case GL_AMBIENT:
-          bits = kTrackAmbient;
-          break;
-        case GL_DIFFUSE:
-          bits = kTrackDiffuse;
-          break;
-        case GL_SPECULAR:
-          bits = kTrackSpecular;
-          break;
-        case GL_EMISSION:
-          bits = kTrackEmission;
-          break;
-        default:
-          bits = kTrackAmbient | kTrackDiffuse;
-          break;
+        case GL_AMBIENT: bits = kTrackAmbient; break;
+        case GL_DIFFUSE: bits = kTrackDiffuse; break;
+        case GL_SPECULAR: bits = kTrackSpecular; break;
+        case GL_EMISSION: bits = kTrackEmission; break;
+        default: bits = kTrackAmbient | kTrackDiffuse; break;
       }
       if (L.color_material_face != GL_BACK) u.track[0] = bits;
       if (L.color_material_face != GL_FRONT) u.track[1] = bits;
@@ -523,21 +474,11 @@ void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
     st.border_color = tex->border;
     u.base_format = tex->levels[size_t(std::clamp(tex->base_level, 0, kMaxTextureLevels - 1))].base;
     switch (s.texture.env_mode) {
-      case GL_REPLACE:
-        u.env = TexEnv::Replace;
-        break;
-      case GL_DECAL:
-        u.env = TexEnv::Decal;
-        break;
-      case GL_BLEND:
-        u.env = TexEnv::Blend;
-        break;
-      case GL_ADD:
-        u.env = TexEnv::Add;
-        break;
-      default:
-        u.env = TexEnv::Modulate;
-        break;
+      case GL_REPLACE: u.env = TexEnv::Replace; break;
+      case GL_DECAL: u.env = TexEnv::Decal; break;
+      case GL_BLEND: u.env = TexEnv::Blend; break;
+      case GL_ADD: u.env = TexEnv::Add; break;
+      default: u.env = TexEnv::Modulate; break;
     }
     u.env_color = s.texture.env_color;
     const glm::mat4& tm = matrices[2].back();

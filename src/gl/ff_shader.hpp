@@ -184,12 +184,9 @@ F texgen_coord(const FFUniforms& u, int i, const Vec4<F>& obj, const Vec4<F>& ey
                F given) {
   if (!u.texgen[size_t(i)]) return given;
   switch (u.texgen_mode[size_t(i)]) {
-    case TexGenMode::ObjectLinear:
-      return dot(obj, Vec4<F>(u.object_plane[size_t(i)]));
-    case TexGenMode::EyeLinear:
-      return dot(eye, Vec4<F>(u.eye_plane[size_t(i)]));
-    case TexGenMode::SphereMap:
-      return i == 0 ? sphere.x : i == 1 ? sphere.y : F(0.0f);
+    case TexGenMode::ObjectLinear: return dot(obj, Vec4<F>(u.object_plane[size_t(i)]));
+    case TexGenMode::EyeLinear: return dot(eye, Vec4<F>(u.eye_plane[size_t(i)]));
+    case TexGenMode::SphereMap: return i == 0 ? sphere.x : i == 1 ? sphere.y : F(0.0f);
   }
   return given;
 }
@@ -301,12 +298,8 @@ struct FixedFunction {
       if (u.fog) {
         F fac;
         switch (u.fog_mode) {
-          case FogMode::Linear:
-            fac = (F(u.fog_end) - v.fog) * F(1.0f / (u.fog_end - u.fog_start));
-            break;
-          case FogMode::Exp:
-            fac = exp(-F(u.fog_density) * v.fog);
-            break;
+          case FogMode::Linear: fac = (F(u.fog_end) - v.fog) * F(1.0f / (u.fog_end - u.fog_start)); break;
+          case FogMode::Exp: fac = exp(-F(u.fog_density) * v.fog); break;
           default: {
             const F d = F(u.fog_density) * v.fog;
             fac = exp(-(d * d));

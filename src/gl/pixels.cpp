@@ -16,37 +16,27 @@ int format_components(GLenum format) {
     case GL_LUMINANCE:
     case GL_DEPTH_COMPONENT:
     case GL_STENCIL_INDEX:
-    case GL_COLOR_INDEX:
-      return 1;
-    case GL_LUMINANCE_ALPHA:
-      return 2;
+    case GL_COLOR_INDEX: return 1;
+    case GL_LUMINANCE_ALPHA: return 2;
     case GL_RGB:
-    case GL_BGR:
-      return 3;
+    case GL_BGR: return 3;
     case GL_RGBA:
-    case GL_BGRA:
-      return 4;
-    default:
-      return 0;
+    case GL_BGRA: return 4;
+    default: return 0;
   }
 }
 
 int type_bytes(GLenum type) {
   switch (type) {
     case GL_UNSIGNED_BYTE:
-    case GL_BYTE:
-      return 1;
+    case GL_BYTE: return 1;
     case GL_UNSIGNED_SHORT:
-    case GL_SHORT:
-      return 2;
+    case GL_SHORT: return 2;
     case GL_UNSIGNED_INT:
     case GL_INT:
-    case GL_FLOAT:
-      return 4;
-    case GL_BITMAP:
-      return 0;
-    default:
-      return -1;
+    case GL_FLOAT: return 4;
+    case GL_BITMAP: return 0;
+    default: return -1;
   }
 }
 
@@ -94,10 +84,8 @@ float read_component(const uint8_t* p, GLenum type, bool swap) {
   std::memcpy(b, p, size_t(sz));
   if (swap) swap_bytes(b, sz);
   switch (type) {
-    case GL_UNSIGNED_BYTE:
-      return float(b[0]) / 255.0f;
-    case GL_BYTE:
-      return (2.0f * float(int8_t(b[0])) + 1.0f) / 255.0f;
+    case GL_UNSIGNED_BYTE: return float(b[0]) / 255.0f;
+    case GL_BYTE: return (2.0f * float(int8_t(b[0])) + 1.0f) / 255.0f;
     case GL_UNSIGNED_SHORT: {
       uint16_t v;
       std::memcpy(&v, b, 2);
@@ -135,12 +123,8 @@ void write_component(uint8_t* p, GLenum type, float v, bool swap) {
                                                                                         : 0.0,
                               type == GL_FLOAT ? 1e38 : 1.0);
   switch (type) {
-    case GL_UNSIGNED_BYTE:
-      b[0] = uint8_t(std::lround(c * 255.0));
-      break;
-    case GL_BYTE:
-      b[0] = uint8_t(int8_t(std::lround((c * 255.0 - 1.0) / 2.0)));
-      break;
+    case GL_UNSIGNED_BYTE: b[0] = uint8_t(std::lround(c * 255.0)); break;
+    case GL_BYTE: b[0] = uint8_t(int8_t(std::lround((c * 255.0 - 1.0) / 2.0))); break;
     case GL_UNSIGNED_SHORT: {
       const uint16_t x = uint16_t(std::lround(c * 65535.0));
       std::memcpy(b, &x, 2);
@@ -196,39 +180,17 @@ void unpack_pixels(const PixelStore& ps, int w, int h, GLenum format, GLenum typ
       for (int k = 0; k < n; ++k) c[k] = read_component(p + size_t(k) * cs, type, swap);
       glm::vec4& o = out[size_t(y) * size_t(w) + size_t(x)];
       switch (format) {
-        case GL_RED:
-          o = {c[0], 0, 0, 1};
-          break;
-        case GL_GREEN:
-          o = {0, c[0], 0, 1};
-          break;
-        case GL_BLUE:
-          o = {0, 0, c[0], 1};
-          break;
-        case GL_ALPHA:
-          o = {0, 0, 0, c[0]};
-          break;
-        case GL_LUMINANCE:
-          o = {c[0], c[0], c[0], 1};
-          break;
-        case GL_LUMINANCE_ALPHA:
-          o = {c[0], c[0], c[0], c[1]};
-          break;
-        case GL_RGB:
-          o = {c[0], c[1], c[2], 1};
-          break;
-        case GL_BGR:
-          o = {c[2], c[1], c[0], 1};
-          break;
-        case GL_RGBA:
-          o = {c[0], c[1], c[2], c[3]};
-          break;
-        case GL_BGRA:
-          o = {c[2], c[1], c[0], c[3]};
-          break;
-        default:
-          o = {c[0], 0, 0, 1};
-          break;  // depth, stencil, index: the value in .x
+        case GL_RED: o = {c[0], 0, 0, 1}; break;
+        case GL_GREEN: o = {0, c[0], 0, 1}; break;
+        case GL_BLUE: o = {0, 0, c[0], 1}; break;
+        case GL_ALPHA: o = {0, 0, 0, c[0]}; break;
+        case GL_LUMINANCE: o = {c[0], c[0], c[0], 1}; break;
+        case GL_LUMINANCE_ALPHA: o = {c[0], c[0], c[0], c[1]}; break;
+        case GL_RGB: o = {c[0], c[1], c[2], 1}; break;
+        case GL_BGR: o = {c[2], c[1], c[0], 1}; break;
+        case GL_RGBA: o = {c[0], c[1], c[2], c[3]}; break;
+        case GL_BGRA: o = {c[2], c[1], c[0], c[3]}; break;
+        default: o = {c[0], 0, 0, 1}; break;  // depth, stencil, index: the value in .x
       }
     }
   }
@@ -265,41 +227,21 @@ void pack_pixels(const PixelStore& ps, int w, int h, GLenum format, GLenum type,
       float v[4];
       int n = 0;
       switch (format) {
-        case GL_RED:
-          v[n++] = c.r;
-          break;
-        case GL_GREEN:
-          v[n++] = c.g;
-          break;
-        case GL_BLUE:
-          v[n++] = c.b;
-          break;
-        case GL_ALPHA:
-          v[n++] = c.a;
-          break;
+        case GL_RED: v[n++] = c.r; break;
+        case GL_GREEN: v[n++] = c.g; break;
+        case GL_BLUE: v[n++] = c.b; break;
+        case GL_ALPHA: v[n++] = c.a; break;
         // GL 2.1 §4.3.2: luminance is R + G + B (clamped).
-        case GL_LUMINANCE:
-          v[n++] = std::min(1.0f, c.r + c.g + c.b);
-          break;
+        case GL_LUMINANCE: v[n++] = std::min(1.0f, c.r + c.g + c.b); break;
         case GL_LUMINANCE_ALPHA:
           v[n++] = std::min(1.0f, c.r + c.g + c.b);
           v[n++] = c.a;
           break;
-        case GL_RGB:
-          v[0] = c.r, v[1] = c.g, v[2] = c.b, n = 3;
-          break;
-        case GL_BGR:
-          v[0] = c.b, v[1] = c.g, v[2] = c.r, n = 3;
-          break;
-        case GL_RGBA:
-          v[0] = c.r, v[1] = c.g, v[2] = c.b, v[3] = c.a, n = 4;
-          break;
-        case GL_BGRA:
-          v[0] = c.b, v[1] = c.g, v[2] = c.r, v[3] = c.a, n = 4;
-          break;
-        default:
-          v[n++] = c.x;
-          break;
+        case GL_RGB: v[0] = c.r, v[1] = c.g, v[2] = c.b, n = 3; break;
+        case GL_BGR: v[0] = c.b, v[1] = c.g, v[2] = c.r, n = 3; break;
+        case GL_RGBA: v[0] = c.r, v[1] = c.g, v[2] = c.b, v[3] = c.a, n = 4; break;
+        case GL_BGRA: v[0] = c.b, v[1] = c.g, v[2] = c.r, v[3] = c.a, n = 4; break;
+        default: v[n++] = c.x; break;
       }
       for (int k = 0; k < n; ++k) write_component(p + size_t(k) * cs, type, v[k], swap);
     }
@@ -313,9 +255,7 @@ bool base_format_of(GLint f, BaseFormat& base) {
     case GL_LUMINANCE4:
     case GL_LUMINANCE8:
     case GL_LUMINANCE12:
-    case GL_LUMINANCE16:
-      base = BaseFormat::Luminance;
-      return true;
+    case GL_LUMINANCE16: base = BaseFormat::Luminance; return true;
     case 2:
     case GL_LUMINANCE_ALPHA:
     case GL_LUMINANCE4_ALPHA4:
@@ -323,23 +263,17 @@ bool base_format_of(GLint f, BaseFormat& base) {
     case GL_LUMINANCE8_ALPHA8:
     case GL_LUMINANCE12_ALPHA4:
     case GL_LUMINANCE12_ALPHA12:
-    case GL_LUMINANCE16_ALPHA16:
-      base = BaseFormat::LuminanceAlpha;
-      return true;
+    case GL_LUMINANCE16_ALPHA16: base = BaseFormat::LuminanceAlpha; return true;
     case GL_ALPHA:
     case GL_ALPHA4:
     case GL_ALPHA8:
     case GL_ALPHA12:
-    case GL_ALPHA16:
-      base = BaseFormat::Alpha;
-      return true;
+    case GL_ALPHA16: base = BaseFormat::Alpha; return true;
     case GL_INTENSITY:
     case GL_INTENSITY4:
     case GL_INTENSITY8:
     case GL_INTENSITY12:
-    case GL_INTENSITY16:
-      base = BaseFormat::Intensity;
-      return true;
+    case GL_INTENSITY16: base = BaseFormat::Intensity; return true;
     case 3:
     case GL_RGB:
     case GL_R3_G3_B2:
@@ -348,9 +282,7 @@ bool base_format_of(GLint f, BaseFormat& base) {
     case GL_RGB8:
     case GL_RGB10:
     case GL_RGB12:
-    case GL_RGB16:
-      base = BaseFormat::RGB;
-      return true;
+    case GL_RGB16: base = BaseFormat::RGB; return true;
     case 4:
     case GL_RGBA:
     case GL_RGBA2:
@@ -359,11 +291,8 @@ bool base_format_of(GLint f, BaseFormat& base) {
     case GL_RGBA8:
     case GL_RGB10_A2:
     case GL_RGBA12:
-    case GL_RGBA16:
-      base = BaseFormat::RGBA;
-      return true;
-    default:
-      return false;
+    case GL_RGBA16: base = BaseFormat::RGBA; return true;
+    default: return false;
   }
 }
 
@@ -373,21 +302,11 @@ void to_texture_rgba8(const std::vector<glm::vec4>& in, BaseFormat base, std::ve
     const glm::vec4& c = in[i];
     uint8_t* o = &out[i * 4];
     switch (base) {
-      case BaseFormat::Alpha:
-        o[0] = o[1] = o[2] = 0, o[3] = unorm8(c.a);
-        break;
-      case BaseFormat::Luminance:
-        o[0] = o[1] = o[2] = unorm8(c.r), o[3] = 255;
-        break;
-      case BaseFormat::LuminanceAlpha:
-        o[0] = o[1] = o[2] = unorm8(c.r), o[3] = unorm8(c.a);
-        break;
-      case BaseFormat::Intensity:
-        o[0] = o[1] = o[2] = o[3] = unorm8(c.r);
-        break;
-      case BaseFormat::RGB:
-        o[0] = unorm8(c.r), o[1] = unorm8(c.g), o[2] = unorm8(c.b), o[3] = 255;
-        break;
+      case BaseFormat::Alpha: o[0] = o[1] = o[2] = 0, o[3] = unorm8(c.a); break;
+      case BaseFormat::Luminance: o[0] = o[1] = o[2] = unorm8(c.r), o[3] = 255; break;
+      case BaseFormat::LuminanceAlpha: o[0] = o[1] = o[2] = unorm8(c.r), o[3] = unorm8(c.a); break;
+      case BaseFormat::Intensity: o[0] = o[1] = o[2] = o[3] = unorm8(c.r); break;
+      case BaseFormat::RGB: o[0] = unorm8(c.r), o[1] = unorm8(c.g), o[2] = unorm8(c.b), o[3] = 255; break;
       case BaseFormat::RGBA:
         o[0] = unorm8(c.r), o[1] = unorm8(c.g), o[2] = unorm8(c.b), o[3] = unorm8(c.a);
         break;

@@ -20,14 +20,10 @@ inline uint32_t gl_type_of(const glslang::TType& t) {
   }
   const int n = t.getVectorSize() > 0 ? t.getVectorSize() : 1;
   switch (t.getBasicType()) {
-    case EbtFloat:
-      return n == 1 ? 0x1406 : 0x8B50 + uint32_t(n - 2);  // FLOAT, FLOAT_VEC2..4
-    case EbtInt:
-      return n == 1 ? 0x1404 : 0x8B53 + uint32_t(n - 2);  // INT, INT_VEC2..4
-    case EbtUint:
-      return n == 1 ? 0x1405 : 0x8DC6 + uint32_t(n - 2);  // UNSIGNED_INT, ..._VEC2..4
-    case EbtBool:
-      return n == 1 ? 0x8B56 : 0x8B57 + uint32_t(n - 2);  // BOOL, BOOL_VEC2..4
+    case EbtFloat: return n == 1 ? 0x1406 : 0x8B50 + uint32_t(n - 2);  // FLOAT, FLOAT_VEC2..4
+    case EbtInt: return n == 1 ? 0x1404 : 0x8B53 + uint32_t(n - 2);    // INT, INT_VEC2..4
+    case EbtUint: return n == 1 ? 0x1405 : 0x8DC6 + uint32_t(n - 2);   // UNSIGNED_INT, ..._VEC2..4
+    case EbtBool: return n == 1 ? 0x8B56 : 0x8B57 + uint32_t(n - 2);   // BOOL, BOOL_VEC2..4
     case EbtSampler: {
       const TSampler& s = t.getSampler();
       const int kind = s.type == EbtInt ? 1 : s.type == EbtUint ? 2 : 0;
@@ -40,22 +36,18 @@ inline uint32_t gl_type_of(const glslang::TType& t) {
           if (s.isShadow()) return s.isArrayed() ? 0x8DC4 : 0x8B62;
           if (s.isArrayed()) return kind == 0 ? 0x8DC1 : kind == 1 ? 0x8DCF : 0x8DD7;
           return kind == 0 ? 0x8B5E : kind == 1 ? 0x8DCA : 0x8DD2;
-        case Esd3D:
-          return kind == 0 ? 0x8B5F : kind == 1 ? 0x8DCB : 0x8DD3;
+        case Esd3D: return kind == 0 ? 0x8B5F : kind == 1 ? 0x8DCB : 0x8DD3;
         case EsdCube:
           if (s.isShadow()) return 0x8DC5;
           return kind == 0 ? 0x8B60 : kind == 1 ? 0x8DCC : 0x8DD4;
         case EsdRect:
           if (s.isShadow()) return 0x8B64;
           return kind == 0 ? 0x8B63 : kind == 1 ? 0x8DCD : 0x8DD5;
-        case EsdBuffer:
-          return kind == 0 ? 0x8DC2 : kind == 1 ? 0x8DD0 : 0x8DD8;
-        default:
-          return 0;
+        case EsdBuffer: return kind == 0 ? 0x8DC2 : kind == 1 ? 0x8DD0 : 0x8DD8;
+        default: return 0;
       }
     }
-    default:
-      return 0;
+    default: return 0;
   }
 }
 

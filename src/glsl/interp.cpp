@@ -157,20 +157,13 @@ void lane_math(ir::Op op, uint32_t* t, const uint32_t* a, const uint32_t* bb, co
     }
       I2(UAddCarry, (x + y) < x ? 1u : 0u)
       I2(USubBorrow, x < y ? 1u : 0u)
-    case Op::PackHalf:
-      each(t, [&](int l) { return pack_half(f(a[l]), f(bb[l])); });
-      break;
-    case Op::UnpackHalfLo:
-      each(t, [&](int l) { return u(unpack_half(a[l])); });
-      break;
-    case Op::UnpackHalfHi:
-      each(t, [&](int l) { return u(unpack_half(a[l] >> 16)); });
-      break;
+    case Op::PackHalf: each(t, [&](int l) { return pack_half(f(a[l]), f(bb[l])); }); break;
+    case Op::UnpackHalfLo: each(t, [&](int l) { return u(unpack_half(a[l])); }); break;
+    case Op::UnpackHalfHi: each(t, [&](int l) { return u(unpack_half(a[l] >> 16)); }); break;
 #undef F1
 #undef F2
 #undef I2
-    default:
-      break;
+    default: break;
   }
 }
 
@@ -185,9 +178,7 @@ class Runner {
       const uint32_t live = mask & ~(m_.ret | m_.brk | m_.cont | m_.kill);
       if (!live) return;
       switch (n.kind) {
-        case ir::Node::Kind::Code:
-          code(n.code, live);
-          break;
+        case ir::Node::Kind::Code: code(n.code, live); break;
         case ir::Node::Kind::If: {
           const uint32_t c = mask_of(r_[n.cond]) & live;
           if (c) block(n.a, c);
@@ -213,18 +204,10 @@ class Runner {
           m_.cont = cont;
           break;
         }
-        case ir::Node::Kind::Break:
-          m_.brk |= live;
-          break;
-        case ir::Node::Kind::Continue:
-          m_.cont |= live;
-          break;
-        case ir::Node::Kind::Return:
-          m_.ret |= live;
-          break;
-        case ir::Node::Kind::Discard:
-          m_.kill |= live;
-          break;
+        case ir::Node::Kind::Break: m_.brk |= live; break;
+        case ir::Node::Kind::Continue: m_.cont |= live; break;
+        case ir::Node::Kind::Return: m_.ret |= live; break;
+        case ir::Node::Kind::Discard: m_.kill |= live; break;
         case ir::Node::Kind::Function: {
           const uint32_t ret = m_.ret;
           block(n.a, live);
@@ -432,9 +415,7 @@ class Runner {
           each(t, [&](int l) { return u(f(a[l | 2]) - f(a[l & ~2])); });
           std::memcpy(d, t, sizeof t);
           break;
-        case Op::Texture:
-          texture(st_.textures[i.imm]);
-          break;
+        case Op::Texture: texture(st_.textures[i.imm]); break;
 #undef F1
 #undef F2
 #undef FC

@@ -315,18 +315,10 @@ class Codegen {
         b_.CreateStore(saved_cont, cont_);
         break;
       }
-      case K::Break:
-        b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, brk_), live), brk_);
-        break;
-      case K::Continue:
-        b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, cont_), live), cont_);
-        break;
-      case K::Return:
-        b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, ret_), live), ret_);
-        break;
-      case K::Discard:
-        b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, kill_), live), kill_);
-        break;
+      case K::Break: b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, brk_), live), brk_); break;
+      case K::Continue: b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, cont_), live), cont_); break;
+      case K::Return: b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, ret_), live), ret_); break;
+      case K::Discard: b_.CreateStore(b_.CreateOr(b_.CreateLoad(vm_, kill_), live), kill_); break;
       case K::Function: {
         llvm::Value* saved = b_.CreateLoad(vm_, ret_);
         block(n.a, live);
@@ -393,12 +385,8 @@ class Codegen {
     auto setf = [&](llvm::Value* v) { store(i.dst, v); };
     auto zero = llvm::Constant::getNullValue(vi_);
     switch (i.op) {
-      case Op::Mov:
-        store(i.dst, load(i.a));
-        break;
-      case Op::Store:
-        store(i.dst, b_.CreateSelect(live, load(i.a), load(i.dst)));
-        break;
+      case Op::Mov: store(i.dst, load(i.a)); break;
+      case Op::Store: store(i.dst, b_.CreateSelect(live, load(i.a), load(i.dst))); break;
       case Op::UniformIndexed: {
         llvm::Value* a = I(i.a);
         llvm::Value* r = zero;
@@ -438,27 +426,13 @@ class Codegen {
         }
         break;
       }
-      case Op::Select:
-        store(i.dst, b_.CreateSelect(mask_of(i.a), I(i.b), I(i.c)));
-        break;
-      case Op::FAdd:
-        setf(b_.CreateFAdd(F(i.a), F(i.b)));
-        break;
-      case Op::FSub:
-        setf(b_.CreateFSub(F(i.a), F(i.b)));
-        break;
-      case Op::FMul:
-        setf(b_.CreateFMul(F(i.a), F(i.b)));
-        break;
-      case Op::FDiv:
-        setf(b_.CreateFDiv(F(i.a), F(i.b)));
-        break;
-      case Op::FNeg:
-        setf(b_.CreateFNeg(F(i.a)));
-        break;
-      case Op::FAbs:
-        setf(intrinsic(llvm::Intrinsic::fabs, {F(i.a)}));
-        break;
+      case Op::Select: store(i.dst, b_.CreateSelect(mask_of(i.a), I(i.b), I(i.c))); break;
+      case Op::FAdd: setf(b_.CreateFAdd(F(i.a), F(i.b))); break;
+      case Op::FSub: setf(b_.CreateFSub(F(i.a), F(i.b))); break;
+      case Op::FMul: setf(b_.CreateFMul(F(i.a), F(i.b))); break;
+      case Op::FDiv: setf(b_.CreateFDiv(F(i.a), F(i.b))); break;
+      case Op::FNeg: setf(b_.CreateFNeg(F(i.a))); break;
+      case Op::FAbs: setf(intrinsic(llvm::Intrinsic::fabs, {F(i.a)})); break;
       case Op::FSign: {
         llvm::Value* x = F(i.a);
         setf(
@@ -476,21 +450,11 @@ class Codegen {
         setf(b_.CreateSelect(b_.CreateFCmpUNO(y, y), x, r));
         break;
       }
-      case Op::FFma:
-        setf(intrinsic(llvm::Intrinsic::fma, {F(i.a), F(i.b), F(i.c)}));
-        break;
-      case Op::FFloor:
-        setf(intrinsic(llvm::Intrinsic::floor, {F(i.a)}));
-        break;
-      case Op::FCeil:
-        setf(intrinsic(llvm::Intrinsic::ceil, {F(i.a)}));
-        break;
-      case Op::FTrunc:
-        setf(intrinsic(llvm::Intrinsic::trunc, {F(i.a)}));
-        break;
-      case Op::FRoundEven:
-        setf(intrinsic(llvm::Intrinsic::nearbyint, {F(i.a)}));
-        break;
+      case Op::FFma: setf(intrinsic(llvm::Intrinsic::fma, {F(i.a), F(i.b), F(i.c)})); break;
+      case Op::FFloor: setf(intrinsic(llvm::Intrinsic::floor, {F(i.a)})); break;
+      case Op::FCeil: setf(intrinsic(llvm::Intrinsic::ceil, {F(i.a)})); break;
+      case Op::FTrunc: setf(intrinsic(llvm::Intrinsic::trunc, {F(i.a)})); break;
+      case Op::FRoundEven: setf(intrinsic(llvm::Intrinsic::nearbyint, {F(i.a)})); break;
       case Op::FFract: {
         llvm::Value* x = F(i.a);
         setf(b_.CreateFSub(x, intrinsic(llvm::Intrinsic::floor, {x})));
@@ -501,30 +465,14 @@ class Codegen {
         setf(b_.CreateFSub(x, b_.CreateFMul(y, intrinsic(llvm::Intrinsic::floor, {b_.CreateFDiv(x, y)}))));
         break;
       }
-      case Op::FSqrt:
-        setf(intrinsic(llvm::Intrinsic::sqrt, {F(i.a)}));
-        break;
-      case Op::FRsq:
-        setf(b_.CreateFDiv(splatf(1.0f), intrinsic(llvm::Intrinsic::sqrt, {F(i.a)})));
-        break;
-      case Op::FLt:
-        setf(sext(b_.CreateFCmpOLT(F(i.a), F(i.b))));
-        break;
-      case Op::FLe:
-        setf(sext(b_.CreateFCmpOLE(F(i.a), F(i.b))));
-        break;
-      case Op::FGt:
-        setf(sext(b_.CreateFCmpOGT(F(i.a), F(i.b))));
-        break;
-      case Op::FGe:
-        setf(sext(b_.CreateFCmpOGE(F(i.a), F(i.b))));
-        break;
-      case Op::FEq:
-        setf(sext(b_.CreateFCmpOEQ(F(i.a), F(i.b))));
-        break;
-      case Op::FNe:
-        setf(sext(b_.CreateFCmpUNE(F(i.a), F(i.b))));
-        break;
+      case Op::FSqrt: setf(intrinsic(llvm::Intrinsic::sqrt, {F(i.a)})); break;
+      case Op::FRsq: setf(b_.CreateFDiv(splatf(1.0f), intrinsic(llvm::Intrinsic::sqrt, {F(i.a)}))); break;
+      case Op::FLt: setf(sext(b_.CreateFCmpOLT(F(i.a), F(i.b)))); break;
+      case Op::FLe: setf(sext(b_.CreateFCmpOLE(F(i.a), F(i.b)))); break;
+      case Op::FGt: setf(sext(b_.CreateFCmpOGT(F(i.a), F(i.b)))); break;
+      case Op::FGe: setf(sext(b_.CreateFCmpOGE(F(i.a), F(i.b)))); break;
+      case Op::FEq: setf(sext(b_.CreateFCmpOEQ(F(i.a), F(i.b)))); break;
+      case Op::FNe: setf(sext(b_.CreateFCmpUNE(F(i.a), F(i.b)))); break;
       case Op::FIsNan: {
         llvm::Value* x = F(i.a);
         setf(sext(b_.CreateFCmpUNO(x, x)));
@@ -533,15 +481,9 @@ class Codegen {
       case Op::FIsInf:
         setf(sext(b_.CreateFCmpOEQ(intrinsic(llvm::Intrinsic::fabs, {F(i.a)}), splatf(INFINITY))));
         break;
-      case Op::IAdd:
-        setf(b_.CreateAdd(I(i.a), I(i.b)));
-        break;
-      case Op::ISub:
-        setf(b_.CreateSub(I(i.a), I(i.b)));
-        break;
-      case Op::IMul:
-        setf(b_.CreateMul(I(i.a), I(i.b)));
-        break;
+      case Op::IAdd: setf(b_.CreateAdd(I(i.a), I(i.b))); break;
+      case Op::ISub: setf(b_.CreateSub(I(i.a), I(i.b))); break;
+      case Op::IMul: setf(b_.CreateMul(I(i.a), I(i.b))); break;
       case Op::IDiv: {
         // A quotient by 0 is 0; dividing by -1 negates (wrapping): no lane can trap.
         llvm::Value *x = I(i.a), *d = I(i.b);
@@ -560,9 +502,7 @@ class Codegen {
         setf(b_.CreateSelect(z, splat(~0u), q));
         break;
       }
-      case Op::INeg:
-        setf(b_.CreateSub(zero, I(i.a)));
-        break;
+      case Op::INeg: setf(b_.CreateSub(zero, I(i.a))); break;
       case Op::IAbs: {
         llvm::Value* x = I(i.a);
         setf(b_.CreateSelect(b_.CreateICmpSLT(x, zero), b_.CreateSub(zero, x), x));
@@ -594,63 +534,25 @@ class Codegen {
         setf(b_.CreateSelect(b_.CreateICmpULT(x, y), y, x));
         break;
       }
-      case Op::And:
-        setf(b_.CreateAnd(I(i.a), I(i.b)));
-        break;
-      case Op::Or:
-        setf(b_.CreateOr(I(i.a), I(i.b)));
-        break;
-      case Op::Xor:
-        setf(b_.CreateXor(I(i.a), I(i.b)));
-        break;
-      case Op::Not:
-        setf(b_.CreateNot(I(i.a)));
-        break;
-      case Op::Shl:
-        setf(b_.CreateShl(I(i.a), b_.CreateAnd(I(i.b), splat(31))));
-        break;
-      case Op::ShrA:
-        setf(b_.CreateAShr(I(i.a), b_.CreateAnd(I(i.b), splat(31))));
-        break;
-      case Op::ShrL:
-        setf(b_.CreateLShr(I(i.a), b_.CreateAnd(I(i.b), splat(31))));
-        break;
-      case Op::ILt:
-        setf(sext(b_.CreateICmpSLT(I(i.a), I(i.b))));
-        break;
-      case Op::ILe:
-        setf(sext(b_.CreateICmpSLE(I(i.a), I(i.b))));
-        break;
-      case Op::IGt:
-        setf(sext(b_.CreateICmpSGT(I(i.a), I(i.b))));
-        break;
-      case Op::IGe:
-        setf(sext(b_.CreateICmpSGE(I(i.a), I(i.b))));
-        break;
-      case Op::ULt:
-        setf(sext(b_.CreateICmpULT(I(i.a), I(i.b))));
-        break;
-      case Op::ULe:
-        setf(sext(b_.CreateICmpULE(I(i.a), I(i.b))));
-        break;
-      case Op::UGt:
-        setf(sext(b_.CreateICmpUGT(I(i.a), I(i.b))));
-        break;
-      case Op::UGe:
-        setf(sext(b_.CreateICmpUGE(I(i.a), I(i.b))));
-        break;
-      case Op::IEq:
-        setf(sext(b_.CreateICmpEQ(I(i.a), I(i.b))));
-        break;
-      case Op::INe:
-        setf(sext(b_.CreateICmpNE(I(i.a), I(i.b))));
-        break;
-      case Op::I2F:
-        setf(b_.CreateSIToFP(I(i.a), vf_));
-        break;
-      case Op::U2F:
-        setf(b_.CreateUIToFP(I(i.a), vf_));
-        break;
+      case Op::And: setf(b_.CreateAnd(I(i.a), I(i.b))); break;
+      case Op::Or: setf(b_.CreateOr(I(i.a), I(i.b))); break;
+      case Op::Xor: setf(b_.CreateXor(I(i.a), I(i.b))); break;
+      case Op::Not: setf(b_.CreateNot(I(i.a))); break;
+      case Op::Shl: setf(b_.CreateShl(I(i.a), b_.CreateAnd(I(i.b), splat(31)))); break;
+      case Op::ShrA: setf(b_.CreateAShr(I(i.a), b_.CreateAnd(I(i.b), splat(31)))); break;
+      case Op::ShrL: setf(b_.CreateLShr(I(i.a), b_.CreateAnd(I(i.b), splat(31)))); break;
+      case Op::ILt: setf(sext(b_.CreateICmpSLT(I(i.a), I(i.b)))); break;
+      case Op::ILe: setf(sext(b_.CreateICmpSLE(I(i.a), I(i.b)))); break;
+      case Op::IGt: setf(sext(b_.CreateICmpSGT(I(i.a), I(i.b)))); break;
+      case Op::IGe: setf(sext(b_.CreateICmpSGE(I(i.a), I(i.b)))); break;
+      case Op::ULt: setf(sext(b_.CreateICmpULT(I(i.a), I(i.b)))); break;
+      case Op::ULe: setf(sext(b_.CreateICmpULE(I(i.a), I(i.b)))); break;
+      case Op::UGt: setf(sext(b_.CreateICmpUGT(I(i.a), I(i.b)))); break;
+      case Op::UGe: setf(sext(b_.CreateICmpUGE(I(i.a), I(i.b)))); break;
+      case Op::IEq: setf(sext(b_.CreateICmpEQ(I(i.a), I(i.b)))); break;
+      case Op::INe: setf(sext(b_.CreateICmpNE(I(i.a), I(i.b)))); break;
+      case Op::I2F: setf(b_.CreateSIToFP(I(i.a), vf_)); break;
+      case Op::U2F: setf(b_.CreateUIToFP(I(i.a), vf_)); break;
       case Op::F2I: {
         // As cvttps2dq: NaN and out of range give INT_MIN.
         llvm::Value* x = F(i.a);
@@ -680,12 +582,8 @@ class Codegen {
         setf(b_.CreateFSub(b_.CreateShuffleVector(x, hi), b_.CreateShuffleVector(x, lo)));
         break;
       }
-      case Op::Texture:
-        texture(i);
-        break;
-      default:
-        call_math(i);
-        break;
+      case Op::Texture: texture(i); break;
+      default: call_math(i); break;
     }
   }
 };

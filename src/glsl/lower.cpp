@@ -56,20 +56,13 @@ struct LowerError : std::runtime_error {
 
 Base base_of(const TType& t, const TIntermNode* where) {
   switch (t.getBasicType()) {
-    case glslang::EbtFloat:
-      return Base::Float;
-    case glslang::EbtInt:
-      return Base::Int;
-    case glslang::EbtUint:
-      return Base::Uint;
-    case glslang::EbtBool:
-      return Base::Bool;
-    case glslang::EbtSampler:
-      return Base::Int;
-    case glslang::EbtDouble:
-      fail(where, "double precision is not supported");
-    default:
-      fail(where, "type '" + std::string(t.getBasicTypeString().c_str()) + "' is not supported");
+    case glslang::EbtFloat: return Base::Float;
+    case glslang::EbtInt: return Base::Int;
+    case glslang::EbtUint: return Base::Uint;
+    case glslang::EbtBool: return Base::Bool;
+    case glslang::EbtSampler: return Base::Int;
+    case glslang::EbtDouble: fail(where, "double precision is not supported");
+    default: fail(where, "type '" + std::string(t.getBasicTypeString().c_str()) + "' is not supported");
   }
 }
 
@@ -334,26 +327,13 @@ class Lowerer {
       s.shadow = smp.isShadow();
       s.array = smp.isArrayed();
       switch (smp.dim) {
-        case glslang::Esd1D:
-          s.dim = ir::SamplerDim::D1;
-          break;
-        case glslang::Esd2D:
-          s.dim = ir::SamplerDim::D2;
-          break;
-        case glslang::Esd3D:
-          s.dim = ir::SamplerDim::D3;
-          break;
-        case glslang::EsdCube:
-          s.dim = ir::SamplerDim::Cube;
-          break;
-        case glslang::EsdRect:
-          s.dim = ir::SamplerDim::Rect;
-          break;
-        case glslang::EsdBuffer:
-          s.dim = ir::SamplerDim::Buffer;
-          break;
-        default:
-          fail(where, "sampler type not supported");
+        case glslang::Esd1D: s.dim = ir::SamplerDim::D1; break;
+        case glslang::Esd2D: s.dim = ir::SamplerDim::D2; break;
+        case glslang::Esd3D: s.dim = ir::SamplerDim::D3; break;
+        case glslang::EsdCube: s.dim = ir::SamplerDim::Cube; break;
+        case glslang::EsdRect: s.dim = ir::SamplerDim::Rect; break;
+        case glslang::EsdBuffer: s.dim = ir::SamplerDim::Buffer; break;
+        default: fail(where, "sampler type not supported");
       }
       s.base = Base::Int;
     } else {
@@ -515,8 +495,7 @@ class Lowerer {
         p = uniform_place(s);
         globals_[id] = p;
         return p;
-      case glslang::EvqBuffer:
-        fail(s, "buffer blocks are not supported");
+      case glslang::EvqBuffer: fail(s, "buffer blocks are not supported");
       case glslang::EvqConst: {
         // A constant that glslang did not fold (a const array indexed at run time).
         const int n = count(t);
@@ -564,8 +543,7 @@ class Lowerer {
         globals_[id] = p;
         return p;
       }
-      default:
-        break;
+      default: break;
     }
     // A local variable (or parameter) of the current inlined function.
     const int n = count(t);
@@ -602,17 +580,13 @@ class Lowerer {
         i = b;
         d = b;
         break;
-      default:
-        break;
+      default: break;
     }
     switch (want) {
-      case Base::Float:
-        return fbits(float(d));
+      case Base::Float: return fbits(float(d));
       case Base::Int:
-      case Base::Uint:
-        return uint32_t(i);
-      case Base::Bool:
-        return b ? ~0u : 0u;
+      case Base::Uint: return uint32_t(i);
+      case Base::Bool: return b ? ~0u : 0u;
     }
     return 0;
   }
@@ -803,14 +777,10 @@ class Lowerer {
 
   static Base base_or_float(const TType& t) {
     switch (t.getBasicType()) {
-      case glslang::EbtInt:
-        return Base::Int;
-      case glslang::EbtUint:
-        return Base::Uint;
-      case glslang::EbtBool:
-        return Base::Bool;
-      default:
-        return Base::Float;
+      case glslang::EbtInt: return Base::Int;
+      case glslang::EbtUint: return Base::Uint;
+      case glslang::EbtBool: return Base::Bool;
+      default: return Base::Float;
     }
   }
 
@@ -832,43 +802,32 @@ class Lowerer {
     const bool f = b == Base::Float, u = b == Base::Uint;
     switch (op) {
       case glslang::EOpAdd:
-      case glslang::EOpAddAssign:
-        return f ? Op::FAdd : Op::IAdd;
+      case glslang::EOpAddAssign: return f ? Op::FAdd : Op::IAdd;
       case glslang::EOpSub:
-      case glslang::EOpSubAssign:
-        return f ? Op::FSub : Op::ISub;
+      case glslang::EOpSubAssign: return f ? Op::FSub : Op::ISub;
       case glslang::EOpMul:
       case glslang::EOpMulAssign:
       case glslang::EOpVectorTimesScalar:
       case glslang::EOpVectorTimesScalarAssign:
       case glslang::EOpMatrixTimesScalar:
-      case glslang::EOpMatrixTimesScalarAssign:
-        return f ? Op::FMul : Op::IMul;
+      case glslang::EOpMatrixTimesScalarAssign: return f ? Op::FMul : Op::IMul;
       case glslang::EOpDiv:
-      case glslang::EOpDivAssign:
-        return f ? Op::FDiv : u ? Op::UDiv : Op::IDiv;
+      case glslang::EOpDivAssign: return f ? Op::FDiv : u ? Op::UDiv : Op::IDiv;
       // GLSL leaves % undefined for negative operands; Mesa takes the remainder of the bits
       // as unsigned, and so does Tessel.
       case glslang::EOpMod:
-      case glslang::EOpModAssign:
-        return f ? Op::FMod : Op::UMod;
+      case glslang::EOpModAssign: return f ? Op::FMod : Op::UMod;
       case glslang::EOpAnd:
-      case glslang::EOpAndAssign:
-        return Op::And;
+      case glslang::EOpAndAssign: return Op::And;
       case glslang::EOpInclusiveOr:
-      case glslang::EOpInclusiveOrAssign:
-        return Op::Or;
+      case glslang::EOpInclusiveOrAssign: return Op::Or;
       case glslang::EOpExclusiveOr:
-      case glslang::EOpExclusiveOrAssign:
-        return Op::Xor;
+      case glslang::EOpExclusiveOrAssign: return Op::Xor;
       case glslang::EOpLeftShift:
-      case glslang::EOpLeftShiftAssign:
-        return Op::Shl;
+      case glslang::EOpLeftShiftAssign: return Op::Shl;
       case glslang::EOpRightShift:
-      case glslang::EOpRightShiftAssign:
-        return u ? Op::ShrL : Op::ShrA;
-      default:
-        fail(where, "operator not supported");
+      case glslang::EOpRightShiftAssign: return u ? Op::ShrL : Op::ShrA;
+      default: fail(where, "operator not supported");
     }
   }
 
@@ -894,8 +853,7 @@ class Lowerer {
       case glslang::EOpMatrixTimesMatrix:
       case glslang::EOpMatrixTimesMatrixAssign:
         return mat_mul(a, lt.getMatrixCols(), lt.getMatrixRows(), b, tt.getMatrixCols());
-      case glslang::EOpMatrixTimesVector:
-        return mat_mul(a, lt.getMatrixCols(), lt.getMatrixRows(), b, 1);
+      case glslang::EOpMatrixTimesVector: return mat_mul(a, lt.getMatrixCols(), lt.getMatrixRows(), b, 1);
       case glslang::EOpVectorTimesMatrix:
       case glslang::EOpVectorTimesMatrixAssign: {
         // v * M: component c is dot(v, column c).
@@ -905,8 +863,7 @@ class Lowerer {
           out.push_back(dot(a, Val(b.begin() + c * rows, b.begin() + (c + 1) * rows)));
         return out;
       }
-      default:
-        break;
+      default: break;
     }
     const Base base = base_or_float(lt.getBasicType() == glslang::EbtBool ? tt : lt);
     const size_t n = size_t(count(rt));
@@ -922,18 +879,12 @@ class Lowerer {
   static Op compare_op(glslang::TOperator op, Base b) {
     const bool f = b == Base::Float, u = b == Base::Uint;
     switch (op) {
-      case glslang::EOpVectorEqual:
-        return f ? Op::FEq : Op::IEq;
-      case glslang::EOpVectorNotEqual:
-        return f ? Op::FNe : Op::INe;
-      case glslang::EOpLessThan:
-        return f ? Op::FLt : u ? Op::ULt : Op::ILt;
-      case glslang::EOpGreaterThan:
-        return f ? Op::FGt : u ? Op::UGt : Op::IGt;
-      case glslang::EOpLessThanEqual:
-        return f ? Op::FLe : u ? Op::ULe : Op::ILe;
-      default:
-        return f ? Op::FGe : u ? Op::UGe : Op::IGe;
+      case glslang::EOpVectorEqual: return f ? Op::FEq : Op::IEq;
+      case glslang::EOpVectorNotEqual: return f ? Op::FNe : Op::INe;
+      case glslang::EOpLessThan: return f ? Op::FLt : u ? Op::ULt : Op::ILt;
+      case glslang::EOpGreaterThan: return f ? Op::FGt : u ? Op::UGt : Op::IGt;
+      case glslang::EOpLessThanEqual: return f ? Op::FLe : u ? Op::ULe : Op::ILe;
+      default: return f ? Op::FGe : u ? Op::UGe : Op::IGe;
     }
   }
 
@@ -1014,17 +965,14 @@ class Lowerer {
         (void)value(b->getLeft());
         return value(b->getRight());
       }
-      default:
-        break;
+      default: break;
     }
     const Val a = value(b->getLeft());
     const Val c = value(b->getRight());
     const TType& lt = b->getLeft()->getType();
     switch (op) {
-      case glslang::EOpEqual:
-        return compare_all(true, lt, a, c, b);
-      case glslang::EOpNotEqual:
-        return compare_all(false, lt, a, c, b);
+      case glslang::EOpEqual: return compare_all(true, lt, a, c, b);
+      case glslang::EOpNotEqual: return compare_all(false, lt, a, c, b);
       case glslang::EOpVectorEqual:
       case glslang::EOpVectorNotEqual:
       case glslang::EOpLessThan:
@@ -1033,8 +981,7 @@ class Lowerer {
       case glslang::EOpGreaterThanEqual: {
         return componentwise(compare_op(op, base_or_float(lt)), a, c, std::max(a.size(), c.size()));
       }
-      default:
-        return arithmetic(op, b->getType(), b->getLeft(), a, b->getRight(), c, b);
+      default: return arithmetic(op, b->getType(), b->getLeft(), a, b->getRight(), c, b);
     }
   }
 
@@ -1108,8 +1055,7 @@ class Lowerer {
         if (op == glslang::EOpPostIncrement || op == glslang::EOpPostDecrement) return old;
         return read(p);
       }
-      default:
-        break;
+      default: break;
     }
     const Val a = value(x);
     auto each = [&](Op o) {
@@ -1124,89 +1070,53 @@ class Lowerer {
     };
     const Base rb = base_or_float(u->getType());
     switch (op) {
-      case glslang::EOpNegative:
-        return each(xb == Base::Float ? Op::FNeg : Op::INeg);
+      case glslang::EOpNegative: return each(xb == Base::Float ? Op::FNeg : Op::INeg);
       case glslang::EOpLogicalNot:
       case glslang::EOpVectorLogicalNot:
-      case glslang::EOpBitwiseNot:
-        return each(Op::Not);
-      case glslang::EOpCopyObject:
-        return a;
+      case glslang::EOpBitwiseNot: return each(Op::Not);
+      case glslang::EOpCopyObject: return a;
       case glslang::EOpRadians:
         return each_f([&](Reg c) { return emit(Op::FMul, c, fconst(0.017453292519943295f)); });
       case glslang::EOpDegrees:
         return each_f([&](Reg c) { return emit(Op::FMul, c, fconst(57.29577951308232f)); });
-      case glslang::EOpSin:
-        return each_f([&](Reg c) { return mesa_sincos(c, false); });
-      case glslang::EOpCos:
-        return each_f([&](Reg c) { return mesa_sincos(c, true); });
-      case glslang::EOpTan:
-        return each_f([&](Reg c) { return mesa_tan(c); });
-      case glslang::EOpAsin:
-        return each_f([&](Reg c) { return mesa_asin(c); });
-      case glslang::EOpAcos:
-        return each_f([&](Reg c) { return mesa_acos(c); });
-      case glslang::EOpAtan:
-        return each_f([&](Reg c) { return mesa_atan(c); });
-      case glslang::EOpSinh:
-        return each_f([&](Reg c) { return mesa_sinh(c); });
-      case glslang::EOpCosh:
-        return each_f([&](Reg c) { return mesa_cosh(c); });
-      case glslang::EOpTanh:
-        return each_f([&](Reg c) { return mesa_tanh(c); });
-      case glslang::EOpAsinh:
-        return each_f([&](Reg c) { return mesa_asinh(c); });
-      case glslang::EOpAcosh:
-        return each_f([&](Reg c) { return mesa_acosh(c); });
-      case glslang::EOpAtanh:
-        return each_f([&](Reg c) { return mesa_atanh(c); });
-      case glslang::EOpExp:
-        return each_f([&](Reg c) { return mesa_exp(c); });
-      case glslang::EOpLog:
-        return each_f([&](Reg c) { return mesa_log(c); });
-      case glslang::EOpExp2:
-        return each_f([&](Reg c) { return mesa_exp2(c); });
-      case glslang::EOpLog2:
-        return each_f([&](Reg c) { return mesa_log2(c); });
-      case glslang::EOpSqrt:
-        return each(Op::FSqrt);
-      case glslang::EOpInverseSqrt:
-        return each(Op::FRsq);
-      case glslang::EOpAbs:
-        return each(xb == Base::Float ? Op::FAbs : Op::IAbs);
-      case glslang::EOpSign:
-        return each(xb == Base::Float ? Op::FSign : Op::ISign);
-      case glslang::EOpFloor:
-        return each(Op::FFloor);
-      case glslang::EOpTrunc:
-        return each(Op::FTrunc);
+      case glslang::EOpSin: return each_f([&](Reg c) { return mesa_sincos(c, false); });
+      case glslang::EOpCos: return each_f([&](Reg c) { return mesa_sincos(c, true); });
+      case glslang::EOpTan: return each_f([&](Reg c) { return mesa_tan(c); });
+      case glslang::EOpAsin: return each_f([&](Reg c) { return mesa_asin(c); });
+      case glslang::EOpAcos: return each_f([&](Reg c) { return mesa_acos(c); });
+      case glslang::EOpAtan: return each_f([&](Reg c) { return mesa_atan(c); });
+      case glslang::EOpSinh: return each_f([&](Reg c) { return mesa_sinh(c); });
+      case glslang::EOpCosh: return each_f([&](Reg c) { return mesa_cosh(c); });
+      case glslang::EOpTanh: return each_f([&](Reg c) { return mesa_tanh(c); });
+      case glslang::EOpAsinh: return each_f([&](Reg c) { return mesa_asinh(c); });
+      case glslang::EOpAcosh: return each_f([&](Reg c) { return mesa_acosh(c); });
+      case glslang::EOpAtanh: return each_f([&](Reg c) { return mesa_atanh(c); });
+      case glslang::EOpExp: return each_f([&](Reg c) { return mesa_exp(c); });
+      case glslang::EOpLog: return each_f([&](Reg c) { return mesa_log(c); });
+      case glslang::EOpExp2: return each_f([&](Reg c) { return mesa_exp2(c); });
+      case glslang::EOpLog2: return each_f([&](Reg c) { return mesa_log2(c); });
+      case glslang::EOpSqrt: return each(Op::FSqrt);
+      case glslang::EOpInverseSqrt: return each(Op::FRsq);
+      case glslang::EOpAbs: return each(xb == Base::Float ? Op::FAbs : Op::IAbs);
+      case glslang::EOpSign: return each(xb == Base::Float ? Op::FSign : Op::ISign);
+      case glslang::EOpFloor: return each(Op::FFloor);
+      case glslang::EOpTrunc: return each(Op::FTrunc);
       case glslang::EOpRound:
         return each(Op::FRoundEven);  // GLSL leaves .5 to the implementation; Mesa rounds to even
-      case glslang::EOpRoundEven:
-        return each(Op::FRoundEven);
-      case glslang::EOpCeil:
-        return each(Op::FCeil);
-      case glslang::EOpFract:
-        return each(Op::FFract);
-      case glslang::EOpIsNan:
-        return each(Op::FIsNan);
-      case glslang::EOpIsInf:
-        return each(Op::FIsInf);
+      case glslang::EOpRoundEven: return each(Op::FRoundEven);
+      case glslang::EOpCeil: return each(Op::FCeil);
+      case glslang::EOpFract: return each(Op::FFract);
+      case glslang::EOpIsNan: return each(Op::FIsNan);
+      case glslang::EOpIsInf: return each(Op::FIsInf);
       case glslang::EOpFloatBitsToInt:
       case glslang::EOpFloatBitsToUint:
       case glslang::EOpIntBitsToFloat:
-      case glslang::EOpUintBitsToFloat:
-        return a;
-      case glslang::EOpBitFieldReverse:
-        return each(Op::BitReverse);
-      case glslang::EOpBitCount:
-        return each(Op::BitCount);
-      case glslang::EOpFindLSB:
-        return each(Op::FindLSB);
-      case glslang::EOpFindMSB:
-        return each(xb == Base::Uint ? Op::UFindMSB : Op::IFindMSB);
-      case glslang::EOpLength:
-        return {length(a)};
+      case glslang::EOpUintBitsToFloat: return a;
+      case glslang::EOpBitFieldReverse: return each(Op::BitReverse);
+      case glslang::EOpBitCount: return each(Op::BitCount);
+      case glslang::EOpFindLSB: return each(Op::FindLSB);
+      case glslang::EOpFindMSB: return each(xb == Base::Uint ? Op::UFindMSB : Op::IFindMSB);
+      case glslang::EOpLength: return {length(a)};
       case glslang::EOpNormalize: {
         if (a.size() == 1) return {fsign(a[0])};
         const Reg inv = emit(Op::FRsq, dot(a, a));
@@ -1225,20 +1135,14 @@ class Lowerer {
           for (int k = 0; k < cols; ++k) r.push_back(a[size_t(k * rows + c)]);
         return r;
       }
-      case glslang::EOpDeterminant:
-        return {determinant(a, xt.getMatrixCols())};
-      case glslang::EOpMatrixInverse:
-        return inverse(a, xt.getMatrixCols());
+      case glslang::EOpDeterminant: return {determinant(a, xt.getMatrixCols())};
+      case glslang::EOpMatrixInverse: return inverse(a, xt.getMatrixCols());
       case glslang::EOpDPdx:
       case glslang::EOpDPdxFine:
-      case glslang::EOpDPdxCoarse:
-        out_.ir.uses_derivatives = true;
-        return each(Op::Ddx);
+      case glslang::EOpDPdxCoarse: out_.ir.uses_derivatives = true; return each(Op::Ddx);
       case glslang::EOpDPdy:
       case glslang::EOpDPdyFine:
-      case glslang::EOpDPdyCoarse:
-        out_.ir.uses_derivatives = true;
-        return each(Op::Ddy);
+      case glslang::EOpDPdyCoarse: out_.ir.uses_derivatives = true; return each(Op::Ddy);
       case glslang::EOpFwidth:
       case glslang::EOpFwidthFine:
       case glslang::EOpFwidthCoarse:
@@ -1246,16 +1150,13 @@ class Lowerer {
         return each_f([&](Reg c) {
           return emit(Op::FAdd, emit(Op::FAbs, emit(Op::Ddx, c)), emit(Op::FAbs, emit(Op::Ddy, c)));
         });
-      case glslang::EOpPackHalf2x16:
-        return {emit(Op::PackHalf, a[0], a[1])};
-      case glslang::EOpUnpackHalf2x16:
-        return {emit(Op::UnpackHalfLo, a[0]), emit(Op::UnpackHalfHi, a[0])};
+      case glslang::EOpPackHalf2x16: return {emit(Op::PackHalf, a[0], a[1])};
+      case glslang::EOpUnpackHalf2x16: return {emit(Op::UnpackHalfLo, a[0]), emit(Op::UnpackHalfHi, a[0])};
       case glslang::EOpNoise: {
         Val r(size_t(count(u->getType())), fconst(0.0f));
         return r;
       }
-      default:
-        break;
+      default: break;
     }
     // Conversions: glslang names them EOpConv<From>To<To>.
     if (op >= glslang::EOpConvInt8ToBool && op <= glslang::EOpConvDoubleToFloat) {
@@ -1562,10 +1463,8 @@ class Lowerer {
           return mesa_pow(b, e);
         });
       }
-      case glslang::EOpAtan:
-        return per([&](size_t i) { return mesa_atan2(arg(0, i), arg(1, i)); });
-      case glslang::EOpMod:
-        return per([&](size_t i) { return emit(Op::FMod, arg(0, i), arg(1, i)); });
+      case glslang::EOpAtan: return per([&](size_t i) { return mesa_atan2(arg(0, i), arg(1, i)); });
+      case glslang::EOpMod: return per([&](size_t i) { return emit(Op::FMod, arg(0, i), arg(1, i)); });
       case glslang::EOpMin:
         return per([&](size_t i) {
           return emit(b == Base::Float  ? Op::FMin
@@ -1609,10 +1508,8 @@ class Lowerer {
           return f_mul(t, f_mul(t, f_sub(fconst(3.0f), f_mul(fconst(2.0f), t))));
         });
       // llvmpipe does not fuse GLSL's fma() (NIR lowers it to a * b + c).
-      case glslang::EOpFma:
-        return per([&](size_t i) { return mad(arg(0, i), arg(1, i), arg(2, i)); });
-      case glslang::EOpLdexp:
-        return per([&](size_t i) { return emit(Op::FLdexp, arg(0, i), arg(1, i)); });
+      case glslang::EOpFma: return per([&](size_t i) { return mad(arg(0, i), arg(1, i), arg(2, i)); });
+      case glslang::EOpLdexp: return per([&](size_t i) { return emit(Op::FLdexp, arg(0, i), arg(1, i)); });
       case glslang::EOpModf: {
         const Place p = place(x[1]);
         Val whole, fr;
@@ -1640,8 +1537,7 @@ class Lowerer {
         if (d.size() == 1) return {emit(Op::FAbs, d[0])};
         return {length(d)};
       }
-      case glslang::EOpDot:
-        return {v[0].size() == 1 ? emit(Op::FMul, v[0][0], v[1][0]) : dot(v[0], v[1])};
+      case glslang::EOpDot: return {v[0].size() == 1 ? emit(Op::FMul, v[0][0], v[1][0]) : dot(v[0], v[1])};
       case glslang::EOpCross: {
         const Val& p = v[0];
         const Val& q = v[1];
@@ -1714,12 +1610,9 @@ class Lowerer {
         return r;
       }
       case glslang::EOpUMulExtended:
-      case glslang::EOpIMulExtended:
-        fail(a, "umulExtended/imulExtended are not supported");
-      case glslang::EOpFtransform:
-        fail(a, "ftransform() is only in compatibility vertex shaders");
-      default:
-        break;
+      case glslang::EOpIMulExtended: fail(a, "umulExtended/imulExtended are not supported");
+      case glslang::EOpFtransform: fail(a, "ftransform() is only in compatibility vertex shaders");
+      default: break;
     }
     fail(a, "built-in function '" + std::string(a->getName().c_str()) + "' (" + std::to_string(int(op)) +
                 ") is not supported");
@@ -1800,12 +1693,8 @@ class Lowerer {
           node.kind = Kind::Discard;
           out_.ir.discards = true;
           break;
-        case glslang::EOpBreak:
-          node.kind = Kind::Break;
-          break;
-        case glslang::EOpContinue:
-          node.kind = Kind::Continue;
-          break;
+        case glslang::EOpBreak: node.kind = Kind::Break; break;
+        case glslang::EOpContinue: node.kind = Kind::Continue; break;
         case glslang::EOpReturn:
           if (b->getExpression() && !frames_.empty() && !frames_.back().ret.empty()) {
             const Val v = value(b->getExpression());
@@ -1813,8 +1702,7 @@ class Lowerer {
           }
           node.kind = Kind::Return;
           break;
-        default:
-          fail(b, "statement not supported");
+        default: fail(b, "statement not supported");
       }
       blocks_.back()->push_back(std::move(node));
       return;

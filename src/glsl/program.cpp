@@ -647,18 +647,10 @@ bool Program::get_uniform(int location, float* out) const {
   const UniformSlot& u = m.layout.slots[m.locations[size_t(location)].slot];
   for (int c = 0; c < u.components; ++c) {
     switch (u.base) {
-      case Base::Float:
-        std::memcpy(&out[c], &w[c], 4);
-        break;
-      case Base::Int:
-        out[c] = float(int32_t(w[c]));
-        break;
-      case Base::Uint:
-        out[c] = float(w[c]);
-        break;
-      case Base::Bool:
-        out[c] = w[c] ? 1.0f : 0.0f;
-        break;
+      case Base::Float: std::memcpy(&out[c], &w[c], 4); break;
+      case Base::Int: out[c] = float(int32_t(w[c])); break;
+      case Base::Uint: out[c] = float(w[c]); break;
+      case Base::Bool: out[c] = w[c] ? 1.0f : 0.0f; break;
     }
   }
   return true;

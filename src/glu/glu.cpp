@@ -68,10 +68,8 @@ int componentsOf(GLenum format) {
     case GL_GREEN:
     case GL_BLUE:
     case GL_ALPHA:
-    case GL_LUMINANCE:
-      return 1;
-    case GL_LUMINANCE_ALPHA:
-      return 2;
+    case GL_LUMINANCE: return 1;
+    case GL_LUMINANCE_ALPHA: return 2;
     case GL_RGB:
 #ifdef GL_BGR
     case GL_BGR:
@@ -82,8 +80,7 @@ int componentsOf(GLenum format) {
     case GL_BGRA:
 #endif
       return 4;
-    default:
-      return 0;
+    default: return 0;
   }
 }
 
@@ -91,17 +88,13 @@ int componentsOf(GLenum format) {
 int sizeOfType(GLenum type) {
   switch (type) {
     case GL_UNSIGNED_BYTE:
-    case GL_BYTE:
-      return 1;
+    case GL_BYTE: return 1;
     case GL_UNSIGNED_SHORT:
-    case GL_SHORT:
-      return 2;
+    case GL_SHORT: return 2;
     case GL_UNSIGNED_INT:
     case GL_INT:
-    case GL_FLOAT:
-      return 4;
-    default:
-      return 0;
+    case GL_FLOAT: return 4;
+    default: return 0;
   }
 }
 
@@ -119,11 +112,9 @@ bool isPackedType(GLenum type) {
     case GL_UNSIGNED_INT_8_8_8_8:
     case GL_UNSIGNED_INT_8_8_8_8_REV:
     case GL_UNSIGNED_INT_10_10_10_2:
-    case GL_UNSIGNED_INT_2_10_10_10_REV:
-      return true;
+    case GL_UNSIGNED_INT_2_10_10_10_REV: return true;
 #endif
-    default:
-      return false;
+    default: return false;
   }
 }
 
@@ -174,20 +165,13 @@ void storeElement(unsigned char* p, T v, bool swap) {
 // Reads an element as a double holding its value in the units of its own type.
 double readValue(const unsigned char* p, GLenum type, bool swap) {
   switch (type) {
-    case GL_UNSIGNED_BYTE:
-      return *p;
-    case GL_BYTE:
-      return static_cast<signed char>(*p);
-    case GL_UNSIGNED_SHORT:
-      return loadElement<uint16_t>(p, swap);
-    case GL_SHORT:
-      return loadElement<int16_t>(p, swap);
-    case GL_UNSIGNED_INT:
-      return loadElement<uint32_t>(p, swap);
-    case GL_INT:
-      return loadElement<int32_t>(p, swap);
-    default:
-      return loadElement<float>(p, swap);
+    case GL_UNSIGNED_BYTE: return *p;
+    case GL_BYTE: return static_cast<signed char>(*p);
+    case GL_UNSIGNED_SHORT: return loadElement<uint16_t>(p, swap);
+    case GL_SHORT: return loadElement<int16_t>(p, swap);
+    case GL_UNSIGNED_INT: return loadElement<uint32_t>(p, swap);
+    case GL_INT: return loadElement<int32_t>(p, swap);
+    default: return loadElement<float>(p, swap);
   }
 }
 
@@ -197,18 +181,12 @@ double readValue(const unsigned char* p, GLenum type, bool swap) {
 
 uint16_t widen16(const unsigned char* p, GLenum type, bool swap) {
   switch (type) {
-    case GL_UNSIGNED_BYTE:
-      return static_cast<uint16_t>(*p * 257);
-    case GL_BYTE:
-      return static_cast<uint16_t>(static_cast<signed char>(*p) * 516);
-    case GL_UNSIGNED_SHORT:
-      return loadElement<uint16_t>(p, swap);
-    case GL_SHORT:
-      return static_cast<uint16_t>(loadElement<int16_t>(p, swap) * 2);
-    case GL_UNSIGNED_INT:
-      return static_cast<uint16_t>(loadElement<uint32_t>(p, swap) >> 16);
-    case GL_INT:
-      return static_cast<uint16_t>(loadElement<int32_t>(p, swap) >> 15);
+    case GL_UNSIGNED_BYTE: return static_cast<uint16_t>(*p * 257);
+    case GL_BYTE: return static_cast<uint16_t>(static_cast<signed char>(*p) * 516);
+    case GL_UNSIGNED_SHORT: return loadElement<uint16_t>(p, swap);
+    case GL_SHORT: return static_cast<uint16_t>(loadElement<int16_t>(p, swap) * 2);
+    case GL_UNSIGNED_INT: return static_cast<uint16_t>(loadElement<uint32_t>(p, swap) >> 16);
+    case GL_INT: return static_cast<uint16_t>(loadElement<int32_t>(p, swap) >> 15);
     default: {
       const float f = loadElement<float>(p, swap);
       const float scaled = f * 65535.0f;
@@ -222,27 +200,15 @@ uint16_t widen16(const unsigned char* p, GLenum type, bool swap) {
 
 void narrow16(unsigned char* p, uint16_t v, GLenum type, bool swap) {
   switch (type) {
-    case GL_UNSIGNED_BYTE:
-      *p = static_cast<unsigned char>(v >> 8);
-      break;
-    case GL_BYTE:
-      *p = static_cast<unsigned char>(static_cast<signed char>(v >> 9));
-      break;
-    case GL_UNSIGNED_SHORT:
-      storeElement<uint16_t>(p, v, swap);
-      break;
-    case GL_SHORT:
-      storeElement<int16_t>(p, static_cast<int16_t>(v >> 1), swap);
-      break;
-    case GL_UNSIGNED_INT:
-      storeElement<uint32_t>(p, static_cast<uint32_t>(v) * 65537u, swap);
-      break;
+    case GL_UNSIGNED_BYTE: *p = static_cast<unsigned char>(v >> 8); break;
+    case GL_BYTE: *p = static_cast<unsigned char>(static_cast<signed char>(v >> 9)); break;
+    case GL_UNSIGNED_SHORT: storeElement<uint16_t>(p, v, swap); break;
+    case GL_SHORT: storeElement<int16_t>(p, static_cast<int16_t>(v >> 1), swap); break;
+    case GL_UNSIGNED_INT: storeElement<uint32_t>(p, static_cast<uint32_t>(v) * 65537u, swap); break;
     case GL_INT:
       storeElement<int32_t>(p, static_cast<int32_t>((static_cast<uint32_t>(v) * 65537u) >> 1), swap);
       break;
-    default:
-      storeElement<float>(p, static_cast<float>(v) / 65535.0f, swap);
-      break;
+    default: storeElement<float>(p, static_cast<float>(v) / 65535.0f, swap); break;
   }
 }
 
@@ -424,9 +390,7 @@ std::vector<unsigned char> packImage(const Image& img, GLenum type) {
     unsigned char* p = out.data() + i * es;
     const double v = img.v[i];
     switch (type) {
-      case GL_UNSIGNED_BYTE:
-        *p = static_cast<unsigned char>(std::clamp(v, 0.0, 255.0));
-        break;
+      case GL_UNSIGNED_BYTE: *p = static_cast<unsigned char>(std::clamp(v, 0.0, 255.0)); break;
       case GL_BYTE:
         *p = static_cast<unsigned char>(static_cast<signed char>(std::clamp(v, -128.0, 127.0)));
         break;
@@ -442,9 +406,7 @@ std::vector<unsigned char> packImage(const Image& img, GLenum type) {
       case GL_INT:
         storeElement<int32_t>(p, static_cast<int32_t>(std::clamp(v, -2147483648.0, 2147483647.0)), false);
         break;
-      default:
-        storeElement<float>(p, static_cast<float>(v), false);
-        break;
+      default: storeElement<float>(p, static_cast<float>(v), false); break;
     }
   }
   return out;
@@ -652,36 +614,21 @@ extern "C" {
 
 const GLubyte* GLAPIENTRY gluErrorString(GLenum error) {
   switch (error) {
-    case GL_NO_ERROR:
-      return str("no error");
-    case GL_INVALID_ENUM:
-      return str("invalid enumerant");
-    case GL_INVALID_VALUE:
-      return str("invalid value");
-    case GL_INVALID_OPERATION:
-      return str("invalid operation");
-    case GL_STACK_OVERFLOW:
-      return str("stack overflow");
-    case GL_STACK_UNDERFLOW:
-      return str("stack underflow");
-    case GL_OUT_OF_MEMORY:
-      return str("out of memory");
-    case 0x0506:
-      return str("invalid framebuffer operation");  // GL_INVALID_FRAMEBUFFER_OPERATION
-    case 0x8031:
-      return str("table too large");  // GL_TABLE_TOO_LARGE
-    case GLU_INVALID_ENUM:
-      return str("invalid enumerant");
-    case GLU_INVALID_VALUE:
-      return str("invalid value");
-    case GLU_OUT_OF_MEMORY:
-      return str("out of memory");
-    case GLU_INCOMPATIBLE_GL_VERSION:
-      return str("incompatible gl version");
-    case GLU_INVALID_OPERATION:
-      return str("invalid operation");
-    default:
-      break;
+    case GL_NO_ERROR: return str("no error");
+    case GL_INVALID_ENUM: return str("invalid enumerant");
+    case GL_INVALID_VALUE: return str("invalid value");
+    case GL_INVALID_OPERATION: return str("invalid operation");
+    case GL_STACK_OVERFLOW: return str("stack overflow");
+    case GL_STACK_UNDERFLOW: return str("stack underflow");
+    case GL_OUT_OF_MEMORY: return str("out of memory");
+    case 0x0506: return str("invalid framebuffer operation");  // GL_INVALID_FRAMEBUFFER_OPERATION
+    case 0x8031: return str("table too large");                // GL_TABLE_TOO_LARGE
+    case GLU_INVALID_ENUM: return str("invalid enumerant");
+    case GLU_INVALID_VALUE: return str("invalid value");
+    case GLU_OUT_OF_MEMORY: return str("out of memory");
+    case GLU_INCOMPATIBLE_GL_VERSION: return str("incompatible gl version");
+    case GLU_INVALID_OPERATION: return str("invalid operation");
+    default: break;
   }
   // Tessellator errors (GLU 1.3 section 5.7).
   static const char* const tess[] = {
@@ -739,12 +686,9 @@ const GLubyte* GLAPIENTRY gluErrorString(GLenum error) {
 
 const GLubyte* GLAPIENTRY gluGetString(GLenum name) {
   switch (name) {
-    case GLU_VERSION:
-      return str("1.3");
-    case GLU_EXTENSIONS:
-      return str("");
-    default:
-      return nullptr;
+    case GLU_VERSION: return str("1.3");
+    case GLU_EXTENSIONS: return str("");
+    default: return nullptr;
   }
 }
 

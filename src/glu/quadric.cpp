@@ -215,8 +215,7 @@ void GLAPIENTRY gluCylinder(GLUquadric* q, GLdouble baseRadius, GLdouble topRadi
         glEnd();
       }
       break;
-    default:
-      break;
+    default: break;
   }
 }
 
@@ -336,8 +335,7 @@ void GLAPIENTRY gluPartialDisk(GLUquadric* q, GLdouble innerRadius, GLdouble out
         if (innerRadius == outerRadius) break;
       }
       break;
-    default:
-      break;
+    default: break;
   }
 }
 
@@ -508,8 +506,7 @@ void GLAPIENTRY gluSphere(GLUquadric* q, GLdouble radius, GLint slices, GLint st
         glEnd();
       }
       break;
-    default:
-      break;
+    default: break;
   }
 }
 

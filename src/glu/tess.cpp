@@ -197,17 +197,12 @@ bool lexLess(const Vert& a, const Vert& b) { return a.s < b.s || (a.s == b.s && 
 
 bool windingInside(GLenum rule, int w) {
   switch (rule) {
-    case GLU_TESS_WINDING_NONZERO:
-      return w != 0;
-    case GLU_TESS_WINDING_POSITIVE:
-      return w > 0;
-    case GLU_TESS_WINDING_NEGATIVE:
-      return w < 0;
-    case GLU_TESS_WINDING_ABS_GEQ_TWO:
-      return w >= 2 || w <= -2;
+    case GLU_TESS_WINDING_NONZERO: return w != 0;
+    case GLU_TESS_WINDING_POSITIVE: return w > 0;
+    case GLU_TESS_WINDING_NEGATIVE: return w < 0;
+    case GLU_TESS_WINDING_ABS_GEQ_TWO: return w >= 2 || w <= -2;
     case GLU_TESS_WINDING_ODD:
-    default:
-      return (w & 1) != 0;
+    default: return (w & 1) != 0;
   }
 }
 
@@ -1342,45 +1337,19 @@ void GLAPIENTRY gluTessEndPolygon(GLUtesselator* tess) {
 void GLAPIENTRY gluTessCallback(GLUtesselator* tess, GLenum which, _GLUfuncptr fn) {
   if (!tess) return;
   switch (which) {
-    case GLU_TESS_BEGIN:
-      tess->begin = reinterpret_cast<BeginFn>(fn);
-      break;
-    case GLU_TESS_BEGIN_DATA:
-      tess->beginData = reinterpret_cast<BeginDataFn>(fn);
-      break;
-    case GLU_TESS_EDGE_FLAG:
-      tess->edgeFlag = reinterpret_cast<EdgeFlagFn>(fn);
-      break;
-    case GLU_TESS_EDGE_FLAG_DATA:
-      tess->edgeFlagData = reinterpret_cast<EdgeFlagDataFn>(fn);
-      break;
-    case GLU_TESS_VERTEX:
-      tess->vertex = reinterpret_cast<VertexFn>(fn);
-      break;
-    case GLU_TESS_VERTEX_DATA:
-      tess->vertexData = reinterpret_cast<VertexDataFn>(fn);
-      break;
-    case GLU_TESS_END:
-      tess->end = reinterpret_cast<EndFn>(fn);
-      break;
-    case GLU_TESS_END_DATA:
-      tess->endData = reinterpret_cast<EndDataFn>(fn);
-      break;
-    case GLU_TESS_ERROR:
-      tess->error = reinterpret_cast<ErrorFn>(fn);
-      break;
-    case GLU_TESS_ERROR_DATA:
-      tess->errorData = reinterpret_cast<ErrorDataFn>(fn);
-      break;
-    case GLU_TESS_COMBINE:
-      tess->combine = reinterpret_cast<CombineFn>(fn);
-      break;
-    case GLU_TESS_COMBINE_DATA:
-      tess->combineData = reinterpret_cast<CombineDataFn>(fn);
-      break;
-    default:
-      callError(tess, GLU_INVALID_ENUM);
-      break;
+    case GLU_TESS_BEGIN: tess->begin = reinterpret_cast<BeginFn>(fn); break;
+    case GLU_TESS_BEGIN_DATA: tess->beginData = reinterpret_cast<BeginDataFn>(fn); break;
+    case GLU_TESS_EDGE_FLAG: tess->edgeFlag = reinterpret_cast<EdgeFlagFn>(fn); break;
+    case GLU_TESS_EDGE_FLAG_DATA: tess->edgeFlagData = reinterpret_cast<EdgeFlagDataFn>(fn); break;
+    case GLU_TESS_VERTEX: tess->vertex = reinterpret_cast<VertexFn>(fn); break;
+    case GLU_TESS_VERTEX_DATA: tess->vertexData = reinterpret_cast<VertexDataFn>(fn); break;
+    case GLU_TESS_END: tess->end = reinterpret_cast<EndFn>(fn); break;
+    case GLU_TESS_END_DATA: tess->endData = reinterpret_cast<EndDataFn>(fn); break;
+    case GLU_TESS_ERROR: tess->error = reinterpret_cast<ErrorFn>(fn); break;
+    case GLU_TESS_ERROR_DATA: tess->errorData = reinterpret_cast<ErrorDataFn>(fn); break;
+    case GLU_TESS_COMBINE: tess->combine = reinterpret_cast<CombineFn>(fn); break;
+    case GLU_TESS_COMBINE_DATA: tess->combineData = reinterpret_cast<CombineDataFn>(fn); break;
+    default: callError(tess, GLU_INVALID_ENUM); break;
   }
 }
 
@@ -1398,9 +1367,7 @@ void GLAPIENTRY gluTessProperty(GLUtesselator* tess, GLenum which, GLdouble valu
       tess->windingRule = static_cast<GLenum>(value);
       return;
     }
-    case GLU_TESS_BOUNDARY_ONLY:
-      tess->boundaryOnly = value != 0.0;
-      return;
+    case GLU_TESS_BOUNDARY_ONLY: tess->boundaryOnly = value != 0.0; return;
     case GLU_TESS_TOLERANCE:
       if (!(value >= 0.0 && value <= 1.0)) {
         callError(tess, GLU_INVALID_VALUE);
@@ -1408,24 +1375,16 @@ void GLAPIENTRY gluTessProperty(GLUtesselator* tess, GLenum which, GLdouble valu
       }
       tess->tolerance = value;
       return;
-    default:
-      callError(tess, GLU_INVALID_ENUM);
-      return;
+    default: callError(tess, GLU_INVALID_ENUM); return;
   }
 }
 
 void GLAPIENTRY gluGetTessProperty(GLUtesselator* tess, GLenum which, GLdouble* value) {
   if (!tess || !value) return;
   switch (which) {
-    case GLU_TESS_WINDING_RULE:
-      *value = tess->windingRule;
-      return;
-    case GLU_TESS_BOUNDARY_ONLY:
-      *value = tess->boundaryOnly ? 1.0 : 0.0;
-      return;
-    case GLU_TESS_TOLERANCE:
-      *value = tess->tolerance;
-      return;
+    case GLU_TESS_WINDING_RULE: *value = tess->windingRule; return;
+    case GLU_TESS_BOUNDARY_ONLY: *value = tess->boundaryOnly ? 1.0 : 0.0; return;
+    case GLU_TESS_TOLERANCE: *value = tess->tolerance; return;
     default:
       *value = 0.0;
       callError(tess, GLU_INVALID_ENUM);

@@ -526,95 +526,62 @@ int GLAPIENTRY glutGet(GLenum what) {
   State& s = state();
   Window* w = current_window();
   switch (what) {
-    case GLUT_WINDOW_X:
-      return w ? w->x : 0;
-    case GLUT_WINDOW_Y:
-      return w ? w->y : 0;
-    case GLUT_WINDOW_WIDTH:
-      return w ? w->width : 0;
-    case GLUT_WINDOW_HEIGHT:
-      return w ? w->height : 0;
-    case GLUT_WINDOW_BUFFER_SIZE:
-      return 32;
-    case GLUT_WINDOW_STENCIL_SIZE:
-      return w && (w->mode & GLUT_STENCIL) ? 8 : 0;
-    case GLUT_WINDOW_DEPTH_SIZE:
-      return w && (w->mode & GLUT_DEPTH) ? 24 : 0;
+    case GLUT_WINDOW_X: return w ? w->x : 0;
+    case GLUT_WINDOW_Y: return w ? w->y : 0;
+    case GLUT_WINDOW_WIDTH: return w ? w->width : 0;
+    case GLUT_WINDOW_HEIGHT: return w ? w->height : 0;
+    case GLUT_WINDOW_BUFFER_SIZE: return 32;
+    case GLUT_WINDOW_STENCIL_SIZE: return w && (w->mode & GLUT_STENCIL) ? 8 : 0;
+    case GLUT_WINDOW_DEPTH_SIZE: return w && (w->mode & GLUT_DEPTH) ? 24 : 0;
     case GLUT_WINDOW_RED_SIZE:
     case GLUT_WINDOW_GREEN_SIZE:
     case GLUT_WINDOW_BLUE_SIZE:
-    case GLUT_WINDOW_ALPHA_SIZE:
-      return 8;
-    case GLUT_WINDOW_DOUBLEBUFFER:
-      return w && (w->mode & GLUT_DOUBLE) ? 1 : 0;
-    case GLUT_WINDOW_RGBA:
-      return 1;
+    case GLUT_WINDOW_ALPHA_SIZE: return 8;
+    case GLUT_WINDOW_DOUBLEBUFFER: return w && (w->mode & GLUT_DOUBLE) ? 1 : 0;
+    case GLUT_WINDOW_RGBA: return 1;
     case GLUT_WINDOW_PARENT:
     case GLUT_WINDOW_NUM_CHILDREN:
     case GLUT_WINDOW_COLORMAP_SIZE:
     case GLUT_WINDOW_NUM_SAMPLES:
     case GLUT_WINDOW_STEREO:
-    case GLUT_WINDOW_CURSOR:
-      return 0;
-    case GLUT_SCREEN_WIDTH:
-      return 1920;
-    case GLUT_SCREEN_HEIGHT:
-      return 1080;
-    case GLUT_SCREEN_WIDTH_MM:
-      return 508;
-    case GLUT_SCREEN_HEIGHT_MM:
-      return 286;
+    case GLUT_WINDOW_CURSOR: return 0;
+    case GLUT_SCREEN_WIDTH: return 1920;
+    case GLUT_SCREEN_HEIGHT: return 1080;
+    case GLUT_SCREEN_WIDTH_MM: return 508;
+    case GLUT_SCREEN_HEIGHT_MM: return 286;
     case GLUT_MENU_NUM_ITEMS: {
       Menu* m = menu(s.current_menu);
       return m ? int(m->items.size()) : 0;
     }
-    case GLUT_DISPLAY_MODE_POSSIBLE:
-      return 1;
-    case GLUT_INIT_WINDOW_X:
-      return s.init_x;
-    case GLUT_INIT_WINDOW_Y:
-      return s.init_y;
-    case GLUT_INIT_WINDOW_WIDTH:
-      return s.init_width;
-    case GLUT_INIT_WINDOW_HEIGHT:
-      return s.init_height;
-    case GLUT_INIT_DISPLAY_MODE:
-      return int(s.display_mode);
-    case GLUT_ELAPSED_TIME:
-      return int(now_ms());
-    case GLUT_WINDOW_FORMAT_ID:
-      return 1;
-    case GLUT_ACTION_ON_WINDOW_CLOSE:
-      return s.action_on_close;
-    case GLUT_INIT_STATE:
-      return s.initialized ? 1 : 0;
-    default:
-      return -1;
+    case GLUT_DISPLAY_MODE_POSSIBLE: return 1;
+    case GLUT_INIT_WINDOW_X: return s.init_x;
+    case GLUT_INIT_WINDOW_Y: return s.init_y;
+    case GLUT_INIT_WINDOW_WIDTH: return s.init_width;
+    case GLUT_INIT_WINDOW_HEIGHT: return s.init_height;
+    case GLUT_INIT_DISPLAY_MODE: return int(s.display_mode);
+    case GLUT_ELAPSED_TIME: return int(now_ms());
+    case GLUT_WINDOW_FORMAT_ID: return 1;
+    case GLUT_ACTION_ON_WINDOW_CLOSE: return s.action_on_close;
+    case GLUT_INIT_STATE: return s.initialized ? 1 : 0;
+    default: return -1;
   }
 }
 int GLAPIENTRY glutDeviceGet(GLenum what) {
   switch (what) {
     case GLUT_HAS_KEYBOARD:
-    case GLUT_HAS_MOUSE:
-      return state().headless.on ? 0 : 1;
-    case GLUT_NUM_MOUSE_BUTTONS:
-      return 3;
-    case GLUT_DEVICE_IGNORE_KEY_REPEAT:
-      return state().ignore_key_repeat ? 1 : 0;
+    case GLUT_HAS_MOUSE: return state().headless.on ? 0 : 1;
+    case GLUT_NUM_MOUSE_BUTTONS: return 3;
+    case GLUT_DEVICE_IGNORE_KEY_REPEAT: return state().ignore_key_repeat ? 1 : 0;
     case GLUT_DEVICE_KEY_REPEAT:
       return state().ignore_key_repeat ? GLUT_KEY_REPEAT_OFF : GLUT_KEY_REPEAT_DEFAULT;
-    default:
-      return 0;
+    default: return 0;
   }
 }
 int GLAPIENTRY glutLayerGet(GLenum what) {
   switch (what) {
-    case GLUT_LAYER_IN_USE:
-      return GLUT_NORMAL;
-    case GLUT_NORMAL_DAMAGED:
-      return 0;
-    default:
-      return 0;
+    case GLUT_LAYER_IN_USE: return GLUT_NORMAL;
+    case GLUT_NORMAL_DAMAGED: return 0;
+    default: return 0;
   }
 }
 int GLAPIENTRY glutGetModifiers(void) { return state().modifiers; }

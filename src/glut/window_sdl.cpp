@@ -55,50 +55,28 @@ int modifiers_now() {
 
 int special_key(SDL_Keycode k) {
   switch (k) {
-    case SDLK_F1:
-      return GLUT_KEY_F1;
-    case SDLK_F2:
-      return GLUT_KEY_F2;
-    case SDLK_F3:
-      return GLUT_KEY_F3;
-    case SDLK_F4:
-      return GLUT_KEY_F4;
-    case SDLK_F5:
-      return GLUT_KEY_F5;
-    case SDLK_F6:
-      return GLUT_KEY_F6;
-    case SDLK_F7:
-      return GLUT_KEY_F7;
-    case SDLK_F8:
-      return GLUT_KEY_F8;
-    case SDLK_F9:
-      return GLUT_KEY_F9;
-    case SDLK_F10:
-      return GLUT_KEY_F10;
-    case SDLK_F11:
-      return GLUT_KEY_F11;
-    case SDLK_F12:
-      return GLUT_KEY_F12;
-    case SDLK_LEFT:
-      return GLUT_KEY_LEFT;
-    case SDLK_UP:
-      return GLUT_KEY_UP;
-    case SDLK_RIGHT:
-      return GLUT_KEY_RIGHT;
-    case SDLK_DOWN:
-      return GLUT_KEY_DOWN;
-    case SDLK_PAGEUP:
-      return GLUT_KEY_PAGE_UP;
-    case SDLK_PAGEDOWN:
-      return GLUT_KEY_PAGE_DOWN;
-    case SDLK_HOME:
-      return GLUT_KEY_HOME;
-    case SDLK_END:
-      return GLUT_KEY_END;
-    case SDLK_INSERT:
-      return GLUT_KEY_INSERT;
-    default:
-      return 0;
+    case SDLK_F1: return GLUT_KEY_F1;
+    case SDLK_F2: return GLUT_KEY_F2;
+    case SDLK_F3: return GLUT_KEY_F3;
+    case SDLK_F4: return GLUT_KEY_F4;
+    case SDLK_F5: return GLUT_KEY_F5;
+    case SDLK_F6: return GLUT_KEY_F6;
+    case SDLK_F7: return GLUT_KEY_F7;
+    case SDLK_F8: return GLUT_KEY_F8;
+    case SDLK_F9: return GLUT_KEY_F9;
+    case SDLK_F10: return GLUT_KEY_F10;
+    case SDLK_F11: return GLUT_KEY_F11;
+    case SDLK_F12: return GLUT_KEY_F12;
+    case SDLK_LEFT: return GLUT_KEY_LEFT;
+    case SDLK_UP: return GLUT_KEY_UP;
+    case SDLK_RIGHT: return GLUT_KEY_RIGHT;
+    case SDLK_DOWN: return GLUT_KEY_DOWN;
+    case SDLK_PAGEUP: return GLUT_KEY_PAGE_UP;
+    case SDLK_PAGEDOWN: return GLUT_KEY_PAGE_DOWN;
+    case SDLK_HOME: return GLUT_KEY_HOME;
+    case SDLK_END: return GLUT_KEY_END;
+    case SDLK_INSERT: return GLUT_KEY_INSERT;
+    default: return 0;
   }
 }
 
@@ -106,19 +84,13 @@ int special_key(SDL_Keycode k) {
 // text input instead (printable characters without Ctrl).
 unsigned char control_key(const SDL_Keysym& k) {
   switch (k.sym) {
-    case SDLK_ESCAPE:
-      return 27;
+    case SDLK_ESCAPE: return 27;
     case SDLK_RETURN:
-    case SDLK_KP_ENTER:
-      return 13;
-    case SDLK_BACKSPACE:
-      return 8;
-    case SDLK_TAB:
-      return 9;
-    case SDLK_DELETE:
-      return 127;
-    default:
-      break;
+    case SDLK_KP_ENTER: return 13;
+    case SDLK_BACKSPACE: return 8;
+    case SDLK_TAB: return 9;
+    case SDLK_DELETE: return 127;
+    default: break;
   }
   if ((k.mod & KMOD_CTRL) && k.sym >= SDLK_a && k.sym <= SDLK_z) return (unsigned char)(k.sym - SDLK_a + 1);
   return 0;
@@ -156,9 +128,7 @@ void dispatch(const SDL_Event& e) {
             w->redisplay = true;
           }
           break;
-        case SDL_WINDOWEVENT_EXPOSED:
-          w->redisplay = true;
-          break;
+        case SDL_WINDOWEVENT_EXPOSED: w->redisplay = true; break;
         case SDL_WINDOWEVENT_ENTER:
         case SDL_WINDOWEVENT_LEAVE:
           if (w->entry) {
@@ -173,8 +143,7 @@ void dispatch(const SDL_Event& e) {
           }
           s.leave = true;
           break;
-        default:
-          break;
+        default: break;
       }
       return;
     }
@@ -223,17 +192,10 @@ void dispatch(const SDL_Event& e) {
       if (!w) return;
       int button = -1;
       switch (e.button.button) {
-        case SDL_BUTTON_LEFT:
-          button = GLUT_LEFT_BUTTON;
-          break;
-        case SDL_BUTTON_MIDDLE:
-          button = GLUT_MIDDLE_BUTTON;
-          break;
-        case SDL_BUTTON_RIGHT:
-          button = GLUT_RIGHT_BUTTON;
-          break;
-        default:
-          return;
+        case SDL_BUTTON_LEFT: button = GLUT_LEFT_BUTTON; break;
+        case SDL_BUTTON_MIDDLE: button = GLUT_MIDDLE_BUTTON; break;
+        case SDL_BUTTON_RIGHT: button = GLUT_RIGHT_BUTTON; break;
+        default: return;
       }
       int x = 0, y = 0;
       mouse_xy(*w, e.button.x, e.button.y, x, y);
@@ -297,8 +259,7 @@ void dispatch(const SDL_Event& e) {
       if (window(w->id) && w->native && !(w->mode & GLUT_DOUBLE)) native_present(*w);
       return;
     }
-    default:
-      return;
+    default: return;
   }
 }
 }  // namespace

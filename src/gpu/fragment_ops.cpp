@@ -22,22 +22,14 @@ namespace {
 
 inline uint8_t stencil_op(StencilOp op, uint8_t s, uint8_t ref) {
   switch (op) {
-    case StencilOp::Keep:
-      return s;
-    case StencilOp::Zero:
-      return 0;
-    case StencilOp::Replace:
-      return ref;
-    case StencilOp::Incr:
-      return s == 255 ? 255 : uint8_t(s + 1);
-    case StencilOp::IncrWrap:
-      return uint8_t(s + 1);
-    case StencilOp::Decr:
-      return s == 0 ? 0 : uint8_t(s - 1);
-    case StencilOp::DecrWrap:
-      return uint8_t(s - 1);
-    case StencilOp::Invert:
-      return uint8_t(~s);
+    case StencilOp::Keep: return s;
+    case StencilOp::Zero: return 0;
+    case StencilOp::Replace: return ref;
+    case StencilOp::Incr: return s == 255 ? 255 : uint8_t(s + 1);
+    case StencilOp::IncrWrap: return uint8_t(s + 1);
+    case StencilOp::Decr: return s == 0 ? 0 : uint8_t(s - 1);
+    case StencilOp::DecrWrap: return uint8_t(s - 1);
+    case StencilOp::Invert: return uint8_t(~s);
   }
   return s;
 }
@@ -63,66 +55,42 @@ void store_color(const ColorTarget& t, int x, int y, glm::vec4 c, uint8_t wmask)
 
 inline glm::vec3 factor_rgb(BlendFactor f, const glm::vec4& s, const glm::vec4& d, const glm::vec4& k) {
   switch (f) {
-    case BlendFactor::Zero:
-      return glm::vec3(0.0f);
-    case BlendFactor::One:
-      return glm::vec3(1.0f);
-    case BlendFactor::SrcColor:
-      return glm::vec3(s);
-    case BlendFactor::OneMinusSrcColor:
-      return glm::vec3(1.0f) - glm::vec3(s);
-    case BlendFactor::DstColor:
-      return glm::vec3(d);
-    case BlendFactor::OneMinusDstColor:
-      return glm::vec3(1.0f) - glm::vec3(d);
-    case BlendFactor::SrcAlpha:
-      return glm::vec3(s.a);
-    case BlendFactor::OneMinusSrcAlpha:
-      return glm::vec3(1.0f - s.a);
-    case BlendFactor::DstAlpha:
-      return glm::vec3(d.a);
-    case BlendFactor::OneMinusDstAlpha:
-      return glm::vec3(1.0f - d.a);
-    case BlendFactor::ConstantColor:
-      return glm::vec3(k);
-    case BlendFactor::OneMinusConstantColor:
-      return glm::vec3(1.0f) - glm::vec3(k);
-    case BlendFactor::ConstantAlpha:
-      return glm::vec3(k.a);
-    case BlendFactor::OneMinusConstantAlpha:
-      return glm::vec3(1.0f - k.a);
-    case BlendFactor::SrcAlphaSaturate:
-      return glm::vec3(std::min(s.a, 1.0f - d.a));
+    case BlendFactor::Zero: return glm::vec3(0.0f);
+    case BlendFactor::One: return glm::vec3(1.0f);
+    case BlendFactor::SrcColor: return glm::vec3(s);
+    case BlendFactor::OneMinusSrcColor: return glm::vec3(1.0f) - glm::vec3(s);
+    case BlendFactor::DstColor: return glm::vec3(d);
+    case BlendFactor::OneMinusDstColor: return glm::vec3(1.0f) - glm::vec3(d);
+    case BlendFactor::SrcAlpha: return glm::vec3(s.a);
+    case BlendFactor::OneMinusSrcAlpha: return glm::vec3(1.0f - s.a);
+    case BlendFactor::DstAlpha: return glm::vec3(d.a);
+    case BlendFactor::OneMinusDstAlpha: return glm::vec3(1.0f - d.a);
+    case BlendFactor::ConstantColor: return glm::vec3(k);
+    case BlendFactor::OneMinusConstantColor: return glm::vec3(1.0f) - glm::vec3(k);
+    case BlendFactor::ConstantAlpha: return glm::vec3(k.a);
+    case BlendFactor::OneMinusConstantAlpha: return glm::vec3(1.0f - k.a);
+    case BlendFactor::SrcAlphaSaturate: return glm::vec3(std::min(s.a, 1.0f - d.a));
   }
   return glm::vec3(0.0f);
 }
 
 inline float factor_alpha(BlendFactor f, const glm::vec4& s, const glm::vec4& d, const glm::vec4& k) {
   switch (f) {
-    case BlendFactor::Zero:
-      return 0.0f;
-    case BlendFactor::One:
-      return 1.0f;
+    case BlendFactor::Zero: return 0.0f;
+    case BlendFactor::One: return 1.0f;
     case BlendFactor::SrcColor:
-    case BlendFactor::SrcAlpha:
-      return s.a;
+    case BlendFactor::SrcAlpha: return s.a;
     case BlendFactor::OneMinusSrcColor:
-    case BlendFactor::OneMinusSrcAlpha:
-      return 1.0f - s.a;
+    case BlendFactor::OneMinusSrcAlpha: return 1.0f - s.a;
     case BlendFactor::DstColor:
-    case BlendFactor::DstAlpha:
-      return d.a;
+    case BlendFactor::DstAlpha: return d.a;
     case BlendFactor::OneMinusDstColor:
-    case BlendFactor::OneMinusDstAlpha:
-      return 1.0f - d.a;
+    case BlendFactor::OneMinusDstAlpha: return 1.0f - d.a;
     case BlendFactor::ConstantColor:
-    case BlendFactor::ConstantAlpha:
-      return k.a;
+    case BlendFactor::ConstantAlpha: return k.a;
     case BlendFactor::OneMinusConstantColor:
-    case BlendFactor::OneMinusConstantAlpha:
-      return 1.0f - k.a;
-    case BlendFactor::SrcAlphaSaturate:
-      return 1.0f;
+    case BlendFactor::OneMinusConstantAlpha: return 1.0f - k.a;
+    case BlendFactor::SrcAlphaSaturate: return 1.0f;
   }
   return 0.0f;
 }
@@ -130,16 +98,11 @@ inline float factor_alpha(BlendFactor f, const glm::vec4& s, const glm::vec4& d,
 template <class T>
 inline T apply_equation(BlendEquation eq, T s, T sf, T d, T df) {
   switch (eq) {
-    case BlendEquation::Add:
-      return s * sf + d * df;
-    case BlendEquation::Subtract:
-      return s * sf - d * df;
-    case BlendEquation::ReverseSubtract:
-      return d * df - s * sf;
-    case BlendEquation::Min:
-      return glm::min(s, d);  // factors unused (GL 4.6 §17.3.6.1)
-    case BlendEquation::Max:
-      return glm::max(s, d);
+    case BlendEquation::Add: return s * sf + d * df;
+    case BlendEquation::Subtract: return s * sf - d * df;
+    case BlendEquation::ReverseSubtract: return d * df - s * sf;
+    case BlendEquation::Min: return glm::min(s, d);  // factors unused (GL 4.6 §17.3.6.1)
+    case BlendEquation::Max: return glm::max(s, d);
   }
   return s;
 }

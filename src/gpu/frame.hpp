@@ -86,42 +86,31 @@ struct Worker {
 // --- primitive assembly -----------------------------------------------------------------------
 inline uint32_t prim_count(Topology t, uint32_t n) {
   switch (t) {
-    case Topology::Points:
-      return n;
-    case Topology::Lines:
-      return n / 2;
-    case Topology::LineStrip:
-      return n >= 2 ? n - 1 : 0;
-    case Topology::LineLoop:
-      return n >= 2 ? n : 0;
-    case Topology::Triangles:
-      return n / 3;
+    case Topology::Points: return n;
+    case Topology::Lines: return n / 2;
+    case Topology::LineStrip: return n >= 2 ? n - 1 : 0;
+    case Topology::LineLoop: return n >= 2 ? n : 0;
+    case Topology::Triangles: return n / 3;
     case Topology::TriangleStrip:
-    case Topology::TriangleFan:
-      return n >= 3 ? n - 2 : 0;
+    case Topology::TriangleFan: return n >= 3 ? n - 2 : 0;
   }
   return 0;
 }
 
 inline int prim_size(Topology t) {
   switch (t) {
-    case Topology::Points:
-      return 1;
+    case Topology::Points: return 1;
     case Topology::Lines:
     case Topology::LineStrip:
-    case Topology::LineLoop:
-      return 2;
-    default:
-      return 3;
+    case Topology::LineLoop: return 2;
+    default: return 3;
   }
 }
 
 // Elements of primitive p, the provoking vertex last (GL 4.6 §10.1 and Table 13.2).
 inline void prim_elements(Topology t, uint32_t p, uint32_t n, uint32_t* e) {
   switch (t) {
-    case Topology::Points:
-      e[0] = p;
-      break;
+    case Topology::Points: e[0] = p; break;
     case Topology::Lines:
       e[0] = 2 * p;
       e[1] = 2 * p + 1;

@@ -83,22 +83,14 @@ template <class Fn>
 decltype(auto) with_format(Format f, Fn&& fn) {
   using F = Format;
   switch (f) {
-    case F::RGBA8:
-      return fn(std::integral_constant<F, F::RGBA8>{});
-    case F::R8:
-      return fn(std::integral_constant<F, F::R8>{});
-    case F::RG8:
-      return fn(std::integral_constant<F, F::RG8>{});
-    case F::RGBA16F:
-      return fn(std::integral_constant<F, F::RGBA16F>{});
-    case F::RGBA32F:
-      return fn(std::integral_constant<F, F::RGBA32F>{});
-    case F::Depth24:
-      return fn(std::integral_constant<F, F::Depth24>{});
-    case F::Depth32F:
-      return fn(std::integral_constant<F, F::Depth32F>{});
-    case F::Depth24Stencil8:
-      break;
+    case F::RGBA8: return fn(std::integral_constant<F, F::RGBA8>{});
+    case F::R8: return fn(std::integral_constant<F, F::R8>{});
+    case F::RG8: return fn(std::integral_constant<F, F::RG8>{});
+    case F::RGBA16F: return fn(std::integral_constant<F, F::RGBA16F>{});
+    case F::RGBA32F: return fn(std::integral_constant<F, F::RGBA32F>{});
+    case F::Depth24: return fn(std::integral_constant<F, F::Depth24>{});
+    case F::Depth32F: return fn(std::integral_constant<F, F::Depth32F>{});
+    case F::Depth24Stencil8: break;
   }
   return fn(std::integral_constant<F, F::Depth24Stencil8>{});
 }
@@ -117,9 +109,7 @@ void detail::encode_texel(Format f, std::byte* p, const glm::vec4& c) {
       std::memcpy(p, b, 4);
       return;
     }
-    case Format::R8:
-      p[0] = std::byte(float_to_unorm8(c.x));
-      return;
+    case Format::R8: p[0] = std::byte(float_to_unorm8(c.x)); return;
     case Format::RG8:
       p[0] = std::byte(float_to_unorm8(c.x));
       p[1] = std::byte(float_to_unorm8(c.y));
@@ -129,9 +119,7 @@ void detail::encode_texel(Format f, std::byte* p, const glm::vec4& c) {
       std::memcpy(p, h, 8);
       return;
     }
-    case Format::RGBA32F:
-      std::memcpy(p, &c[0], 16);
-      return;
+    case Format::RGBA32F: std::memcpy(p, &c[0], 16); return;
     case Format::Depth24: {
       const uint32_t w = float_to_unorm24(c.x);
       std::memcpy(p, &w, 4);
@@ -411,12 +399,9 @@ TESSEL_INLINE int wrap_texel(int i, int size, Wrap mode) {
       int r = i % size;
       return r < 0 ? r + size : r;
     }
-    case Wrap::ClampToEdge:
-      return i < 0 ? 0 : (i >= size ? size - 1 : i);
-    case Wrap::ClampToBorder:
-      return (i < 0 || i >= size) ? -1 : i;
-    case Wrap::Clamp:
-      return i < 0 ? 0 : (i >= size ? size - 1 : i);  // sample_level resolves it first
+    case Wrap::ClampToEdge: return i < 0 ? 0 : (i >= size ? size - 1 : i);
+    case Wrap::ClampToBorder: return (i < 0 || i >= size) ? -1 : i;
+    case Wrap::Clamp: return i < 0 ? 0 : (i >= size ? size - 1 : i);  // sample_level resolves it first
     case Wrap::MirroredRepeat: {
       const int m2 = 2 * size;
       int r = i % m2;
@@ -437,20 +422,14 @@ inline bool is_linear(Filter f) {
 // missing channels read as 0 (alpha 1), depth formats read (d, 0, 0, 1).
 glm::vec4 border_for(Format f, const glm::vec4& b) {
   switch (f) {
-    case Format::RGBA8:
-      return glm::vec4(sat(b.x), sat(b.y), sat(b.z), sat(b.w));
-    case Format::R8:
-      return glm::vec4(sat(b.x), 0.0f, 0.0f, 1.0f);
-    case Format::RG8:
-      return glm::vec4(sat(b.x), sat(b.y), 0.0f, 1.0f);
+    case Format::RGBA8: return glm::vec4(sat(b.x), sat(b.y), sat(b.z), sat(b.w));
+    case Format::R8: return glm::vec4(sat(b.x), 0.0f, 0.0f, 1.0f);
+    case Format::RG8: return glm::vec4(sat(b.x), sat(b.y), 0.0f, 1.0f);
     case Format::RGBA16F:
-    case Format::RGBA32F:
-      return b;
+    case Format::RGBA32F: return b;
     case Format::Depth24:
-    case Format::Depth24Stencil8:
-      return glm::vec4(sat(b.x), 0.0f, 0.0f, 1.0f);
-    case Format::Depth32F:
-      return glm::vec4(b.x, 0.0f, 0.0f, 1.0f);
+    case Format::Depth24Stencil8: return glm::vec4(sat(b.x), 0.0f, 0.0f, 1.0f);
+    case Format::Depth32F: return glm::vec4(b.x, 0.0f, 0.0f, 1.0f);
   }
   return b;
 }
@@ -530,8 +509,7 @@ Plan make_plan(const SamplerState& st, int levels, float lod) {
   const int q = levels - 1;  // the last level the texture has (its effective MAX_LEVEL)
   switch (st.min_filter) {
     case Filter::Nearest:
-    case Filter::Linear:
-      return p;
+    case Filter::Linear: return p;
     case Filter::NearestMipmapNearest:
     case Filter::LinearMipmapNearest: {
       if (l > 0.5f) p.level0 = int(std::min(std::ceil(l + 0.5f) - 1.0f, float(q)));
@@ -589,18 +567,12 @@ inline int select_face(float x, float y, float z) {
 
 inline FaceAxes face_axes(int face, float x, float y, float z) {
   switch (face) {
-    case 0:
-      return {0, -z, -y, std::fabs(x)};
-    case 1:
-      return {1, z, -y, std::fabs(x)};
-    case 2:
-      return {2, x, z, std::fabs(y)};
-    case 3:
-      return {3, x, -z, std::fabs(y)};
-    case 4:
-      return {4, x, -y, std::fabs(z)};
-    default:
-      return {5, -x, -y, std::fabs(z)};
+    case 0: return {0, -z, -y, std::fabs(x)};
+    case 1: return {1, z, -y, std::fabs(x)};
+    case 2: return {2, x, z, std::fabs(y)};
+    case 3: return {3, x, -z, std::fabs(y)};
+    case 4: return {4, x, -y, std::fabs(z)};
+    default: return {5, -x, -y, std::fabs(z)};
   }
 }
 

@@ -17,15 +17,12 @@ size_t attrib_type_size(AttribType t) {
   switch (t) {
     case AttribType::F32:
     case AttribType::I32:
-    case AttribType::U32:
-      return 4;
+    case AttribType::U32: return 4;
     case AttribType::F16:
     case AttribType::I16:
-    case AttribType::U16:
-      return 2;
+    case AttribType::U16: return 2;
     case AttribType::I8:
-    case AttribType::U8:
-      return 1;
+    case AttribType::U8: return 1;
   }
   return 4;
 }
@@ -66,10 +63,8 @@ inline T read(const std::byte* p) {
 
 float component(const VertexAttrib& a, const std::byte* p) {
   switch (a.type) {
-    case AttribType::F32:
-      return read<float>(p);
-    case AttribType::F16:
-      return half_to_float(read<uint16_t>(p));
+    case AttribType::F32: return read<float>(p);
+    case AttribType::F16: return half_to_float(read<uint16_t>(p));
     case AttribType::I8: {
       const float v = read<int8_t>(p);
       return a.normalized ? std::max(v / 127.0f, -1.0f) : v;
@@ -100,22 +95,14 @@ float component(const VertexAttrib& a, const std::byte* p) {
 
 int32_t integer_component(const VertexAttrib& a, const std::byte* p) {
   switch (a.type) {
-    case AttribType::I8:
-      return read<int8_t>(p);
-    case AttribType::U8:
-      return read<uint8_t>(p);
-    case AttribType::I16:
-      return read<int16_t>(p);
-    case AttribType::U16:
-      return read<uint16_t>(p);
-    case AttribType::I32:
-      return read<int32_t>(p);
-    case AttribType::U32:
-      return int32_t(read<uint32_t>(p));
-    case AttribType::F32:
-      return int32_t(read<float>(p));
-    case AttribType::F16:
-      return int32_t(half_to_float(read<uint16_t>(p)));
+    case AttribType::I8: return read<int8_t>(p);
+    case AttribType::U8: return read<uint8_t>(p);
+    case AttribType::I16: return read<int16_t>(p);
+    case AttribType::U16: return read<uint16_t>(p);
+    case AttribType::I32: return read<int32_t>(p);
+    case AttribType::U32: return int32_t(read<uint32_t>(p));
+    case AttribType::F32: return int32_t(read<float>(p));
+    case AttribType::F16: return int32_t(half_to_float(read<uint16_t>(p)));
   }
   return 0;
 }
@@ -244,20 +231,11 @@ void fetch_attributes8(const VertexLayout& layout, const uint32_t* ids, int n, u
     }
     if (a.type == AttribType::F32 && !a.integer) {
       switch (a.components) {
-        case 1:
-          fetch_f32<1>(base, stride, lane, out);
-          continue;
-        case 2:
-          fetch_f32<2>(base, stride, lane, out);
-          continue;
-        case 3:
-          fetch_f32<3>(base, stride, lane, out);
-          continue;
-        case 4:
-          fetch_f32<4>(base, stride, lane, out);
-          continue;
-        default:
-          break;
+        case 1: fetch_f32<1>(base, stride, lane, out); continue;
+        case 2: fetch_f32<2>(base, stride, lane, out); continue;
+        case 3: fetch_f32<3>(base, stride, lane, out); continue;
+        case 4: fetch_f32<4>(base, stride, lane, out); continue;
+        default: break;
       }
     }
     f32x4 r[kLanes];

@@ -24,32 +24,23 @@ constexpr size_t kMaxCount = size_t(1) << 26;
 size_t component_size(int type) {
   switch (type) {
     case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return 1;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
     case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-      return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
     case TINYGLTF_COMPONENT_TYPE_INT:
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT:
-      return 4;
-    default:
-      return 0;
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    default: return 0;
   }
 }
 
 int components(int type) {
   switch (type) {
-    case TINYGLTF_TYPE_SCALAR:
-      return 1;
-    case TINYGLTF_TYPE_VEC2:
-      return 2;
-    case TINYGLTF_TYPE_VEC3:
-      return 3;
-    case TINYGLTF_TYPE_VEC4:
-      return 4;
-    default:
-      return 0;
+    case TINYGLTF_TYPE_SCALAR: return 1;
+    case TINYGLTF_TYPE_VEC2: return 2;
+    case TINYGLTF_TYPE_VEC3: return 3;
+    case TINYGLTF_TYPE_VEC4: return 4;
+    default: return 0;
   }
 }
 
@@ -70,12 +61,8 @@ class Reader {
         const unsigned char* p = s.base + i * s.stride + size_t(c) * s.csize;
         float v = 0.0f;
         switch (s.ctype) {
-          case TINYGLTF_COMPONENT_TYPE_FLOAT:
-            std::memcpy(&v, p, 4);
-            break;
-          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            v = float(p[0]) / (s.normalized ? 255.0f : 1.0f);
-            break;
+          case TINYGLTF_COMPONENT_TYPE_FLOAT: std::memcpy(&v, p, 4); break;
+          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: v = float(p[0]) / (s.normalized ? 255.0f : 1.0f); break;
           case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
             uint16_t u;
             std::memcpy(&u, p, 2);
@@ -109,20 +96,15 @@ class Reader {
     for (size_t i = 0; i < s.count; ++i) {
       const unsigned char* p = s.base + i * s.stride;
       switch (s.ctype) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-          out[i] = p[0];
-          break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[i] = p[0]; break;
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
           uint16_t u;
           std::memcpy(&u, p, 2);
           out[i] = u;
           break;
         }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-          std::memcpy(&out[i], p, 4);
-          break;
-        default:
-          fail("indices: accessor " + std::to_string(index) + " must hold unsigned integers");
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: std::memcpy(&out[i], p, 4); break;
+        default: fail("indices: accessor " + std::to_string(index) + " must hold unsigned integers");
       }
     }
     return out;

@@ -274,18 +274,12 @@ std::string GlslShader::vertex_source(Kind kind) {
 }
 std::string GlslShader::fragment_source(Kind kind) {
   switch (kind) {
-    case Kind::Gouraud:
-      return std::string("#version 330\n") + kLighting + kGouraudFragment;
-    case Kind::Phong:
-      return std::string("#version 330\n") + kLighting + kPhongFragment;
-    case Kind::NormalMap:
-      return std::string("#version 330\n") + kLighting + kNormalMapFragment;
-    case Kind::Npr:
-      return std::string("#version 330\n") + kLighting + kNprFragment;
-    case Kind::Depth:
-      return std::string("#version 330\n") + kDepthFragment;
-    case Kind::Normal:
-      return std::string("#version 330\n") + kNormalFragment;
+    case Kind::Gouraud: return std::string("#version 330\n") + kLighting + kGouraudFragment;
+    case Kind::Phong: return std::string("#version 330\n") + kLighting + kPhongFragment;
+    case Kind::NormalMap: return std::string("#version 330\n") + kLighting + kNormalMapFragment;
+    case Kind::Npr: return std::string("#version 330\n") + kLighting + kNprFragment;
+    case Kind::Depth: return std::string("#version 330\n") + kDepthFragment;
+    case Kind::Normal: return std::string("#version 330\n") + kNormalFragment;
   }
   return {};
 }

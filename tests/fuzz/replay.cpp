@@ -49,9 +49,7 @@ int main(int argc, char** argv) {
             case 0:
               if (!v.empty()) v[at] ^= uint8_t(1u << (rng() % 8));
               break;
-            case 1:
-              v.resize(at);
-              break;
+            case 1: v.resize(at); break;
             case 2:
               if (!v.empty())
                 v.insert(v.begin() + long(at), v.begin() + long(at),
@@ -60,9 +58,7 @@ int main(int argc, char** argv) {
             case 3:
               if (!v.empty()) v[at] = interesting[rng() % sizeof interesting];
               break;
-            default:
-              v.insert(v.begin() + long(at), interesting[rng() % sizeof interesting]);
-              break;
+            default: v.insert(v.begin() + long(at), interesting[rng() % sizeof interesting]); break;
           }
         }
         LLVMFuzzerTestOneInput(v.data(), v.size());

@@ -374,128 +374,50 @@ TEST_F(GLTest, RandomCallSequenceNeverCrashes) {
   for (int n = 0; n < 20000; ++n) {
     for (float& x : v) x = f();
     switch (rng() % 40) {
-      case 0:
-        glBegin(e());
-        break;
-      case 1:
-        glEnd();
-        break;
-      case 2:
-        glVertex3f(f(), f(), f());
-        break;
-      case 3:
-        glColor4f(f(), f(), f(), f());
-        break;
-      case 4:
-        glNormal3f(f(), f(), f());
-        break;
-      case 5:
-        glTexCoord2f(f(), f());
-        break;
-      case 6:
-        glEnable(e());
-        break;
-      case 7:
-        glDisable(e());
-        break;
-      case 8:
-        glMatrixMode(e());
-        break;
-      case 9:
-        glPushMatrix();
-        break;
-      case 10:
-        glPopMatrix();
-        break;
-      case 11:
-        glLoadIdentity();
-        break;
-      case 12:
-        glRotatef(f(), f(), f(), f());
-        break;
-      case 13:
-        glTranslatef(f(), f(), f());
-        break;
-      case 14:
-        glFrustum(f(), f(), f(), f(), f(), f());
-        break;
-      case 15:
-        glOrtho(-1, 1, -1, 1, f(), f());
-        break;
-      case 16:
-        glLightfv(e(), e(), v);
-        break;
-      case 17:
-        glMaterialfv(e(), e(), v);
-        break;
-      case 18:
-        glNewList(GLuint(i() + 3), e());
-        break;
-      case 19:
-        glEndList();
-        break;
-      case 20:
-        glCallList(GLuint(i() + 3));
-        break;
-      case 21:
-        glClear(GLbitfield(rng()));
-        break;
-      case 22:
-        glViewport(i(), i(), i() * 10, i() * 10);
-        break;
-      case 23:
-        glTexImage2D(e(), i(), GLint(e()), 16, 16, i(), e(), e(), image.data());
-        break;
-      case 24:
-        glTexParameteri(GL_TEXTURE_2D, e(), GLint(e()));
-        break;
-      case 25:
-        glBindTexture(e(), GLuint(i() + 2));
-        break;
-      case 26:
-        glPolygonMode(e(), e());
-        break;
-      case 27:
-        glBlendFunc(e(), e());
-        break;
-      case 28:
-        glDepthFunc(e());
-        break;
-      case 29:
-        glLineWidth(f());
-        break;
-      case 30:
-        glPointSize(f());
-        break;
-      case 31:
-        glPushAttrib(GLbitfield(rng()));
-        break;
-      case 32:
-        glPopAttrib();
-        break;
-      case 33:
-        glRectf(f(), f(), f(), f());
-        break;
-      case 34:
-        glDrawArrays(e(), i(), i() * 3);
-        break;
-      case 35:
-        glFogf(e(), f());
-        break;
-      case 36:
-        glShadeModel(e());
-        break;
-      case 37:
-        glTexEnvi(e(), e(), GLint(e()));
-        break;
+      case 0: glBegin(e()); break;
+      case 1: glEnd(); break;
+      case 2: glVertex3f(f(), f(), f()); break;
+      case 3: glColor4f(f(), f(), f(), f()); break;
+      case 4: glNormal3f(f(), f(), f()); break;
+      case 5: glTexCoord2f(f(), f()); break;
+      case 6: glEnable(e()); break;
+      case 7: glDisable(e()); break;
+      case 8: glMatrixMode(e()); break;
+      case 9: glPushMatrix(); break;
+      case 10: glPopMatrix(); break;
+      case 11: glLoadIdentity(); break;
+      case 12: glRotatef(f(), f(), f(), f()); break;
+      case 13: glTranslatef(f(), f(), f()); break;
+      case 14: glFrustum(f(), f(), f(), f(), f(), f()); break;
+      case 15: glOrtho(-1, 1, -1, 1, f(), f()); break;
+      case 16: glLightfv(e(), e(), v); break;
+      case 17: glMaterialfv(e(), e(), v); break;
+      case 18: glNewList(GLuint(i() + 3), e()); break;
+      case 19: glEndList(); break;
+      case 20: glCallList(GLuint(i() + 3)); break;
+      case 21: glClear(GLbitfield(rng())); break;
+      case 22: glViewport(i(), i(), i() * 10, i() * 10); break;
+      case 23: glTexImage2D(e(), i(), GLint(e()), 16, 16, i(), e(), e(), image.data()); break;
+      case 24: glTexParameteri(GL_TEXTURE_2D, e(), GLint(e())); break;
+      case 25: glBindTexture(e(), GLuint(i() + 2)); break;
+      case 26: glPolygonMode(e(), e()); break;
+      case 27: glBlendFunc(e(), e()); break;
+      case 28: glDepthFunc(e()); break;
+      case 29: glLineWidth(f()); break;
+      case 30: glPointSize(f()); break;
+      case 31: glPushAttrib(GLbitfield(rng())); break;
+      case 32: glPopAttrib(); break;
+      case 33: glRectf(f(), f(), f(), f()); break;
+      case 34: glDrawArrays(e(), i(), i() * 3); break;
+      case 35: glFogf(e(), f()); break;
+      case 36: glShadeModel(e()); break;
+      case 37: glTexEnvi(e(), e(), GLint(e())); break;
       case 38: {
         GLubyte px[4 * 4 * 4];
         glReadPixels(i(), i(), 4, 4, e(), e(), px);
         break;
       }
-      default:
-        glFlush();
-        break;
+      default: glFlush(); break;
     }
     const GLenum err = glGetError();
     ASSERT_TRUE(err == GL_NO_ERROR || err == GL_INVALID_ENUM || err == GL_INVALID_VALUE ||

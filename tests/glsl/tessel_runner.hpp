@@ -22,30 +22,20 @@ struct TesselResult {
 
 inline gpu::Filter to_filter(uint32_t e) {
   switch (e) {
-    case 0x2600:
-      return gpu::Filter::Nearest;
-    case 0x2601:
-      return gpu::Filter::Linear;
-    case 0x2700:
-      return gpu::Filter::NearestMipmapNearest;
-    case 0x2701:
-      return gpu::Filter::LinearMipmapNearest;
-    case 0x2702:
-      return gpu::Filter::NearestMipmapLinear;
-    default:
-      return gpu::Filter::LinearMipmapLinear;
+    case 0x2600: return gpu::Filter::Nearest;
+    case 0x2601: return gpu::Filter::Linear;
+    case 0x2700: return gpu::Filter::NearestMipmapNearest;
+    case 0x2701: return gpu::Filter::LinearMipmapNearest;
+    case 0x2702: return gpu::Filter::NearestMipmapLinear;
+    default: return gpu::Filter::LinearMipmapLinear;
   }
 }
 inline gpu::Wrap to_wrap(uint32_t e) {
   switch (e) {
-    case 0x812F:
-      return gpu::Wrap::ClampToEdge;
-    case 0x8370:
-      return gpu::Wrap::MirroredRepeat;
-    case 0x812D:
-      return gpu::Wrap::ClampToBorder;
-    default:
-      return gpu::Wrap::Repeat;
+    case 0x812F: return gpu::Wrap::ClampToEdge;
+    case 0x8370: return gpu::Wrap::MirroredRepeat;
+    case 0x812D: return gpu::Wrap::ClampToBorder;
+    default: return gpu::Wrap::Repeat;
   }
 }
 
@@ -213,15 +203,9 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
     gpu::DrawCall call;
     call.count = uint32_t(spec.count);
     switch (spec.primitive) {
-      case 0x0005:
-        call.topology = gpu::Topology::TriangleStrip;
-        break;
-      case 0x0006:
-        call.topology = gpu::Topology::TriangleFan;
-        break;
-      default:
-        call.topology = gpu::Topology::Triangles;
-        break;
+      case 0x0005: call.topology = gpu::Topology::TriangleStrip; break;
+      case 0x0006: call.topology = gpu::Topology::TriangleFan; break;
+      default: call.topology = gpu::Topology::Triangles; break;
     }
     std::vector<std::unique_ptr<gpu::Buffer>> ubos;
     std::vector<glsl::BufferBinding> points;

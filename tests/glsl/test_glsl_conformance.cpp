@@ -195,35 +195,16 @@ const unsigned kCoarse = 16;
 
 void type_of(char letter, char base, int n, char* rb, int* rn) {
   switch (letter) {
-    case 's':
-      *rb = base, *rn = 1;
-      break;
-    case 'f':
-      *rb = 'f', *rn = 1;
-      break;
-    case 'F':
-      *rb = 'f', *rn = n;
-      break;
-    case 'B':
-      *rb = 'b', *rn = n;
-      break;
-    case 'I':
-      *rb = 'i', *rn = n;
-      break;
-    case 'U':
-      *rb = 'u', *rn = n;
-      break;
-    case 'b':
-      *rb = 'b', *rn = 1;
-      break;
-    case 'Q':
-      *rb = 'b', *rn = 4;
-      break;
-    case 'i':
-      *rb = 'i', *rn = 1;
-      break;
-    default:
-      *rb = base, *rn = n;  // T
+    case 's': *rb = base, *rn = 1; break;
+    case 'f': *rb = 'f', *rn = 1; break;
+    case 'F': *rb = 'f', *rn = n; break;
+    case 'B': *rb = 'b', *rn = n; break;
+    case 'I': *rb = 'i', *rn = n; break;
+    case 'U': *rb = 'u', *rn = n; break;
+    case 'b': *rb = 'b', *rn = 1; break;
+    case 'Q': *rb = 'b', *rn = 4; break;
+    case 'i': *rb = 'i', *rn = 1; break;
+    default: *rb = base, *rn = n;  // T
   }
 }
 
@@ -1011,18 +992,12 @@ reference::GlslTexture noise_texture(uint32_t target, int w, int h, int faces = 
 const uint32_t kFilters[] = {0x2600, 0x2601, 0x2700, 0x2701, 0x2702, 0x2703};
 const char* filter_name(uint32_t f) {
   switch (f) {
-    case 0x2600:
-      return "NEAREST";
-    case 0x2601:
-      return "LINEAR";
-    case 0x2700:
-      return "NEAREST_MIPMAP_NEAREST";
-    case 0x2701:
-      return "LINEAR_MIPMAP_NEAREST";
-    case 0x2702:
-      return "NEAREST_MIPMAP_LINEAR";
-    default:
-      return "LINEAR_MIPMAP_LINEAR";
+    case 0x2600: return "NEAREST";
+    case 0x2601: return "LINEAR";
+    case 0x2700: return "NEAREST_MIPMAP_NEAREST";
+    case 0x2701: return "LINEAR_MIPMAP_NEAREST";
+    case 0x2702: return "NEAREST_MIPMAP_LINEAR";
+    default: return "LINEAR_MIPMAP_LINEAR";
   }
 }
 const uint32_t kWraps[] = {0x2901, 0x812F, 0x8370,

@@ -171,36 +171,21 @@ TEST(Blend, EveryEquationAndFactor) {
   const glm::vec4 src(0.8f, 0.4f, 0.2f, 0.6f), dst(0.2f, 0.6f, 1.0f, 0.4f), k(0.3f, 0.5f, 0.7f, 0.25f);
   auto fac = [&](BlendFactor f) -> glm::vec4 {
     switch (f) {
-      case BlendFactor::Zero:
-        return glm::vec4(0);
-      case BlendFactor::One:
-        return glm::vec4(1);
-      case BlendFactor::SrcColor:
-        return src;
-      case BlendFactor::OneMinusSrcColor:
-        return glm::vec4(1) - src;
-      case BlendFactor::DstColor:
-        return dst;
-      case BlendFactor::OneMinusDstColor:
-        return glm::vec4(1) - dst;
-      case BlendFactor::SrcAlpha:
-        return glm::vec4(src.a);
-      case BlendFactor::OneMinusSrcAlpha:
-        return glm::vec4(1 - src.a);
-      case BlendFactor::DstAlpha:
-        return glm::vec4(dst.a);
-      case BlendFactor::OneMinusDstAlpha:
-        return glm::vec4(1 - dst.a);
-      case BlendFactor::ConstantColor:
-        return k;
-      case BlendFactor::OneMinusConstantColor:
-        return glm::vec4(1) - k;
-      case BlendFactor::ConstantAlpha:
-        return glm::vec4(k.a);
-      case BlendFactor::OneMinusConstantAlpha:
-        return glm::vec4(1 - k.a);
-      case BlendFactor::SrcAlphaSaturate:
-        return glm::vec4(glm::vec3(std::min(src.a, 1 - dst.a)), 1.0f);
+      case BlendFactor::Zero: return glm::vec4(0);
+      case BlendFactor::One: return glm::vec4(1);
+      case BlendFactor::SrcColor: return src;
+      case BlendFactor::OneMinusSrcColor: return glm::vec4(1) - src;
+      case BlendFactor::DstColor: return dst;
+      case BlendFactor::OneMinusDstColor: return glm::vec4(1) - dst;
+      case BlendFactor::SrcAlpha: return glm::vec4(src.a);
+      case BlendFactor::OneMinusSrcAlpha: return glm::vec4(1 - src.a);
+      case BlendFactor::DstAlpha: return glm::vec4(dst.a);
+      case BlendFactor::OneMinusDstAlpha: return glm::vec4(1 - dst.a);
+      case BlendFactor::ConstantColor: return k;
+      case BlendFactor::OneMinusConstantColor: return glm::vec4(1) - k;
+      case BlendFactor::ConstantAlpha: return glm::vec4(k.a);
+      case BlendFactor::OneMinusConstantAlpha: return glm::vec4(1 - k.a);
+      case BlendFactor::SrcAlphaSaturate: return glm::vec4(glm::vec3(std::min(src.a, 1 - dst.a)), 1.0f);
     }
     return glm::vec4(0);
   };
@@ -228,21 +213,11 @@ TEST(Blend, EveryEquationAndFactor) {
       glm::vec4 fs = fac(s), fd = fac(d);
       glm::vec4 want;
       switch (BlendEquation(eq)) {
-        case BlendEquation::Add:
-          want = src * fs + dst * fd;
-          break;
-        case BlendEquation::Subtract:
-          want = src * fs - dst * fd;
-          break;
-        case BlendEquation::ReverseSubtract:
-          want = dst * fd - src * fs;
-          break;
-        case BlendEquation::Min:
-          want = glm::min(src, dst);
-          break;
-        case BlendEquation::Max:
-          want = glm::max(src, dst);
-          break;
+        case BlendEquation::Add: want = src * fs + dst * fd; break;
+        case BlendEquation::Subtract: want = src * fs - dst * fd; break;
+        case BlendEquation::ReverseSubtract: want = dst * fd - src * fs; break;
+        case BlendEquation::Min: want = glm::min(src, dst); break;
+        case BlendEquation::Max: want = glm::max(src, dst); break;
       }
       // Alpha uses the alpha of each factor.
       for (int c = 0; c < 4; ++c)

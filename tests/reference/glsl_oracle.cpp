@@ -100,10 +100,8 @@ bool is_sampler(GLenum t) {
     case GL_UNSIGNED_INT_SAMPLER_BUFFER:
     case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE:
     case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE_ARRAY:
-    case GL_UNSIGNED_INT_SAMPLER_CUBE_MAP_ARRAY:
-      return true;
-    default:
-      return false;
+    case GL_UNSIGNED_INT_SAMPLER_CUBE_MAP_ARRAY: return true;
+    default: return false;
   }
 }
 
@@ -113,56 +111,31 @@ bool uniform_type(GLenum t, UniformType* out) {
     return true;
   };
   switch (t) {
-    case GL_FLOAT:
-      return set('f', 1, 1);
-    case GL_FLOAT_VEC2:
-      return set('f', 1, 2);
-    case GL_FLOAT_VEC3:
-      return set('f', 1, 3);
-    case GL_FLOAT_VEC4:
-      return set('f', 1, 4);
-    case GL_INT:
-      return set('i', 1, 1);
-    case GL_INT_VEC2:
-      return set('i', 1, 2);
-    case GL_INT_VEC3:
-      return set('i', 1, 3);
-    case GL_INT_VEC4:
-      return set('i', 1, 4);
-    case GL_UNSIGNED_INT:
-      return set('u', 1, 1);
-    case GL_UNSIGNED_INT_VEC2:
-      return set('u', 1, 2);
-    case GL_UNSIGNED_INT_VEC3:
-      return set('u', 1, 3);
-    case GL_UNSIGNED_INT_VEC4:
-      return set('u', 1, 4);
-    case GL_BOOL:
-      return set('b', 1, 1);
-    case GL_BOOL_VEC2:
-      return set('b', 1, 2);
-    case GL_BOOL_VEC3:
-      return set('b', 1, 3);
-    case GL_BOOL_VEC4:
-      return set('b', 1, 4);
-    case GL_FLOAT_MAT2:
-      return set('f', 2, 2);
-    case GL_FLOAT_MAT3:
-      return set('f', 3, 3);
-    case GL_FLOAT_MAT4:
-      return set('f', 4, 4);
-    case GL_FLOAT_MAT2x3:
-      return set('f', 2, 3);
-    case GL_FLOAT_MAT2x4:
-      return set('f', 2, 4);
-    case GL_FLOAT_MAT3x2:
-      return set('f', 3, 2);
-    case GL_FLOAT_MAT3x4:
-      return set('f', 3, 4);
-    case GL_FLOAT_MAT4x2:
-      return set('f', 4, 2);
-    case GL_FLOAT_MAT4x3:
-      return set('f', 4, 3);
+    case GL_FLOAT: return set('f', 1, 1);
+    case GL_FLOAT_VEC2: return set('f', 1, 2);
+    case GL_FLOAT_VEC3: return set('f', 1, 3);
+    case GL_FLOAT_VEC4: return set('f', 1, 4);
+    case GL_INT: return set('i', 1, 1);
+    case GL_INT_VEC2: return set('i', 1, 2);
+    case GL_INT_VEC3: return set('i', 1, 3);
+    case GL_INT_VEC4: return set('i', 1, 4);
+    case GL_UNSIGNED_INT: return set('u', 1, 1);
+    case GL_UNSIGNED_INT_VEC2: return set('u', 1, 2);
+    case GL_UNSIGNED_INT_VEC3: return set('u', 1, 3);
+    case GL_UNSIGNED_INT_VEC4: return set('u', 1, 4);
+    case GL_BOOL: return set('b', 1, 1);
+    case GL_BOOL_VEC2: return set('b', 1, 2);
+    case GL_BOOL_VEC3: return set('b', 1, 3);
+    case GL_BOOL_VEC4: return set('b', 1, 4);
+    case GL_FLOAT_MAT2: return set('f', 2, 2);
+    case GL_FLOAT_MAT3: return set('f', 3, 3);
+    case GL_FLOAT_MAT4: return set('f', 4, 4);
+    case GL_FLOAT_MAT2x3: return set('f', 2, 3);
+    case GL_FLOAT_MAT2x4: return set('f', 2, 4);
+    case GL_FLOAT_MAT3x2: return set('f', 3, 2);
+    case GL_FLOAT_MAT3x4: return set('f', 3, 4);
+    case GL_FLOAT_MAT4x2: return set('f', 4, 2);
+    case GL_FLOAT_MAT4x3: return set('f', 4, 3);
     default:
       if (is_sampler(t)) return set('i', 1, 1);
       return false;
@@ -195,35 +168,16 @@ std::string set_uniform(GLint loc, const UniformType& t, const GlslUniform& u) {
                                                 : convert<float>(u.u);
     const float* p = f.data();
     switch (t.cols * 10 + t.rows) {
-      case 22:
-        glUniformMatrix2fv(loc, count, GL_FALSE, p);
-        break;
-      case 33:
-        glUniformMatrix3fv(loc, count, GL_FALSE, p);
-        break;
-      case 44:
-        glUniformMatrix4fv(loc, count, GL_FALSE, p);
-        break;
-      case 23:
-        glUniformMatrix2x3fv(loc, count, GL_FALSE, p);
-        break;
-      case 24:
-        glUniformMatrix2x4fv(loc, count, GL_FALSE, p);
-        break;
-      case 32:
-        glUniformMatrix3x2fv(loc, count, GL_FALSE, p);
-        break;
-      case 34:
-        glUniformMatrix3x4fv(loc, count, GL_FALSE, p);
-        break;
-      case 42:
-        glUniformMatrix4x2fv(loc, count, GL_FALSE, p);
-        break;
-      case 43:
-        glUniformMatrix4x3fv(loc, count, GL_FALSE, p);
-        break;
-      default:
-        return "internal: bad matrix shape";
+      case 22: glUniformMatrix2fv(loc, count, GL_FALSE, p); break;
+      case 33: glUniformMatrix3fv(loc, count, GL_FALSE, p); break;
+      case 44: glUniformMatrix4fv(loc, count, GL_FALSE, p); break;
+      case 23: glUniformMatrix2x3fv(loc, count, GL_FALSE, p); break;
+      case 24: glUniformMatrix2x4fv(loc, count, GL_FALSE, p); break;
+      case 32: glUniformMatrix3x2fv(loc, count, GL_FALSE, p); break;
+      case 34: glUniformMatrix3x4fv(loc, count, GL_FALSE, p); break;
+      case 42: glUniformMatrix4x2fv(loc, count, GL_FALSE, p); break;
+      case 43: glUniformMatrix4x3fv(loc, count, GL_FALSE, p); break;
+      default: return "internal: bad matrix shape";
     }
     return "";
   }
@@ -238,18 +192,10 @@ std::string set_uniform(GLint loc, const UniformType& t, const GlslUniform& u) {
                                    : !u.i.empty() ? convert<float>(u.i)
                                                   : convert<float>(u.u);
       switch (t.rows) {
-        case 1:
-          glUniform1fv(loc, count, v.data());
-          break;
-        case 2:
-          glUniform2fv(loc, count, v.data());
-          break;
-        case 3:
-          glUniform3fv(loc, count, v.data());
-          break;
-        default:
-          glUniform4fv(loc, count, v.data());
-          break;
+        case 1: glUniform1fv(loc, count, v.data()); break;
+        case 2: glUniform2fv(loc, count, v.data()); break;
+        case 3: glUniform3fv(loc, count, v.data()); break;
+        default: glUniform4fv(loc, count, v.data()); break;
       }
       break;
     }
@@ -258,18 +204,10 @@ std::string set_uniform(GLint loc, const UniformType& t, const GlslUniform& u) {
                                    : !u.f.empty() ? convert<GLint>(u.f)
                                                   : convert<GLint>(u.u);
       switch (t.rows) {
-        case 1:
-          glUniform1iv(loc, count, v.data());
-          break;
-        case 2:
-          glUniform2iv(loc, count, v.data());
-          break;
-        case 3:
-          glUniform3iv(loc, count, v.data());
-          break;
-        default:
-          glUniform4iv(loc, count, v.data());
-          break;
+        case 1: glUniform1iv(loc, count, v.data()); break;
+        case 2: glUniform2iv(loc, count, v.data()); break;
+        case 3: glUniform3iv(loc, count, v.data()); break;
+        default: glUniform4iv(loc, count, v.data()); break;
       }
       break;
     }
@@ -278,18 +216,10 @@ std::string set_uniform(GLint loc, const UniformType& t, const GlslUniform& u) {
                                     : !u.i.empty() ? convert<GLuint>(u.i)
                                                    : convert<GLuint>(u.f);
       switch (t.rows) {
-        case 1:
-          glUniform1uiv(loc, count, v.data());
-          break;
-        case 2:
-          glUniform2uiv(loc, count, v.data());
-          break;
-        case 3:
-          glUniform3uiv(loc, count, v.data());
-          break;
-        default:
-          glUniform4uiv(loc, count, v.data());
-          break;
+        case 1: glUniform1uiv(loc, count, v.data()); break;
+        case 2: glUniform2uiv(loc, count, v.data()); break;
+        case 3: glUniform3uiv(loc, count, v.data()); break;
+        default: glUniform4uiv(loc, count, v.data()); break;
       }
       break;
     }
@@ -337,8 +267,7 @@ char integer_format(GLenum f) {
     case GL_RGB32I:
     case GL_RGBA8I:
     case GL_RGBA16I:
-    case GL_RGBA32I:
-      return 'i';
+    case GL_RGBA32I: return 'i';
     case GL_R8UI:
     case GL_R16UI:
     case GL_R32UI:
@@ -351,36 +280,24 @@ char integer_format(GLenum f) {
     case GL_RGBA8UI:
     case GL_RGBA16UI:
     case GL_RGBA32UI:
-    case GL_RGB10_A2UI:
-      return 'u';
-    default:
-      return 0;
+    case GL_RGB10_A2UI: return 'u';
+    default: return 0;
   }
 }
 
 // A matrix attribute type as columns x rows; {1, 1} for anything else.
 std::pair<int, int> attribute_matrix_shape(GLenum t) {
   switch (t) {
-    case GL_FLOAT_MAT2:
-      return {2, 2};
-    case GL_FLOAT_MAT3:
-      return {3, 3};
-    case GL_FLOAT_MAT4:
-      return {4, 4};
-    case GL_FLOAT_MAT2x3:
-      return {2, 3};
-    case GL_FLOAT_MAT2x4:
-      return {2, 4};
-    case GL_FLOAT_MAT3x2:
-      return {3, 2};
-    case GL_FLOAT_MAT3x4:
-      return {3, 4};
-    case GL_FLOAT_MAT4x2:
-      return {4, 2};
-    case GL_FLOAT_MAT4x3:
-      return {4, 3};
-    default:
-      return {1, 1};
+    case GL_FLOAT_MAT2: return {2, 2};
+    case GL_FLOAT_MAT3: return {3, 3};
+    case GL_FLOAT_MAT4: return {4, 4};
+    case GL_FLOAT_MAT2x3: return {2, 3};
+    case GL_FLOAT_MAT2x4: return {2, 4};
+    case GL_FLOAT_MAT3x2: return {3, 2};
+    case GL_FLOAT_MAT3x4: return {3, 4};
+    case GL_FLOAT_MAT4x2: return {4, 2};
+    case GL_FLOAT_MAT4x3: return {4, 3};
+    default: return {1, 1};
   }
 }
 
@@ -714,27 +631,15 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
     }
     size_t texels = 0;
     switch (t.target) {
-      case GL_TEXTURE_1D:
-        texels = size_t(t.width);
-        break;
+      case GL_TEXTURE_1D: texels = size_t(t.width); break;
       case GL_TEXTURE_2D:
       case GL_TEXTURE_RECTANGLE:
-      case GL_TEXTURE_1D_ARRAY:
-        texels = size_t(t.width) * size_t(t.height);
-        break;
+      case GL_TEXTURE_1D_ARRAY: texels = size_t(t.width) * size_t(t.height); break;
       case GL_TEXTURE_3D:
-      case GL_TEXTURE_2D_ARRAY:
-        texels = size_t(t.width) * size_t(t.height) * size_t(t.depth);
-        break;
-      case GL_TEXTURE_CUBE_MAP:
-        texels = size_t(t.width) * size_t(t.height) * 6;
-        break;
-      case GL_TEXTURE_BUFFER:
-        texels = size_t(t.width);
-        break;
-      default:
-        problems.add(tname + "unsupported target " + hex(t.target));
-        continue;
+      case GL_TEXTURE_2D_ARRAY: texels = size_t(t.width) * size_t(t.height) * size_t(t.depth); break;
+      case GL_TEXTURE_CUBE_MAP: texels = size_t(t.width) * size_t(t.height) * 6; break;
+      case GL_TEXTURE_BUFFER: texels = size_t(t.width); break;
+      default: problems.add(tname + "unsupported target " + hex(t.target)); continue;
     }
     const bool depth_fmt = is_depth_format(t.internal_format);
     const char int_fmt = integer_format(t.internal_format);
@@ -771,9 +676,7 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
     glBindTexture(t.target, tex);
     const GLint ifmt = GLint(t.internal_format);
     switch (t.target) {
-      case GL_TEXTURE_1D:
-        glTexImage1D(t.target, 0, ifmt, t.width, 0, format, type, pixels);
-        break;
+      case GL_TEXTURE_1D: glTexImage1D(t.target, 0, ifmt, t.width, 0, format, type, pixels); break;
       case GL_TEXTURE_2D:
       case GL_TEXTURE_RECTANGLE:
       case GL_TEXTURE_1D_ARRAY:

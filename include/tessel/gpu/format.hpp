@@ -35,22 +35,14 @@ struct FormatInfo {
 
 constexpr FormatInfo format_info(Format f) {
   switch (f) {
-    case Format::RGBA8:
-      return {"RGBA8", 4, 4, false, false};
-    case Format::R8:
-      return {"R8", 1, 1, false, false};
-    case Format::RG8:
-      return {"RG8", 2, 2, false, false};
-    case Format::RGBA16F:
-      return {"RGBA16F", 8, 4, false, false};
-    case Format::RGBA32F:
-      return {"RGBA32F", 16, 4, false, false};
-    case Format::Depth24:
-      return {"DEPTH24", 4, 1, true, false};
-    case Format::Depth32F:
-      return {"DEPTH32F", 4, 1, true, false};
-    case Format::Depth24Stencil8:
-      return {"DEPTH24_STENCIL8", 4, 1, true, true};
+    case Format::RGBA8: return {"RGBA8", 4, 4, false, false};
+    case Format::R8: return {"R8", 1, 1, false, false};
+    case Format::RG8: return {"RG8", 2, 2, false, false};
+    case Format::RGBA16F: return {"RGBA16F", 8, 4, false, false};
+    case Format::RGBA32F: return {"RGBA32F", 16, 4, false, false};
+    case Format::Depth24: return {"DEPTH24", 4, 1, true, false};
+    case Format::Depth32F: return {"DEPTH32F", 4, 1, true, false};
+    case Format::Depth24Stencil8: return {"DEPTH24_STENCIL8", 4, 1, true, true};
   }
   return {"?", 0, 0, false, false};
 }

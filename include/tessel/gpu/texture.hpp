@@ -44,22 +44,14 @@ enum class CompareFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEq
 template <class T, class R = decltype(T() < T())>
 __attribute__((always_inline)) constexpr R compare(CompareFunc f, T a, T b) {
   switch (f) {
-    case CompareFunc::Never:
-      return R(false);
-    case CompareFunc::Less:
-      return a < b;
-    case CompareFunc::Equal:
-      return a == b;
-    case CompareFunc::LessEqual:
-      return a <= b;
-    case CompareFunc::Greater:
-      return a > b;
-    case CompareFunc::NotEqual:
-      return a != b;
-    case CompareFunc::GreaterEqual:
-      return a >= b;
-    case CompareFunc::Always:
-      return R(true);
+    case CompareFunc::Never: return R(false);
+    case CompareFunc::Less: return a < b;
+    case CompareFunc::Equal: return a == b;
+    case CompareFunc::LessEqual: return a <= b;
+    case CompareFunc::Greater: return a > b;
+    case CompareFunc::NotEqual: return a != b;
+    case CompareFunc::GreaterEqual: return a >= b;
+    case CompareFunc::Always: return R(true);
   }
   return R(false);
 }

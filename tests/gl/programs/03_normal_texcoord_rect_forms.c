@@ -181,30 +181,14 @@ static void rect(int kind, int x1, int y1, int x2, int y2) {
   GLfloat f1[2] = {(GLfloat)x1, (GLfloat)y1}, f2[2] = {(GLfloat)x2, (GLfloat)y2};
   GLdouble d1[2] = {x1, y1}, d2[2] = {x2, y2};
   switch (kind) {
-    case 0:
-      glRects(s1[0], s1[1], s2[0], s2[1]);
-      break;
-    case 1:
-      glRecti(x1, y1, x2, y2);
-      break;
-    case 2:
-      glRectf(f1[0], f1[1], f2[0], f2[1]);
-      break;
-    case 3:
-      glRectd(d1[0], d1[1], d2[0], d2[1]);
-      break;
-    case 4:
-      glRectsv(s1, s2);
-      break;
-    case 5:
-      glRectiv(i1, i2);
-      break;
-    case 6:
-      glRectfv(f1, f2);
-      break;
-    default:
-      glRectdv(d1, d2);
-      break;
+    case 0: glRects(s1[0], s1[1], s2[0], s2[1]); break;
+    case 1: glRecti(x1, y1, x2, y2); break;
+    case 2: glRectf(f1[0], f1[1], f2[0], f2[1]); break;
+    case 3: glRectd(d1[0], d1[1], d2[0], d2[1]); break;
+    case 4: glRectsv(s1, s2); break;
+    case 5: glRectiv(i1, i2); break;
+    case 6: glRectfv(f1, f2); break;
+    default: glRectdv(d1, d2); break;
   }
 }
 

@@ -92,12 +92,8 @@ static void display(void) {
     reset_material();
     glLightModelfv(GL_LIGHT_MODEL_AMBIENT, i == 0 ? strong_ambient : low_ambient);
     switch (i) {
-      case 0:
-        set4(GL_FRONT, GL_AMBIENT, 0.9f, 0.3f, 0.2f);
-        break;
-      case 1:
-        set4(GL_FRONT, GL_DIFFUSE, 0.2f, 0.8f, 0.3f);
-        break;
+      case 0: set4(GL_FRONT, GL_AMBIENT, 0.9f, 0.3f, 0.2f); break;
+      case 1: set4(GL_FRONT, GL_DIFFUSE, 0.2f, 0.8f, 0.3f); break;
       case 2:
         set4(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, 0.2f, 0.3f, 0.8f);
         set4(GL_FRONT, GL_SPECULAR, 1, 1, 1);

@@ -110,8 +110,7 @@ static void display(void) {
         glEnable(GL_CULL_FACE);
         glCullFace(GL_BACK);
         break;
-      default:
-        break;
+      default: break;
     }
     glPushMatrix();
     glTranslatef(-0.4f, 0, 0.3f);
