@@ -1409,7 +1409,18 @@ class Lowerer {
 
   Val aggregate(TIntermAggregate* a) {
     const auto op = a->getOp();
-    if (op == glslang::EOpFunctionCall) return call(a);
+    if (op == glslang::EOpFunctionCall) {
+      // GLSL 1.40's inverse(), which front.cpp declares for glslang: the built-in.
+      if (in_.getVersion() == 140 && a->getSequence().size() == 1) {
+        const std::string name = a->getName().c_str();
+        const int n = name == "inverse(mf22;"   ? 2
+                      : name == "inverse(mf33;" ? 3
+                      : name == "inverse(mf44;" ? 4
+                                                : 0;
+        if (n) return inverse(value(a->getSequence()[0]->getAsTyped()), n);
+      }
+      return call(a);
+    }
     if (op == glslang::EOpSequence || op == glslang::EOpComma) {
       Val last;
       for (TIntermNode* n : a->getSequence()) {
