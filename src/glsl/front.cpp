@@ -6,7 +6,6 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdint>
 #include <exception>
 #include <mutex>
@@ -25,37 +24,6 @@ void init_glslang() {
   std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
-// The number of the source's #version directive (110 without one, as GLSL says); comments
-// and blank lines may come before it.
-int version_of(const std::string& source) {
-  size_t i = 0;
-  while (i < source.size()) {
-    if (std::isspace(static_cast<unsigned char>(source[i]))) {
-      ++i;
-    } else if (source.compare(i, 2, "//") == 0) {
-      i = source.find('\n', i);
-      if (i == std::string::npos) return 110;
-    } else if (source.compare(i, 2, "/*") == 0) {
-      i = source.find("*/", i + 2);
-      if (i == std::string::npos) return 110;
-      i += 2;
-    } else {
-      break;
-    }
-  }
-  if (source.compare(i, 1, "#") != 0) return 110;
-  ++i;
-  while (i < source.size() && (source[i] == ' ' || source[i] == '\t')) ++i;
-  if (source.compare(i, 7, "version") != 0) return 110;
-  i += 7;
-  while (i < source.size() && (source[i] == ' ' || source[i] == '\t')) ++i;
-  int v = 0;
-  for (int digits = 0; i < source.size() && std::isdigit(static_cast<unsigned char>(source[i])) && digits < 4;
-       ++i, ++digits)
-    v = v * 10 + (source[i] - '0');
-  return v ? v : 110;
-}
-
 // Parses one stage at its #version (1.10 without one); the shader object must outlive any
 // program that links it.
 bool parse(glslang::TShader& sh, const std::string& source, std::string& log) {
@@ -67,19 +35,15 @@ bool parse(glslang::TShader& sh, const std::string& source, std::string& log) {
   // given as that expression it lowers to the same operations as the product written out.
   // (In a core shader gl_Vertex is not declared, and the compile fails there.)
   // inverse() is a GLSL 1.40 built-in (section 8.5) that glslang's 1.40 symbol table lacks:
-  // for #version 140 it is declared here, and the lowering takes calls to these three as
-  // the built-in (lower.cpp, kInverse140).
-  static const std::string vertex_preamble =
-      "#define ftransform() (gl_ModelViewProjectionMatrix * gl_Vertex)\n";
-  static const std::string inverse_140 =
-      "mat2 inverse(mat2 m) { return m; }\nmat3 inverse(mat3 m) { return m; }\nmat4 inverse(mat4 m) { return "
-      "m; }\n";
-  static const std::string both = vertex_preamble + inverse_140;
-  const bool v140 = version_of(source) == 140;
-  if (sh.getStage() == EShLangVertex)
-    sh.setPreamble(v140 ? both.c_str() : vertex_preamble.c_str());
-  else if (v140)
-    sh.setPreamble(inverse_140.c_str());
+  // a 1.40 shader gets it declared here (glslang takes the version from the shader, not the
+  // preamble, so __VERSION__ is the shader's), and the lowering takes calls to these three
+  // as the built-in (lower.cpp).
+  static const std::string kInverse140 =
+      "#if __VERSION__ == 140\nmat2 inverse(mat2 m) { return m; }\nmat3 inverse(mat3 m) { return m; }\n"
+      "mat4 inverse(mat4 m) { return m; }\n#endif\n";
+  static const std::string kVertex =
+      "#define ftransform() (gl_ModelViewProjectionMatrix * gl_Vertex)\n" + kInverse140;
+  sh.setPreamble((sh.getStage() == EShLangVertex ? kVertex : kInverse140).c_str());
   const bool ok = sh.parse(GetDefaultResources(), 110, ENoProfile, false, false, EShMsgDefault);
   log = sh.getInfoLog();
   return ok;

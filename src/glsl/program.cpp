@@ -166,17 +166,6 @@ int locations_of(const Interface& f) {
   return per * std::max(1, f.array_size);
 }
 
-int builtin_attribute_location(const std::string& name) {
-  if (name == "gl_Vertex") return kLocationVertex;
-  if (name == "gl_Normal") return kLocationNormal;
-  if (name == "gl_Color") return kLocationColor;
-  if (name == "gl_SecondaryColor") return kLocationSecondaryColor;
-  if (name == "gl_FogCoord") return kLocationFogCoord;
-  if (name.rfind("gl_MultiTexCoord", 0) == 0 && name.size() == 17)
-    return kLocationMultiTexCoord0 + (name[16] - '0');
-  return -1;
-}
-
 // The vertex output a fragment input reads (GL matches by name; the compatibility colours
 // pair front colours with gl_Color).
 std::string vertex_name_for(const std::string& fs_name) {
@@ -194,6 +183,17 @@ uint32_t offset_of(M T::*member) {
 
 Program::Program() : impl_(std::make_unique<Impl>()) {}
 Program::~Program() = default;
+
+int builtin_attribute_location(std::string_view name) {
+  if (name == "gl_Vertex") return kLocationVertex;
+  if (name == "gl_Normal") return kLocationNormal;
+  if (name == "gl_Color") return kLocationColor;
+  if (name == "gl_SecondaryColor") return kLocationSecondaryColor;
+  if (name == "gl_FogCoord") return kLocationFogCoord;
+  if (name.rfind("gl_MultiTexCoord", 0) == 0 && name.size() == 17)
+    return kLocationMultiTexCoord0 + (name[16] - '0');
+  return -1;
+}
 
 std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragment,
                                        const LinkOptions& options) {

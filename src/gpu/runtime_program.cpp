@@ -37,9 +37,7 @@ struct RuntimeBridge {
   static constexpr bool writes_depth = !Packed;
   static constexpr bool lanes_independent = Packed;
   static constexpr int outputs = Packed ? 1 : kMaxColorAttachments;
-  static ScopedDenormalFlush float_mode(const Uniforms& u) {
-    return ScopedDenormalFlush(u->shape().flush_denormals);
-  }
+  ScopedDenormalFlush float_mode() const { return ScopedDenormalFlush(shape_.flush_denormals); }
 
   template <class F>
   Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
@@ -67,19 +65,12 @@ struct RuntimeBridge {
                    F::load(lanes.position[3]));
   }
 
-  // The lane rows the fragment stage reads and writes on this thread. The raster loop stores
-  // the interpolated varyings straight into them and calls fragment_stored.
+  // The lane rows the fragment stage reads and writes on this thread. The raster loop
+  // (detail/raster.hpp) stores the interpolated varyings straight into them and calls
+  // fragment_stored: a run-time shader has no fragment() taking a Varyings struct.
   static FragmentLanes& fragment_lanes() {
     thread_local FragmentLanes lanes;
     return lanes;
-  }
-  template <class F>
-  void fragment(const Uniforms& u, const Varyings<F>& in, Fragment<F>& f) const {
-    if constexpr (K > 0) {
-      FragmentLanes& lanes = fragment_lanes();
-      for (int k = 0; k < K; ++k) in.v[k].store(lanes.varyings[k]);
-    }
-    fragment_stored(u, f);
   }
   template <class F>
   void fragment_stored(const Uniforms& u, Fragment<F>& f) const {

@@ -96,6 +96,14 @@ float cubeVisibility(vec3 p) {
   return sum / float((2 * pcf + 1) * (2 * pcf + 1));
 }
 
+// The texture (when there is one) multiplies the ambient and diffuse part; the specular part
+// is added after it, as GL's separate specular colour.
+vec4 surfaceColor(vec3 ambientDiffuse, vec3 specular, vec2 uv) {
+  vec3 c = ambientDiffuse;
+  if (textured) c *= texture(tex, uv).xyz;
+  return vec4(c + specular, 1.0);
+}
+
 // colour = emission + sum over lights of ka La + (kd cos(theta) + ks cos(delta)^shininess) Le
 void illuminate(vec3 p, vec3 N, float visibility, out vec3 ambientDiffuse, out vec3 specular) {
   vec3 V = normalize(wEye - p);
@@ -155,9 +163,7 @@ void main() {
   float visibility = shadowLight < 0 ? 1.0 : cubeShadow ? cubeVisibility(wPos) : shadowVisibility(wPos);
   vec3 ambientDiffuse, specular;
   illuminate(wPos, normalize(wNormal), visibility, ambientDiffuse, specular);
-  vec3 c = ambientDiffuse;
-  if (textured) c *= texture(tex, uv).xyz;
-  fragmentColor = vec4(c + specular, 1.0);
+  fragmentColor = surfaceColor(ambientDiffuse, specular, uv);
 }
 )";
 
@@ -179,9 +185,7 @@ in vec3 ambientDiffuse, specular;
 in vec2 uv;
 out vec4 fragmentColor;
 void main() {
-  vec3 c = ambientDiffuse;
-  if (textured) c *= texture(tex, uv).xyz;
-  fragmentColor = vec4(c + specular, 1.0);
+  fragmentColor = surfaceColor(ambientDiffuse, specular, uv);
 }
 )";
 
@@ -210,9 +214,7 @@ void main() {
   }
   vec3 ambientDiffuse, specular;
   illuminate(wPos, N, 1.0, ambientDiffuse, specular);
-  vec3 c = ambientDiffuse;
-  if (textured) c *= texture(tex, uv).xyz;
-  fragmentColor = vec4(c + specular, 1.0);
+  fragmentColor = surfaceColor(ambientDiffuse, specular, uv);
 }
 )";
 

@@ -66,18 +66,7 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
     int loc = prog->attribute_location(a.name);
     // The compatibility built-ins are not active attributes (GL reports -1 for them too);
     // they have fixed locations, as the GL layer feeds them from glVertexPointer & co.
-    if (a.name == "gl_Vertex")
-      loc = glsl::kLocationVertex;
-    else if (a.name == "gl_Normal")
-      loc = glsl::kLocationNormal;
-    else if (a.name == "gl_Color")
-      loc = glsl::kLocationColor;
-    else if (a.name == "gl_SecondaryColor")
-      loc = glsl::kLocationSecondaryColor;
-    else if (a.name == "gl_FogCoord")
-      loc = glsl::kLocationFogCoord;
-    else if (a.name.rfind("gl_MultiTexCoord", 0) == 0 && a.name.size() == 17)
-      loc = glsl::kLocationMultiTexCoord0 + (a.name[16] - '0');
+    if (loc < 0) loc = glsl::builtin_attribute_location(a.name);
     if (loc < 0) continue;
     if (a.integer) {
       buffers.push_back(std::make_unique<gpu::Buffer>(a.idata.data(), a.idata.size() * 4));

@@ -100,6 +100,10 @@ struct UniformBlock {
 // Fixed attribute locations of the compatibility attributes (as NVIDIA aliases them).
 inline constexpr int kLocationVertex = 0, kLocationNormal = 2, kLocationColor = 3,
                      kLocationSecondaryColor = 4, kLocationFogCoord = 5, kLocationMultiTexCoord0 = 8;
+// The fixed location of the compatibility attribute `name` ("gl_Vertex", "gl_Normal",
+// "gl_Color", "gl_SecondaryColor", "gl_FogCoord", "gl_MultiTexCoord0".."7"); -1 for any other
+// name. They are not active attributes (attribute_location gives -1 for them, as GL does).
+int builtin_attribute_location(std::string_view name);
 
 class Program {
  public:

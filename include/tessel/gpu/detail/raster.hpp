@@ -21,7 +21,7 @@ class Program final : public ProgramBase {
   struct NoMode {};
   auto float_mode() const {
     if constexpr (shader_runtime<S>())
-      return S::float_mode(uniforms_);
+      return shader_.float_mode();
     else
       return NoMode{};
   }
