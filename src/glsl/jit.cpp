@@ -37,7 +37,7 @@ namespace {
 using ir::Inst;
 using ir::Op;
 using ir::Reg;
-constexpr int L = ir::kLanes;
+constexpr int L = ir::kLanes;  // lanes of the lane structures and of the library calls
 
 // The compiled code names a texture instruction by its index (no address of this process is
 // baked into it, so that it can be cached on disk and loaded by another process).
@@ -57,59 +57,73 @@ void init_llvm() {
   });
 }
 
+// Generates one stage as a function over W lanes: W = 16 (StageFn) reads and writes one lane
+// structure; W = 32 (PairFn) runs two lane structures as one 32-lane vector, so that the two
+// halves' long dependency chains (square roots, divisions, polynomials) interleave. The
+// operations are the same per lane, so the lanes get the same bits either way; the library
+// calls (texture, lane_math) take sixteen lanes and are made once per half.
 class Codegen {
  public:
-  Codegen(llvm::LLVMContext& ctx, llvm::Module& m, const ir::Stage& st, const StageIO& io)
-      : c_(ctx), m_(m), st_(st), io_(io), b_(ctx) {
+  Codegen(llvm::LLVMContext& ctx, llvm::Module& m, const ir::Stage& st, const StageIO& io, int width = L)
+      : c_(ctx), m_(m), st_(st), io_(io), b_(ctx), W(width) {
     i32_ = b_.getInt32Ty();
     f32_ = b_.getFloatTy();
-    vi_ = llvm::FixedVectorType::get(i32_, L);
-    vf_ = llvm::FixedVectorType::get(f32_, L);
-    vm_ = llvm::FixedVectorType::get(b_.getInt1Ty(), L);
+    vi_ = llvm::FixedVectorType::get(i32_, W);
+    vf_ = llvm::FixedVectorType::get(f32_, W);
+    vm_ = llvm::FixedVectorType::get(b_.getInt1Ty(), W);
+    vi16_ = llvm::FixedVectorType::get(i32_, L);
     ptr_ = llvm::PointerType::getUnqual(ctx);
+    iw_ = b_.getIntNTy(unsigned(W));
   }
 
   llvm::Function* build(const std::string& name) {
-    auto* fty = llvm::FunctionType::get(i32_, {ptr_, ptr_, i32_, ptr_, i32_}, false);
+    // StageFn (lanes, uniforms, words, inputs, mask) or PairFn (lanes, lanes_b, uniforms,
+    // words, inputs).
+    llvm::FunctionType* fty = W == L ? llvm::FunctionType::get(i32_, {ptr_, ptr_, i32_, ptr_, i32_}, false)
+                                     : llvm::FunctionType::get(i32_, {ptr_, ptr_, ptr_, i32_, ptr_}, false);
     fn_ = llvm::Function::Create(fty, llvm::Function::ExternalLinkage, name, m_);
     // The code runs with denormals flushed (program.cpp): LLVM must not fold as if not.
     fn_->addFnAttr("denormal-fp-math", "preserve-sign,preserve-sign");
     auto args = fn_->arg_begin();
     lanes_ = &*args++;
+    if (W != L) lanes_b_ = &*args++;
     uniforms_ = &*args++;
     words_ = &*args++;
     rin_ = &*args++;
-    llvm::Value* mask_arg = &*args++;
     entry_ = llvm::BasicBlock::Create(c_, "entry", fn_);
     b_.SetInsertPoint(entry_);
     plan_registers();
     // Constants, uniforms (broadcast), variables zeroed, inputs copied in.
     for (const auto& [r, bits] : st_.constants) store(r, splat(bits));
-    for (const auto& [r, w] : st_.uniforms) store(r, b_.CreateVectorSplat(L, uniform_word(b_.getInt32(w))));
+    for (const auto& [r, w] : st_.uniforms) store(r, b_.CreateVectorSplat(W, uniform_word(b_.getInt32(w))));
     for (const auto& [r, n] : st_.variables)
       for (uint32_t k = 0; k < n; ++k) store(r + k, llvm::Constant::getNullValue(vi_));
-    for (const auto& [r, off] : io_.in)
-      store(r, b_.CreateAlignedLoad(vi_, byte_ptr(lanes_, off), llvm::MaybeAlign(4)));
+    for (const auto& [r, off] : io_.in) store(r, load_row(off));
     for (const auto& [r, off] : io_.in_mask) {
       llvm::Value* bits = b_.CreateLoad(i32_, byte_ptr(lanes_, off));
+      if (W != L) {
+        // Sixteen bits from each structure: lanes 0-15 from the first, 16-31 from the second.
+        llvm::Value* hi = b_.CreateLoad(i32_, byte_ptr(lanes_b_, off));
+        bits = b_.CreateOr(b_.CreateAnd(bits, b_.getInt32(0xFFFF)), b_.CreateShl(hi, b_.getInt32(16)));
+      }
       store(r, b_.CreateSExt(to_mask(bits), vi_));
     }
-    budget_ = slot(i32_, "budget");
-    b_.CreateStore(b_.getInt32(0), budget_);
+    for (int h = 0; h < W / L; ++h) {
+      budget_[h] = slot(i32_, "budget");
+      b_.CreateStore(b_.getInt32(0), budget_[h]);
+    }
     ret_ = slot(vm_, "ret");
     brk_ = slot(vm_, "brk");
     cont_ = slot(vm_, "cont");
     kill_ = slot(vm_, "kill");
     for (llvm::Value* s : {ret_, brk_, cont_, kill_}) b_.CreateStore(llvm::Constant::getNullValue(vm_), s);
-    // The pipeline always runs all sixteen lanes (the ones it does not need are helpers for
+    // The pipeline always runs all the lanes (the ones it does not need are helpers for
     // derivatives or repeat a vertex): with the entry mask a constant, LLVM drops the selects
     // of stores outside control flow.
-    (void)mask_arg;
     block(st_.body, llvm::Constant::getAllOnesValue(vm_));
-    for (const auto& [r, off] : io_.out)
-      b_.CreateAlignedStore(load(r), byte_ptr(lanes_, off), llvm::MaybeAlign(4));
-    llvm::Value* killed = b_.CreateLoad(vm_, kill_);
-    b_.CreateRet(b_.CreateZExt(b_.CreateBitCast(killed, b_.getInt16Ty()), i32_));
+    for (const auto& [r, off] : io_.out) store_row(off, load(r));
+    llvm::Value* killed = b_.CreateBitCast(b_.CreateLoad(vm_, kill_), iw_);
+    b_.CreateRet(W == 32 ? killed : b_.CreateZExt(killed, i32_));
     return fn_;
   }
 
@@ -119,13 +133,15 @@ class Codegen {
   const ir::Stage& st_;
   const StageIO& io_;
   llvm::IRBuilder<> b_;
-  llvm::Type *i32_, *f32_, *ptr_;
-  llvm::FixedVectorType *vi_, *vf_, *vm_;
+  const int W;  // lanes of every value
+  llvm::Type *i32_, *f32_, *ptr_, *iw_;
+  llvm::FixedVectorType *vi_, *vf_, *vm_, *vi16_;
   llvm::Function* fn_ = nullptr;
   llvm::BasicBlock* entry_ = nullptr;
   llvm::Value *lanes_, *uniforms_, *words_, *rin_;
+  llvm::Value* lanes_b_ = nullptr;  // the second lane structure (W = 32)
   llvm::Value *ret_, *brk_, *cont_, *kill_;
-  llvm::Value* budget_ = nullptr;  // loop iterations run so far (ir::kMaxTotalLoopIterations)
+  llvm::Value* budget_[2] = {};  // loop iterations run so far per half (ir::kMaxTotalLoopIterations)
   // Where each register lives: its own slot, or an element of an indexed array.
   struct Home {
     llvm::Value* base = nullptr;  // alloca
@@ -145,16 +161,42 @@ class Codegen {
     return b_.CreateGEP(b_.getInt8Ty(), base, b_.getInt64(off));
   }
   llvm::Value* splat(uint32_t bits) {
-    return llvm::ConstantVector::getSplat(llvm::ElementCount::getFixed(L), b_.getInt32(bits));
+    return llvm::ConstantVector::getSplat(llvm::ElementCount::getFixed(W), b_.getInt32(bits));
   }
   llvm::Value* splatf(float x) {
-    return llvm::ConstantVector::getSplat(llvm::ElementCount::getFixed(L), llvm::ConstantFP::get(f32_, x));
+    return llvm::ConstantVector::getSplat(llvm::ElementCount::getFixed(W), llvm::ConstantFP::get(f32_, x));
   }
   llvm::Value* to_mask(llvm::Value* bits32) {
+    if (W == 32) return b_.CreateBitCast(bits32, vm_);
     return b_.CreateBitCast(b_.CreateTrunc(bits32, b_.getInt16Ty()), vm_);
   }
   llvm::Value* any(llvm::Value* m) {
-    return b_.CreateICmpNE(b_.CreateBitCast(m, b_.getInt16Ty()), b_.getInt16(0));
+    return b_.CreateICmpNE(b_.CreateBitCast(m, iw_), llvm::ConstantInt::get(iw_, 0));
+  }
+  // Sixteen lanes of a W-lane value (half h), and a W-lane value from sixteen-lane halves.
+  llvm::Value* half(llvm::Value* v, int h) {
+    if (W == L) return v;
+    llvm::SmallVector<int, 16> idx;
+    for (int l = 0; l < L; ++l) idx.push_back(h * L + l);
+    return b_.CreateShuffleVector(v, idx);
+  }
+  llvm::Value* any_half(llvm::Value* m, int h) {
+    return b_.CreateICmpNE(b_.CreateBitCast(half(m, h), b_.getInt16Ty()), b_.getInt16(0));
+  }
+  llvm::Value* join(llvm::Value* lo, llvm::Value* hi) {
+    llvm::SmallVector<int, 32> idx;
+    for (int l = 0; l < 2 * L; ++l) idx.push_back(l);
+    return b_.CreateShuffleVector(lo, hi, idx);
+  }
+  // A row of the lane structure(s) at byte offset `off`, and a store of one.
+  llvm::Value* load_row(uint32_t off) {
+    llvm::Value* a = b_.CreateAlignedLoad(vi16_, byte_ptr(lanes_, off), llvm::MaybeAlign(4));
+    if (W == L) return a;
+    return join(a, b_.CreateAlignedLoad(vi16_, byte_ptr(lanes_b_, off), llvm::MaybeAlign(4)));
+  }
+  void store_row(uint32_t off, llvm::Value* v) {
+    b_.CreateAlignedStore(half(v, 0), byte_ptr(lanes_, off), llvm::MaybeAlign(4));
+    if (W != L) b_.CreateAlignedStore(half(v, 1), byte_ptr(lanes_b_, off), llvm::MaybeAlign(4));
   }
 
   // Registers read by LoadIndexed or written by StoreIndexed are grouped into arrays: the
@@ -283,8 +325,14 @@ class Codegen {
         llvm::Value* saved_brk = b_.CreateLoad(vm_, brk_);
         llvm::Value* saved_cont = b_.CreateLoad(vm_, cont_);
         b_.CreateStore(llvm::Constant::getNullValue(vm_), brk_);
-        llvm::Value* iter = slot(i32_, "iter");
-        b_.CreateStore(b_.getInt32(0), iter);
+        // Iterations are counted per half (W = 32): each half is cut where it would be cut
+        // running alone, so both widths give the same lanes.
+        const int H = W / L;
+        llvm::Value* iter[2] = {};
+        for (int h = 0; h < H; ++h) {
+          iter[h] = slot(i32_, "iter");
+          b_.CreateStore(b_.getInt32(0), iter[h]);
+        }
         llvm::BasicBlock* head = llvm::BasicBlock::Create(c_, "loop", fn_);
         llvm::BasicBlock* body = llvm::BasicBlock::Create(c_, "body", fn_);
         llvm::BasicBlock* step = llvm::BasicBlock::Create(c_, "step", fn_);
@@ -293,22 +341,31 @@ class Codegen {
         b_.CreateBr(head);
         b_.SetInsertPoint(head);
         b_.CreateStore(llvm::Constant::getNullValue(vm_), cont_);
-        llvm::Value* in = in_loop(live);
-        llvm::Value* more = b_.CreateAnd(
-            b_.CreateICmpSLT(b_.CreateLoad(i32_, iter), b_.getInt32(ir::kMaxLoopIterations)),
-            b_.CreateICmpULT(b_.CreateLoad(i32_, budget_), b_.getInt32(ir::kMaxTotalLoopIterations)));
-        b_.CreateCondBr(b_.CreateAnd(more, any(in)), body, exit);
+        llvm::Value* more[2] = {};
+        for (int h = 0; h < H; ++h)
+          more[h] = b_.CreateAnd(
+              b_.CreateICmpSLT(b_.CreateLoad(i32_, iter[h]), b_.getInt32(ir::kMaxLoopIterations)),
+              b_.CreateICmpULT(b_.CreateLoad(i32_, budget_[h]), b_.getInt32(ir::kMaxTotalLoopIterations)));
+        llvm::Value* allow = H == 1
+                                 ? b_.CreateVectorSplat(W, more[0])
+                                 : join(b_.CreateVectorSplat(L, more[0]), b_.CreateVectorSplat(L, more[1]));
+        llvm::Value* in = b_.CreateAnd(in_loop(live), allow);
+        b_.CreateCondBr(any(in), body, exit);
         b_.SetInsertPoint(body);
         block(n.a, in);
         b_.CreateBr(step);
         b_.SetInsertPoint(step);
         b_.CreateStore(llvm::Constant::getNullValue(vm_), cont_);
-        llvm::Value* in2 = in_loop(live);
+        llvm::Value* in2 = b_.CreateAnd(in_loop(live), allow);
         b_.CreateCondBr(any(in2), step_run, exit);
         b_.SetInsertPoint(step_run);
         block(n.b, in2);
-        b_.CreateStore(b_.CreateAdd(b_.CreateLoad(i32_, iter), b_.getInt32(1)), iter);
-        b_.CreateStore(b_.CreateAdd(b_.CreateLoad(i32_, budget_), b_.getInt32(1)), budget_);
+        for (int h = 0; h < H; ++h) {
+          // A half counts the iterations it takes part in.
+          llvm::Value* inc = H == 1 ? b_.getInt32(1) : b_.CreateZExt(any_half(in2, h), i32_);
+          b_.CreateStore(b_.CreateAdd(b_.CreateLoad(i32_, iter[h]), inc), iter[h]);
+          b_.CreateStore(b_.CreateAdd(b_.CreateLoad(i32_, budget_[h]), inc), budget_[h]);
+        }
         b_.CreateBr(head);
         b_.SetInsertPoint(exit);
         b_.CreateStore(saved_brk, brk_);
@@ -337,45 +394,55 @@ class Codegen {
 
   // A library operation through the interpreter's own code (lane_math).
   void call_math(const Inst& i) {
-    if (!math_lanes_) math_lanes_ = slot(llvm::ArrayType::get(vi_, 5), "math");
+    if (!math_lanes_) math_lanes_ = slot(llvm::ArrayType::get(vi16_, 5), "math");
     auto row = [&](int k) {
-      return b_.CreateGEP(llvm::ArrayType::get(vi_, 5), math_lanes_, {b_.getInt32(0), b_.getInt32(k)});
+      return b_.CreateGEP(llvm::ArrayType::get(vi16_, 5), math_lanes_, {b_.getInt32(0), b_.getInt32(k)});
     };
-    b_.CreateStore(load(i.a), row(1));
-    b_.CreateStore(load(i.b), row(2));
-    b_.CreateStore(load(i.c), row(3));
-    b_.CreateStore(load(i.d), row(4));
     auto* fty = llvm::FunctionType::get(b_.getVoidTy(), {i32_, ptr_, ptr_, ptr_, ptr_, ptr_}, false);
     llvm::FunctionCallee f = m_.getOrInsertFunction("tessel_glsl_lane_math", fty);
-    b_.CreateCall(f, {b_.getInt32(uint32_t(i.op)), row(0), row(1), row(2), row(3), row(4)});
-    store(i.dst, b_.CreateLoad(vi_, row(0)));
+    llvm::Value* out[2] = {nullptr, nullptr};
+    for (int h = 0; h < W / L; ++h) {
+      b_.CreateStore(half(load(i.a), h), row(1));
+      b_.CreateStore(half(load(i.b), h), row(2));
+      b_.CreateStore(half(load(i.c), h), row(3));
+      b_.CreateStore(half(load(i.d), h), row(4));
+      b_.CreateCall(f, {b_.getInt32(uint32_t(i.op)), row(0), row(1), row(2), row(3), row(4)});
+      out[h] = b_.CreateLoad(vi16_, row(0));
+    }
+    store(i.dst, W == L ? out[0] : join(out[0], out[1]));
   }
 
   void texture(const Inst& i) {
     const ir::TexOp& t = st_.textures.at(i.imm);
-    auto* tl_ty = llvm::ArrayType::get(vi_, TexLanes::kRows + 4);
+    auto* tl_ty = llvm::ArrayType::get(vi16_, TexLanes::kRows + 4);
     if (!tex_lanes_) tex_lanes_ = slot(tl_ty, "tex");
     auto row = [&](int k) { return b_.CreateGEP(tl_ty, tex_lanes_, {b_.getInt32(0), b_.getInt32(k)}); };
-    auto put = [&](int k, Reg r) {
-      b_.CreateStore(r == ir::TexOp::kNone ? llvm::Constant::getNullValue(vi_) : load(r), row(k));
-    };
-    for (int k = 0; k < 5; ++k) put(TexLanes::kCoord + k, t.coord[k]);
-    put(TexLanes::kLod, t.lod);
-    for (int k = 0; k < 3; ++k) {
-      put(TexLanes::kDx + k, t.dx[k]);
-      put(TexLanes::kDy + k, t.dy[k]);
-      put(TexLanes::kOffset + k, t.offset_reg[k]);
-    }
     auto* fty = llvm::FunctionType::get(b_.getVoidTy(), {i32_, ptr_, ptr_}, false);
     llvm::FunctionCallee f = m_.getOrInsertFunction("tessel_glsl_texture", fty);
-    b_.CreateCall(f, {b_.getInt32(i.imm), rin_, tex_lanes_});
+    llvm::Value* out[4][2] = {};
+    for (int h = 0; h < W / L; ++h) {
+      auto put = [&](int k, Reg r) {
+        b_.CreateStore(r == ir::TexOp::kNone ? llvm::Constant::getNullValue(vi16_) : half(load(r), h),
+                       row(k));
+      };
+      for (int k = 0; k < 5; ++k) put(TexLanes::kCoord + k, t.coord[k]);
+      put(TexLanes::kLod, t.lod);
+      for (int k = 0; k < 3; ++k) {
+        put(TexLanes::kDx + k, t.dx[k]);
+        put(TexLanes::kDy + k, t.dy[k]);
+        put(TexLanes::kOffset + k, t.offset_reg[k]);
+      }
+      b_.CreateCall(f, {b_.getInt32(i.imm), rin_, tex_lanes_});
+      for (int k = 0; k < 4; ++k)
+        if (t.dst[k] != ir::TexOp::kNone) out[k][h] = b_.CreateLoad(vi16_, row(TexLanes::kRows + k));
+    }
     for (int k = 0; k < 4; ++k)
-      if (t.dst[k] != ir::TexOp::kNone) store(t.dst[k], b_.CreateLoad(vi_, row(TexLanes::kRows + k)));
+      if (t.dst[k] != ir::TexOp::kNone) store(t.dst[k], W == L ? out[k][0] : join(out[k][0], out[k][1]));
   }
 
   // Lane l of a register that lives in an indexed array, at element `index` (a scalar).
   llvm::Value* lane_ptr(const Home& h, llvm::Value* index, int l) {
-    llvm::Value* flat = b_.CreateAdd(b_.CreateMul(index, b_.getInt32(L)), b_.getInt32(l));
+    llvm::Value* flat = b_.CreateAdd(b_.CreateMul(index, b_.getInt32(W)), b_.getInt32(l));
     return b_.CreateGEP(i32_, h.base, flat);
   }
 
@@ -390,7 +457,7 @@ class Codegen {
       case Op::UniformIndexed: {
         llvm::Value* a = I(i.a);
         llvm::Value* r = zero;
-        for (int l = 0; l < L; ++l) {
+        for (int l = 0; l < W; ++l) {
           llvm::Value* w = b_.CreateAdd(b_.getInt32(i.imm), b_.CreateExtractElement(a, b_.getInt32(l)));
           r = b_.CreateInsertElement(r, uniform_word(w), b_.getInt32(l));
         }
@@ -401,7 +468,7 @@ class Codegen {
         const Home& h = homes_.at(i.b);
         llvm::Value* a = I(i.a);
         llvm::Value* r = zero;
-        for (int l = 0; l < L; ++l) {
+        for (int l = 0; l < W; ++l) {
           llvm::Value* e = b_.CreateAdd(b_.getInt32(i.b), b_.CreateExtractElement(a, b_.getInt32(l)));
           e = b_.CreateSelect(b_.CreateICmpULE(e, b_.getInt32(i.imm)), e, b_.getInt32(i.imm));
           e = b_.CreateSub(e, b_.getInt32(h.first));
@@ -414,7 +481,7 @@ class Codegen {
         const Home& h = homes_.at(i.dst);
         llvm::Value* a = I(i.a);
         llvm::Value* v = I(i.b);
-        for (int l = 0; l < L; ++l) {
+        for (int l = 0; l < W; ++l) {
           llvm::Value* e = b_.CreateAdd(b_.getInt32(i.dst), b_.CreateExtractElement(a, b_.getInt32(l)));
           e = b_.CreateSelect(b_.CreateICmpULE(e, b_.getInt32(i.imm)), e, b_.getInt32(i.imm));
           e = b_.CreateSub(e, b_.getInt32(h.first));
@@ -574,7 +641,7 @@ class Codegen {
       case Op::Ddy: {
         const int bit = i.op == Op::Ddx ? 1 : 2;
         llvm::SmallVector<int, 16> hi, lo;
-        for (int l = 0; l < L; ++l) {
+        for (int l = 0; l < W; ++l) {
           hi.push_back(l | bit);
           lo.push_back(l & ~bit);
         }
@@ -647,7 +714,7 @@ struct Hasher {
 // What a cached object was made for: the code generator's version, this format, the CPU.
 std::string host_id() {
   std::string id =
-      std::string("tessel-jit-3 llvm-") + LLVM_VERSION_STRING + " " + llvm::sys::getHostCPUName().str();
+      std::string("tessel-jit-4 llvm-") + LLVM_VERSION_STRING + " " + llvm::sys::getHostCPUName().str();
   llvm::StringMap<bool> features;
   if (llvm::sys::getHostCPUFeatures(features)) {
     std::vector<std::string> on;
@@ -729,7 +796,9 @@ class LlvmCode final : public JitCode {
  public:
   std::unique_ptr<llvm::orc::LLJIT> jit;
   StageFn fns[2] = {nullptr, nullptr};
+  PairFn pair = nullptr;
   StageFn function(int stage) const override { return fns[stage]; }
+  PairFn fragment_pair() const override { return pair; }
 };
 
 }  // namespace
@@ -763,13 +832,27 @@ bool find_functions(LlvmCode& code) {
     }
     code.fns[s] = sym->toPtr<StageFn>();
   }
+  auto sym = code.jit->lookup("fragment_pair");
+  if (!sym) {
+    llvm::consumeError(sym.takeError());
+    return false;
+  }
+  code.pair = sym->toPtr<PairFn>();
   return true;
 }
 
 }  // namespace
 
+JitEnvironment jit_environment() {
+  JitEnvironment env;
+  env.cache_dir = cache_dir();
+  const char* dump = std::getenv("TESSEL_GLSL_DUMP");
+  env.dump = dump && *dump == '1';
+  return env;
+}
+
 std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, const ir::Stage& fs,
-                                     const StageIO& fio, std::string* error) {
+                                     const StageIO& fio, const JitEnvironment& env, std::string* error) {
   init_llvm();
   auto fail = [&](const std::string& e) -> std::unique_ptr<JitCode> {
     if (error) *error = e;
@@ -780,7 +863,7 @@ std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, co
   jtmb->setCodeGenOptLevel(llvm::CodeGenOpt::Default);
 
   // The disk cache: the key covers the IR of both stages, their interfaces and the machine.
-  const std::string dir = cache_dir();
+  const std::string& dir = env.cache_dir;
   const std::string host = dir.empty() ? std::string() : host_id();
   std::string path;
   if (!dir.empty()) {
@@ -812,6 +895,7 @@ std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, co
   auto mod = std::make_unique<llvm::Module>("tessel_glsl", *ctx);
   Codegen(*ctx, *mod, vs, vio).build("vertex");
   Codegen(*ctx, *mod, fs, fio).build("fragment");
+  Codegen(*ctx, *mod, fs, fio, 2 * L).build("fragment_pair");
   std::string verify;
   llvm::raw_string_ostream vos(verify);
   if (llvm::verifyModule(*mod, &vos)) return fail("internal: invalid code: " + vos.str());
@@ -832,9 +916,7 @@ std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, co
     llvm::ModulePassManager mpm = pb.buildPerModuleDefaultPipeline(llvm::OptimizationLevel::O2);
     mpm.run(*mod, mam);
   }
-  // TESSEL_GLSL_DUMP=1 prints the optimized LLVM IR of each program on stderr.
-  if (const char* dump = std::getenv("TESSEL_GLSL_DUMP"); dump && *dump == '1')
-    mod->print(llvm::errs(), nullptr);
+  if (env.dump) mod->print(llvm::errs(), nullptr);
   auto jit = make_jit(*jtmb);
   if (!jit) return fail("cannot create the JIT: " + llvm::toString(jit.takeError()));
   auto code = std::make_unique<LlvmCode>();

@@ -28,11 +28,17 @@ struct StageIO {
 using StageFn = uint32_t (*)(void* lanes, const uint32_t* uniforms, uint32_t uniform_words,
                              const RunInputs* in, uint32_t mask);
 
+// Runs the fragment stage on two lane structures at once, as one 32-lane vector (the same
+// lanes as two StageFn calls); returns the lanes discarded, those of `b` in bits 16-31.
+using PairFn = uint32_t (*)(void* a, void* b, const uint32_t* uniforms, uint32_t uniform_words,
+                            const RunInputs* in);
+
 class JitCode {
  public:
   virtual ~JitCode() = default;
   virtual StageFn function(int stage) const = 0;  // 0 vertex, 1 fragment
-  bool from_cache = false;                        // loaded from the disk cache rather than compiled
+  virtual PairFn fragment_pair() const = 0;
+  bool from_cache = false;  // loaded from the disk cache rather than compiled
 };
 
 // Compiles both stages; nullptr (and *error) when LLVM cannot. Compiled code is kept in a disk
@@ -40,7 +46,16 @@ class JitCode {
 // $XDG_CACHE_HOME/tessel, else ~/.cache/tessel (TESSEL_SHADER_CACHE=0 turns it off). A file is
 // used only when its header, size, checksum and the machine it was made for all match.
 
+// What a compile takes from the environment, read by the thread that links (the compile may
+// run on another, and getenv is not safe beside a setenv): the cache folder ("" for none) and
+// TESSEL_GLSL_DUMP=1 (print the optimized LLVM IR on stderr).
+struct JitEnvironment {
+  std::string cache_dir;
+  bool dump = false;
+};
+JitEnvironment jit_environment();
+
 std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, const ir::Stage& fs,
-                                     const StageIO& fio, std::string* error);
+                                     const StageIO& fio, const JitEnvironment& env, std::string* error);
 
 }  // namespace tessel::glsl

@@ -8,6 +8,8 @@
 #include "tessel/glsl/program.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <condition_variable>
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
@@ -17,6 +19,7 @@
 #if defined(__SSE__) || defined(_M_X64)
 #endif
 
+#include "compile_queue.hpp"
 #include "front.hpp"
 #include "interp.hpp"
 #include "jit.hpp"
@@ -53,7 +56,34 @@ struct Linked {
   std::vector<std::pair<ir::Reg, int>> fs_out;  // register, byte offset (colour or depth rows)
   std::vector<ir::Reg> frag_color;              // gl_FragColor's four registers (written to every output)
   gpu::RuntimeShape shape;
-  std::unique_ptr<JitCode> jit;  // native code, when LLVM compiled it
+  StageIO vio, fio;    // what the native code's stages read and write
+  JitEnvironment env;  // read when the program was linked
+
+  // Native code, when LLVM compiled it: `jit` is written once, by the compile, before the
+  // entry points are published; draws read the entry points on every call, so a draw that
+  // started on the interpreter goes on in native code as soon as it is there.
+  std::unique_ptr<JitCode> jit;
+  std::atomic<StageFn> vs_fn{nullptr}, fs_fn{nullptr};
+  std::atomic<PairFn> pair_fn{nullptr};
+  std::mutex done_m;
+  std::condition_variable done_cv;
+  bool done = false;  // the compile has finished (or there is none), under done_m
+
+  void finish(std::unique_ptr<JitCode> code) {
+    if (code) {
+      jit = std::move(code);
+      vs_fn.store(jit->function(0), std::memory_order_release);
+      pair_fn.store(jit->fragment_pair(), std::memory_order_release);
+      fs_fn.store(jit->function(1), std::memory_order_release);
+    }
+    std::lock_guard lock(done_m);
+    done = true;
+    done_cv.notify_all();
+  }
+  void compile() {
+    std::string why;
+    finish(jit_compile(vs, vio, fs, fio, env, &why));
+  }
 };
 
 struct Program::Impl {
@@ -92,16 +122,12 @@ class Bound final : public gpu::RuntimeShader {
     // What every call passes, worked out once: the calls come per sixteen lanes.
     vs_in_ = inputs(false);
     fs_in_ = inputs(true);
-    if (l_->jit) {
-      vs_fn_ = l_->jit->function(0);
-      fs_fn_ = l_->jit->function(1);
-    }
   }
   const gpu::RuntimeShape& shape() const override { return l_->shape; }
 
   void vertex(gpu::VertexLanes& lanes) const override {
-    if (vs_fn_) {
-      vs_fn_(&lanes, vs_in_.uniforms, vs_in_.uniform_words, &vs_in_, 0xFFFFu);
+    if (const StageFn fn = l_->vs_fn.load(std::memory_order_acquire)) {
+      fn(&lanes, vs_in_.uniforms, vs_in_.uniform_words, &vs_in_, 0xFFFFu);
       return;
     }
     LaneReg* r = regs(l_->vs.registers);
@@ -113,8 +139,8 @@ class Bound final : public gpu::RuntimeShader {
   }
 
   void fragment(gpu::FragmentLanes& lanes) const override {
-    if (fs_fn_) {
-      lanes.killed = fs_fn_(&lanes, fs_in_.uniforms, fs_in_.uniform_words, &fs_in_, 0xFFFFu);
+    if (const StageFn fn = l_->fs_fn.load(std::memory_order_acquire)) {
+      lanes.killed = fn(&lanes, fs_in_.uniforms, fs_in_.uniform_words, &fs_in_, 0xFFFFu);
       return;
     }
     LaneReg* r = regs(l_->fs.registers);
@@ -132,12 +158,22 @@ class Bound final : public gpu::RuntimeShader {
     }
   }
 
+  void fragment_pair(gpu::FragmentLanes& a, gpu::FragmentLanes& b) const override {
+    if (const PairFn fn = l_->pair_fn.load(std::memory_order_acquire)) {
+      const uint32_t killed = fn(&a, &b, fs_in_.uniforms, fs_in_.uniform_words, &fs_in_);
+      a.killed = killed & 0xFFFFu;
+      b.killed = killed >> 16;
+      return;
+    }
+    fragment(a);
+    fragment(b);
+  }
+
  private:
   std::shared_ptr<const Linked> l_;
   std::vector<uint32_t> uniforms_;
   std::vector<TextureUnit> units_;
   RunInputs vs_in_, fs_in_;
-  StageFn vs_fn_ = nullptr, fs_fn_ = nullptr;
 
   RunInputs inputs(bool fragment) const {
     RunInputs in;
@@ -439,11 +475,18 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
   }
   linked->vs = std::move(vs.ir);
   linked->fs = std::move(fs.ir);
-  // Native code for both stages, unless TESSEL_GLSL=interp asks for the interpreter. A
-  // program LLVM cannot compile still runs, on the interpreter (same results).
-  const char* mode = std::getenv("TESSEL_GLSL");
-  if (!(mode && std::string_view(mode) == "interp")) {
-    StageIO vio, fio;
+  // Native code for both stages, unless the options or TESSEL_GLSL=interp ask for the
+  // interpreter. A program LLVM cannot compile still runs, on the interpreter (same results).
+  NativeCode when = options.native_code;
+  if (const char* mode = std::getenv("TESSEL_GLSL")) {
+    if (std::string_view(mode) == "interp") when = NativeCode::Off;
+    if (std::string_view(mode) == "sync") when = NativeCode::AtLink;
+  }
+  if (when != NativeCode::Off) {
+    linked->env = jit_environment();
+    StageIO& vio = linked->vio;
+    StageIO& fio = linked->fio;
+
     for (const Copy& c : linked->vs_in) vio.in.push_back({c.reg, c.offset});
     for (const Copy& c : linked->vs_out) vio.out.push_back({c.reg, c.offset});
     for (const Copy& c : linked->fs_in) fio.in.push_back({c.reg, c.offset});
@@ -455,8 +498,23 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
         for (int c = 0; c < 4; ++c)
           fio.out.push_back({linked->frag_color[size_t(c)],
                              offset_of(&FragmentLanes::color) + uint32_t((o * 4 + c) * ir::kLanes * 4)});
-    std::string why;
-    linked->jit = jit_compile(linked->vs, vio, linked->fs, fio, &why);
+  }
+  if (when == NativeCode::Off) {
+    linked->finish(nullptr);
+  } else if (when == NativeCode::AtLink) {
+    linked->compile();
+  } else {
+    // The compile job holds the program weakly: a program deleted before its turn is not
+    // compiled.
+    std::weak_ptr<Linked> weak = linked;
+    CompileQueue::instance().submit(linked.get(), [weak](bool run) {
+      if (auto l = weak.lock()) {
+        if (run)
+          l->compile();
+        else
+          l->finish(nullptr);
+      }
+    });
   }
   m.linked = std::move(linked);
   m.ok = true;
@@ -549,8 +607,20 @@ void Program::set_compat_matrices(const glm::mat4& mv, const glm::mat4& proj) {
 }
 
 bool Program::ok() const { return impl_->ok; }
-bool Program::native() const { return impl_->ok && impl_->linked->jit != nullptr; }
+void hold_background_compiles(bool hold) { CompileQueue::instance().pause(hold); }
+
+bool Program::native() const {
+  return impl_->ok && impl_->linked->fs_fn.load(std::memory_order_acquire) != nullptr;
+}
 bool Program::from_cache() const { return native() && impl_->linked->jit->from_cache; }
+bool Program::wait_native() const {
+  if (!impl_->ok) return false;
+  Linked& l = *impl_->linked;
+  CompileQueue::instance().promote(&l);
+  std::unique_lock lock(l.done_m);
+  l.done_cv.wait(lock, [&] { return l.done; });
+  return native();
+}
 const std::string& Program::info_log() const { return impl_->log; }
 const std::vector<Variable>& Program::attributes() const { return impl_->attributes; }
 const std::vector<Variable>& Program::uniforms() const { return impl_->uniforms; }
@@ -674,6 +744,8 @@ std::shared_ptr<const gpu::RuntimeShader> Program::bind(
     std::span<const TextureBinding> units, std::span<const BufferBinding> uniform_buffers) const {
   const Impl& m = *impl_;
   if (!m.ok) throw gpu::Error("draw: the program is not linked: " + m.log);
+  // A program that draws compiles before those that do not yet.
+  if (!native()) CompileQueue::instance().promote(m.linked.get());
   std::vector<TextureUnit> u;
   u.reserve(units.size());
   for (const TextureBinding& b : units)

@@ -38,6 +38,8 @@ struct RuntimeBridge {
   static constexpr bool lanes_independent = Packed;
   static constexpr int outputs = Packed ? 1 : kMaxColorAttachments;
   ScopedDenormalFlush float_mode() const { return ScopedDenormalFlush(shape_.flush_denormals); }
+  // The components the program reads (K rounds them up).
+  int live_varyings() const { return shape_.varyings; }
 
   template <class F>
   Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
@@ -65,17 +67,36 @@ struct RuntimeBridge {
                    F::load(lanes.position[3]));
   }
 
-  // The lane rows the fragment stage reads and writes on this thread. The raster loop
-  // (detail/raster.hpp) stores the interpolated varyings straight into them and calls
-  // fragment_stored: a run-time shader has no fragment() taking a Varyings struct.
-  static FragmentLanes& fragment_lanes() {
-    thread_local FragmentLanes lanes;
-    return lanes;
+  // The lane rows the fragment stage reads and writes on this thread, two sets (`slot` 0 and
+  // 1) so that two calls' worth can be shaded together. The raster loop (detail/raster.hpp)
+  // stores the interpolated varyings straight into them and calls fragment_stored or
+  // fragment_stored_pair: a run-time shader has no fragment() taking a Varyings struct.
+  static FragmentLanes& fragment_lanes(int slot = 0) {
+    thread_local FragmentLanes lanes[2];
+    return lanes[slot];
   }
   template <class F>
-  void fragment_stored(const Uniforms& u, Fragment<F>& f) const {
+  void fragment_stored(const Uniforms& u, Fragment<F>& f, int slot = 0) const {
+    FragmentLanes& lanes = fragment_lanes(slot);
+    put(f, lanes);
+    u->fragment(lanes);
+    take(lanes, f);
+  }
+  // Slot 0 with f0 and slot 1 with f1, as fragment_stored on each in turn.
+  void fragment_stored_pair(const Uniforms& u, Fragment<Float16>& f0, Fragment<Float16>& f1) const {
+    FragmentLanes &a = fragment_lanes(0), &b = fragment_lanes(1);
+    put(f0, a);
+    put(f1, b);
+    u->fragment_pair(a, b);
+    take(a, f0);
+    take(b, f1);
+  }
+
+ private:
+  // The fragment's built-in inputs into the lane rows, and the shader's results out of them.
+  template <class F>
+  void put(const Fragment<F>& f, FragmentLanes& lanes) const {
     constexpr int N = lane_width<F>;
-    FragmentLanes& lanes = fragment_lanes();
     const RuntimeShape& shape = shape_;
     f.coord.x.store(lanes.coord[0]);
     f.coord.y.store(lanes.coord[1]);
@@ -86,7 +107,10 @@ struct RuntimeBridge {
     lanes.mask = N == 16 ? 0xFFFFu : 0xFFu;
     lanes.killed = 0;
     if (shape.writes_depth) f.coord.z.store(lanes.depth);
-    u->fragment(lanes);
+  }
+  template <class F>
+  void take(const FragmentLanes& lanes, Fragment<F>& f) const {
+    const RuntimeShape& shape = shape_;
     const int outs = std::min(outputs, shape.outputs);
     for (int i = 0; i < outs; ++i) {
       f.color[size_t(i)] = Vec4<F>(F::load(lanes.color[i][0]), F::load(lanes.color[i][1]),

@@ -93,9 +93,7 @@ inline void run_spec(const std::string& name, const reference::GlslDrawSpec& spe
     }
   }
   // The interpreter (the reference tier) gives the JIT's bits exactly.
-  ::setenv("TESSEL_GLSL", "interp", 1);
-  const TesselResult interp = run_tessel(spec);
-  ::unsetenv("TESSEL_GLSL");
+  const TesselResult interp = run_tessel(spec, 2, glsl::NativeCode::Off);
   ASSERT_TRUE(interp.ok) << interp.log;
   for (size_t o = 0; o < ours.outputs.size(); ++o) {
     size_t k = 0;

@@ -316,6 +316,7 @@ struct Runner {
     }
     glsl::LinkOptions lo;
     lo.attribute_locations["piglit_vertex"] = 0;
+    lo.native_code = glsl::NativeCode::AtLink;  // the native code is what is tested
     prog = glsl::Program::link(*v, *f, lo);
     if (expect_link_error) return prog->ok() ? fail("linked, but a link error was expected") : Result{};
     if (!prog->ok()) {

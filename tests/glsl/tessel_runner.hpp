@@ -39,7 +39,10 @@ inline gpu::Wrap to_wrap(uint32_t e) {
   }
 }
 
-inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads = 2) {
+// `native`: AtLink runs the native code from the first draw, Off the interpreter (the
+// reference tier the tests compare it with).
+inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads = 2,
+                               glsl::NativeCode native = glsl::NativeCode::AtLink) {
   TesselResult r;
   auto vs = glsl::Shader::compile(glsl::Stage::Vertex, spec.vertex);
   auto fs = glsl::Shader::compile(glsl::Stage::Fragment, spec.fragment);
@@ -47,7 +50,9 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
     r.log = vs->info_log() + fs->info_log();
     return r;
   }
-  auto prog = glsl::Program::link(*vs, *fs);
+  glsl::LinkOptions options;
+  options.native_code = native;
+  auto prog = glsl::Program::link(*vs, *fs, options);
   if (!prog->ok()) {
     r.log = prog->info_log();
     return r;

@@ -11,6 +11,8 @@
 namespace tessel::testing {
 namespace {
 
+using glsl::LinkOptions;
+using glsl::NativeCode;
 using glsl::Program;
 using glsl::Shader;
 using glsl::Stage;
@@ -176,6 +178,80 @@ TEST(Glsl, DrawsAndIsIdenticalForAnyThreadCount) {
   EXPECT_NEAR(px[1], 11.5f / 23.0f, 1e-5f);
 }
 
+// The background tier: link() returns before the native code is there, the draws run on the
+// interpreter until it is, and the native code gives the same bits.
+TEST(Glsl, BackgroundCompileDrawsAtOnceWithTheSameBits) {
+  reference::GlslDrawSpec s;
+  s.vertex = kVs;
+  s.fragment =
+      "#version 330\nin vec2 p; out vec4 c;\nvoid main() { float a = 0.0;"
+      " for (int i = 0; i < 5; ++i) a += pow(p.x + float(i), 1.7);"
+      " c = vec4(a, inversesqrt(p.y + 0.1), sin(p.x * 10.0) / (p.y + 0.25), 1.0); }";
+  s.width = 16;
+  s.height = 16;
+  s.attributes.push_back({"pos", 2, {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1}});
+  s.count = 6;
+  glsl::hold_background_compiles(true);
+  const TesselResult held = run_tessel(s, 2, NativeCode::Background);
+  glsl::hold_background_compiles(false);
+  const TesselResult native = run_tessel(s, 2, NativeCode::AtLink);
+  ASSERT_TRUE(held.ok) << held.log;
+  ASSERT_TRUE(native.ok) << native.log;
+  EXPECT_EQ(held.outputs, native.outputs);
+
+  auto v = Shader::compile(Stage::Vertex, kVs);
+  auto f = Shader::compile(Stage::Fragment, s.fragment);
+  glsl::hold_background_compiles(true);
+  auto p = Program::link(*v, *f);
+  ASSERT_TRUE(p->ok()) << p->info_log();
+  EXPECT_FALSE(p->native());  // nothing compiles while held
+  glsl::hold_background_compiles(false);
+  EXPECT_TRUE(p->wait_native());
+  EXPECT_TRUE(p->native());
+  // Off never compiles, and waiting for it returns at once.
+  LinkOptions off;
+  off.native_code = NativeCode::Off;
+  auto q = Program::link(*v, *f, off);
+  EXPECT_FALSE(q->wait_native());
+}
+
+// Loops are cut per sixteen lanes (65535 iterations a loop, 2^20 a run) also where the native
+// code runs two calls' worth as one 32-lane function: lanes that loop forever next to lanes
+// that do not leave those alone, and both tiers agree.
+TEST(Glsl, LoopLimitsHoldPerSixteenLanesInPairedCalls) {
+  // Columns 0-7 and 16-23 loop forever (cut by the limits), 8-15 and 24-31 three times
+  // in each of 40 loops; each row's 4x2 groups are shaded in order, four a time, so a call
+  // pair puts the first kind in one half and the second in the other.
+  reference::GlslDrawSpec s;
+  s.vertex = kVs;
+  s.fragment =
+      "#version 330\nin vec2 p; out vec4 c;\nvoid main() { int n = 0; bool brief = fract(p.x * 2.0) >= 0.5;\n"
+      " for (int j = 0; j < 40; ++j) { int i = 0; while (true) { if (brief && i >= 3) break; ++i; ++n; } }\n"
+      " c = vec4(float(n), p.x, 0.0, 1.0); }";
+  s.width = 32;
+  s.height = 2;
+  s.attributes.push_back({"pos", 2, {-1, -1, 3, -1, -1, 3}});  // one triangle over it all
+  s.count = 3;
+  LinkOptions at_link;
+  at_link.native_code = NativeCode::AtLink;
+  ASSERT_TRUE(Program::link(*Shader::compile(Stage::Vertex, kVs),
+                            *Shader::compile(Stage::Fragment, s.fragment), at_link)
+                  ->native());
+  const TesselResult jit = run_tessel(s, 1, NativeCode::AtLink);
+  const TesselResult interp = run_tessel(s, 1, NativeCode::Off);
+  ASSERT_TRUE(jit.ok) << jit.log;
+  ASSERT_TRUE(interp.ok) << interp.log;
+  EXPECT_EQ(jit.outputs, interp.outputs);
+  for (int y = 0; y < s.height; ++y)
+    for (int x = 0; x < s.width; ++x) {
+      const float n = jit.outputs[0][size_t((y * s.width + x) * 4)];
+      if ((x / 8) % 2)
+        EXPECT_EQ(n, 120.0f) << x << "," << y;
+      else
+        EXPECT_LT(n, 40.0f * 65535.0f) << x << "," << y;  // cut
+    }
+}
+
 // The disk cache: a program's second link loads its code; the images are the same; a damaged
 // or truncated file is ignored and the program compiled again.
 TEST(Glsl, DiskCacheOfCompiledPrograms) {
@@ -192,9 +268,10 @@ TEST(Glsl, DiskCacheOfCompiledPrograms) {
   };
   auto first = link();
   ASSERT_TRUE(first->ok());
-  ASSERT_TRUE(first->native());
+  ASSERT_TRUE(first->wait_native());
   EXPECT_FALSE(first->from_cache());
   auto second = link();
+  ASSERT_TRUE(second->wait_native());
   EXPECT_TRUE(second->from_cache());
   const std::vector<float> a = draw(fs), b = draw(fs);
   EXPECT_EQ(a, b);
@@ -208,12 +285,14 @@ TEST(Glsl, DiskCacheOfCompiledPrograms) {
   }
   auto third = link();
   ASSERT_TRUE(third->ok());
+  ASSERT_TRUE(third->wait_native());
   EXPECT_FALSE(third->from_cache());
   EXPECT_EQ(draw(fs), a);
   // Truncated files too.
   for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
     if (e.is_regular_file()) std::filesystem::resize_file(e.path(), e.file_size() / 3);
   auto fourth = link();
+  ASSERT_TRUE(fourth->wait_native());
   EXPECT_FALSE(fourth->from_cache());
   ::unsetenv("TESSEL_SHADER_CACHE_DIR");
   std::filesystem::remove_all(dir);

@@ -54,9 +54,19 @@ struct Variable {
 
 // Locations chosen by the application before linking (glBindAttribLocation,
 // glBindFragDataLocation); layout(location) qualifiers take precedence.
+// When a program's native code is compiled. Until it is there the interpreter runs the
+// program, with the same results bit for bit, so a draw never waits for LLVM.
+enum class NativeCode {
+  Background,  // on the compiler thread, after link() returns (the default)
+  AtLink,      // before link() returns
+  Off,         // never: the interpreter only
+};
+
 struct LinkOptions {
   std::map<std::string, int> attribute_locations;
   std::map<std::string, int> frag_data_locations;
+  // TESSEL_GLSL=interp in the environment means Off for every program, TESSEL_GLSL=sync AtLink.
+  NativeCode native_code = NativeCode::Background;
 };
 
 // A texture unit as the program's samplers see it.
@@ -105,6 +115,11 @@ inline constexpr int kLocationVertex = 0, kLocationNormal = 2, kLocationColor = 
 // name. They are not active attributes (attribute_location gives -1 for them, as GL does).
 int builtin_attribute_location(std::string_view name);
 
+// Holds back (true) or lets go (false) the compiler thread of NativeCode::Background: while
+// it is held no compile starts, so programs run on the interpreter. For tests, and to measure
+// the interpreter tier.
+void hold_background_compiles(bool hold);
+
 class Program {
  public:
   // Links a vertex and a fragment shader. Never throws; a program that failed to link has
@@ -115,10 +130,15 @@ class Program {
 
   bool ok() const;
   const std::string& info_log() const;
-  // Whether the program runs as native code (LLVM), and whether that code came from the disk
-  // cache of compiled programs instead of being compiled (jit.hpp says where the cache is).
+  // Whether the program runs as native code (LLVM) now, and whether that code came from the
+  // disk cache of compiled programs instead of being compiled (jit.hpp says where the cache
+  // is). Draws made before the native code is there run on the interpreter, and a draw
+  // running when it arrives goes on in native code (the results are the same).
   bool native() const;
   bool from_cache() const;
+  // Waits until the native code's compile has finished (at once when it has, or when there is
+  // none to wait for) and returns native().
+  bool wait_native() const;
 
   const std::vector<Variable>& attributes() const;      // active, user-declared
   const std::vector<Variable>& uniforms() const;        // active, user-declared (gl_ state excluded)

@@ -105,6 +105,13 @@ class RuntimeShader {
   virtual const RuntimeShape& shape() const = 0;
   virtual void vertex(VertexLanes& lanes) const = 0;
   virtual void fragment(FragmentLanes& lanes) const = 0;
+  // Two fragment calls' worth at once (the pipeline has them ready together), so that an
+  // implementation can interleave their work; the results must be those of fragment(a) then
+  // fragment(b).
+  virtual void fragment_pair(FragmentLanes& a, FragmentLanes& b) const {
+    fragment(a);
+    fragment(b);
+  }
 };
 
 }  // namespace tessel::gpu

@@ -76,22 +76,34 @@ class Program final : public ProgramBase {
     // or a later one. The older group is the low half: depth and stencil are tested (and
     // written) for the low half before the high half, and colour is written in that order
     // too, so two groups on the same pixels still meet in submission order.
-    const Prim* pending_prim = nullptr;
-    Pos pending{0, 0};
-    unsigned pending_mask = 0;
+    // A run-time shader takes four groups at a time (two sixteen-lane calls' worth, made as
+    // one: RuntimeShader::fragment_pair), in the same order.
+    constexpr int kBatch = shader_runtime<S>() ? 4 : 2;
+    Group pending[kBatch];
+    int n_pending = 0;
     auto emit = [&](const Prim& p, Pos g, unsigned m) {
-      if (!pending_mask) {
-        pending_prim = &p;
-        pending = g;
-        pending_mask = m;
-      } else {
-        shade<Float16>(d, t, *pending_prim, p, pending, g, pending_mask | (m << 8), c);
-        pending_mask = 0;
-      }
+      pending[n_pending++] = {&p, g, m};
+      if (n_pending < kBatch) return;
+      n_pending = 0;
+      if constexpr (kBatch == 4)
+        shade_pair(d, t, pending, c);
+      else
+        shade<Float16>(d, t, *pending[0].prim, *pending[1].prim, pending[0].pos, pending[1].pos,
+                       pending[0].mask | (pending[1].mask << 8), c);
     };
+    // (shade<Float16> has one call site for a C++ shader: with two, GCC does not flatten it.)
     auto flush_pending = [&] {
-      if (pending_mask) shade<Float8>(d, t, *pending_prim, *pending_prim, pending, pending, pending_mask, c);
-      pending_mask = 0;
+      const Group* g = pending;
+      if constexpr (kBatch == 4) {
+        if (n_pending == 3) {
+          Group four[4] = {g[0], g[1], g[2], {g[2].prim, g[2].pos, 0}};
+          shade_pair(d, t, four, c);
+        } else if (n_pending == 2) {
+          shade<Float16>(d, t, *g[0].prim, *g[1].prim, g[0].pos, g[1].pos, g[0].mask | (g[1].mask << 8), c);
+        }
+      }
+      if (n_pending == 1) shade<Float8>(d, t, *g[0].prim, *g[0].prim, g[0].pos, g[0].pos, g[0].mask, c);
+      n_pending = 0;
     };
     [[maybe_unused]] const bool packed = kPacked && d.fast_color;
     for (int i = 0; i < n && i < kAhead; ++i) prefetch_prim(prims[i]);
@@ -120,6 +132,12 @@ class Program final : public ProgramBase {
   struct FragmentCounts {
     uint64_t fragments_shaded = 0, fragments_written = 0, fragments_rejected = 0;
   };
+  // A covered 4x2 group waiting to be shaded.
+  struct Group {
+    const Prim* prim;
+    Pos pos;
+    unsigned mask;
+  };
   // A tile's triangles are a sparse walk through the frame's Prims (which fit no cache), in
   // no pattern the hardware prefetcher follows: each would wait on memory when its turn came,
   // so the one kAhead places on is requested before each (four lines: a Prim with six
@@ -144,8 +162,11 @@ class Program final : public ProgramBase {
   // pixel centre x and y, window z, 1/w, the facing (mask bits) and the primitive id (integer
   // bits).
   static constexpr int kStaged = varying_count<S>() + 6;
+  // Lanes shaded at once: sixteen, or for a run-time shader thirty-two (two calls' worth as
+  // one fragment_pair); a group adds up to eight past them.
+  static constexpr int kShadeLanes = shader_runtime<S>() ? 32 : 16;
   struct Stage {
-    alignas(32) float v[kStaged][32];
+    alignas(32) float v[kStaged][kShadeLanes + 16];
     int fill = 0;
   };
 
@@ -204,17 +225,23 @@ class Program final : public ProgramBase {
       c.fragments_shaded += unsigned(count);
       c.fragments_written += unsigned(count);
       st.fill = at + count;
-      if (st.fill >= 16) {
-        shade_staged(t, st, 0xFFFF);
-        st.fill -= 16;
-        for (int v = 0; v < kStaged; ++v) Float8::load(&st.v[v][16]).store(&st.v[v][0]);
+      if (st.fill >= kShadeLanes) {
+        if constexpr (kShadeLanes == 32)
+          shade_staged_pair(t, st, 0xFFFF);
+        else
+          shade_staged(t, st, 0xFFFF);
+        st.fill -= kShadeLanes;
+        for (int v = 0; v < kStaged; ++v) Float8::load(&st.v[v][kShadeLanes]).store(&st.v[v][0]);
       }
     };
     for (; i < n && packable(*prims[i]); ++i) {
       if (i + kAhead < n) prefetch_prim(prims[i + kAhead]);
       raster_one(*prims[i], x0, y0, x1, y1, emit_packed);
     }
-    if (st.fill) shade_staged(t, st, (1u << st.fill) - 1);
+    if (st.fill > 16)
+      shade_staged_pair(t, st, (1u << (st.fill - 16)) - 1);
+    else if (st.fill)
+      shade_staged(t, st, (1u << st.fill) - 1);
     return i;
   }
 
@@ -246,41 +273,49 @@ class Program final : public ProgramBase {
 #endif
   }
 
-  // Runs the shader on the first sixteen staged lanes and writes the colours of the lanes
-  // in `mask` (an unblended RGBA8 attachment, DrawRecord::fast_color), in lane order.
-  __attribute__((flatten, noinline)) void shade_staged(const TargetView& t, const Stage& st,
-                                                       unsigned mask) const {
+  // Staged lanes [base, base + 16) as a fragment: the varyings divided by 1/w (into the lane
+  // rows `slot` of a run-time shader, else into vary), the centre, depth, facing and id.
+  template <class V>
+  __attribute__((always_inline)) void stage_in(const Stage& st, int base, int slot, Fragment<Float16>& f,
+                                               V& vary) const {
     constexpr int K = varying_count<S>();
     using F = Float16;
-    Varyings<F> vary;
-    const F oow = F::load(st.v[K + 3]);
+    const F oow = F::load(st.v[K + 3] + base);
     if constexpr (K > 0) {
       const uint64_t linear =
           shader_runtime<S>() ? flat | noperspective : shader_flat<S>() | shader_noperspective<S>();
       const F w = F(1.0f) / oow;
       F lanes[K];
+      int n = K;
+      if constexpr (shader_runtime<S>()) n = shader_.live_varyings();
       for (int k = 0; k < K; ++k) {
-        lanes[k] = F::load(st.v[k]);
+        if (k >= n) break;
+        lanes[k] = F::load(st.v[k] + base);
         if (!((linear >> k) & 1)) lanes[k] = lanes[k] * w;
         // A run-time shader reads its inputs from lane rows: stored there straight away.
-        if constexpr (shader_runtime<S>()) lanes[k].store(S::fragment_lanes().varyings[k]);
+        if constexpr (shader_runtime<S>()) lanes[k].store(S::fragment_lanes(slot).varyings[k]);
       }
       if constexpr (!shader_runtime<S>()) std::memcpy(&vary, lanes, sizeof lanes);
     }
-    Fragment<F> f;
-    const F cx = F::load(st.v[K]), cy = F::load(st.v[K + 1]);
-    f.coord = Vec4<F>(cx, cy, F::load(st.v[K + 2]), oow);
-    const F front = F::load(st.v[K + 4]), id = F::load(st.v[K + 5]);
+    (void)slot;
+    (void)vary;
+    const F cx = F::load(st.v[K] + base), cy = F::load(st.v[K + 1] + base);
+    f.coord = Vec4<F>(cx, cy, F::load(st.v[K + 2] + base), oow);
+    const F front = F::load(st.v[K + 4] + base), id = F::load(st.v[K + 5] + base);
     f.front_facing = Mask16(Mask8(bits_of(front.lo).v), Mask8(bits_of(front.hi).v));
     f.primitive_id = Int16(bits_of(id.lo), bits_of(id.hi));
     for (int i = 0; i < shader_outputs<S>(); ++i) f.color[size_t(i)] = Vec4<F>(F(0.0f));
     f.depth = f.coord.z;
     f.killed = MaskOf<F>(false);
-    if constexpr (shader_runtime<S>())
-      shader_.fragment_stored(uniforms_, f);
-    else
-      shader_.fragment(uniforms_, vary, f);
+  }
+
+  // Writes the colours of the lanes in `mask` (an unblended RGBA8 attachment,
+  // DrawRecord::fast_color), in lane order.
+  __attribute__((always_inline)) static void stage_out(const TargetView& t, const Fragment<Float16>& f,
+                                                       unsigned mask) {
+    using F = Float16;
     const Vec4<F>& col = f.color[0];
+    const F cx = f.coord.x, cy = f.coord.y;
     alignas(32) int32_t px[16], xs[16], ys[16];
     (to_unorm8(col.x.lo) | (to_unorm8(col.y.lo) << 8) | (to_unorm8(col.z.lo) << 16) |
      (to_unorm8(col.w.lo) << 24))
@@ -298,6 +333,36 @@ class Program final : public ProgramBase {
       std::memcpy(ct.data + size_t(ys[l]) * ct.row_bytes + size_t(xs[l]) * 4, &px[l], 4);
     }
   }
+
+  // Runs the shader on the first sixteen staged lanes and writes the colours of the lanes
+  // in `mask`.
+  __attribute__((flatten, noinline)) void shade_staged(const TargetView& t, const Stage& st,
+                                                       unsigned mask) const {
+    Varyings<Float16> vary;
+    Fragment<Float16> f;
+    stage_in(st, 0, 0, f, vary);
+    if constexpr (shader_runtime<S>())
+      shader_.fragment_stored(uniforms_, f);
+    else
+      shader_.fragment(uniforms_, vary, f);
+    stage_out(t, f, mask);
+  }
+
+  // A run-time shader on the first thirty-two staged lanes, as one fragment_pair: lanes 0-15
+  // all written, lanes 16-31 those in `mask_hi`.
+  __attribute__((flatten, noinline)) void shade_staged_pair(const TargetView& t, const Stage& st,
+                                                            unsigned mask_hi) const {
+    if constexpr (shader_runtime<S>()) {
+      NoVaryingsHere none;
+      Fragment<Float16> f0, f1;
+      stage_in(st, 0, 0, f0, none);
+      stage_in(st, 16, 1, f1, none);
+      shader_.fragment_stored_pair(uniforms_, f0, f1);
+      stage_out(t, f0, 0xFFFF);
+      stage_out(t, f1, mask_hi);
+    }
+  }
+  struct NoVaryingsHere {};
 
   // The lanes of the 4x2 group at (gx, gy) inside the bbox [minx, maxx] x [miny, maxy] (all
   // of them, away from its border).
@@ -463,6 +528,16 @@ class Program final : public ProgramBase {
     return halves<F, F>(x, y);
   }
 
+  // One shade()'s work between its steps: the groups, their lanes and depth (the fragment
+  // and varyings are the caller's own variables: in a struct GCC keeps them in memory).
+  template <class F>
+  struct Shading {
+    const Prim *pa = nullptr, *pb = nullptr;
+    Pos a{0, 0}, b{0, 0};
+    unsigned mask = 0;
+    F z;
+  };
+
   // Shades the 4x2 group at a of triangle pa (eight lanes; pb is pa), or also the group at b
   // of triangle pb (sixteen lanes: a in lanes 0-7, b in lanes 8-15). flatten: the shader and
   // every GLSL function it calls are inlined here, so lane values stay in registers (lane values passed to an
@@ -471,6 +546,49 @@ class Program final : public ProgramBase {
   __attribute__((flatten, always_inline)) inline void shade(const DrawRecord& d, const TargetView& t,
                                                             const Prim& pa, const Prim& pb, Pos a, Pos b,
                                                             unsigned mask, FragmentCounts& c) const {
+    Shading<F> s;
+    Fragment<F> f;
+    Varyings<F> vary;
+    if (!begin_shading(d, t, pa, pb, a, b, mask, c, s, f, vary, 0)) return;
+    if constexpr (shader_runtime<S>())
+      shader_.fragment_stored(uniforms_, f);
+    else
+      shader_.fragment(uniforms_, vary, f);
+    end_shading(d, t, s, f, c);
+  }
+
+  // Four groups of a run-time shader (g[0] and g[1] in slot 0, g[2] and g[3] in slot 1; a
+  // group may have no lanes), shaded by one fragment_pair call: depth is tested, and colour
+  // written, group by group in order, as by two shade() calls.
+  __attribute__((noinline)) void shade_pair(const DrawRecord& d, const TargetView& t, const Group* g,
+                                            FragmentCounts& c) const {
+    if constexpr (shader_runtime<S>()) {
+      Shading<Float16> s0, s1;
+      Fragment<Float16> f0, f1;
+      Varyings<Float16> v0, v1;
+      const bool go0 = begin_shading(d, t, *g[0].prim, *g[1].prim, g[0].pos, g[1].pos,
+                                     g[0].mask | (g[1].mask << 8), c, s0, f0, v0, 0);
+      const bool go1 = begin_shading(d, t, *g[2].prim, *g[3].prim, g[2].pos, g[3].pos,
+                                     g[2].mask | (g[3].mask << 8), c, s1, f1, v1, 1);
+      if (go0 && go1)
+        shader_.fragment_stored_pair(uniforms_, f0, f1);
+      else if (go0)
+        shader_.fragment_stored(uniforms_, f0, 0);
+      else if (go1)
+        shader_.fragment_stored(uniforms_, f1, 1);
+      if (go0) end_shading(d, t, s0, f0, c);
+      if (go1) end_shading(d, t, s1, f1, c);
+    }
+  }
+
+  // The fragment's inputs: lane centres, depth (tested now when the test is early),
+  // interpolated varyings (in vary, or for a run-time shader in its lane rows `slot`).
+  // False when no lane is left.
+  template <class F>
+  __attribute__((always_inline)) bool begin_shading(const DrawRecord& d, const TargetView& t, const Prim& pa,
+                                                    const Prim& pb, Pos a, Pos b, unsigned mask,
+                                                    FragmentCounts& c, Shading<F>& s, Fragment<F>& f,
+                                                    Varyings<F>& vary, int slot) const {
     constexpr int K = varying_count<S>();
     constexpr int N = lane_width<F>;
     constexpr int max_outputs = shader_outputs<S>();
@@ -496,15 +614,24 @@ class Program final : public ProgramBase {
       const unsigned covered = mask;
       mask = test(d, t, a, b, mask, z, pa.front, pb.front);
       c.fragments_rejected += unsigned(__builtin_popcount(covered & ~mask));
-      if (!mask) return;
+      if (!mask) return false;
     }
+    s.pa = &pa;
+    s.pb = &pb;
+    s.a = a;
+    s.b = b;
+    s.mask = mask;
+    s.z = z;
     const F oow = plane(pa.oow, pb.oow, 1, fx, fy);
     const F w = F(1.0f) / oow;
-    Varyings<F> vary;
     if constexpr (K > 0) {
       F lanes[K];
       const float *pla = pa.planes(), *plb = pb.planes();
+      // A run-time shader's unused components (its varyings round up to K) are not read.
+      int n = K;
+      if constexpr (shader_runtime<S>()) n = shader_.live_varyings();
       for (int k = 0; k < K; ++k) {
+        if (k >= n) break;
         F v;
         if (shader_runtime<S>() && ((flat >> k) & 1)) {
           v = halves<F>(pla[k], plb[k]);  // bit for bit (see raster_packed)
@@ -513,29 +640,42 @@ class Program final : public ProgramBase {
           if (!(((flat | noperspective) >> k) & 1)) v = v * w;
         }
         if constexpr (shader_runtime<S>())
-          v.store(S::fragment_lanes().varyings[k]);
+          v.store(S::fragment_lanes(slot).varyings[k]);
         else
           lanes[k] = v;
       }
       if constexpr (!shader_runtime<S>()) std::memcpy(&vary, lanes, sizeof lanes);
     }
-    Fragment<F> f;
+    (void)slot;
+    (void)vary;
     f.coord = Vec4<F>(cx, cy, z, oow);
     f.front_facing = halves<F, MaskOf<F>>(pa.front, pb.front);
     f.primitive_id = halves<F, IntOf<F>>(int32_t(pa.prim_id), int32_t(pb.prim_id));
-    for (int i = 0; i < outputs; ++i) f.color[size_t(i)] = Vec4<F>(F(0.0f));
+    // (One output is set even when none is written, so that no path reads it unset.)
+    for (int i = 0; i < std::max(outputs, 1); ++i) f.color[size_t(i)] = Vec4<F>(F(0.0f));
     f.depth = z;
     f.killed = MaskOf<F>(false);
-    if constexpr (shader_runtime<S>())
-      shader_.fragment_stored(uniforms_, f);
-    else
-      shader_.fragment(uniforms_, vary, f);
+    return true;
+  }
+
+  // After the shader: discards, depth tested now when the test is late, colours written.
+  template <class F>
+  __attribute__((always_inline)) void end_shading(const DrawRecord& d, const TargetView& t,
+                                                  const Shading<F>& s, const Fragment<F>& f,
+                                                  FragmentCounts& c) const {
+    constexpr int N = lane_width<F>;
+    constexpr int max_outputs = shader_outputs<S>();
+    const int outputs = shader_runtime<S>() ? std::min(max_outputs, ProgramBase::outputs) : max_outputs;
+    unsigned mask = s.mask;
+    F z = s.z;
+    const Pos a = s.a, b = s.b;
     if constexpr (shader_discards<S>()) mask &= ~f.killed.bits();
     if constexpr (shader_writes_depth<S>()) z = clamp(f.depth, F(0.0f), F(1.0f));
     c.fragments_shaded += unsigned(__builtin_popcount(mask));
+    const bool tests = d.state.depth_test || d.state.stencil_test;
     if (tests && !d.early_depth) {
       const unsigned shaded = mask;
-      mask = test(d, t, a, b, mask, z, pa.front, pb.front);
+      mask = test(d, t, a, b, mask, z, s.pa->front, s.pb->front);
       c.fragments_rejected += unsigned(__builtin_popcount(shaded & ~mask));
     }
     if (!mask) return;
