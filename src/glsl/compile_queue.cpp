@@ -1,14 +1,30 @@
 #include "compile_queue.hpp"
 
+#include "jit.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <utility>
 
 namespace tessel::glsl {
 
+// The queue is made once and never destroyed: at exit a handler stops it (drops the jobs not
+// started, waits for the one running). That handler must run before LLVM's static objects
+// are destroyed, and exit runs handlers and static destructors in the reverse order of their
+// registration; LLVM makes many of its statics lazily, during a process's first compiles,
+// so a compile is made here first (jit_warm_up), and the handler registered after it.
+// (Registered before, an exit during a compile crashed in LLVM's legalizer, whose type
+// tables had been destroyed under it.)
+static void stop_at_exit() { CompileQueue::instance().stop(); }
+
 CompileQueue& CompileQueue::instance() {
-  static CompileQueue q;
-  return q;
+  static CompileQueue* const q = [] {
+    jit_warm_up();
+    auto* made = new CompileQueue;
+    std::atexit(stop_at_exit);
+    return made;
+  }();
+  return *q;
 }
 
 void CompileQueue::submit(const void* key, std::function<void(bool)> job) {
@@ -47,6 +63,9 @@ void CompileQueue::run() {
     jobs_.pop_front();
     lock.unlock();
     j.fn(true);
+    // Statics LLVM made in this compile are destroyed at exit before handlers registered
+    // earlier run: register the handler again (stop() runs once).
+    std::atexit(stop_at_exit);
     lock.lock();
   }
 }
@@ -55,6 +74,7 @@ void CompileQueue::stop() {
   std::deque<Job> dropped;
   {
     std::lock_guard lock(m_);
+    if (stop_) return;
     stop_ = true;
     dropped.swap(jobs_);
     cv_.notify_one();
@@ -63,6 +83,6 @@ void CompileQueue::stop() {
   for (Job& j : dropped) j.fn(false);
 }
 
-CompileQueue::~CompileQueue() { stop(); }
+CompileQueue::~CompileQueue() { stop(); }  // (not reached: the queue lives to the end)
 
 }  // namespace tessel::glsl

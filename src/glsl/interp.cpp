@@ -585,10 +585,25 @@ __attribute__((flatten, noinline)) static void texture_2d_rows(const gpu::Sample
   r.w.store(reinterpret_cast<float*>(tl.out[3]));
 }
 
+bool texture_2d_implicit(const ir::TexOp& t) {
+  return t.kind == ir::TexKind::Sample && t.dim == ir::SamplerDim::D2 && !t.array && !t.shadow && !t.proj &&
+         !t.has_lod && !t.has_bias && !t.has_grad && t.result == 0 && t.offset[0] == 0 && t.offset[1] == 0 &&
+         t.offset_reg[0] == ir::TexOp::kNone && t.offset_reg[1] == ir::TexOp::kNone;
+}
+
+void run_texture_2d_implicit(const ir::TexOp& t, const RunInputs& in, TexLanes& tl) {
+  const TextureUnit* unit = unit_of(t, in);
+  if (unit && unit->texture_2d) {
+    texture_2d_rows(gpu::Sampler2D{unit->texture_2d, unit->sampler}, tl);
+    return;
+  }
+  // Any other unit: the general path, which may read the rows the caller did not set.
+  for (int k = TexLanes::kCoord + 2; k < TexLanes::kRows; ++k) std::memset(tl.in[k], 0, sizeof tl.in[k]);
+  run_texture(t, in, tl);
+}
+
 void run_texture(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl) {
-  if (t.kind == ir::TexKind::Sample && t.dim == ir::SamplerDim::D2 && !t.array && !t.shadow && !t.proj &&
-      !t.has_lod && !t.has_bias && !t.has_grad && t.result == 0 && in_.fragment && t.offset[0] == 0 &&
-      t.offset[1] == 0 && t.offset_reg[0] == ir::TexOp::kNone && t.offset_reg[1] == ir::TexOp::kNone) {
+  if (in_.fragment && texture_2d_implicit(t)) {
     const TextureUnit* unit = unit_of(t, in_);
     if (unit && unit->texture_2d) {
       texture_2d_rows(gpu::Sampler2D{unit->texture_2d, unit->sampler}, tl);

@@ -41,6 +41,11 @@ struct TexLanes {
   alignas(64) uint32_t out[4][ir::kLanes];
 };
 void run_texture(const ir::TexOp& op, const RunInputs& in, TexLanes& lanes);
+// texture(sampler2D, vec2) with an implicit LOD and a float result, the most common lookup:
+// in a fragment stage it reads only the rows kCoord and kCoord + 1, and
+// run_texture_2d_implicit runs it (as run_texture does) without the other rows set.
+bool texture_2d_implicit(const ir::TexOp& op);
+void run_texture_2d_implicit(const ir::TexOp& op, const RunInputs& in, TexLanes& lanes);
 
 // One of the library operations (bit fields, frexp/ldexp, halves, carries) on
 // sixteen lanes: t = op(a, b, c, e).

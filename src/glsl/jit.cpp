@@ -44,6 +44,15 @@ constexpr int L = ir::kLanes;  // lanes of the lane structures and of the librar
 extern "C" void tessel_glsl_texture(uint32_t op, const RunInputs* in, TexLanes* lanes) {
   run_texture(in->textures[op], *in, *lanes);
 }
+// The common 2D lookup (texture_2d_implicit) of one lane structure, or of two at once (the
+// 32-lane fragment function): only the coordinate rows are set.
+extern "C" void tessel_glsl_texture_2d(uint32_t op, const RunInputs* in, TexLanes* lanes) {
+  run_texture_2d_implicit(in->textures[op], *in, *lanes);
+}
+extern "C" void tessel_glsl_texture_2d_pair(uint32_t op, const RunInputs* in, TexLanes* a, TexLanes* b) {
+  run_texture_2d_implicit(in->textures[op], *in, *a);
+  run_texture_2d_implicit(in->textures[op], *in, *b);
+}
 extern "C" void tessel_glsl_lane_math(uint32_t op, uint32_t* t, const uint32_t* a, const uint32_t* b,
                                       const uint32_t* c, const uint32_t* e) {
   lane_math(ir::Op(op), t, a, b, c, e);
@@ -82,6 +91,7 @@ class Codegen {
     llvm::FunctionType* fty = W == L ? llvm::FunctionType::get(i32_, {ptr_, ptr_, i32_, ptr_, i32_}, false)
                                      : llvm::FunctionType::get(i32_, {ptr_, ptr_, ptr_, i32_, ptr_}, false);
     fn_ = llvm::Function::Create(fty, llvm::Function::ExternalLinkage, name, m_);
+    fragment_ = name.rfind("fragment", 0) == 0;
     // The code runs with denormals flushed (program.cpp): LLVM must not fold as if not.
     fn_->addFnAttr("denormal-fp-math", "preserve-sign,preserve-sign");
     auto args = fn_->arg_begin();
@@ -151,6 +161,8 @@ class Codegen {
   };
   std::vector<Home> homes_;
   llvm::Value* tex_lanes_ = nullptr;
+  llvm::Value* tex_lanes_b_ = nullptr;  // the second half's (W = 32)
+  bool fragment_ = false;               // the fragment stage (implicit LODs)
   llvm::Value* math_lanes_ = nullptr;
 
   llvm::Value* slot(llvm::Type* t, const char* name, llvm::Value* count = nullptr) {
@@ -416,6 +428,30 @@ class Codegen {
     const ir::TexOp& t = st_.textures.at(i.imm);
     auto* tl_ty = llvm::ArrayType::get(vi16_, TexLanes::kRows + 4);
     if (!tex_lanes_) tex_lanes_ = slot(tl_ty, "tex");
+    if (fragment_ && texture_2d_implicit(t)) {
+      // The common lookup: two coordinate rows in, four result rows out, both halves in one
+      // call.
+      if (W != L && !tex_lanes_b_) tex_lanes_b_ = slot(tl_ty, "texb");
+      llvm::Value* tl[2] = {tex_lanes_, tex_lanes_b_};
+      auto row = [&](int h, int k) { return b_.CreateGEP(tl_ty, tl[h], {b_.getInt32(0), b_.getInt32(k)}); };
+      for (int h = 0; h < W / L; ++h)
+        for (int k = 0; k < 2; ++k) b_.CreateStore(half(load(t.coord[k]), h), row(h, TexLanes::kCoord + k));
+      if (W == L) {
+        auto* fty = llvm::FunctionType::get(b_.getVoidTy(), {i32_, ptr_, ptr_}, false);
+        b_.CreateCall(m_.getOrInsertFunction("tessel_glsl_texture_2d", fty),
+                      {b_.getInt32(i.imm), rin_, tl[0]});
+      } else {
+        auto* fty = llvm::FunctionType::get(b_.getVoidTy(), {i32_, ptr_, ptr_, ptr_}, false);
+        b_.CreateCall(m_.getOrInsertFunction("tessel_glsl_texture_2d_pair", fty),
+                      {b_.getInt32(i.imm), rin_, tl[0], tl[1]});
+      }
+      for (int k = 0; k < 4; ++k) {
+        if (t.dst[k] == ir::TexOp::kNone) continue;
+        llvm::Value* lo = b_.CreateLoad(vi16_, row(0, TexLanes::kRows + k));
+        store(t.dst[k], W == L ? lo : join(lo, b_.CreateLoad(vi16_, row(1, TexLanes::kRows + k))));
+      }
+      return;
+    }
     auto row = [&](int k) { return b_.CreateGEP(tl_ty, tex_lanes_, {b_.getInt32(0), b_.getInt32(k)}); };
     auto* fty = llvm::FunctionType::get(b_.getVoidTy(), {i32_, ptr_, ptr_}, false);
     llvm::FunctionCallee f = m_.getOrInsertFunction("tessel_glsl_texture", fty);
@@ -714,7 +750,7 @@ struct Hasher {
 // What a cached object was made for: the code generator's version, this format, the CPU.
 std::string host_id() {
   std::string id =
-      std::string("tessel-jit-4 llvm-") + LLVM_VERSION_STRING + " " + llvm::sys::getHostCPUName().str();
+      std::string("tessel-jit-5 llvm-") + LLVM_VERSION_STRING + " " + llvm::sys::getHostCPUName().str();
   llvm::StringMap<bool> features;
   if (llvm::sys::getHostCPUFeatures(features)) {
     std::vector<std::string> on;
@@ -813,6 +849,10 @@ llvm::Expected<std::unique_ptr<llvm::orc::LLJIT>> make_jit(llvm::orc::JITTargetM
   llvm::orc::SymbolMap syms;
   syms[es.intern("tessel_glsl_texture")] = llvm::JITEvaluatedSymbol(
       llvm::pointerToJITTargetAddress(&tessel_glsl_texture), llvm::JITSymbolFlags::Exported);
+  syms[es.intern("tessel_glsl_texture_2d")] = llvm::JITEvaluatedSymbol(
+      llvm::pointerToJITTargetAddress(&tessel_glsl_texture_2d), llvm::JITSymbolFlags::Exported);
+  syms[es.intern("tessel_glsl_texture_2d_pair")] = llvm::JITEvaluatedSymbol(
+      llvm::pointerToJITTargetAddress(&tessel_glsl_texture_2d_pair), llvm::JITSymbolFlags::Exported);
   syms[es.intern("tessel_glsl_lane_math")] = llvm::JITEvaluatedSymbol(
       llvm::pointerToJITTargetAddress(&tessel_glsl_lane_math), llvm::JITSymbolFlags::Exported);
   if (auto e = (*jit)->getMainJITDylib().define(llvm::orc::absoluteSymbols(syms))) return e;
@@ -842,6 +882,54 @@ bool find_functions(LlvmCode& code) {
 }
 
 }  // namespace
+
+void jit_warm_up() {
+  // A stage with the kinds of operation and control flow the code generator emits (float and
+  // integer arithmetic and conversions, selects, derivatives' shuffles, a branch, a loop),
+  // compiled as every program is, at both widths.
+  using K = ir::Node::Kind;
+  ir::Stage st;
+  st.registers = 16;
+  st.constants = {{0, 0x40000000u}, {1, 3u}};
+  ir::Node code;
+  auto op = [&](Op o, Reg d, Reg a, Reg b = 0, Reg c = 0) {
+    Inst i;
+    i.op = o;
+    i.dst = d, i.a = a, i.b = b, i.c = c;
+    code.code.push_back(i);
+  };
+  op(Op::FSqrt, 2, 0);
+  op(Op::FDiv, 3, 2, 0);
+  op(Op::FFma, 4, 3, 2, 0);
+  op(Op::FFloor, 5, 4);
+  op(Op::FRoundEven, 6, 5);
+  op(Op::F2I, 7, 6);
+  op(Op::I2F, 8, 7);
+  op(Op::IDiv, 9, 7, 1);
+  op(Op::UDiv, 10, 7, 1);
+  op(Op::FLt, 11, 3, 4);
+  op(Op::Select, 12, 11, 3, 4);
+  op(Op::Ddx, 13, 12);
+  st.body.push_back(code);
+  ir::Node branch;
+  branch.kind = K::If;
+  branch.cond = 11;
+  ir::Node add;
+  Inst i;
+  i.op = Op::FAdd, i.dst = 14, i.a = 13, i.b = 8;
+  add.code.push_back(i);
+  branch.a.push_back(add);
+  st.body.push_back(branch);
+  ir::Node loop;
+  loop.kind = K::Loop;
+  loop.a.push_back(add);
+  ir::Node brk;
+  brk.kind = K::Break;
+  loop.a.push_back(brk);
+  st.body.push_back(loop);
+  std::string why;
+  (void)jit_compile(st, StageIO{}, st, StageIO{}, JitEnvironment{}, &why);
+}
 
 JitEnvironment jit_environment() {
   JitEnvironment env;

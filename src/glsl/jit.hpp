@@ -55,6 +55,11 @@ struct JitEnvironment {
 };
 JitEnvironment jit_environment();
 
+// Compiles a small program that uses every kind of code the generator emits, so that the
+// static objects LLVM makes lazily on its first compiles exist (and are destroyed at exit
+// after whatever is registered later, see compile_queue.cpp).
+void jit_warm_up();
+
 std::unique_ptr<JitCode> jit_compile(const ir::Stage& vs, const StageIO& vio, const ir::Stage& fs,
                                      const StageIO& fio, const JitEnvironment& env, std::string* error);
 
