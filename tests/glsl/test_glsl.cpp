@@ -31,14 +31,21 @@ std::shared_ptr<Program> link_fs(const std::string& fs) {
   return Program::link(*v, *f);
 }
 
-// Draws a full-screen quad of 16x16 with `fs` and returns pixel (x, y) of output 0.
-std::vector<float> draw(const std::string& fs, std::string* log = nullptr) {
+// A full-screen quad of width x height drawn with kVs and `fs`.
+reference::GlslDrawSpec quad(const std::string& fs, int width = 16, int height = 16) {
   reference::GlslDrawSpec s;
   s.vertex = kVs;
   s.fragment = fs;
+  s.width = width;
+  s.height = height;
   s.attributes.push_back({"pos", 2, {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1}});
   s.count = 6;
-  TesselResult r = run_tessel(s);
+  return s;
+}
+
+// Draws a full-screen quad of 16x16 with `fs` and returns output 0.
+std::vector<float> draw(const std::string& fs, std::string* log = nullptr) {
+  TesselResult r = run_tessel(quad(fs));
   if (log) *log = r.log;
   return r.ok ? r.outputs[0] : std::vector<float>{};
 }
@@ -161,13 +168,7 @@ void main() { first = col * k[2] + texture(tex, col.xy); second = vec4(s.a, floa
 TEST(Glsl, DrawsAndIsIdenticalForAnyThreadCount) {
   const std::string fs =
       "#version 330\nin vec2 p; out vec4 c; void main() { c = vec4(p, sin(p.x * 10.0), 1.0); }";
-  reference::GlslDrawSpec s;
-  s.vertex = kVs;
-  s.fragment = fs;
-  s.width = 37;
-  s.height = 23;
-  s.attributes.push_back({"pos", 2, {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1}});
-  s.count = 6;
+  const reference::GlslDrawSpec s = quad(fs, 37, 23);
   const TesselResult a = run_tessel(s, 1), b = run_tessel(s, 2), c = run_tessel(s, 5);
   ASSERT_TRUE(a.ok) << a.log;
   EXPECT_EQ(a.outputs, b.outputs);
@@ -181,16 +182,10 @@ TEST(Glsl, DrawsAndIsIdenticalForAnyThreadCount) {
 // The background tier: link() returns before the native code is there, the draws run on the
 // interpreter until it is, and the native code gives the same bits.
 TEST(Glsl, BackgroundCompileDrawsAtOnceWithTheSameBits) {
-  reference::GlslDrawSpec s;
-  s.vertex = kVs;
-  s.fragment =
+  const reference::GlslDrawSpec s = quad(
       "#version 330\nin vec2 p; out vec4 c;\nvoid main() { float a = 0.0;"
       " for (int i = 0; i < 5; ++i) a += pow(p.x + float(i), 1.7);"
-      " c = vec4(a, inversesqrt(p.y + 0.1), sin(p.x * 10.0) / (p.y + 0.25), 1.0); }";
-  s.width = 16;
-  s.height = 16;
-  s.attributes.push_back({"pos", 2, {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1}});
-  s.count = 6;
+      " c = vec4(a, inversesqrt(p.y + 0.1), sin(p.x * 10.0) / (p.y + 0.25), 1.0); }");
   glsl::hold_background_compiles(true);
   const TesselResult held = run_tessel(s, 2, NativeCode::Background);
   glsl::hold_background_compiles(false);

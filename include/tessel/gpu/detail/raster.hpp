@@ -275,9 +275,8 @@ class Program final : public ProgramBase {
 
   // Staged lanes [base, base + 16) as a fragment: the varyings divided by 1/w (into the lane
   // rows `slot` of a run-time shader, else into vary), the centre, depth, facing and id.
-  template <class V>
   __attribute__((always_inline)) void stage_in(const Stage& st, int base, int slot, Fragment<Float16>& f,
-                                               V& vary) const {
+                                               Varyings<Float16>& vary) const {
     constexpr int K = varying_count<S>();
     using F = Float16;
     const F oow = F::load(st.v[K + 3] + base);
@@ -288,8 +287,7 @@ class Program final : public ProgramBase {
       F lanes[K];
       int n = K;
       if constexpr (shader_runtime<S>()) n = shader_.live_varyings();
-      for (int k = 0; k < K; ++k) {
-        if (k >= n) break;
+      for (int k = 0; k < n; ++k) {
         lanes[k] = F::load(st.v[k] + base);
         if (!((linear >> k) & 1)) lanes[k] = lanes[k] * w;
         // A run-time shader reads its inputs from lane rows: stored there straight away.
@@ -353,16 +351,15 @@ class Program final : public ProgramBase {
   __attribute__((flatten, noinline)) void shade_staged_pair(const TargetView& t, const Stage& st,
                                                             unsigned mask_hi) const {
     if constexpr (shader_runtime<S>()) {
-      NoVaryingsHere none;
+      Varyings<Float16> unused;  // a run-time shader's varyings go to its lane rows
       Fragment<Float16> f0, f1;
-      stage_in(st, 0, 0, f0, none);
-      stage_in(st, 16, 1, f1, none);
+      stage_in(st, 0, 0, f0, unused);
+      stage_in(st, 16, 1, f1, unused);
       shader_.fragment_stored_pair(uniforms_, f0, f1);
       stage_out(t, f0, 0xFFFF);
       stage_out(t, f1, mask_hi);
     }
   }
-  struct NoVaryingsHere {};
 
   // The lanes of the 4x2 group at (gx, gy) inside the bbox [minx, maxx] x [miny, maxy] (all
   // of them, away from its border).
@@ -528,6 +525,11 @@ class Program final : public ProgramBase {
     return halves<F, F>(x, y);
   }
 
+  // The colour outputs the shader writes (a run-time shader's own count, at most its bridge's).
+  int output_count() const {
+    return shader_runtime<S>() ? std::min(shader_outputs<S>(), ProgramBase::outputs) : shader_outputs<S>();
+  }
+
   // One shade()'s work between its steps: the groups, their lanes and depth (the fragment
   // and varyings are the caller's own variables: in a struct GCC keeps them in memory).
   template <class F>
@@ -591,8 +593,7 @@ class Program final : public ProgramBase {
                                                     Varyings<F>& vary, int slot) const {
     constexpr int K = varying_count<S>();
     constexpr int N = lane_width<F>;
-    constexpr int max_outputs = shader_outputs<S>();
-    const int outputs = shader_runtime<S>() ? std::min(max_outputs, ProgramBase::outputs) : max_outputs;
+    const int outputs = output_count();
     F cx, cy;
     if constexpr (N == 8) {
       cx = Float8(float(a.x)) + kCentreX;
@@ -630,8 +631,7 @@ class Program final : public ProgramBase {
       // A run-time shader's unused components (its varyings round up to K) are not read.
       int n = K;
       if constexpr (shader_runtime<S>()) n = shader_.live_varyings();
-      for (int k = 0; k < K; ++k) {
-        if (k >= n) break;
+      for (int k = 0; k < n; ++k) {
         F v;
         if (shader_runtime<S>() && ((flat >> k) & 1)) {
           v = halves<F>(pla[k], plb[k]);  // bit for bit (see raster_packed)
@@ -665,7 +665,7 @@ class Program final : public ProgramBase {
                                                   FragmentCounts& c) const {
     constexpr int N = lane_width<F>;
     constexpr int max_outputs = shader_outputs<S>();
-    const int outputs = shader_runtime<S>() ? std::min(max_outputs, ProgramBase::outputs) : max_outputs;
+    const int outputs = output_count();
     unsigned mask = s.mask;
     F z = s.z;
     const Pos a = s.a, b = s.b;
