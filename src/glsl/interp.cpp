@@ -585,6 +585,33 @@ __attribute__((flatten, noinline)) static void texture_2d_rows(const gpu::Sample
   r.w.store(reinterpret_cast<float*>(tl.out[3]));
 }
 
+// Two lane structures' lookups on one texture: thirty-two lanes at once when every quad's LOD
+// falls between the same two levels (detail::trilinear32, the bits of two sixteen-lane
+// lookups), else one after the other.
+__attribute__((flatten, noinline)) static void texture_2d_rows_pair(const gpu::Sampler2D& s2, TexLanes& a,
+                                                                    TexLanes& b) {
+  auto coords = [](const TexLanes& tl) {
+    return gpu::Vec2<gpu::Float16>(gpu::Float16::load(reinterpret_cast<const float*>(tl.in[0])),
+                                   gpu::Float16::load(reinterpret_cast<const float*>(tl.in[1])));
+  };
+  auto store = [](const gpu::Vec4<gpu::Float16>& r, TexLanes& tl) {
+    r.x.store(reinterpret_cast<float*>(tl.out[0]));
+    r.y.store(reinterpret_cast<float*>(tl.out[1]));
+    r.z.store(reinterpret_cast<float*>(tl.out[2]));
+    r.w.store(reinterpret_cast<float*>(tl.out[3]));
+  };
+#if defined(__AVX2__)
+  gpu::Vec4<gpu::Float16> ra, rb;
+  if (gpu::detail::trilinear32(*s2.texture, s2.state, coords(a), coords(b), ra, rb)) {
+    store(ra, a);
+    store(rb, b);
+    return;
+  }
+#endif
+  store(gpu::texture(s2, coords(a)), a);
+  store(gpu::texture(s2, coords(b)), b);
+}
+
 bool texture_2d_implicit(const ir::TexOp& t) {
   return t.kind == ir::TexKind::Sample && t.dim == ir::SamplerDim::D2 && !t.array && !t.shadow && !t.proj &&
          !t.has_lod && !t.has_bias && !t.has_grad && t.result == 0 && t.offset[0] == 0 && t.offset[1] == 0 &&
@@ -600,6 +627,16 @@ void run_texture_2d_implicit(const ir::TexOp& t, const RunInputs& in, TexLanes& 
   // Any other unit: the general path, which may read the rows the caller did not set.
   for (int k = TexLanes::kCoord + 2; k < TexLanes::kRows; ++k) std::memset(tl.in[k], 0, sizeof tl.in[k]);
   run_texture(t, in, tl);
+}
+
+void run_texture_2d_implicit_pair(const ir::TexOp& t, const RunInputs& in, TexLanes& a, TexLanes& b) {
+  const TextureUnit* unit = unit_of(t, in);
+  if (unit && unit->texture_2d) {
+    texture_2d_rows_pair(gpu::Sampler2D{unit->texture_2d, unit->sampler}, a, b);
+    return;
+  }
+  run_texture_2d_implicit(t, in, a);
+  run_texture_2d_implicit(t, in, b);
 }
 
 void run_texture(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl) {

@@ -46,6 +46,8 @@ void run_texture(const ir::TexOp& op, const RunInputs& in, TexLanes& lanes);
 // run_texture_2d_implicit runs it (as run_texture does) without the other rows set.
 bool texture_2d_implicit(const ir::TexOp& op);
 void run_texture_2d_implicit(const ir::TexOp& op, const RunInputs& in, TexLanes& lanes);
+// Two lane structures' worth (a paired fragment call), as two run_texture_2d_implicit calls.
+void run_texture_2d_implicit_pair(const ir::TexOp& op, const RunInputs& in, TexLanes& a, TexLanes& b);
 
 // One of the library operations (bit fields, frexp/ldexp, halves, carries) on
 // sixteen lanes: t = op(a, b, c, e).

@@ -50,8 +50,7 @@ extern "C" void tessel_glsl_texture_2d(uint32_t op, const RunInputs* in, TexLane
   run_texture_2d_implicit(in->textures[op], *in, *lanes);
 }
 extern "C" void tessel_glsl_texture_2d_pair(uint32_t op, const RunInputs* in, TexLanes* a, TexLanes* b) {
-  run_texture_2d_implicit(in->textures[op], *in, *a);
-  run_texture_2d_implicit(in->textures[op], *in, *b);
+  run_texture_2d_implicit_pair(in->textures[op], *in, *a, *b);
 }
 extern "C" void tessel_glsl_lane_math(uint32_t op, uint32_t* t, const uint32_t* a, const uint32_t* b,
                                       const uint32_t* c, const uint32_t* e) {

@@ -953,6 +953,60 @@ TEST(Sampling, SixteenLanesGiveTheBitsOfTwoHalvesOfEight) {
 }
 
 #if defined(__AVX2__)
+// Thirty-two lanes (a paired GLSL fragment call's lookups) give the bits of two sixteen-lane
+// lookups, on the fast path and when it falls back (quads on different levels, NaN, bias).
+TEST(Sampling, ThirtyTwoLanesGiveTheBitsOfTwoSixteenLaneLookups) {
+  Texture2D t(Format::RGBA8, 512, 256, 0);
+  std::vector<uint8_t> px(size_t(512) * 256 * 4);
+  std::mt19937 rng(12);
+  for (auto& p : px) p = uint8_t(rng());
+  t.upload_rgba8(0, px.data(), px.size());
+  t.generate_mipmaps();
+  std::uniform_real_distribution<float> pos(-3.0f, 3.0f), lod(-1.5f, 9.5f);
+  int fast = 0, calls = 0;
+  for (int wrap = 0; wrap < 2; ++wrap) {
+    for (int variant = 0; variant < 2; ++variant) {
+      SamplerState st;
+      st.min_filter = Filter::LinearMipmapLinear;
+      st.mag_filter = Filter::Linear;
+      st.wrap_s = st.wrap_t = wrap ? Wrap::ClampToEdge : Wrap::Repeat;
+      if (variant == 1) st.lod_bias = -0.5f;
+      const Sampler2D s{&t, st};
+      for (int iter = 0; iter < 3000; ++iter) {
+        // Eight 2x2 quads; one scale for all (most calls), or one each (every 5th call).
+        Vec2<Float16> uv[2];
+        const float x0 = pos(rng), y0 = pos(rng);
+        float scale[8];
+        for (int q = 0; q < 8; ++q)
+          scale[q] = (q == 0 || iter % 5 == 0) ? std::exp2(lod(rng)) / 512.0f : scale[0];
+        for (int l = 0; l < 32; ++l) {
+          const int q = l / 4, g = l / 8;
+          uv[l / 16].x[l % 16] = x0 + float(detail::kLaneDx[l % 8] + 4 * g) * scale[q];
+          uv[l / 16].y[l % 16] = y0 + float(detail::kLaneDy[l % 8]) * scale[q] * 0.6f;
+        }
+        if (iter % 89 == 7) uv[iter % 2].y[iter % 16] = std::numeric_limits<float>::quiet_NaN();
+        Vec4<Float16> r[2];
+        ++calls;
+        if (!detail::trilinear32(t, st, uv[0], uv[1], r[0], r[1])) continue;
+        ++fast;
+        for (int k = 0; k < 2; ++k) {
+          const Vec4<Float16> want = texture(s, uv[k]);
+          for (int l = 0; l < 16; ++l) {
+            ASSERT_EQ(fbits(r[k].x[l]), fbits(want.x[l]))
+                << "wrap " << wrap << " variant " << variant << " iter " << iter << " lane " << 16 * k + l;
+            ASSERT_EQ(fbits(r[k].y[l]), fbits(want.y[l])) << l;
+            ASSERT_EQ(fbits(r[k].z[l]), fbits(want.z[l])) << l;
+            ASSERT_EQ(fbits(r[k].w[l]), fbits(want.w[l])) << l;
+          }
+        }
+      }
+    }
+  }
+  // Both kinds of call happened.
+  EXPECT_GT(fast, 2000);
+  EXPECT_LT(fast, calls - 2000);
+}
+
 // The 16-bit lerp of RGBA8 filtering is llvmpipe's (a (256 - w) + b w + 128) >> 8, computed
 // with vpmulhrsw: every a, b in 0..255 and every weight 0..256.
 TEST(Sampling, FixedPointLerpIsExactForEveryInput) {

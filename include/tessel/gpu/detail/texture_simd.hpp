@@ -192,61 +192,110 @@ TESSEL_ALWAYS_INLINE Float8 lod_log2_8(Float8 x) {
   return e + (m - Float8(1.0f));
 }
 
-// rho^2 of quad_lods for eight lanes, each quad's value (from its origin lane) in all four.
-TESSEL_ALWAYS_INLINE Float8 quad_rho2(const Float8& u, const Float8& v, int w, int h) {
-  const Float8 fw{float(w)}, fh{float(h)};
-  const Float8 ux = dFdx(u) * fw, vx = dFdx(v) * fh, uy = dFdy(u) * fw, vy = dFdy(v) * fh;
-  const Float8 r = max(ux * ux + vx * vx, uy * uy + vy * vy);
-  return Float8(__builtin_shufflevector(r.v, r.v, 0, 0, 0, 0, 4, 4, 4, 4));
+// rho^2 of quad_lods for the quads of H halves of eight lanes (two 2x2 quads each), one
+// quad's value per lane: [h0q0 h0q0 h1q0 h1q0 | h0q1 h0q1 h1q1 h1q1] for H = 2 and
+// [h0q0 h1q0 h2q0 h3q0 | h0q1 h1q1 h2q1 h3q1] for H = 4. Each quad's arithmetic is that of
+// dFdx/dFdy at its origin lane (x: lane 1 - lane 0, y: lane 2 - lane 0), step for step; the
+// order of max's operands differs, which matters only for NaN, which the caller rejects.
+template <int H>
+TESSEL_ALWAYS_INLINE Float8 quads_rho2(const Float8* u, const Float8* v, int w, int h) {
+  static_assert(H == 2 || H == 4);
+  const __m256 scale =
+      _mm256_setr_ps(float(w), float(w), float(h), float(h), float(w), float(w), float(h), float(h));
+  __m256 m[H];
+#pragma GCC unroll 4
+  for (int i = 0; i < H; ++i) {
+    const __m256 uu = __m256(u[i].v), vv = __m256(v[i].v);
+    const __m256 a = _mm256_shuffle_ps(uu, vv, _MM_SHUFFLE(2, 1, 2, 1));  // u1 u2 v1 v2 of each quad
+    const __m256 o = _mm256_shuffle_ps(uu, vv, _MM_SHUFFLE(0, 0, 0, 0));  // u0 u0 v0 v0
+    const __m256 d = _mm256_mul_ps(_mm256_sub_ps(a, o), scale);           // ux uy vx vy
+    const __m256 sq = _mm256_mul_ps(d, d);
+    const __m256 r = _mm256_add_ps(sq, _mm256_permute_ps(sq, _MM_SHUFFLE(1, 0, 3, 2)));  // rx ry rx ry
+    m[i] = _mm256_max_ps(r, _mm256_permute_ps(r, _MM_SHUFFLE(2, 3, 0, 1)));
+  }
+  __m256 out;
+  if constexpr (H == 2) {
+    out = _mm256_shuffle_ps(m[0], m[1], _MM_SHUFFLE(0, 0, 0, 0));
+  } else {
+    const __m256 p = _mm256_shuffle_ps(m[0], m[1], _MM_SHUFFLE(0, 0, 0, 0));
+    const __m256 q = _mm256_shuffle_ps(m[2], m[3], _MM_SHUFFLE(0, 0, 0, 0));
+    out = _mm256_shuffle_ps(p, q, _MM_SHUFFLE(2, 0, 2, 0));
+  }
+  return Float8(vx::f32x8(out));
 }
 
-// Sixteen lanes (four quads) of LINEAR_MIPMAP_LINEAR on an RGBA8 texture when every quad's
-// LOD falls between the same two levels: the LOD, the mip selection and the blend weights
-// on vectors (no per-quad plan), and both halves' texel addresses and gathers side by side,
-// so that their latencies overlap. The arithmetic is that of texture() on eight lanes, step
-// for step, so the result is bit-identical; false (nothing written) when it does not apply.
-TESSEL_ALWAYS_INLINE bool trilinear16(const Texture2D& tex, const SamplerState& st, const Vec2<Float16>& uv,
-                                      Vec4<Float16>& out) {
+// H halves of eight lanes (H = 2: sixteen lanes, four quads; H = 4: thirty-two, eight quads)
+// of LINEAR_MIPMAP_LINEAR on an RGBA8 texture when every quad's LOD falls between the same
+// two levels: the LOD, the mip selection and the blend weights once for all quads, and every
+// half's texel addresses and gathers side by side, so that their latencies overlap. The
+// arithmetic is that of texture() on eight lanes, step for step, so the result is
+// bit-identical; false (nothing written) when it does not apply.
+template <int H>
+TESSEL_ALWAYS_INLINE bool trilinear_halves(const Texture2D& tex, const SamplerState& st, const Float8* u,
+                                           const Float8* v, Vec4<Float8>* out) {
   if (st.min_filter != Filter::LinearMipmapLinear || tex.levels() < 2 || !vector_path(tex, st)) return false;
-  const int W = tex.width(), H = tex.height();
-  const Float8 r_lo = quad_rho2(uv.x.lo, uv.y.lo, W, H), r_hi = quad_rho2(uv.x.hi, uv.y.hi, W, H);
+  const Float8 r = quads_rho2<H>(u, v, tex.width(), tex.height());
   const Float8 kMaxR(3.4e38f), zero(0.0f);
-  if (((r_lo > zero) & (r_lo <= kMaxR) & (r_hi > zero) & (r_hi <= kMaxR)).bits() != 0xFF) return false;
+  if (((r > zero) & (r <= kMaxR)).bits() != 0xFF) return false;
   // make_plan: l = lod + bias, then max(l, min_lod) and min(l, max_lod) as std::max/min do.
   // With no bias and the default range (0.5 log2 of a positive finite float is in [-75, 64))
   // the three steps change nothing.
-  const bool plain = st.lod_bias == 0.0f && st.min_lod <= -75.0f && st.max_lod >= 64.0f;
-  auto level_of = [&](Float8 r) {
-    Float8 l = Float8(0.5f) * lod_log2_8(r);
-    if (plain) return l;
+  Float8 l = Float8(0.5f) * lod_log2_8(r);
+  if (st.lod_bias != 0.0f || st.min_lod > -75.0f || st.max_lod < 64.0f) {
     l = l + Float8(st.lod_bias);
     l = select(l < Float8(st.min_lod), Float8(st.min_lod), l);
     l = select(Float8(st.max_lod) < l, Float8(st.max_lod), l);
-    return l;
-  };
-  const Float8 l_lo = level_of(r_lo), l_hi = level_of(r_hi);
-  const Float8 q(float(tex.levels() - 1));
-  // Minification (l > 0; NaN fails) and below the last level, in every lane.
-  if (((l_lo > zero) & (l_lo < q) & (l_hi > zero) & (l_hi < q)).bits() != 0xFF) return false;
-  const Float8 d_lo = floor(l_lo), d_hi = floor(l_hi);
-  const Int8 lv_lo = to_int(d_lo), lv_hi = to_int(d_hi);
-  const int level = lv_lo[0];
-  if (((lv_lo == Int8(level)) & (lv_hi == Int8(level))).bits() != 0xFF) return false;
-  // The mip blend of each lane's quad as a 16-bit weight, lrint(blend * 256) as run_plan has it.
-  const __m256i w_lo =
-      weight_pair(Int8((vx::i32x8)_mm256_cvtps_epi32((__m256)((l_lo - d_lo) * Float8(256.0f)).v)));
-  const __m256i w_hi =
-      weight_pair(Int8((vx::i32x8)_mm256_cvtps_epi32((__m256)((l_hi - d_hi) * Float8(256.0f)).v)));
-
+  }
+  // Minification (l > 0; NaN fails) and below the last level, in every quad.
+  if (((l > zero) & (l < Float8(float(tex.levels() - 1)))).bits() != 0xFF) return false;
+  const Float8 d = floor(l);
+  const Int8 lv = to_int(d);
+  const int level = lv[0];
+  if ((lv == Int8(level)).bits() != 0xFF) return false;
+  // The mip blend of each quad as a 16-bit weight, lrint(blend * 256) as run_plan has it,
+  // then each half's lanes given their quad's.
+  const __m256i wq = weight_pair(Int8((vx::i32x8)_mm256_cvtps_epi32((__m256)((l - d) * Float8(256.0f)).v)));
   const LevelRef L0 = level_ref(tex, level), L1 = level_ref(tex, level + 1);
-  const Float8 s_lo = sane8_fixed(uv.x.lo), t_lo = sane8_fixed(uv.y.lo), s_hi = sane8_fixed(uv.x.hi),
-               t_hi = sane8_fixed(uv.y.hi);
-  const Rgba16 a_lo = bilinear_rgba16_sane(L0, st.wrap_s, st.wrap_t, s_lo, t_lo);
-  const Rgba16 a_hi = bilinear_rgba16_sane(L0, st.wrap_s, st.wrap_t, s_hi, t_hi);
-  const Rgba16 b_lo = bilinear_rgba16_sane(L1, st.wrap_s, st.wrap_t, s_lo, t_lo);
-  const Rgba16 b_hi = bilinear_rgba16_sane(L1, st.wrap_s, st.wrap_t, s_hi, t_hi);
-  const Rgba16 c_lo = lerp16(a_lo, b_lo, w_lo), c_hi = lerp16(a_hi, b_hi, w_hi);
-  out = join(decode_rgba16(c_lo), decode_rgba16(c_hi));
+  Float8 s[H], t[H];
+  __m256i w[H];
+#pragma GCC unroll 4
+  for (int i = 0; i < H; ++i) {
+    const int k = H == 2 ? 2 * i : i;
+    w[i] = _mm256_permutevar8x32_epi32(wq, _mm256_setr_epi32(k, k, k, k, k + 4, k + 4, k + 4, k + 4));
+    s[i] = sane8_fixed(u[i]);
+    t[i] = sane8_fixed(v[i]);
+  }
+  Rgba16 a[H], b[H];
+#pragma GCC unroll 4
+  for (int i = 0; i < H; ++i) a[i] = bilinear_rgba16_sane(L0, st.wrap_s, st.wrap_t, s[i], t[i]);
+#pragma GCC unroll 4
+  for (int i = 0; i < H; ++i) b[i] = bilinear_rgba16_sane(L1, st.wrap_s, st.wrap_t, s[i], t[i]);
+#pragma GCC unroll 4
+  for (int i = 0; i < H; ++i) out[i] = decode_rgba16(lerp16(a[i], b[i], w[i]));
+  return true;
+}
+
+// Sixteen lanes (four quads) as trilinear_halves<2>.
+TESSEL_ALWAYS_INLINE bool trilinear16(const Texture2D& tex, const SamplerState& st, const Vec2<Float16>& uv,
+                                      Vec4<Float16>& out) {
+  const Float8 u[2] = {uv.x.lo, uv.x.hi}, v[2] = {uv.y.lo, uv.y.hi};
+  Vec4<Float8> r[2];
+  if (!trilinear_halves<2>(tex, st, u, v, r)) return false;
+  out = join(r[0], r[1]);
+  return true;
+}
+
+// Two sixteen-lane lookups at once (eight quads, all between the same two levels), as
+// trilinear_halves<4>: the same bits as two trilinear16 calls, with twice the independent
+// work in flight.
+TESSEL_ALWAYS_INLINE bool trilinear32(const Texture2D& tex, const SamplerState& st, const Vec2<Float16>& uv_a,
+                                      const Vec2<Float16>& uv_b, Vec4<Float16>& out_a, Vec4<Float16>& out_b) {
+  const Float8 u[4] = {uv_a.x.lo, uv_a.x.hi, uv_b.x.lo, uv_b.x.hi};
+  const Float8 v[4] = {uv_a.y.lo, uv_a.y.hi, uv_b.y.lo, uv_b.y.hi};
+  Vec4<Float8> r[4];
+  if (!trilinear_halves<4>(tex, st, u, v, r)) return false;
+  out_a = join(r[0], r[1]);
+  out_b = join(r[2], r[3]);
   return true;
 }
 #endif
