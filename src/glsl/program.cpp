@@ -319,6 +319,7 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
 
   // Varyings: matched by name; each matched fragment input gets consecutive slots.
   int slot = 0;
+  std::vector<const Interface*> pipeline_inputs;
   for (const Interface& o : vs.outputs) {
     if (o.name == "gl_Position") {
       for (int c = 0; c < 4; ++c)
@@ -342,8 +343,10 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
       linked->fs_in.push_back({i.reg, offset_of(&FragmentLanes::primitive_id)});
       continue;
     }
-    if (i.name == "gl_PointCoord")
-      continue;  // read as zero: points are squares without sprite coordinates yet
+    if (i.name == "gl_PointCoord" || i.name == "gl_ClipDistance") {
+      pipeline_inputs.push_back(&i);  // given components of their own below
+      continue;
+    }
     const std::string vname = vertex_name_for(i.name);
     const Interface* o = nullptr;
     for (const Interface& c : vs.outputs)
@@ -377,6 +380,56 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
       if (i.noperspective) linked->shape.noperspective |= uint64_t(1) << (slot + c);
     }
     slot += i.components;
+  }
+  // Then the components the pipeline reads (gl_PointSize, gl_ClipDistance) or sets
+  // (gl_PointCoord): point coordinates are interpolated linearly in the window.
+  auto take = [&](int n) {
+    if (slot + n > gpu::kMaxVaryings) {
+      error("too many varying components (at most " + std::to_string(gpu::kMaxVaryings) + ")");
+      return -1;
+    }
+    slot += n;
+    return slot - n;
+  };
+  auto to_fragment = [&](const Interface& i, int first, int n) {
+    for (int c = 0; c < n; ++c)
+      linked->fs_in.push_back(
+          {i.reg + ir::Reg(c), offset_of(&FragmentLanes::varyings) + uint32_t((first + c) * ir::kLanes * 4)});
+    if (n < i.components) fs.ir.variables.push_back({i.reg + ir::Reg(n), uint32_t(i.components - n)});
+  };
+  auto from_vertex = [&](const Interface& o, int first, int n) {
+    for (int c = 0; c < n; ++c)
+      linked->vs_out.push_back(
+          {o.reg + ir::Reg(c), offset_of(&VertexLanes::varyings) + uint32_t((first + c) * ir::kLanes * 4)});
+  };
+  for (const Interface& o : vs.outputs) {
+    if (o.block || !o.builtin) continue;
+    if (o.name == "gl_PointSize") {
+      const int at = take(1);
+      if (at < 0) break;
+      from_vertex(o, at, 1);
+      linked->shape.point_size = at;
+      linked->shape.flat |= uint64_t(1) << at;
+    } else if (o.name == "gl_ClipDistance" && o.components > 0) {
+      const int n = std::min(o.components, gpu::kMaxClipPlanes);
+      const int at = take(n);
+      if (at < 0) break;
+      from_vertex(o, at, n);
+      linked->shape.clip_distance = at;
+      linked->shape.clip_distances = n;
+    }
+  }
+  for (const Interface* i : pipeline_inputs) {
+    if (i->name == "gl_PointCoord") {
+      const int at = take(2);
+      if (at < 0) break;
+      to_fragment(*i, at, 2);
+      linked->shape.point_coord = at;
+      linked->shape.noperspective |= uint64_t(3) << at;
+    } else {  // gl_ClipDistance: the vertex shader's, interpolated; those it does not write read 0
+      const int n = std::min(i->components, linked->shape.clip_distances);
+      to_fragment(*i, linked->shape.clip_distance, n);
+    }
   }
   linked->shape.varyings = slot;
 

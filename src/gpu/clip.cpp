@@ -15,9 +15,11 @@ namespace tessel::gpu::detail {
 
 ClipPlanes make_clip_planes(const DrawRecord& d) {
   ClipPlanes p;
-  auto add = [&](glm::vec4 n, float off) {
+  auto add = [&](glm::vec4 n, float off, int var = -1) {
     p.n[p.count] = n;
     p.d[p.count] = off;
+    p.var[p.count] = int8_t(var);
+    if (var >= 0) p.var_planes |= 1u << p.count;
     ++p.count;
   };
   // w must stay positive for the divide; the guard band planes imply w >= 0, this keeps w
@@ -31,13 +33,17 @@ ClipPlanes make_clip_planes(const DrawRecord& d) {
   add({1, 0, 0, d.guard_x}, 0.0f);
   add({0, -1, 0, d.guard_y}, 0.0f);
   add({0, 1, 0, d.guard_y}, 0.0f);
-  for (int i = 0; i < kMaxClipPlanes; ++i)
-    if (d.state.clip_plane_enable & (1u << i)) add(d.state.clip_planes[i], 0.0f);
+  // A user plane is the program's clip distance i where it writes one (gl_ClipDistance),
+  // else a plane in clip space.
+  const int distances = d.program ? d.program->clip_distances : 0;
+  for (int i = 0; i < kMaxClipPlanes; ++i) {
+    if (!(d.state.clip_plane_enable & (1u << i))) continue;
+    if (i < distances)
+      add(glm::vec4(0.0f), 0.0f, d.program->clip_distance_var + i);
+    else
+      add(d.state.clip_planes[i], 0.0f);
+  }
   return p;
-}
-
-static inline float plane_distance(const ClipPlanes& p, int i, const glm::vec4& v) {
-  return p.n[i].x * v.x + p.n[i].y * v.y + p.n[i].z * v.z + p.n[i].w * v.w + p.d[i];
 }
 
 static void lerp_vertex(const ClipVert& in, const ClipVert& out, float t, int varyings, ClipVert& r) {
@@ -53,11 +59,11 @@ int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, Cl
   for (int i = 0; i < planes.count && n > 0; ++i) {
     if (!(mask & (1u << i))) continue;
     int m = 0;
-    float dprev = plane_distance(planes, i, src[n - 1].pos);
+    float dprev = plane_distance(planes, i, src[n - 1].pos, src[n - 1].var);
     for (int j = 0; j < n; ++j) {
       const ClipVert& prev = src[(j + n - 1) % n];
       const ClipVert& cur = src[j];
-      const float dcur = plane_distance(planes, i, cur.pos);
+      const float dcur = plane_distance(planes, i, cur.pos, cur.var);
       const bool in_prev = dprev >= 0.0f, in_cur = dcur >= 0.0f;
       if (in_prev != in_cur && m < kMaxOut) {
         // Always interpolate from the inside vertex to the outside one.
@@ -80,13 +86,13 @@ int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, Cl
   return n < 3 ? 0 : n;
 }
 
-bool clip_line(const ClipPlanes& planes, unsigned mask, const glm::vec4& p0, const glm::vec4& p1, float& t0,
-               float& t1) {
+bool clip_line(const ClipPlanes& planes, unsigned mask, const glm::vec4& p0, const glm::vec4& p1,
+               const float* v0, const float* v1, float& t0, float& t1) {
   t0 = 0.0f;
   t1 = 1.0f;
   for (int i = 0; i < planes.count; ++i) {
     if (!(mask & (1u << i))) continue;
-    const float d0 = plane_distance(planes, i, p0), d1 = plane_distance(planes, i, p1);
+    const float d0 = plane_distance(planes, i, p0, v0), d1 = plane_distance(planes, i, p1, v1);
     if (!(d0 >= 0.0f) && !(d1 >= 0.0f)) return false;
     if (d0 < 0.0f)
       t0 = std::max(t0, d0 / (d0 - d1));

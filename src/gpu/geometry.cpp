@@ -167,7 +167,7 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
         b = w.win[s[1]];
       } else {
         float t0, t1;
-        if (!clip_line(planes, c0 | c1, p0, p1, t0, t1)) continue;
+        if (!clip_line(planes, c0 | c1, p0, p1, var_of(s[0]), var_of(s[1]), t0, t1)) continue;
         ++w.counters.primitives_clipped;
         ClipVert& ca = w.clip_a[0];
         ClipVert& cb = w.clip_a[1];

@@ -62,6 +62,9 @@ struct RuntimeBridge {
       const int n = std::min(K, shape.varyings);
       for (int k = 0; k < n; ++k) out.v[k] = F::load(lanes.varyings[k]);
       for (int k = n; k < K; ++k) out.v[k] = F(0.0f);
+      // gl_PointCoord is set by setup on points; the program does not write it (zero elsewhere).
+      if (shape.point_coord >= 0 && shape.point_coord + 1 < K)
+        out.v[shape.point_coord] = out.v[shape.point_coord + 1] = F(0.0f);
     }
     return Vec4<F>(F::load(lanes.position[0]), F::load(lanes.position[1]), F::load(lanes.position[2]),
                    F::load(lanes.position[3]));
@@ -135,6 +138,10 @@ std::unique_ptr<detail::ProgramBase> make_bridge(const std::shared_ptr<const Run
   p->discards = shape.discards;
   p->writes_depth = shape.writes_depth;
   p->outputs = shape.outputs;
+  p->point_size_var = shape.point_size;
+  p->point_coord_var = shape.point_coord;
+  p->clip_distance_var = shape.clip_distance;
+  p->clip_distances = shape.clip_distances;
   return p;
 }
 
@@ -158,6 +165,16 @@ void Context::draw(std::shared_ptr<const RuntimeShader> shader, const VertexLayo
   if (shape.outputs < 0 || shape.outputs > kMaxColorAttachments)
     throw Error("draw: the program writes " + std::to_string(shape.outputs) + " colour outputs; at most " +
                 std::to_string(kMaxColorAttachments) + " are supported");
+  // The components the pipeline reads or sets must be varyings of the program.
+  auto inside = [&](int first, int n) { return first >= 0 && n >= 0 && first + n <= shape.varyings; };
+  if ((shape.point_size != -1 && !inside(shape.point_size, 1)) ||
+      (shape.point_coord != -1 && !inside(shape.point_coord, 2)) ||
+      (shape.clip_distances != 0 && !inside(shape.clip_distance, shape.clip_distances)) ||
+      shape.clip_distances < 0 || shape.clip_distances > kMaxClipPlanes)
+    throw Error("draw: the program's point size, point coordinate or clip distance components (" +
+                std::to_string(shape.point_size) + ", " + std::to_string(shape.point_coord) + ", " +
+                std::to_string(shape.clip_distance) + " + " + std::to_string(shape.clip_distances) +
+                ") are not among its " + std::to_string(shape.varyings) + " varying components");
   const bool packed = shape.lanes_independent && !shape.discards && !shape.writes_depth && shape.outputs <= 1;
   const int K = shape.varyings;
   auto program = packed ? pick<true>(shader, K, std::make_index_sequence<kSizes.size()>())

@@ -80,6 +80,11 @@ void finish_vertices(const DrawRecord& d, const ClipPlanes& planes, const float*
     const int m = int(std::min<size_t>(8, n - base));
     for (int l = 0; l < m; ++l) {
       const size_t i = base + size_t(l);
+      // Clip distances (their position test above passed): the vertex's own values.
+      for (unsigned v = planes.var_planes; v; v &= v - 1) {
+        const int p = __builtin_ctz(v);
+        if (!(vars[i * size_t(K) + size_t(planes.var[p])] >= 0.0f)) code[l] |= int32_t(1u << p);
+      }
       codes[i] = unsigned(code[l]);
       if (code[l] == 0) {
         WinVert& v = win[i];
@@ -163,8 +168,27 @@ int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const 
 
 int setup_point(const DrawRecord& d, const WinVert& v, uint32_t prim_id, bool front, float z_offset,
                 Arena& arena, Counters& c, Prim** out) {
-  const float half = std::max(d.state.point_size, 1.0f) * 0.5f;
+  const ProgramBase& prog = *d.program;
+  // The size: the vertex shader's (gl_PointSize) with program_point_size, clamped as GL clamps
+  // the derived size to ALIASED_POINT_SIZE_RANGE, which is 1..255 here as on llvmpipe.
+  float size = d.state.point_size;
+  if (d.state.program_point_size && prog.point_size_var >= 0) size = v.var[prog.point_size_var];
+  size = size >= 1.0f ? std::min(size, 255.0f) : 1.0f;  // NaN: 1
+  const float half = size * 0.5f;
   WinVert q[4] = {v, v, v, v};
+  // gl_PointCoord (GL 3.3 §3.4.1): s = 1/2 + (x_f + 1/2 - x_w) / size, and t = 1/2 - (y_f + 1/2 -
+  // y_w) / size with the upper-left origin (+ with the lower-left one): linear in the window,
+  // so given at the corners (in the order below) and interpolated without perspective.
+  float corner_var[4][kMaxVaryings];
+  if (const int pc = prog.point_coord_var; pc >= 0) {
+    const bool lower_left = d.state.point_sprite_lower_left;
+    for (int i = 0; i < 4; ++i) {
+      std::copy_n(v.var, prog.varyings, corner_var[i]);
+      corner_var[i][pc] = i == 1 || i == 2 ? 1.0f : 0.0f;
+      corner_var[i][pc + 1] = (i >= 2) == lower_left ? 1.0f : 0.0f;
+      q[i].var = corner_var[i];
+    }
+  }
   q[0].x -= half;
   q[0].y -= half;
   q[1].x += half;

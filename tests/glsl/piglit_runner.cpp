@@ -193,13 +193,14 @@ struct Runner {
     return true;
   }
 
+  gpu::RenderState render_state;  // what enable/disable set
   void draw_quad(float x, float y, float w, float h) {
     const float v[] = {x, y, 0, 1, x + w, y,     0, 1, x + w, y + h, 0, 1,
                        x, y, 0, 1, x + w, y + h, 0, 1, x,     y + h, 0, 1};
     gpu::Buffer vbo(v, sizeof v);
     gpu::VertexLayout layout;
     layout.attrib(0, vbo, 4, gpu::AttribType::F32, 16, 0);
-    gpu::RenderState state;
+    gpu::RenderState state = render_state;
     std::vector<glsl::BufferBinding> points;
     block_buffers.clear();
     for (size_t i = 0; i < block_data.size(); ++i) {
@@ -413,6 +414,18 @@ struct Runner {
             ok = probe(x, y, 1, 1, want, nc, why);
           }
           if (!ok) return fail(why);
+        } else if ((w1 == "enable" || w1 == "disable") &&
+                   (w2.rfind("GL_CLIP_PLANE", 0) == 0 || w2.rfind("GL_CLIP_DISTANCE", 0) == 0)) {
+          // GL_CLIP_DISTANCEi is GL_CLIP_PLANEi: the program's clip distance i where it writes
+          // one (planes given with "clip plane", for gl_ClipVertex, are not supported).
+          const int i = w2.back() - '0';
+          if (i < 0 || i >= gpu::kMaxClipPlanes) return skip("command: " + c);
+          render_state.clip_plane_enable =
+              uint8_t(w1 == "enable" ? render_state.clip_plane_enable | (1u << i)
+                                     : render_state.clip_plane_enable & ~(1u << i));
+        } else if ((w1 == "enable" || w1 == "disable") &&
+                   (w2 == "GL_PROGRAM_POINT_SIZE" || w2 == "GL_VERTEX_PROGRAM_POINT_SIZE")) {
+          render_state.program_point_size = w1 == "enable";
         } else if (w1 == "link") {
           // link success / link error: handled above
         } else if (w1 == "frustum") {
@@ -420,9 +433,12 @@ struct Runner {
           if (n.size() < 6) return skip("frustum form: " + c);
           prog->set_compat_matrices(glm::mat4(1.0f), glm::frustum(n[0], n[1], n[2], n[3], n[4], n[5]));
         } else if (w1 == "ortho") {
-          // glOrtho(0, w, 0, h, -1, 1) on the projection matrix, as shader_runner does
-          prog->set_compat_matrices(glm::mat4(1.0f),
-                                    glm::ortho(0.0f, float(t.width), 0.0f, float(t.height), -1.0f, 1.0f));
+          // glOrtho(left, right, bottom, top, -1, 1) on the projection matrix, as shader_runner
+          // does; without numbers (0, w, 0, h).
+          const auto n = numbers(c.substr(5));
+          const glm::vec4 box = n.size() >= 4 ? glm::vec4(n[0], n[1], n[2], n[3])
+                                              : glm::vec4(0.0f, float(t.width), 0.0f, float(t.height));
+          prog->set_compat_matrices(glm::mat4(1.0f), glm::ortho(box[0], box[1], box[2], box[3], -1.0f, 1.0f));
         } else {
           return skip("command: " + c);
         }

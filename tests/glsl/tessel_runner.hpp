@@ -194,9 +194,14 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
     gpu::RenderState state;
     state.viewport = {0, 0, spec.width, spec.height};
     state.depth_test = spec.depth;
+    state.clip_plane_enable = spec.clip_distances;
+    state.program_point_size = true;  // as the oracle: GL_PROGRAM_POINT_SIZE, GL_POINT_SPRITE
     gpu::DrawCall call;
     call.count = uint32_t(spec.count);
     switch (spec.primitive) {
+      case 0x0000: call.topology = gpu::Topology::Points; break;
+      case 0x0001: call.topology = gpu::Topology::Lines; break;
+      case 0x0003: call.topology = gpu::Topology::LineStrip; break;
       case 0x0005: call.topology = gpu::Topology::TriangleStrip; break;
       case 0x0006: call.topology = gpu::Topology::TriangleFan; break;
       default: call.topology = gpu::Topology::Triangles; break;

@@ -125,10 +125,10 @@ TEST(Clip, CodesAndTrivialCases) {
   EXPECT_EQ(clip_code(planes, {100, 0, 0, 1}), 0u);   // outside the viewport, inside the guard band
   EXPECT_NE(clip_code(planes, {3000, 0, 0, 1}), 0u);  // beyond the guard band
   float t0, t1;
-  ASSERT_TRUE(clip_line(planes, ~0u, {0, 0, -3, 1}, {0, 0, 1, 1}, t0, t1));
+  ASSERT_TRUE(clip_line(planes, ~0u, {0, 0, -3, 1}, {0, 0, 1, 1}, nullptr, nullptr, t0, t1));
   EXPECT_NEAR(t0, 0.5f, 1e-6f);
   EXPECT_EQ(t1, 1.0f);
-  EXPECT_FALSE(clip_line(planes, ~0u, {0, 0, -3, 1}, {0, 0, -2, 1}, t0, t1));
+  EXPECT_FALSE(clip_line(planes, ~0u, {0, 0, -3, 1}, {0, 0, -2, 1}, nullptr, nullptr, t0, t1));
 }
 
 // The geometry phase computes clip codes and window positions eight vertices at a time

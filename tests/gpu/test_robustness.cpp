@@ -235,3 +235,49 @@ TEST(Robustness, ReviewedEdgeCases) {
     EXPECT_THROW(ctx.clear({}), Error);
   }
 }
+
+// A run-time shader whose point size, point coordinate or clip distance components are not
+// among its varyings is refused at draw() with an error naming them, before anything runs.
+TEST(Robustness, RuntimeShapeComponentsOutOfRangeAreAnError) {
+  struct Shader : tessel::gpu::RuntimeShader {
+    tessel::gpu::RuntimeShape s;
+    const tessel::gpu::RuntimeShape& shape() const override { return s; }
+    void vertex(tessel::gpu::VertexLanes&) const override {}
+    void fragment(tessel::gpu::FragmentLanes&) const override {}
+  };
+  Target t(8, 8);
+  Context ctx(1);
+  ctx.bind_framebuffer(&t.fb);
+  const tessel::gpu::VertexLayout layout;
+  auto draw = [&](auto set) {
+    auto sh = std::make_shared<Shader>();
+    sh->s.varyings = 4;
+    set(sh->s);
+    try {
+      ctx.draw(sh, layout, RenderState{}, {.count = 3});
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(draw([](auto& s) { s.point_coord = 3; }).find("point coordinate"), std::string::npos);
+  EXPECT_NE(draw([](auto& s) { s.point_size = 4; }).find("among its 4 varying components"),
+            std::string::npos);
+  EXPECT_NE(draw([](auto& s) {
+              s.clip_distance = 2;
+              s.clip_distances = 3;
+            }).find("clip distance"),
+            std::string::npos);
+  EXPECT_NE(draw([](auto& s) {
+              s.clip_distance = 0;
+              s.clip_distances = 9;
+            }).find("clip distance"),
+            std::string::npos);
+  EXPECT_EQ(draw([](auto& s) {
+              s.point_coord = 2;
+              s.clip_distance = 0;
+              s.clip_distances = 2;
+            }),
+            "");
+  ctx.finish();
+}

@@ -559,6 +559,12 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
   glDepthMask(GL_TRUE);
   glViewport(0, 0, W, H);
   glDepthRange(0.0, 1.0);
+  for (int i = 0; i < 8; ++i) {
+    if ((spec.clip_distances >> i) & 1)
+      glEnable(GLenum(GL_CLIP_DISTANCE0 + i));
+    else
+      glDisable(GLenum(GL_CLIP_DISTANCE0 + i));
+  }
   if (spec.depth) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

@@ -103,8 +103,11 @@ struct GlslDrawSpec {
   uint32_t primitive = 0x0004;  // GL_TRIANGLES; glDrawArrays(primitive, 0, count)
   int count = 0;
   int width = 16, height = 16;
-  int outputs = 1;                // RGBA32F colour attachments 0..outputs-1, glDrawBuffers on all (0..8)
-  bool depth = false;             // a GL_DEPTH_COMPONENT32F attachment, cleared to 1, GL_LESS test
+  int outputs = 1;             // RGBA32F colour attachments 0..outputs-1, glDrawBuffers on all (0..8)
+  bool depth = false;          // a GL_DEPTH_COMPONENT32F attachment, cleared to 1, GL_LESS test
+  uint8_t clip_distances = 0;  // bit i: glEnable(GL_CLIP_DISTANCE0 + i)
+  // GL_PROGRAM_POINT_SIZE and GL_POINT_SPRITE are always on (gl_PointSize and gl_PointCoord as
+  // in core GL).
   float clear[4] = {0, 0, 0, 0};  // every colour attachment is cleared to this
   // Fixed-function state for the compatibility built-ins (gl_ModelViewMatrix, ...):
   // 16 floats, column-major, loaded with glLoadMatrixf when non-empty (else identity).

@@ -38,6 +38,11 @@ struct RuntimeShape {
   bool lanes_independent = false;  // no derivatives and no implicit-LOD sampling
   int outputs = 1;                 // colour outputs 0..outputs-1 (MRT)
   uint32_t attributes = 0;         // attribute locations the vertex stage reads
+  // Varying components with a meaning for the pipeline (-1: none). They count in `varyings`.
+  int point_size = -1;     // the vertex's point size (gl_PointSize), for program_point_size
+  int point_coord = -1;    // two components the pipeline sets to gl_PointCoord (s, t) on points
+  int clip_distance = -1;  // the first of clip_distances (gl_ClipDistance[0..n)), for clipping
+  int clip_distances = 0;
   // The shader's float arithmetic must run with denormals flushed (SSE flush-to-zero and
   // denormals-are-zero), as llvmpipe runs GLSL. vertex() and fragment() do not set the mode
   // themselves: the pipeline sets it around its work for the draw (the shading loops and

@@ -83,6 +83,11 @@ struct RenderState {
   float offset_factor = 0.0f, offset_units = 0.0f;
   float line_width = 1.0f;
   float point_size = 1.0f;
+  // GL_PROGRAM_POINT_SIZE: a point's size is the one its vertex shader wrote (gl_PointSize,
+  // RuntimeShape::point_size) instead of point_size.
+  bool program_point_size = false;
+  // GL_POINT_SPRITE_COORD_ORIGIN: where gl_PointCoord's t is 0 (upper left, GL's default).
+  bool point_sprite_lower_left = false;
   bool depth_clamp = false;  // GL_DEPTH_CLAMP: no near/far clipping, depth clamped instead
   // GL edge flags (GL 2.1 §2.6.2): with polygon mode Line or Point, when >= 0 this varying
   // component of a triangle's vertex says whether the edge that starts at it is a boundary
@@ -90,6 +95,8 @@ struct RenderState {
   int8_t edge_flag_varying = -1;
 
   // User clip planes in clip space: a vertex is kept where dot(plane, clip_position) >= 0.
+  // For a run-time shader that writes clip distances (gl_ClipDistance, RuntimeShape), an
+  // enabled plane i below their count keeps where distance i >= 0 instead.
   uint8_t clip_plane_enable = 0;  // bit i enables plane i
   std::array<glm::vec4, kMaxClipPlanes> clip_planes{};
 

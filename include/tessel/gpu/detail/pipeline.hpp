@@ -204,6 +204,8 @@ class ProgramBase {
   uint64_t flat = 0, noperspective = 0;
   bool discards = false, writes_depth = false;
   int outputs = 1;
+  // Varying components the pipeline reads or sets itself (RuntimeShape; -1: none).
+  int point_size_var = -1, point_coord_var = -1, clip_distance_var = -1, clip_distances = 0;
   // Fetches and shades n vertices (element ids, base vertex added) of one instance; writes
   // clip positions and n * varyings floats, and, unless soa is null, the clip positions again
   // as blocks of eight x, eight y, eight z and eight w (n rounded up to a multiple of 8).
