@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <exception>
+#include <memory>
 #include <mutex>
 
 namespace tessel::glsl {
@@ -63,16 +64,21 @@ bool front_compile(int stage, const std::string& source, std::string& log) {
   }
 }
 
-bool front_link(const std::string& vertex, const std::string& fragment, UniformLayout& layout,
-                LoweredStage& vs, LoweredStage& fs, std::string& log) {
+bool front_link(const std::vector<std::string>& vertex, const std::vector<std::string>& fragment,
+                UniformLayout& layout, LoweredStage& vs, LoweredStage& fs, std::string& log) {
   init_glslang();
   std::lock_guard lock(glslang_mutex());
   try {
-    glslang::TShader tvs(EShLangVertex), tfs(EShLangFragment);
-    if (!parse(tvs, vertex, log) || !parse(tfs, fragment, log)) return false;
+    // The shader objects outlive the program that links them (glslang's rule).
+    std::vector<std::unique_ptr<glslang::TShader>> units;
     glslang::TProgram prog;
-    prog.addShader(&tvs);
-    prog.addShader(&tfs);
+    for (int stage = 0; stage < 2; ++stage) {
+      for (const std::string& source : stage == 0 ? vertex : fragment) {
+        units.push_back(std::make_unique<glslang::TShader>(stage == 0 ? EShLangVertex : EShLangFragment));
+        if (!parse(*units.back(), source, log)) return false;
+        prog.addShader(units.back().get());
+      }
+    }
     if (!prog.link(EShMsgDefault)) {
       log = prog.getInfoLog();
       if (log.empty()) log = "error: link failed\n";

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "lower.hpp"
 
@@ -11,9 +12,10 @@ namespace tessel::glsl {
 // Parses one stage (0 vertex, 1 fragment); returns whether it compiled, and its info log.
 bool front_compile(int stage, const std::string& source, std::string& log);
 
-// Parses and links both stages and lowers them into `vs` and `fs` (uniforms into `layout`);
-// false with the info log when glslang or the lowering refuses.
-bool front_link(const std::string& vertex, const std::string& fragment, UniformLayout& layout,
-                LoweredStage& vs, LoweredStage& fs, std::string& log);
+// Parses and links both stages, each of one or more shader objects (GL's several compilation
+// units: one of them has main()), and lowers them into `vs` and `fs` (uniforms into
+// `layout`); false with the info log when glslang or the lowering refuses.
+bool front_link(const std::vector<std::string>& vertex, const std::vector<std::string>& fragment,
+                UniformLayout& layout, LoweredStage& vs, LoweredStage& fs, std::string& log);
 
 }  // namespace tessel::glsl

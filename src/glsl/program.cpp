@@ -233,19 +233,29 @@ int builtin_attribute_location(std::string_view name) {
 
 std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragment,
                                        const LinkOptions& options) {
+  const Shader* both[2] = {&vertex, &fragment};
+  return link(std::span<const Shader* const>(both), options);
+}
+
+std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, const LinkOptions& options) {
   std::shared_ptr<Program> p(new Program());
   Impl& m = *p->impl_;
-  if (vertex.stage() != Stage::Vertex || fragment.stage() != Stage::Fragment) {
-    m.log = "error: a program needs a vertex shader and a fragment shader\n";
-    return p;
+  std::vector<std::string> sources[2];
+  for (const Shader* s : shaders) {
+    if (!s) continue;
+    if (!s->ok()) {
+      m.log = "error: linking with uncompiled/shader that failed to compile\n";
+      return p;
+    }
+    sources[s->stage() == Stage::Vertex ? 0 : 1].push_back(s->source());
   }
-  if (!vertex.ok() || !fragment.ok()) {
-    m.log = "error: linking with uncompiled/shader that failed to compile\n";
+  if (sources[0].empty() || sources[1].empty()) {
+    m.log = "error: a program needs a vertex shader and a fragment shader\n";
     return p;
   }
   auto linked = std::make_shared<Linked>();
   LoweredStage vs, fs;
-  if (!front_link(vertex.source(), fragment.source(), m.layout, vs, fs, m.log)) return p;
+  if (!front_link(sources[0], sources[1], m.layout, vs, fs, m.log)) return p;
   std::string errors;
   auto error = [&](const std::string& e) { errors += "error: " + e + "\n"; };
 

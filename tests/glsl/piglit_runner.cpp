@@ -98,6 +98,8 @@ struct Test {
   int glsl = 110;  // required GLSL version * 100
   int width = 250, height = 250;
   std::string vs, fs;
+  // Further [vertex shader] / [fragment shader] sections: more compilation units of the stage.
+  std::vector<std::string> more_vs, more_fs;
   bool passthrough = false;
   std::vector<std::string> vertex_data;
   std::vector<std::string> test;
@@ -112,8 +114,8 @@ Test parse(const std::string& path) {
     const std::string tl = trim(line);
     if (!tl.empty() && tl[0] == '[' && tl.back() == ']') {
       section = tl;
-      if ((tl == "[vertex shader]" && !t.vs.empty()) || (tl == "[fragment shader]" && !t.fs.empty()))
-        t.skip = "several shader objects for one stage (a Program takes one per stage)";
+      if (tl == "[vertex shader]" && !t.vs.empty()) t.more_vs.emplace_back();
+      if (tl == "[fragment shader]" && !t.fs.empty()) t.more_fs.emplace_back();
       if (section == "[vertex shader passthrough]")
         t.passthrough = true;
       else if (section != "[require]" && section != "[vertex shader]" && section != "[fragment shader]" &&
@@ -148,9 +150,9 @@ Test parse(const std::string& path) {
         // limits such as GL_MAX_... or "rlimit": taken as met
       }
     } else if (section == "[vertex shader]") {
-      t.vs += line + "\n";
+      (t.more_vs.empty() ? t.vs : t.more_vs.back()) += line + "\n";
     } else if (section == "[fragment shader]") {
-      t.fs += line + "\n";
+      (t.more_fs.empty() ? t.fs : t.more_fs.back()) += line + "\n";
     } else if (section == "[vertex data]") {
       if (!tl.empty() && tl[0] != '#') t.vertex_data.push_back(tl);
     } else if (section == "[test]") {
@@ -309,16 +311,24 @@ struct Runner {
     bool expect_link_error = false;
     for (const std::string& c : t.test)
       if (c == "link error") expect_link_error = true;
-    auto v = glsl::Shader::compile(glsl::Stage::Vertex, vs);
-    auto f = glsl::Shader::compile(glsl::Stage::Fragment, fs);
-    if (!v->ok() || !f->ok()) {
-      if (expect_link_error) return {};
-      return fail("compile: " + v->info_log() + f->info_log());
+    std::vector<std::shared_ptr<glsl::Shader>> shaders = {glsl::Shader::compile(glsl::Stage::Vertex, vs),
+                                                          glsl::Shader::compile(glsl::Stage::Fragment, fs)};
+    for (const std::string& s : t.more_vs)
+      shaders.push_back(glsl::Shader::compile(glsl::Stage::Vertex, versioned(s)));
+    for (const std::string& s : t.more_fs)
+      shaders.push_back(glsl::Shader::compile(glsl::Stage::Fragment, versioned(s)));
+    std::vector<const glsl::Shader*> units;
+    for (const auto& s : shaders) {
+      if (!s->ok()) {
+        if (expect_link_error) return {};
+        return fail("compile: " + s->info_log());
+      }
+      units.push_back(s.get());
     }
     glsl::LinkOptions lo;
     lo.attribute_locations["piglit_vertex"] = 0;
     lo.native_code = glsl::NativeCode::AtLink;  // the native code is what is tested
-    prog = glsl::Program::link(*v, *f, lo);
+    prog = glsl::Program::link(units, lo);
     if (expect_link_error) return prog->ok() ? fail("linked, but a link error was expected") : Result{};
     if (!prog->ok()) {
       if (prog->info_log().find("not supported") != std::string::npos)

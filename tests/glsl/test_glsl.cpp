@@ -100,6 +100,64 @@ TEST(Glsl, LinkErrors) {
   EXPECT_THROW(p->draw(ctx, gpu::VertexLayout{}, gpu::RenderState{}, {.count = 3}), gpu::Error);
 }
 
+// Several shader objects of one stage (glAttachShader) link as one stage's compilation units:
+// main() calls functions another unit defines, a uniform declared in two units is one
+// uniform. A function defined nowhere, or main() in two units, is a link error.
+TEST(Glsl, SeveralShaderObjectsPerStageLinkAsOne) {
+  auto vs_main = Shader::compile(Stage::Vertex, R"(#version 330
+layout(location = 0) in vec2 pos;
+out vec2 p;
+vec4 place(vec2 v);
+void main() { p = pos * 0.5 + 0.5; gl_Position = place(pos); })");
+  auto vs_lib =
+      Shader::compile(Stage::Vertex, "#version 330\nvec4 place(vec2 v) { return vec4(v, 0.0, 1.0); }\n");
+  auto fs_main = Shader::compile(Stage::Fragment, R"(#version 330
+in vec2 p;
+out vec4 c;
+uniform float u;
+vec4 shade(vec2 q);
+void main() { c = shade(p) + vec4(0.0, 0.0, u, 0.0); })");
+  auto fs_lib = Shader::compile(Stage::Fragment, R"(#version 330
+uniform float u;
+vec4 shade(vec2 q) { return vec4(q, u, 1.0); })");
+  for (auto* s : {vs_main.get(), vs_lib.get(), fs_main.get(), fs_lib.get()})
+    ASSERT_TRUE(s->ok()) << s->info_log();
+  const Shader* units[] = {fs_lib.get(), vs_main.get(), fs_main.get(), vs_lib.get()};
+  auto prog = Program::link(units);
+  ASSERT_TRUE(prog->ok()) << prog->info_log();
+  const int u = prog->uniform_location("u");
+  ASSERT_GE(u, 0);
+  const float quarter = 0.25f;
+  ASSERT_TRUE(prog->set_uniform(u, &quarter, 1));
+  gpu::Context ctx(2);
+  gpu::Texture2D color(gpu::Format::RGBA32F, 8, 8);
+  gpu::Framebuffer fb(&color);
+  ctx.bind_framebuffer(&fb);
+  const float quad_pos[] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
+  gpu::Buffer buf(quad_pos, sizeof quad_pos);
+  gpu::VertexLayout layout;
+  layout.attrib(prog->attribute_location("pos"), buf, 2, gpu::AttribType::F32, 0, 0);
+  gpu::RenderState st;
+  prog->draw(ctx, layout, st, {.count = 6});
+  ctx.finish();
+  const glm::vec4 px = color.fetch(0, 2, 5);  // p = ((2.5, 5.5) / 8)
+  EXPECT_FLOAT_EQ(px.x, 2.5f / 8.0f);
+  EXPECT_FLOAT_EQ(px.y, 5.5f / 8.0f);
+  EXPECT_FLOAT_EQ(px.z, 0.5f);  // u in both units is one uniform
+  EXPECT_FLOAT_EQ(px.w, 1.0f);
+  // Errors: the fragment library without its main, a function defined nowhere, two mains.
+  const Shader* no_main[] = {vs_main.get(), vs_lib.get(), fs_lib.get()};
+  EXPECT_FALSE(Program::link(no_main)->ok());
+  const Shader* undefined[] = {vs_main.get(), fs_main.get(), fs_lib.get()};
+  auto p2 = Program::link(undefined);
+  EXPECT_FALSE(p2->ok());
+  EXPECT_NE(p2->info_log().find("place"), std::string::npos) << p2->info_log();
+  const Shader* two_mains[] = {vs_main.get(), vs_lib.get(), vs_main.get(), fs_main.get(), fs_lib.get()};
+  EXPECT_FALSE(Program::link(two_mains)->ok());
+  const Shader* no_vertex[] = {fs_main.get(), fs_lib.get()};
+  EXPECT_FALSE(Program::link(no_vertex)->ok());
+}
+
 TEST(Glsl, ReflectionAndLocations) {
   auto v = Shader::compile(Stage::Vertex, R"(#version 330
 layout(location = 3) in vec4 fixed_loc;

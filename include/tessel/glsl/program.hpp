@@ -126,6 +126,10 @@ class Program {
   // ok() false and says why in info_log().
   static std::shared_ptr<Program> link(const Shader& vertex, const Shader& fragment,
                                        const LinkOptions& options = {});
+  // Links any number of shader objects (glAttachShader): one or more of each stage, which
+  // GL links as one stage's compilation units (exactly one of them defines main()).
+  static std::shared_ptr<Program> link(std::span<const Shader* const> shaders,
+                                       const LinkOptions& options = {});
   ~Program();
 
   bool ok() const;
