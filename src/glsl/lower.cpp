@@ -370,6 +370,39 @@ class Lowerer {
     return p;
   }
 
+  // The members of struct (or block) t placed at word `at`, under `prefix` ("" or "name").
+  static void add_block_members(const TType& t, const std::string& prefix, uint32_t at, bool row_major,
+                                std::vector<BlockMember>& out) {
+    uint32_t off = at;
+    for (const auto& m : *t.getStruct()) {
+      const TType& mt = *m.type;
+      const bool rm = member_row_major(mt, row_major);
+      off = round_up(off, std140_align(mt));
+      std::vector<uint32_t> scratch;
+      const uint32_t size = std140_layout(mt, off, rm, scratch);
+      const std::string name = (prefix.empty() ? "" : prefix + ".") + std::string(mt.getFieldName().c_str());
+      TType e = mt.isArray() ? TType(mt, 0) : TType();
+      const TType& el = mt.isArray() ? e : mt;
+      const int n = mt.isArray() ? array_length(mt) : 1;
+      if (el.isStruct()) {  // a struct, or each element of an array of structs
+        for (int i = 0; i < n; ++i)
+          add_block_members(el, mt.isArray() ? name + "[" + std::to_string(i) + "]" : name,
+                            off + uint32_t(i) * (size / uint32_t(n)), rm, out);
+      } else {
+        BlockMember bm;
+        bm.name = name;
+        bm.gl_type = gl_type_of(el);
+        bm.array_size = n;
+        bm.offset = off * 4;
+        if (mt.isArray()) bm.array_stride = size / uint32_t(n) * 4;
+        if (el.isMatrix()) bm.matrix_stride = 16;
+        bm.row_major = el.isMatrix() && rm;
+        out.push_back(bm);
+      }
+      off += size;
+    }
+  }
+
   // A uniform block: its region of uniform words, shared by both stages (by block name).
   Place block_place(const TIntermSymbol* s) {
     const TType& t = s->getType();
@@ -387,29 +420,11 @@ class Lowerer {
       b.word = uniforms_.words;
       b.bytes = words * 4;
       uniforms_.words += words;
-      // Members as GL names them, with their std140 offsets and strides.
+      // Members as GL names them (GL 3.3 §2.11.4: down to basic types and arrays of them,
+      // "s.x", "ss[1].x"), with their std140 offsets and strides.
       const std::string inst = name_of(s);
       const bool anonymous = inst.rfind("anon@", 0) == 0;
-      uint32_t off = 0;
-      for (const auto& m : *t.getStruct()) {
-        const TType& mt = *m.type;
-        const bool rm = member_row_major(mt, row_major);
-        off = round_up(off, std140_align(mt));
-        std::vector<uint32_t> mc;
-        const uint32_t size = std140_layout(mt, off, rm, mc);
-        BlockMember bm;
-        bm.name = (anonymous ? "" : bname + ".") + std::string(mt.getFieldName().c_str());
-        TType e = mt.isArray() ? TType(mt, 0) : TType();
-        const TType& el = mt.isArray() ? e : mt;
-        bm.gl_type = el.isStruct() ? 0 : gl_type_of(el);
-        bm.array_size = mt.isArray() ? array_length(mt) : 1;
-        bm.offset = off * 4;
-        if (mt.isArray()) bm.array_stride = size / uint32_t(bm.array_size) * 4;
-        if (el.isMatrix()) bm.matrix_stride = 16;
-        bm.row_major = el.isMatrix() && rm;
-        b.members.push_back(bm);
-        off += size;
-      }
+      add_block_members(t, anonymous ? "" : bname, 0, row_major, b.members);
       uniforms_.blocks.push_back(b);
     }
     Place p;
@@ -611,11 +626,19 @@ class Lowerer {
     return v;
   }
 
-  // A read of a value of type t: a bool in a uniform block is any non-zero word.
+  // A read of a value of type t: a bool in a uniform block is any non-zero word, also as a
+  // member of a struct or an element of an array read whole.
   Val read_typed(const Place& p, const TType& t) {
     Val v = read(p);
-    if (p.block && t.getBasicType() == glslang::EbtBool)
+    if (!p.block) return v;
+    if (t.getBasicType() == glslang::EbtBool) {
       for (Reg& r : v) r = emit(Op::INe, r, iconst(0));
+    } else if (t.isStruct()) {
+      std::vector<Base> bases;
+      component_bases(t, bases, nullptr);
+      for (size_t i = 0; i < v.size() && i < bases.size(); ++i)
+        if (bases[i] == Base::Bool) v[i] = emit(Op::INe, v[i], iconst(0));
+    }
     return v;
   }
 

@@ -222,7 +222,10 @@ struct Runner {
   Result set_block_member(const std::string& type, const std::string& name, const std::string& line) {
     std::string base = name;
     int index = 0;
-    if (const auto b = name.find('['); b != std::string::npos) {
+    // A trailing [n] is the element of an array member; brackets before it are part of the
+    // member's name (s[0].arr[1].v).
+    if (const auto b = name.rfind('[');
+        b != std::string::npos && name.back() == ']' && name.find('.', b) == std::string::npos) {
       base = name.substr(0, b);
       index = std::atoi(name.c_str() + b + 1);
     }
@@ -247,7 +250,12 @@ struct Runner {
           for (int r = 0; r < rows; ++r) {
             const size_t k = size_t(c * rows + r);
             if (k >= words.size()) continue;
-            const size_t at = off + size_t(c) * size_t(matrix ? 16 : 0) + size_t(r) * 4;
+            // Column c, row r: a column-major matrix's columns are matrix_stride apart, a
+            // row-major one's rows.
+            const size_t stride = size_t(m.matrix_stride ? m.matrix_stride : 16);
+            const size_t at = !matrix       ? off + size_t(r) * 4
+                              : m.row_major ? off + size_t(r) * stride + size_t(c) * 4
+                                            : off + size_t(c) * stride + size_t(r) * 4;
             if (at + 4 <= data.size()) std::memcpy(&data[at], &words[k], 4);
           }
         return {};

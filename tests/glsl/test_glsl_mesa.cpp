@@ -266,10 +266,61 @@ uniform Other { vec4 o; } other;)";
   EXPECT_EQ(off["v"], 16);
   EXPECT_EQ(off["arr"], 32);
   EXPECT_EQ(off["m"], 80);
-  EXPECT_EQ(off["s"], 128);
+  EXPECT_EQ(off["s.a"], 128);  // struct members down to basic types, as GL names them
+  EXPECT_EQ(off["s.b"], 136);
   EXPECT_EQ(off["flag"], 144);
   EXPECT_EQ(off["tail"], 160);
   EXPECT_EQ(prog->uniform_blocks()[size_t(prog->uniform_block_index("Other"))].members[0].name, "Other.o");
+}
+
+// Structs and arrays of structs in a uniform block, reflected leaf by leaf under GL's names
+// ("ts[1].y"), filled through those offsets and read whole (a struct copied out of the block
+// with a bool of value 2 in it, which reads as true), against llvmpipe.
+TEST(GlslMesa, UniformBlockStructMembersByLeafName) {
+  if (!oracle()) GTEST_SKIP() << "Mesa llvmpipe is not available";
+  const char* decl = R"(
+struct T { float x; bool b; vec2 y; mat2 m; };
+layout(std140) uniform Blk { vec3 head; T ts[2]; } blk;)";
+  const char* body =
+      "T q = blk.ts[i % 2]; c = vec4(q.x + blk.head.z, q.b ? 1.0 : -1.0, q.y.y + q.m[1][0], float(i));";
+  reference::GlslDrawSpec spec = quad_spec(kVertex330, fragment330(decl, body));
+  auto v = glsl::Shader::compile(glsl::Stage::Vertex, kVertex330);
+  auto f = glsl::Shader::compile(glsl::Stage::Fragment, spec.fragment);
+  ASSERT_TRUE(f->ok()) << f->info_log();
+  auto prog = glsl::Program::link(*v, *f);
+  ASSERT_TRUE(prog->ok()) << prog->info_log();
+  const glsl::UniformBlock& b = prog->uniform_blocks()[size_t(prog->uniform_block_index("Blk"))];
+  std::map<std::string, const glsl::UniformBlockMember*> m;
+  for (const auto& mb : b.members) m[mb.name] = &mb;
+  // std140: head 0, ts[0] at 16 (x 16, b 20, y 24, m 32 and 48), ts[1] at 64; size 112.
+  ASSERT_EQ(b.size, 112);
+  ASSERT_TRUE(m.count("Blk.ts[1].y") && m.count("Blk.ts[0].b") && m.count("Blk.ts[1].m")) << b.members.size();
+  EXPECT_EQ(m["Blk.ts[0].x"]->offset, 16);
+  EXPECT_EQ(m["Blk.ts[0].b"]->offset, 20);
+  EXPECT_EQ(m["Blk.ts[0].y"]->offset, 24);
+  EXPECT_EQ(m["Blk.ts[0].m"]->offset, 32);
+  EXPECT_EQ(m["Blk.ts[0].m"]->matrix_stride, 16);
+  EXPECT_EQ(m["Blk.ts[1].x"]->offset, 64);
+  std::vector<uint8_t> bytes(size_t(b.size), 0);
+  auto put = [&](const std::string& name, int k, auto value) {
+    std::memcpy(&bytes[size_t(m.at(name)->offset + 4 * k)], &value, 4);
+  };
+  put("Blk.head", 2, 0.5f);
+  for (int e = 0; e < 2; ++e) {
+    const std::string at = "Blk.ts[" + std::to_string(e) + "].";
+    put(at + "x", 0, 1.0f + float(e));
+    put(at + "b", 0, uint32_t(e == 0 ? 0 : 2));
+    put(at + "y", 1, 10.0f * float(e + 1));
+    put(at + "m", 4, 100.0f * float(e + 1));  // column 1, row 0
+  }
+  spec.uniform_buffers = {{"Blk", bytes}};
+  const reference::GlslResult mesa = oracle()->run(spec);
+  ASSERT_TRUE(mesa.ok) << mesa.log;
+  const TesselResult ours = run_tessel(spec);
+  ASSERT_TRUE(ours.ok) << ours.log;
+  const Mismatch mm = compare_floats(ours.outputs[0], mesa.outputs[0], spec.width, {0, 0});
+  EXPECT_EQ(mm.count, 0) << mm.first;
+  EXPECT_EQ(ours.outputs[0][4 * 1 + 1], 1.0f);  // pixel 1: ts[1].b = 2 reads as true
 }
 
 // An RGBA32F checker texture on unit 0 (red and green ramps, blue alternating), read by the

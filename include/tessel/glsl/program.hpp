@@ -94,7 +94,9 @@ struct BufferBinding {
 // A uniform block as GL reports it (glGetActiveUniformBlock*, glGetActiveUniforms with
 // GL_UNIFORM_OFFSET and the strides): std140 layout, which also serves shared and packed.
 struct UniformBlockMember {
-  std::string name;  // "member", or "Block.member" when the block has an instance name
+  // GL's name, down to basic types: "member", "s.x", "ss[1].x", prefixed "Block." when the
+  // block has an instance name; an array of a basic type is one member of `size` elements.
+  std::string name;
   uint32_t type = 0;
   int size = 1;                                         // array elements
   int offset = 0, array_stride = 0, matrix_stride = 0;  // bytes
