@@ -896,13 +896,18 @@ TEST(Sampling, BilinearTexelPairsGiveTheBitsOfSingleTexels) {
 }
 #endif
 
-TEST(Sampling, SixteenLanesGiveTheBitsOfTwoHalvesOfEight) {
-  Texture2D t(Format::RGBA8, 256, 128, 0);
-  std::vector<uint8_t> px(size_t(256) * 128 * 4);
-  std::mt19937 rng(11);
+// An RGBA8 texture of random texels with its full mip chain.
+static void fill_random_mipmapped(Texture2D& t, std::mt19937& rng) {
+  std::vector<uint8_t> px(size_t(t.width()) * size_t(t.height()) * 4);
   for (auto& p : px) p = uint8_t(rng());
   t.upload_rgba8(0, px.data(), px.size());
   t.generate_mipmaps();
+}
+
+TEST(Sampling, SixteenLanesGiveTheBitsOfTwoHalvesOfEight) {
+  Texture2D t(Format::RGBA8, 256, 128, 0);
+  std::mt19937 rng(11);
+  fill_random_mipmapped(t, rng);
   std::uniform_real_distribution<float> pos(-3.0f, 3.0f), lod(-1.5f, 9.5f);
   int fast = 0;
   for (int wrap = 0; wrap < 2; ++wrap) {
@@ -957,11 +962,8 @@ TEST(Sampling, SixteenLanesGiveTheBitsOfTwoHalvesOfEight) {
 // lookups, on the fast path and when it falls back (quads on different levels, NaN, bias).
 TEST(Sampling, ThirtyTwoLanesGiveTheBitsOfTwoSixteenLaneLookups) {
   Texture2D t(Format::RGBA8, 512, 256, 0);
-  std::vector<uint8_t> px(size_t(512) * 256 * 4);
   std::mt19937 rng(12);
-  for (auto& p : px) p = uint8_t(rng());
-  t.upload_rgba8(0, px.data(), px.size());
-  t.generate_mipmaps();
+  fill_random_mipmapped(t, rng);
   std::uniform_real_distribution<float> pos(-3.0f, 3.0f), lod(-1.5f, 9.5f);
   int fast = 0, calls = 0;
   for (int wrap = 0; wrap < 2; ++wrap) {
