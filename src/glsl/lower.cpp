@@ -407,25 +407,31 @@ class Lowerer {
   Place block_place(const TIntermSymbol* s) {
     const TType& t = s->getType();
     const std::string bname = t.getTypeName().c_str();
-    if (t.isArray()) fail(s, "arrays of uniform blocks are not supported yet ('" + bname + "')");
     const bool row_major = t.getQualifier().layoutMatrix == glslang::ElmRowMajor;
     std::vector<uint32_t> comps;
     const uint32_t words = round_up(std140_layout(t, 0, row_major, comps), 4);
+    // An array of blocks is one block per element ("B[0]", "B[1]", each with its own binding
+    // point, as GL 3.3 §2.11.4 lists them), in consecutive regions of `per` words.
+    const int n = t.isArray() ? array_length(t) : 1;
+    const uint32_t per = words / uint32_t(n);
+    auto element_name = [&](int i) { return t.isArray() ? bname + "[" + std::to_string(i) + "]" : bname; };
     size_t index = uniforms_.blocks.size();
     for (size_t i = 0; i < uniforms_.blocks.size(); ++i)
-      if (uniforms_.blocks[i].name == bname) index = i;
+      if (uniforms_.blocks[i].name == element_name(0)) index = i;
     if (index == uniforms_.blocks.size()) {
-      UniformBlockLayout b;
-      b.name = bname;
-      b.word = uniforms_.words;
-      b.bytes = words * 4;
-      uniforms_.words += words;
       // Members as GL names them (GL 3.3 §2.11.4: down to basic types and arrays of them,
       // "s.x", "ss[1].x"), with their std140 offsets and strides.
       const std::string inst = name_of(s);
       const bool anonymous = inst.rfind("anon@", 0) == 0;
-      add_block_members(t, anonymous ? "" : bname, 0, row_major, b.members);
-      uniforms_.blocks.push_back(b);
+      for (int i = 0; i < n; ++i) {
+        UniformBlockLayout b;
+        b.name = element_name(i);
+        b.word = uniforms_.words + uint32_t(i) * per;
+        b.bytes = per * 4;
+        add_block_members(t, anonymous ? "" : bname, 0, row_major, b.members);
+        uniforms_.blocks.push_back(b);
+      }
+      uniforms_.words += words;
     }
     Place p;
     p.where = Place::Where::Uniform;

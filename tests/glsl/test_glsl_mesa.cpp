@@ -320,6 +320,38 @@ layout(std140) uniform Blk { vec3 head; T ts[2]; } blk;)";
   EXPECT_EQ(ours.outputs[0][4 * 1 + 1], 1.0f);  // pixel 1: ts[1].b = 2 reads as true
 }
 
+// An array of uniform blocks is one block per element ("Light[0]", "Light[1]", each read from
+// its own binding point), indexed with constants, against llvmpipe.
+TEST(GlslMesa, ArraysOfUniformBlocks) {
+  const char* decl = R"(
+layout(std140) uniform Light { vec4 colour; float power; } lights[2];
+layout(std140) uniform Scale { float k; };)";
+  const char* body =
+      "c = (i % 2 == 0 ? lights[0].colour * lights[0].power : lights[1].colour * lights[1].power) * k;";
+  reference::GlslDrawSpec spec = quad_spec(kVertex330, fragment330(decl, body));
+  auto block = [](std::vector<float> v) {
+    std::vector<uint8_t> b(32, 0);
+    std::memcpy(b.data(), v.data(), v.size() * 4);
+    return b;
+  };
+  spec.uniform_buffers = {{"Light[0]", block({1, 0.5f, 0.25f, 1, 2})},
+                          {"Light[1]", block({0, 1, 0.75f, 0.5f, 3})},
+                          {"Scale", block({0.5f})}};
+  run_spec("uniform block arrays", spec, {0, 0});
+  auto v = glsl::Shader::compile(glsl::Stage::Vertex, kVertex330);
+  auto f = glsl::Shader::compile(glsl::Stage::Fragment, spec.fragment);
+  auto prog = glsl::Program::link(*v, *f);
+  ASSERT_TRUE(prog->ok()) << prog->info_log();
+  ASSERT_GE(prog->uniform_block_index("Light[1]"), 0);
+  EXPECT_NE(prog->uniform_block_index("Light[0]"), prog->uniform_block_index("Light[1]"));
+  EXPECT_EQ(prog->uniform_blocks()[size_t(prog->uniform_block_index("Light[1]"))].members[1].name,
+            "Light.power");
+  // The second element's data reaches the odd pixels: pixel 1 is (0, 1, 0.75, 0.5) * 3 * 0.5.
+  const TesselResult ours = run_tessel(spec);
+  ASSERT_TRUE(ours.ok) << ours.log;
+  EXPECT_EQ(ours.outputs[0][4 + 1], 1.5f);
+}
+
 // An RGBA32F checker texture on unit 0 (red and green ramps, blue alternating), read by the
 // uniform sampler `tex`.
 reference::GlslTexture checker_texture(int w, int h) {
