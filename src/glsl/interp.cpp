@@ -733,13 +733,13 @@ void run_texture(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl) {
       x /= w0;
       y /= h0;
     }
-    x += float(t.offset[0]) / w0;
-    if (!d1) y += float(t.offset[1]) / h0;
     uu[l] = x;
     vv[l] = y;
     ref[l] = r;
   }
   const bool implicit = !t.has_lod && !t.has_grad;
+  // textureOffset: whole texels of each level sampled (1D: s only).
+  const glm::ivec2 offset(t.offset[0], d1 ? 0 : t.offset[1]);
   if (t.shadow) {
     gpu::Sampler2DShadow ss{tex2, unit->sampler};
     ss.state.compare = true;
@@ -751,13 +751,13 @@ void run_texture(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl) {
                                                 vv[q | 2] - vv[q], tex2->width(), tex2->height());
         if (t.has_bias) lod += lanef(TexLanes::kLod, l);
       }
-      const float v = gpu::detail::sample_2d_compare(ss, uu[l], vv[l], ref[l], lod);
+      const float v = gpu::detail::sample_2d_compare(ss, uu[l], vv[l], ref[l], lod, offset);
       put(t, l, glm::vec4(v, v, v, 1.0f));
     }
     return;
   }
   gpu::Sampler2D s2{tex2, unit->sampler};
-  if (implicit && in_.fragment && !t.has_bias) {
+  if (implicit && in_.fragment && !t.has_bias && offset == glm::ivec2(0)) {
     const gpu::Vec4<gpu::Float16> r =
         gpu::texture(s2, gpu::Vec2<gpu::Float16>(gpu::Float16::load(uu), gpu::Float16::load(vv)));
     for (int l = 0; l < L; ++l) put(t, l, glm::vec4(r.x[l], r.y[l], r.z[l], r.w[l]));
@@ -782,7 +782,7 @@ void run_texture(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl) {
       lod = 0.0f;
     }
     if (t.has_bias) lod += lanef(TexLanes::kLod, l);
-    put(t, l, gpu::detail::sample_2d(s2, uu[l], vv[l], lod));
+    put(t, l, gpu::detail::sample_2d(s2, uu[l], vv[l], lod, offset));
   }
 }
 

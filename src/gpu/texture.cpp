@@ -531,15 +531,20 @@ Plan make_plan(const SamplerState& st, int levels, float lod) {
   return p;
 }
 
+// A texel offset (textureOffset) moves s and t by whole texels of each level sampled (GL 3.3
+// §3.8.11, as llvmpipe applies it): o / size, exact for power-of-two sizes.
 template <Format F, class Xf>
 TESSEL_INLINE glm::vec4 run_plan(const Texture2D& tex, const Plan& p, const SamplerState& st, float s,
-                                 float t, const glm::vec4& border, const Xf& xf) {
-  const glm::vec4 c0 =
-      sample_level<F>(level_ref(tex, p.level0), st.wrap_s, st.wrap_t, s, t, p.linear, border, xf);
+                                 float t, const glm::vec4& border, const Xf& xf, glm::ivec2 off = {}) {
+  auto one = [&](int level) {
+    const LevelRef L = level_ref(tex, level);
+    const float ls = off.x ? s + float(off.x) / float(L.w) : s,
+                lt = off.y ? t + float(off.y) / float(L.h) : t;
+    return sample_level<F>(L, st.wrap_s, st.wrap_t, ls, lt, p.linear, border, xf);
+  };
+  const glm::vec4 c0 = one(p.level0);
   if (p.level1 < 0 || p.blend == 0.0f) return c0;
-  const glm::vec4 c1 =
-      sample_level<F>(level_ref(tex, p.level1), st.wrap_s, st.wrap_t, s, t, p.linear, border, xf);
-  return lerp(c0, c1, p.blend);
+  return lerp(c0, one(p.level1), p.blend);
 }
 
 inline bool fixed_point_depth(Format f) {
@@ -631,13 +636,13 @@ inline void quad_lods(const Float8& u, const Float8& v, int w, int h, float lod[
 
 namespace detail {
 
-glm::vec4 sample_2d(const Sampler2D& s, float u, float v, float lod) {
+glm::vec4 sample_2d(const Sampler2D& s, float u, float v, float lod, glm::ivec2 offset) {
   if (s.texture == nullptr) return kMissing;
   const Texture2D& tex = *s.texture;
   const Plan p = make_plan(s.state, tex.levels(), lod);
   const glm::vec4 border = border_for(tex.format(), s.state.border_color);
   return with_format(tex.format(), [&](auto tag) {
-    return run_plan<decltype(tag)::value>(tex, p, s.state, u, v, border, Identity{});
+    return run_plan<decltype(tag)::value>(tex, p, s.state, u, v, border, Identity{}, offset);
   });
 }
 
@@ -650,20 +655,20 @@ glm::vec4 sample_cube(const SamplerCube& s, float x, float y, float z, float lod
   return sample_2d(face_sampler, fs, ft, lod);
 }
 
-float sample_2d_compare(const Sampler2DShadow& s, float u, float v, float ref, float lod) {
+float sample_2d_compare(const Sampler2DShadow& s, float u, float v, float ref, float lod, glm::ivec2 offset) {
   if (s.texture == nullptr) return 0.0f;
   const Texture2D& tex = *s.texture;
   const Plan p = make_plan(s.state, tex.levels(), lod);
   const glm::vec4 border = border_for(tex.format(), s.state.border_color);
   if (!s.state.compare) {
     return with_format(tex.format(), [&](auto tag) {
-      return run_plan<decltype(tag)::value>(tex, p, s.state, u, v, border, Identity{}).x;
+      return run_plan<decltype(tag)::value>(tex, p, s.state, u, v, border, Identity{}, offset).x;
     });
   }
   const Compare cmp = make_compare(s, ref);
   const glm::vec4 cborder = cmp(border);
   return with_format(tex.format(), [&](auto tag) {
-    return run_plan<decltype(tag)::value>(tex, p, s.state, u, v, cborder, cmp).x;
+    return run_plan<decltype(tag)::value>(tex, p, s.state, u, v, cborder, cmp, offset).x;
   });
 }
 

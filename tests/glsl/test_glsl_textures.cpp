@@ -95,6 +95,24 @@ constexpr Tolerance kExact{0, 0};
 
 // --- sampler3D ---------------------------------------------------------------------------------
 
+// Texel offsets on a mipmapped 2D texture move by texels of the level sampled (GL 3.3
+// §3.8.11), for implicit, explicit and gradient LODs, trilinear and nearest-mipmap filters.
+// (No LOD at exactly n + 0.5: there llvmpipe's nearest level rounds up, GL's formula down.)
+TEST(GlslTextures, Sampler2DOffsetsOnMipLevels) {
+  constexpr uint32_t kTex2D = 0x0DE1;
+  for (const uint32_t min : {kLinearMipmapLinear, kNearestMipmapNearest}) {
+    const auto tex = filtered(colour_texture(kTex2D, 32, 32, 1), min, kLinear, kRepeat, true);
+    for (const char* body : {
+             "c = textureOffset(tex, p * 3.0, ivec2(1, -2));",
+             "c = textureLodOffset(tex, p, 1.3 + 0.9 * t, ivec2(-3, 2));",
+             "c = textureGradOffset(tex, p, vec2(0.2, 0.0), vec2(0.0, 0.1 * t), ivec2(2, 1));",
+             "c = textureProjOffset(tex, vec3(p * 2.0, 0.5), ivec2(-1, -1));",
+             "c = textureOffset(tex, p * 5.0, ivec2(7, -8), 0.5);",
+         })
+      run("uniform sampler2D tex;", body, tex, kFiltered);
+  }
+}
+
 TEST(GlslTextures, Sampler3DFiltersAndWraps) {
   const std::string decl = "uniform sampler3D tex;";
   const reference::GlslTexture base = colour_texture(kTex3D, 8, 4, 4);

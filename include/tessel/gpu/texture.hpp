@@ -273,10 +273,12 @@ namespace detail {
 // unorm values rounded to nearest after clamping). Used by the attachments' writes too.
 glm::vec4 decode_texel(Format f, const std::byte* p);
 void encode_texel(Format f, std::byte* p, const glm::vec4& c);
-// Samples at an explicit level of detail. A missing texture samples as (0,0,0,1).
-glm::vec4 sample_2d(const Sampler2D& s, float u, float v, float lod);
+// Samples at an explicit level of detail. A missing texture samples as (0,0,0,1). `offset`
+// is textureOffset's, in texels of each level sampled.
+glm::vec4 sample_2d(const Sampler2D& s, float u, float v, float lod, glm::ivec2 offset = {});
 glm::vec4 sample_cube(const SamplerCube& s, float x, float y, float z, float lod);
-float sample_2d_compare(const Sampler2DShadow& s, float u, float v, float ref, float lod);
+float sample_2d_compare(const Sampler2DShadow& s, float u, float v, float ref, float lod,
+                        glm::ivec2 offset = {});
 // LOD from the derivatives of the texture coordinates (GL 4.6 §8.14.1, equations 8.5-8.7).
 float lod_from_derivatives(float dudx, float dvdx, float dudy, float dvdy, int width, int height);
 glm::vec4 texel_fetch(const Texture2D* t, int x, int y, int level);
