@@ -121,6 +121,22 @@ void component_bases(const TType& t, std::vector<Base>& out, const TIntermNode* 
   }
 }
 
+// A struct's members' names and types, nested structs and array sizes included, without
+// qualifiers: what makes two stages' struct variables the same type (GLSL 1.50 §4.3.4).
+std::string struct_signature(const TType& t) {
+  std::string r;
+  for (const auto& m : *t.getStruct()) {
+    const TType& mt = *m.type;
+    r.append(mt.getFieldName().c_str()).append(":").append(mt.getBasicTypeString().c_str());
+    for (const int n :
+         {mt.getVectorSize(), mt.getMatrixCols(), mt.getMatrixRows(), mt.isArray() ? array_length(mt) : 0})
+      r.append(",").append(std::to_string(n));
+    if (mt.isStruct()) r.append("{").append(struct_signature(mt)).append("}");
+    r.append(";");
+  }
+  return r;
+}
+
 uint32_t fbits(float f) { return std::bit_cast<uint32_t>(f); }
 
 using Val = std::vector<Reg>;
@@ -488,7 +504,15 @@ class Lowerer {
       f.gl_type = gl_type_of(el);
       f.base = base_of(el, s);
     } else {
-      fail(s, "struct inputs and outputs are not supported yet ('" + name + "')");
+      // A struct (GLSL 1.50 allows them between stages): its components in member order.
+      // Stages match it by name and by this signature of its members' names and types; it
+      // counts as integer (so it must be flat) when any member is.
+      f.gl_type = 0x80000000u | uint32_t(std::hash<std::string>{}(struct_signature(el)) & 0x7FFFFFFFu);
+      std::vector<Base> bases;
+      component_bases(el, bases, s);
+      f.base = Base::Float;
+      for (Base b : bases)
+        if (b != Base::Float) f.base = b;
     }
     const auto& q = t.getQualifier();
     if (q.hasLocation()) f.location = int(q.layoutLocation);

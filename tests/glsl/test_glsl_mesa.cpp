@@ -352,6 +352,48 @@ layout(std140) uniform Scale { float k; };)";
   EXPECT_EQ(ours.outputs[0][4 + 1], 1.5f);
 }
 
+// Structs between the stages (GLSL 1.50 §4.3.4): matched by name and member types, each
+// member interpolated as a varying of its own type would be (an integer struct flat), against
+// llvmpipe; a struct of another shape in the fragment shader is a link error (glslang names
+// the struct).
+TEST(GlslMesa, StructVaryings) {
+  reference::GlslDrawSpec spec;
+  spec.vertex = R"(#version 330
+layout(location = 0) in vec2 pos;
+struct V { vec3 n; float k; vec2 uv[2]; };
+struct I { int a; ivec2 b; };
+out V v;
+flat out I f;
+void main() {
+  v.n = vec3(pos, 0.5);
+  v.k = pos.x * pos.y;
+  v.uv[0] = pos * 2.0;
+  v.uv[1] = pos.yx;
+  f.a = gl_VertexID * 7;
+  f.b = ivec2(gl_VertexID, -gl_VertexID);
+  gl_Position = vec4(pos, 0.0, 1.0);
+})";
+  spec.fragment = R"(#version 330
+struct V { vec3 n; float k; vec2 uv[2]; };
+struct I { int a; ivec2 b; };
+in V v;
+flat in I f;
+out vec4 c;
+void main() { c = vec4(v.n.x + v.uv[1].x, v.k + v.uv[0].y, float(f.a + f.b.x), float(f.b.y)); })";
+  spec.attributes.push_back({"pos", 2, {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1}});
+  spec.count = 6;
+  run_spec("struct varyings", spec, {2e-6f, 2e-6f});
+  auto vs = glsl::Shader::compile(glsl::Stage::Vertex, spec.vertex);
+  std::string other = spec.fragment;
+  other.replace(other.find("float k;"), 8, "vec2 k; ");
+  other.replace(other.find("v.k +"), 5, "v.k.x +");
+  auto fs = glsl::Shader::compile(glsl::Stage::Fragment, other);
+  ASSERT_TRUE(fs->ok()) << fs->info_log();
+  auto prog = glsl::Program::link(*vs, *fs);
+  EXPECT_FALSE(prog->ok());
+  EXPECT_NE(prog->info_log().find("V"), std::string::npos) << prog->info_log();
+}
+
 // An RGBA32F checker texture on unit 0 (red and green ramps, blue alternating), read by the
 // uniform sampler `tex`.
 reference::GlslTexture checker_texture(int w, int h) {
