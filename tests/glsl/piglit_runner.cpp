@@ -202,6 +202,9 @@ struct Runner {
     gpu::Buffer vbo(v, sizeof v);
     gpu::VertexLayout layout;
     layout.attrib(0, vbo, 4, gpu::AttribType::F32, 16, 0);
+    draw(layout, {.topology = gpu::Topology::Triangles, .count = 6});
+  }
+  void draw(const gpu::VertexLayout& layout, const gpu::DrawCall& call) {
     gpu::RenderState state = render_state;
     std::vector<glsl::BufferBinding> points;
     block_buffers.clear();
@@ -210,8 +213,69 @@ struct Runner {
       prog->set_uniform_block_binding(int(i), int(i));
       points.push_back({block_buffers.back().get(), 0, 0});
     }
-    prog->draw(ctx, layout, state, {.topology = gpu::Topology::Triangles, .count = 6}, {}, points);
+    prog->draw(ctx, layout, state, call, {}, points);
     ctx.finish();
+  }
+
+  // `draw arrays MODE first count` over the [vertex data] section: its header names each
+  // column's attribute, type and size ("vertex/float/3 colour/float/4"; int and uint too).
+  Result draw_arrays(const std::string& mode, int first, int count) {
+    static const std::map<std::string, gpu::Topology> kModes = {
+        {"GL_POINTS", gpu::Topology::Points},           {"GL_LINES", gpu::Topology::Lines},
+        {"GL_LINE_STRIP", gpu::Topology::LineStrip},    {"GL_LINE_LOOP", gpu::Topology::LineLoop},
+        {"GL_TRIANGLES", gpu::Topology::Triangles},     {"GL_TRIANGLE_STRIP", gpu::Topology::TriangleStrip},
+        {"GL_TRIANGLE_FAN", gpu::Topology::TriangleFan}};
+    const auto m = kModes.find(mode);
+    if (m == kModes.end() || t.vertex_data.empty() || first < 0 || count < 0)
+      return skip("command: draw arrays " + mode);
+    struct Column {
+      int location, size;
+      bool integer;
+    };
+    std::vector<Column> columns;
+    std::istringstream head(t.vertex_data[0]);
+    std::string spec;
+    while (head >> spec) {
+      const auto a = spec.find('/'), b = spec.rfind('/');
+      if (a == std::string::npos || a == b) return skip("vertex data header: " + spec);
+      const std::string name = spec.substr(0, a), type = spec.substr(a + 1, b - a - 1);
+      const int size = std::atoi(spec.c_str() + b + 1);
+      if (size < 1 || size > 4 || (type != "float" && type != "int" && type != "uint"))
+        return skip("vertex data column: " + spec);
+      int loc = prog->attribute_location(name);
+      if (loc < 0) loc = glsl::builtin_attribute_location(name);
+      columns.push_back({loc, size, type != "float"});
+    }
+    const int rows = int(t.vertex_data.size()) - 1;
+    if (first + count > rows) return fail("draw arrays past the vertex data");
+    std::vector<std::vector<uint32_t>> data(columns.size());
+    for (int r = 1; r <= rows; ++r) {
+      std::istringstream in(t.vertex_data[size_t(r)]);
+      for (size_t c = 0; c < columns.size(); ++c)
+        for (int k = 0; k < columns[c].size; ++k) {
+          std::string w;
+          in >> w;
+          uint32_t bits;
+          if (columns[c].integer) {
+            bits = uint32_t(std::stoll(w, nullptr, 0));
+          } else {
+            const float f = std::stof(w);
+            std::memcpy(&bits, &f, 4);
+          }
+          data[c].push_back(bits);
+        }
+    }
+    std::vector<std::unique_ptr<gpu::Buffer>> vbos;
+    gpu::VertexLayout layout;
+    for (size_t c = 0; c < columns.size(); ++c) {
+      if (columns[c].location < 0) continue;  // inactive, as GL skips location -1
+      vbos.push_back(std::make_unique<gpu::Buffer>(data[c].data(), data[c].size() * 4));
+      layout.attrib(columns[c].location, *vbos.back(), columns[c].size,
+                    columns[c].integer ? gpu::AttribType::I32 : gpu::AttribType::F32, 0, 0);
+      layout.attribs[size_t(columns[c].location)].integer = columns[c].integer;
+    }
+    draw(layout, {.topology = m->second, .first = uint32_t(first), .count = uint32_t(count)});
+    return {};
   }
 
   // Uniform blocks get a buffer each, bound at the block's index (as shader_runner does);
@@ -361,6 +425,12 @@ struct Runner {
         } else if (w1 == "clear") {
           ctx.clear({.color = clear_color, .clear_depth = false, .clear_stencil = false});
           ctx.finish();
+        } else if (w1 == "draw" && w2 == "arrays") {
+          std::string mode;
+          int first = -1, count = -1;
+          in >> mode >> first >> count;
+          Result r = draw_arrays(mode, first, count);
+          if (r.outcome != Outcome::Pass) return r;
         } else if (w1 == "draw" && w2 == "rect") {
           std::string rest;
           std::getline(in, rest);
