@@ -458,6 +458,23 @@ class Lowerer {
     return p;
   }
 
+  // The type of interface variable f, of element type el (not an array): a GL type, or for a
+  // struct (GLSL 1.50 allows them between stages) a signature of its members' names and types
+  // that stages match on; a struct counts as integer (so it must be flat) when any member is.
+  static void set_type(Interface& f, const TType& el, const TIntermNode* where) {
+    if (!el.isStruct()) {
+      f.gl_type = gl_type_of(el);
+      f.base = base_of(el, where);
+      return;
+    }
+    f.gl_type = 0x80000000u | uint32_t(std::hash<std::string>{}(struct_signature(el)) & 0x7FFFFFFFu);
+    std::vector<Base> bases;
+    component_bases(el, bases, where);
+    f.base = Base::Float;
+    for (Base b : bases)
+      if (b != Base::Float) f.base = b;
+  }
+
   Interface& interface_for(const TIntermSymbol* s, bool output) {
     auto& list = output ? out_.outputs : out_.inputs;
     const std::string name = name_of(s);
@@ -467,19 +484,27 @@ class Lowerer {
     if (t.getBasicType() == glslang::EbtBlock && !t.isArray()) {
       // An interface block (gl_PerVertex, for gl_Position in GLSL 1.50 and later): its
       // members are interface variables of their own, in consecutive registers.
+      // A user block (GLSL 1.50 §4.3.7) between the stages: its members are matched as
+      // "Block.member" (by the block's name, not the instance's), each with its own
+      // interpolation qualifier or the block's.
       const int total = count(t);
       const Reg base = fresh(total);
+      const std::string block = t.getTypeName().c_str();
+      const bool user = block != "gl_PerVertex";
       int off = 0;
       for (const auto& m : *t.getStruct()) {
         const TType& mt = *m.type;
         Interface f;
-        f.name = std::string(mt.getFieldName().c_str());
+        f.name = (user ? block + "." : std::string()) + std::string(mt.getFieldName().c_str());
         f.components = count(mt);
         f.array_size = mt.isArray() ? array_length(mt) : 0;
         TType e = mt.isArray() ? TType(mt, 0) : TType();
         const TType& el = mt.isArray() ? e : mt;
-        f.gl_type = gl_type_of(el);
-        f.base = base_of(el, s);
+        set_type(f, el, s);
+        const auto& mq = mt.getQualifier();
+        const auto& bq = t.getQualifier();
+        f.flat = mq.flat || bq.flat;
+        f.noperspective = mq.nopersp || bq.nopersp;
         f.builtin = f.name.rfind("gl_", 0) == 0;
         f.reg = base + Reg(off);
         off += f.components;
@@ -500,20 +525,7 @@ class Lowerer {
     f.array_size = t.isArray() ? array_length(t) : 0;
     TType e = t.isArray() ? TType(t, 0) : TType();
     const TType& el = t.isArray() ? e : t;
-    if (!el.isStruct()) {
-      f.gl_type = gl_type_of(el);
-      f.base = base_of(el, s);
-    } else {
-      // A struct (GLSL 1.50 allows them between stages): its components in member order.
-      // Stages match it by name and by this signature of its members' names and types; it
-      // counts as integer (so it must be flat) when any member is.
-      f.gl_type = 0x80000000u | uint32_t(std::hash<std::string>{}(struct_signature(el)) & 0x7FFFFFFFu);
-      std::vector<Base> bases;
-      component_bases(el, bases, s);
-      f.base = Base::Float;
-      for (Base b : bases)
-        if (b != Base::Float) f.base = b;
-    }
+    set_type(f, el, s);
     const auto& q = t.getQualifier();
     if (q.hasLocation()) f.location = int(q.layoutLocation);
     f.flat = q.flat;

@@ -394,6 +394,34 @@ void main() { c = vec4(v.n.x + v.uv[1].x, v.k + v.uv[0].y, float(f.a + f.b.x), f
   EXPECT_NE(prog->info_log().find("V"), std::string::npos) << prog->info_log();
 }
 
+// A user interface block between the stages (GLSL 1.50 §4.3.7): matched by the block's name,
+// apart from plain varyings of the same member names, each member interpolated by its own
+// qualifier (a triangle with different w's, so smooth and noperspective differ), against
+// llvmpipe.
+TEST(GlslMesa, InterfaceBlocksBetweenStages) {
+  reference::GlslDrawSpec spec;
+  spec.vertex = R"(#version 150
+in vec4 pos;
+out float a;
+out Blk { flat float a; noperspective float b; float c; } vs_side;
+void main() {
+  float v = float(gl_VertexID) + 0.25;
+  a = -v;
+  vs_side.a = v;
+  vs_side.b = v * 2.0;
+  vs_side.c = v * 3.0;
+  gl_Position = pos;
+})";
+  spec.fragment = R"(#version 150
+in float a;
+in Blk { flat float a; noperspective float b; float c; } fs_side;
+out vec4 c;
+void main() { c = vec4(a, fs_side.a, fs_side.b, fs_side.c); })";
+  spec.attributes.push_back({"pos", 4, {-1, -1, 0, 1, 2, -2, 0, 2, -1, 3, 0, 3}});
+  spec.count = 3;
+  run_spec("interface blocks", spec, {2e-6f, 2e-6f});
+}
+
 // An RGBA32F checker texture on unit 0 (red and green ramps, blue alternating), read by the
 // uniform sampler `tex`.
 reference::GlslTexture checker_texture(int w, int h) {
