@@ -575,14 +575,19 @@ void run_texture_layered(const ir::TexOp& t, const TextureUnit* unit, const RunI
 // and a float result: the coordinate rows go to the sixteen-lane sampler and its results to
 // the result rows without a pass over single lanes. flatten: the sampler (texture_simd.hpp)
 // is inlined here whole, as it is into a C++ shader; run_texture's size kept GCC from it.
-__attribute__((flatten, noinline)) static void texture_2d_rows(const gpu::Sampler2D& s2, TexLanes& tl) {
-  const gpu::Vec4<gpu::Float16> r =
-      gpu::texture(s2, gpu::Vec2<gpu::Float16>(gpu::Float16::load(reinterpret_cast<const float*>(tl.in[0])),
-                                               gpu::Float16::load(reinterpret_cast<const float*>(tl.in[1]))));
+// A lane structure's two coordinate rows, and its four result rows.
+static gpu::Vec2<gpu::Float16> coord_rows(const TexLanes& tl) {
+  return {gpu::Float16::load(reinterpret_cast<const float*>(tl.in[0])),
+          gpu::Float16::load(reinterpret_cast<const float*>(tl.in[1]))};
+}
+static void store_rows(const gpu::Vec4<gpu::Float16>& r, TexLanes& tl) {
   r.x.store(reinterpret_cast<float*>(tl.out[0]));
   r.y.store(reinterpret_cast<float*>(tl.out[1]));
   r.z.store(reinterpret_cast<float*>(tl.out[2]));
   r.w.store(reinterpret_cast<float*>(tl.out[3]));
+}
+__attribute__((flatten, noinline)) static void texture_2d_rows(const gpu::Sampler2D& s2, TexLanes& tl) {
+  store_rows(gpu::texture(s2, coord_rows(tl)), tl);
 }
 
 // Two lane structures' lookups on one texture: thirty-two lanes at once when every quad's LOD
@@ -590,26 +595,16 @@ __attribute__((flatten, noinline)) static void texture_2d_rows(const gpu::Sample
 // lookups), else one after the other.
 __attribute__((flatten, noinline)) static void texture_2d_rows_pair(const gpu::Sampler2D& s2, TexLanes& a,
                                                                     TexLanes& b) {
-  auto coords = [](const TexLanes& tl) {
-    return gpu::Vec2<gpu::Float16>(gpu::Float16::load(reinterpret_cast<const float*>(tl.in[0])),
-                                   gpu::Float16::load(reinterpret_cast<const float*>(tl.in[1])));
-  };
-  auto store = [](const gpu::Vec4<gpu::Float16>& r, TexLanes& tl) {
-    r.x.store(reinterpret_cast<float*>(tl.out[0]));
-    r.y.store(reinterpret_cast<float*>(tl.out[1]));
-    r.z.store(reinterpret_cast<float*>(tl.out[2]));
-    r.w.store(reinterpret_cast<float*>(tl.out[3]));
-  };
 #if defined(__AVX2__)
   gpu::Vec4<gpu::Float16> ra, rb;
-  if (gpu::detail::trilinear32(*s2.texture, s2.state, coords(a), coords(b), ra, rb)) {
-    store(ra, a);
-    store(rb, b);
+  if (gpu::detail::trilinear32(*s2.texture, s2.state, coord_rows(a), coord_rows(b), ra, rb)) {
+    store_rows(ra, a);
+    store_rows(rb, b);
     return;
   }
 #endif
-  store(gpu::texture(s2, coords(a)), a);
-  store(gpu::texture(s2, coords(b)), b);
+  store_rows(gpu::texture(s2, coord_rows(a)), a);
+  store_rows(gpu::texture(s2, coord_rows(b)), b);
 }
 
 bool texture_2d_implicit(const ir::TexOp& t) {

@@ -482,11 +482,10 @@ class Lowerer {
       if (i.name == name) return i;
     const TType& t = s->getType();
     if (t.getBasicType() == glslang::EbtBlock && !t.isArray()) {
-      // An interface block (gl_PerVertex, for gl_Position in GLSL 1.50 and later): its
-      // members are interface variables of their own, in consecutive registers.
-      // A user block (GLSL 1.50 §4.3.7) between the stages: its members are matched as
-      // "Block.member" (by the block's name, not the instance's), each with its own
-      // interpolation qualifier or the block's.
+      // An interface block: its members are interface variables of their own, in
+      // consecutive registers. gl_PerVertex's (gl_Position in GLSL 1.50 and later) keep their
+      // names; a user block's (GLSL 1.50 §4.3.7) are matched as "Block.member" (the block's
+      // name, not the instance's), each with its own interpolation qualifier or the block's.
       const int total = count(t);
       const Reg base = fresh(total);
       const std::string block = t.getTypeName().c_str();
@@ -501,10 +500,8 @@ class Lowerer {
         TType e = mt.isArray() ? TType(mt, 0) : TType();
         const TType& el = mt.isArray() ? e : mt;
         set_type(f, el, s);
-        const auto& mq = mt.getQualifier();
-        const auto& bq = t.getQualifier();
-        f.flat = mq.flat || bq.flat;
-        f.noperspective = mq.nopersp || bq.nopersp;
+        f.flat = mt.getQualifier().flat || t.getQualifier().flat;
+        f.noperspective = mt.getQualifier().nopersp || t.getQualifier().nopersp;
         f.builtin = f.name.rfind("gl_", 0) == 0;
         f.reg = base + Reg(off);
         off += f.components;
@@ -668,19 +665,15 @@ class Lowerer {
     return v;
   }
 
-  // A read of a value of type t: a bool in a uniform block is any non-zero word, also as a
+  // A read of a value of type t: a bool in a uniform block is any non-zero word, alone or as a
   // member of a struct or an element of an array read whole.
   Val read_typed(const Place& p, const TType& t) {
     Val v = read(p);
     if (!p.block) return v;
-    if (t.getBasicType() == glslang::EbtBool) {
-      for (Reg& r : v) r = emit(Op::INe, r, iconst(0));
-    } else if (t.isStruct()) {
-      std::vector<Base> bases;
-      component_bases(t, bases, nullptr);
-      for (size_t i = 0; i < v.size() && i < bases.size(); ++i)
-        if (bases[i] == Base::Bool) v[i] = emit(Op::INe, v[i], iconst(0));
-    }
+    std::vector<Base> bases;
+    component_bases(t, bases, nullptr);
+    for (size_t i = 0; i < v.size() && i < bases.size(); ++i)
+      if (bases[i] == Base::Bool) v[i] = emit(Op::INe, v[i], iconst(0));
     return v;
   }
 

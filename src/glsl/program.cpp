@@ -330,6 +330,19 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
   // Varyings: matched by name; each matched fragment input gets consecutive slots.
   int slot = 0;
   std::vector<const Interface*> pipeline_inputs;
+  // Copies of n components between a stage's registers and varying components first.. of the
+  // lane rows; a fragment input's components past n read zero.
+  auto to_fragment = [&](const Interface& i, int first, int n) {
+    for (int c = 0; c < n; ++c)
+      linked->fs_in.push_back(
+          {i.reg + ir::Reg(c), offset_of(&FragmentLanes::varyings) + uint32_t((first + c) * ir::kLanes * 4)});
+    if (n < i.components) fs.ir.variables.push_back({i.reg + ir::Reg(n), uint32_t(i.components - n)});
+  };
+  auto from_vertex = [&](const Interface& o, int first, int n) {
+    for (int c = 0; c < n; ++c)
+      linked->vs_out.push_back(
+          {o.reg + ir::Reg(c), offset_of(&VertexLanes::varyings) + uint32_t((first + c) * ir::kLanes * 4)});
+  };
   for (const Interface& o : vs.outputs) {
     if (o.name == "gl_Position") {
       for (int c = 0; c < 4; ++c)
@@ -381,14 +394,11 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
       error("too many varying components (at most " + std::to_string(gpu::kMaxVaryings) + ")");
       break;
     }
-    for (int c = 0; c < i.components; ++c) {
-      const uint32_t off = offset_of(&VertexLanes::varyings) + uint32_t((slot + c) * ir::kLanes * 4);
-      linked->vs_out.push_back({o->reg + ir::Reg(c), off});
-      linked->fs_in.push_back(
-          {i.reg + ir::Reg(c), offset_of(&FragmentLanes::varyings) + uint32_t((slot + c) * ir::kLanes * 4)});
-      if (i.flat || i.base != Base::Float) linked->shape.flat |= uint64_t(1) << (slot + c);
-      if (i.noperspective) linked->shape.noperspective |= uint64_t(1) << (slot + c);
-    }
+    from_vertex(*o, slot, i.components);
+    to_fragment(i, slot, i.components);
+    const uint64_t bits = (i.components >= 64 ? ~uint64_t(0) : (uint64_t(1) << i.components) - 1) << slot;
+    if (i.flat || i.base != Base::Float) linked->shape.flat |= bits;
+    if (i.noperspective) linked->shape.noperspective |= bits;
     slot += i.components;
   }
   // Then the components the pipeline reads (gl_PointSize, gl_ClipDistance) or sets
@@ -400,17 +410,6 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
     }
     slot += n;
     return slot - n;
-  };
-  auto to_fragment = [&](const Interface& i, int first, int n) {
-    for (int c = 0; c < n; ++c)
-      linked->fs_in.push_back(
-          {i.reg + ir::Reg(c), offset_of(&FragmentLanes::varyings) + uint32_t((first + c) * ir::kLanes * 4)});
-    if (n < i.components) fs.ir.variables.push_back({i.reg + ir::Reg(n), uint32_t(i.components - n)});
-  };
-  auto from_vertex = [&](const Interface& o, int first, int n) {
-    for (int c = 0; c < n; ++c)
-      linked->vs_out.push_back(
-          {o.reg + ir::Reg(c), offset_of(&VertexLanes::varyings) + uint32_t((first + c) * ir::kLanes * 4)});
   };
   for (const Interface& o : vs.outputs) {
     if (o.block || !o.builtin) continue;
