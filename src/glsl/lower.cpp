@@ -14,6 +14,7 @@
 #include <bit>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <unordered_map>
@@ -616,7 +617,13 @@ class Lowerer {
       case glslang::EbtFloat:
       case glslang::EbtDouble:
         d = c.getDConst();
-        i = int64_t(d);
+        // A constant converted as the run-time conversion is (interp.cpp f2i/f2u): in range
+        // it truncates; out of range, or NaN, gives INT_MIN as an int and all bits as a uint.
+        if (want == Base::Uint)
+          i = d > -1.0 && d < 4294967296.0 ? int64_t(d) : int64_t(0xFFFFFFFFu);
+        else
+          i = d > -2147483904.0 && d < 2147483648.0 ? int64_t(d)
+                                                    : int64_t(std::numeric_limits<int32_t>::min());
         b = d != 0;
         break;
       case glslang::EbtInt:

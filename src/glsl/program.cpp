@@ -269,6 +269,7 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
     const int n = locations_of(a);
     if (loc < 0 || loc + n > gpu::kMaxVertexAttribs) {
       error("attribute '" + a.name + "' has no room at location " + std::to_string(loc));
+      a.location = -1;  // never addressed: the link fails
       return;
     }
     a.location = loc;

@@ -92,6 +92,16 @@ TEST(Glsl, LinkErrors) {
   if (f->ok()) {
     EXPECT_FALSE(Program::link(*v, *f)->ok());
   }
+  // An attribute location past GL_MAX_VERTEX_ATTRIBS (found by fuzz_glsl: the location was
+  // kept and later shifted past 32 bits) is a link error naming it.
+  v = Shader::compile(Stage::Vertex,
+                      "#version 330\nlayout(location = 40) in vec4 far;\n"
+                      "void main() { gl_Position = far; }\n");
+  ASSERT_TRUE(v->ok()) << v->info_log();
+  auto far =
+      Program::link(*v, *Shader::compile(Stage::Fragment, "void main() { gl_FragColor = vec4(1.0); }"));
+  EXPECT_FALSE(far->ok());
+  EXPECT_NE(far->info_log().find("'far'"), std::string::npos) << far->info_log();
   // Drawing a program that did not link is an error, not a crash.
   gpu::Context ctx(1);
   gpu::Texture2D color(gpu::Format::RGBA8, 4, 4);
