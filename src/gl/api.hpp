@@ -59,6 +59,13 @@ void vertex(Context& c, float x, float y, float z, float w);
 void call_list(Context& c, GLuint list);
 void enable(Context& c, GLenum cap, bool on);
 void draw_arrays(Context& c, GLenum mode, GLint first, GLsizei count);
+// A draw call with the current program over the generic attribute arrays (draw_glsl.cpp):
+// arrays when `type` is GL_NONE, else elements of `type` at `indices`. Validates as GL 3.3
+// §2.8.3 says, then draws.
+void draw_generic_call(Context& c, GLenum mode, GLint first, GLsizei count, GLsizei instances, GLenum type,
+                       const void* indices, GLint base_vertex);
+// Whether a draw call goes to draw_generic_call (api_arrays.cpp).
+bool generic_draw(Context& c);
 void array_element(Context& c, GLint i);
 void raster_pos(Context& c, float x, float y, float z, float w);
 void mult_matrix(Context& c, const glm::mat4& m);

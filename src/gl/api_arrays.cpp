@@ -74,6 +74,15 @@ const uint8_t* element(const ArrayPointer& a, int n_components, GLint i) {
   return static_cast<const uint8_t*>(a.pointer) + size_t(i) * stride;
 }
 
+// Whether element i of an array with n components lies within the bytes it may read.
+bool readable(const ArrayPointer& a, int n_components, GLint i) {
+  if (a.limit == SIZE_MAX) return true;
+  const size_t cb = size_t(component_bytes(a.type));
+  const size_t stride = a.stride ? size_t(a.stride) : size_t(n_components) * cb;
+  const size_t at = size_t(i) * stride;
+  return at <= a.limit && size_t(n_components) * cb <= a.limit - at;
+}
+
 void read_vec(const ArrayPointer& a, GLint i, bool normalized, float* out) {
   const uint8_t* p = element(a, a.size, i);
   if (a.type == GL_FLOAT) {  // the common case, without a conversion per component
@@ -89,23 +98,23 @@ void read_vec(const ArrayPointer& a, GLint i, bool normalized, float* out) {
 bool fetch(Context& c, GLint i, FFVertex* v) {
   const ClientState& cs = c.c;
   CurrentState& cur = c.s.current;
-  if (cs.edge.enabled && cs.edge.pointer) cur.edge = *element(cs.edge, 1, i) != 0;
-  if (cs.tex.enabled && cs.tex.pointer) {
+  if (cs.edge.enabled && cs.edge.pointer && readable(cs.edge, 1, i)) cur.edge = *element(cs.edge, 1, i) != 0;
+  if (cs.tex.enabled && cs.tex.pointer && readable(cs.tex, cs.tex.size, i)) {
     float t[4] = {0, 0, 0, 1};
     read_vec(cs.tex, i, false, t);
     cur.tex = glm::vec4(t[0], t[1], t[2], t[3]);
   }
-  if (cs.color.enabled && cs.color.pointer) {
+  if (cs.color.enabled && cs.color.pointer && readable(cs.color, cs.color.size, i)) {
     float col[4] = {0, 0, 0, 1};
     read_vec(cs.color, i, true, col);
     cur.color = glm::vec4(col[0], col[1], col[2], col[3]);
   }
-  if (cs.normal.enabled && cs.normal.pointer) {
+  if (cs.normal.enabled && cs.normal.pointer && readable(cs.normal, 3, i)) {
     float n[3] = {0, 0, 0};
     read_vec(cs.normal, i, true, n);
     cur.normal = glm::vec3(n[0], n[1], n[2]);
   }
-  if (!(cs.vertex.enabled && cs.vertex.pointer)) return false;
+  if (!(cs.vertex.enabled && cs.vertex.pointer && readable(cs.vertex, cs.vertex.size, i))) return false;
   float p[4] = {0, 0, 0, 1};
   read_vec(cs.vertex, i, false, p);
   std::memcpy(v->pos, p, sizeof p);
@@ -118,10 +127,57 @@ bool fetch(Context& c, GLint i, FFVertex* v) {
 
 bool valid_mode(GLenum mode) { return mode <= GL_POLYGON; }
 
+// Arrays given in buffer objects (GL 1.5 §2.9): for the length of one draw their offsets
+// become pointers into the buffers, with the bytes each may read past them. A mapped buffer
+// makes the draw an error (GL_INVALID_OPERATION).
+class BufferArrays {
+ public:
+  explicit BufferArrays(Context& c) {
+    for (ArrayPointer* a : {&c.c.vertex, &c.c.normal, &c.c.color, &c.c.tex, &c.c.edge, &c.c.index}) {
+      if (!a->buffer || !a->enabled) continue;
+      if (a->buffer->mapped) ok_ = false;
+      saved_.push_back({a, a->pointer});
+      const size_t off = reinterpret_cast<size_t>(a->pointer), size = a->buffer->data.size();
+      a->pointer = off <= size ? a->buffer->data.data() + off : nullptr;
+      a->limit = off <= size ? size - off : 0;
+    }
+    if (!ok_) c.error(GL_INVALID_OPERATION);
+  }
+  ~BufferArrays() {
+    for (auto& [a, p] : saved_) {
+      a->pointer = p;
+      a->limit = SIZE_MAX;
+    }
+  }
+  BufferArrays(const BufferArrays&) = delete;
+  BufferArrays& operator=(const BufferArrays&) = delete;
+  bool ok() const { return ok_; }
+
+ private:
+  bool ok_ = true;
+  std::vector<std::pair<ArrayPointer*, const void*>> saved_;
+};
+
+}  // namespace
+
+// Whether a draw call runs the current program over the generic attribute arrays (GL 2.0+)
+// instead of the fixed-function arrays: a core context always does; a compatibility one
+// when a program is current and it enables a generic array or no vertex array.
+bool generic_draw(Context& c) {
+  if (c.core_profile) return true;
+  if (!c.executable) return false;
+  for (const AttribArray& a : c.vao().attribs)
+    if (a.enabled) return true;
+  return !c.c.vertex.enabled;
+}
+
+namespace {
+
 // What a converted range depends on besides the array bytes: the arrays' addresses and
 // formats, the range, and the current values used for disabled arrays.
 std::vector<uint8_t> array_key(const Context& c, GLuint lo, GLuint hi) {
   std::vector<uint8_t> k;
+  k.reserve(256);
   auto add = [&](const void* p, size_t n) {
     const auto* b = static_cast<const uint8_t*>(p);
     k.insert(k.end(), b, b + n);
@@ -188,6 +244,7 @@ void set_pointer(Context& c, ArrayPointer& a, GLint size, GLenum type, GLsizei s
   a.type = type;
   a.stride = stride;
   a.pointer = ptr;
+  a.buffer = c.array_buffer;
 }
 
 ArrayPointer* client_array(Context& c, GLenum cap) {
@@ -229,6 +286,8 @@ void draw_arrays(Context& c, GLenum mode, GLint first, GLsizei count) {
   if (!valid_mode(mode)) return c.error(GL_INVALID_ENUM);
   if (count < 0 || first < 0) return c.error(GL_INVALID_VALUE);
   GL_OUTSIDE_BEGIN();
+  BufferArrays in_buffers(c);
+  if (!in_buffers.ok()) return;
   if (!c.c.vertex.enabled || !c.c.vertex.pointer || count == 0) return;
   std::vector<GLuint> ids(static_cast<size_t>(count));
   for (GLsizei i = 0; i < count; ++i) ids[size_t(i)] = GLuint(first + i);
@@ -239,6 +298,8 @@ void draw_arrays(Context& c, GLenum mode, GLint first, GLsizei count) {
 
 void array_element(Context& c, GLint i) {
   if (i < 0) return c.error(GL_INVALID_VALUE);
+  BufferArrays in_buffers(c);
+  if (!in_buffers.ok()) return;
   FFVertex v;
   const bool has_vertex = fetch(c, i, &v);
   // Recorded as the attribute values it produced (data is read when compiled).
@@ -323,16 +384,28 @@ void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid** out) {
 
 void GLAPIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count) {
   GL_CONTEXT();
+  if (generic_draw(c)) return draw_generic_call(c, mode, first, count, 1, GL_NONE, nullptr, 0);
   draw_arrays(c, mode, first, count);
 }
 
 void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid* indices) {
   GL_CONTEXT();
+  if (generic_draw(c)) return draw_generic_call(c, mode, 0, count, 1, type, indices, 0);
   if (!valid_mode(mode)) return c.error(GL_INVALID_ENUM);
   if (count < 0) return c.error(GL_INVALID_VALUE);
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
     return c.error(GL_INVALID_ENUM);
   GL_OUTSIDE_BEGIN();
+  BufferArrays in_buffers(c);
+  if (!in_buffers.ok()) return;
+  if (const BufferRef& eb = c.vao().element_buffer) {
+    // GL 1.5: the indices are at an offset into the element array buffer.
+    const size_t per = type == GL_UNSIGNED_BYTE ? 1 : type == GL_UNSIGNED_SHORT ? 2 : 4;
+    const size_t off = reinterpret_cast<size_t>(indices);
+    if (eb->mapped || off > eb->data.size() || size_t(count) * per > eb->data.size() - off)
+      return c.error(GL_INVALID_OPERATION);
+    indices = eb->data.data() + off;
+  }
   if (!c.c.vertex.enabled || !c.c.vertex.pointer || count == 0 || !indices) return;
   std::vector<GLuint> ids(static_cast<size_t>(count));
   const auto* b = static_cast<const uint8_t*>(indices);
@@ -455,12 +528,13 @@ void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid*
   c.c.edge.enabled = false;
   c.c.index.enabled = false;
   c.c.tex.enabled = r->et;
-  if (r->et) c.c.tex = {true, r->st, GL_FLOAT, st, base};
+  // With a buffer bound, `pointer` is an offset into it (GL 1.5 §2.9).
+  if (r->et) c.c.tex = {true, r->st, GL_FLOAT, st, base, c.array_buffer};
   c.c.color.enabled = r->ec;
-  if (r->ec) c.c.color = {true, r->sc, r->tc, st, base + r->pc};
+  if (r->ec) c.c.color = {true, r->sc, r->tc, st, base + r->pc, c.array_buffer};
   c.c.normal.enabled = r->en;
-  if (r->en) c.c.normal = {true, 3, GL_FLOAT, st, base + r->pn};
-  c.c.vertex = {true, r->sv, GL_FLOAT, st, base + r->pv};
+  if (r->en) c.c.normal = {true, 3, GL_FLOAT, st, base + r->pn, c.array_buffer};
+  c.c.vertex = {true, r->sv, GL_FLOAT, st, base + r->pv, c.array_buffer};
 }
 
 }  // extern "C"

@@ -1,6 +1,7 @@
 // State queries (GL 2.1 §6.1, the state tables 6.4-6.45 for what GL 1.x keeps): glGet*v,
 // glGetLight, glGetMaterial. One function lists the values of a name as doubles; the four
 // glGet forms convert them as §6.1.2 describes.
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 
 #include <cmath>
@@ -25,6 +26,65 @@ void put(Values& out, std::initializer_list<double> xs) { out.v.insert(out.v.end
 void put4(Values& out, const glm::vec4& x) { put(out, {x.x, x.y, x.z, x.w}); }
 void put_mat(Values& out, const glm::mat4& m) {
   for (int i = 0; i < 16; ++i) out.v.push_back(glm::value_ptr(m)[i]);
+}
+
+// The state GL 2.0 to 3.3 add (GL 3.3 Tables 6.6 to 6.52): bindings, limits, the version.
+bool query_gl33(Context& c, GLenum pname, Values& out) {
+  auto b = [&](bool x) {
+    out.kind = Kind::Bool;
+    put(out, {x ? 1.0 : 0.0});
+  };
+  auto n = [&](double x) { put(out, {x}); };
+  auto name_of = [](const BufferRef& r) { return r ? double(r->name) : 0.0; };
+  const bool has_vao = c.vertex_arrays.count(c.bound_vertex_array) != 0;
+  switch (pname) {
+    case GL_MAJOR_VERSION: return n(c.major_version), true;
+    case GL_MINOR_VERSION: return n(c.minor_version), true;
+    case GL_NUM_EXTENSIONS: return n(double(extensions(c).size())), true;
+    case GL_CONTEXT_FLAGS: return n(0), true;
+    case GL_CONTEXT_PROFILE_MASK:
+      return n(c.core_profile ? GL_CONTEXT_CORE_PROFILE_BIT : GL_CONTEXT_COMPATIBILITY_PROFILE_BIT), true;
+    case GL_CURRENT_PROGRAM: return n(c.current_program), true;
+    case GL_ARRAY_BUFFER_BINDING: return n(name_of(c.array_buffer)), true;
+    case GL_ELEMENT_ARRAY_BUFFER_BINDING: return n(has_vao ? name_of(c.vao().element_buffer) : 0.0), true;
+    case GL_COPY_READ_BUFFER:  // its binding (GL 3.3 Table 6.8)
+      return n(name_of(c.copy_read_buffer)), true;
+    case GL_COPY_WRITE_BUFFER: return n(name_of(c.copy_write_buffer)), true;
+    case GL_PIXEL_PACK_BUFFER_BINDING: return n(name_of(c.pixel_pack_buffer)), true;
+    case GL_PIXEL_UNPACK_BUFFER_BINDING: return n(name_of(c.pixel_unpack_buffer)), true;
+    case GL_UNIFORM_BUFFER_BINDING: return n(name_of(c.uniform_buffer)), true;
+    case GL_TEXTURE_BUFFER: return n(name_of(c.texture_buffer)), true;
+    case GL_VERTEX_ARRAY_BINDING: return n(c.bound_vertex_array), true;
+    case GL_PRIMITIVE_RESTART: return b(c.primitive_restart), true;
+    case GL_PRIMITIVE_RESTART_INDEX: return n(c.primitive_restart_index), true;
+    case GL_PROGRAM_POINT_SIZE: return b(c.program_point_size), true;
+    case GL_DEPTH_CLAMP: return b(c.depth_clamp), true;
+    case GL_MAX_VERTEX_ATTRIBS: return n(kMaxVertexAttribs), true;
+    case GL_MAX_TEXTURE_IMAGE_UNITS:
+    case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS: return n(kMaxStageTextureUnits), true;
+    case GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS: return n(kMaxTextureUnits), true;
+    case GL_MAX_TEXTURE_COORDS: return n(1), true;
+    case GL_MAX_UNIFORM_BUFFER_BINDINGS: return n(kMaxUniformBufferBindings), true;
+    case GL_MAX_VERTEX_UNIFORM_BLOCKS:
+    case GL_MAX_FRAGMENT_UNIFORM_BLOCKS: return n(12), true;
+    case GL_MAX_COMBINED_UNIFORM_BLOCKS: return n(24), true;
+    case GL_MAX_UNIFORM_BLOCK_SIZE: return n(65536), true;
+    case GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT: return n(16), true;
+    case GL_MAX_VERTEX_UNIFORM_COMPONENTS:
+    case GL_MAX_FRAGMENT_UNIFORM_COMPONENTS: return n(4096), true;
+    case GL_MAX_VARYING_COMPONENTS:  // == GL_MAX_VARYING_FLOATS
+    case GL_MAX_VERTEX_OUTPUT_COMPONENTS:
+    case GL_MAX_FRAGMENT_INPUT_COMPONENTS: return n(64), true;
+    case GL_MAX_DRAW_BUFFERS:
+    case GL_MAX_COLOR_ATTACHMENTS: return n(gpu::kMaxColorAttachments), true;
+    case GL_MAX_DUAL_SOURCE_DRAW_BUFFERS: return n(0), true;
+    case GL_MIN_PROGRAM_TEXEL_OFFSET: return n(-8), true;
+    case GL_MAX_PROGRAM_TEXEL_OFFSET: return n(7), true;
+    case GL_MAX_CLIP_DISTANCES: return n(kMaxClipPlanes), true;
+    case GL_MAX_ELEMENTS_INDICES:
+    case GL_MAX_ELEMENTS_VERTICES: return n(1048576), true;
+    default: return false;
+  }
 }
 
 bool query(Context& c, GLenum pname, Values& out) {
@@ -120,16 +180,16 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_POLYGON_OFFSET_POINT: b(s.polygon.offset_point); return true;
     case GL_POLYGON_STIPPLE: b(s.polygon.stipple); return true;
     // Texturing.
-    case GL_TEXTURE_2D: b(s.texture.enabled_2d); return true;
+    case GL_TEXTURE_2D: b(s.unit().enabled_2d); return true;
     case GL_TEXTURE_1D: b(false); return true;
-    case GL_TEXTURE_BINDING_2D: put(out, {double(s.texture.bound_2d)}); return true;
+    case GL_TEXTURE_BINDING_2D: put(out, {double(s.unit().bound_2d)}); return true;
     case GL_TEXTURE_BINDING_1D: put(out, {0.0}); return true;
-    case GL_TEXTURE_GEN_S: b(s.texture.gen_enabled[0]); return true;
-    case GL_TEXTURE_GEN_T: b(s.texture.gen_enabled[1]); return true;
-    case GL_TEXTURE_GEN_R: b(s.texture.gen_enabled[2]); return true;
-    case GL_TEXTURE_GEN_Q: b(s.texture.gen_enabled[3]); return true;
-    case GL_ACTIVE_TEXTURE:
-    case GL_CLIENT_ACTIVE_TEXTURE: e(GL_TEXTURE0); return true;
+    case GL_TEXTURE_GEN_S: b(s.unit().gen_enabled[0]); return true;
+    case GL_TEXTURE_GEN_T: b(s.unit().gen_enabled[1]); return true;
+    case GL_TEXTURE_GEN_R: b(s.unit().gen_enabled[2]); return true;
+    case GL_TEXTURE_GEN_Q: b(s.unit().gen_enabled[3]); return true;
+    case GL_ACTIVE_TEXTURE: e(GL_TEXTURE0 + s.active_unit); return true;
+    case GL_CLIENT_ACTIVE_TEXTURE: e(GL_TEXTURE0 + c.c.client_active_unit); return true;
     // Pixel operations.
     case GL_SCISSOR_TEST: b(s.scissor.test); return true;
     case GL_SCISSOR_BOX:
@@ -263,8 +323,6 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_MAX_EVAL_ORDER: put(out, {8.0}); return true;
     case GL_MAX_PIXEL_MAP_TABLE: put(out, {256.0}); return true;
     case GL_MAX_NAME_STACK_DEPTH: put(out, {64.0}); return true;
-    case GL_MAX_ELEMENTS_VERTICES:
-    case GL_MAX_ELEMENTS_INDICES: put(out, {1048576.0}); return true;
     case GL_SUBPIXEL_BITS: put(out, {8.0}); return true;
     case GL_POINT_SIZE_RANGE: put(out, {1.0, 255.0}); return true;
     case GL_POINT_SIZE_GRANULARITY: put(out, {0.125}); return true;
@@ -288,7 +346,7 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_INDEX_MODE: b(false); return true;
     case GL_DOUBLEBUFFER: b(c.double_buffered()); return true;
     case GL_STEREO: b(false); return true;
-    default: return false;
+    default: return query_gl33(c, pname, out);
   }
 }
 
@@ -318,6 +376,36 @@ void GLAPIENTRY glGetIntegerv(GLenum pname, GLint* out) {
     if (k == Kind::Color) return GLint(std::lround(std::clamp(x, -1.0, 1.0) * 2147483647.0));
     return GLint(std::lround(std::clamp(x, -2147483648.0, 2147483647.0)));
   });
+}
+void GLAPIENTRY glGetInteger64v(GLenum pname, GLint64* out) {
+  get(pname, out, [](double x, Kind k) {
+    if (k == Kind::Color) return GLint64(std::lround(std::clamp(x, -1.0, 1.0) * 2147483647.0));
+    return GLint64(std::llround(x));
+  });
+}
+// Indexed state (GL 3.3 §6.1.1): the uniform buffer binding points.
+void GLAPIENTRY glGetInteger64i_v(GLenum pname, GLuint index, GLint64* out) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  if (pname != GL_UNIFORM_BUFFER_BINDING && pname != GL_UNIFORM_BUFFER_START &&
+      pname != GL_UNIFORM_BUFFER_SIZE)
+    return c.error(GL_INVALID_ENUM);
+  if (index >= GLuint(kMaxUniformBufferBindings)) return c.error(GL_INVALID_VALUE);
+  const Context::IndexedBuffer& ib = c.uniform_bindings[index];
+  if (!out) return;
+  *out = pname == GL_UNIFORM_BUFFER_BINDING ? GLint64(ib.buffer ? ib.buffer->name : 0)
+         : pname == GL_UNIFORM_BUFFER_START ? GLint64(ib.offset)
+                                            : GLint64(ib.size);
+}
+void GLAPIENTRY glGetIntegeri_v(GLenum pname, GLuint index, GLint* out) {
+  GLint64 v = 0;
+  glGetInteger64i_v(pname, index, &v);
+  if (out && current() && v == GLint64(GLint(v))) *out = GLint(v);
+}
+void GLAPIENTRY glGetBooleani_v(GLenum pname, GLuint index, GLboolean* out) {
+  GLint64 v = 0;
+  glGetInteger64i_v(pname, index, &v);
+  if (out) *out = v != 0;
 }
 void GLAPIENTRY glGetFloatv(GLenum pname, GLfloat* out) {
   get(pname, out, [](double x, Kind) { return GLfloat(x); });

@@ -1,5 +1,6 @@
 // Enables, per-fragment and rasterization state, clears, errors and strings, display lists,
 // the attribute stacks, glFlush/glFinish.
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 
 #include <algorithm>
@@ -21,6 +22,9 @@ bool* capability(Context& c, GLenum cap) {
   if (cap >= GL_MAP1_COLOR_4 && cap <= GL_MAP1_VERTEX_4) return &s.eval.map1_enabled[cap - GL_MAP1_COLOR_4];
   if (cap >= GL_MAP2_COLOR_4 && cap <= GL_MAP2_VERTEX_4) return &s.eval.map2_enabled[cap - GL_MAP2_COLOR_4];
   switch (cap) {
+    case GL_PROGRAM_POINT_SIZE: return &c.program_point_size;
+    case GL_PRIMITIVE_RESTART: return &c.primitive_restart;
+    case GL_DEPTH_CLAMP: return &c.depth_clamp;
     case GL_AUTO_NORMAL: return &s.eval.auto_normal;
     case GL_LIGHTING: return &s.light.lighting;
     case GL_COLOR_MATERIAL: return &s.light.color_material;
@@ -43,23 +47,26 @@ bool* capability(Context& c, GLenum cap) {
     case GL_POINT_SMOOTH: return &s.point.smooth;
     case GL_NORMALIZE: return &s.transform.normalize;
     case GL_RESCALE_NORMAL: return &s.transform.rescale_normal;
-    case GL_TEXTURE_2D: return &s.texture.enabled_2d;
-    case GL_TEXTURE_GEN_S: return &s.texture.gen_enabled[0];
-    case GL_TEXTURE_GEN_T: return &s.texture.gen_enabled[1];
-    case GL_TEXTURE_GEN_R: return &s.texture.gen_enabled[2];
-    case GL_TEXTURE_GEN_Q: return &s.texture.gen_enabled[3];
+    case GL_TEXTURE_2D: return &s.unit().enabled_2d;
+    case GL_TEXTURE_GEN_S: return &s.unit().gen_enabled[0];
+    case GL_TEXTURE_GEN_T: return &s.unit().gen_enabled[1];
+    case GL_TEXTURE_GEN_R: return &s.unit().gen_enabled[2];
+    case GL_TEXTURE_GEN_Q: return &s.unit().gen_enabled[3];
     default: return nullptr;
   }
 }
 
 // Capabilities that are accepted and kept but change nothing Tessel draws (1D textures,
-// colour-index logic op, multisampling).
+// colour-index logic op, multisampling, seamless cube maps, sRGB writes to a linear window).
 bool* inert_capability(GLenum cap) {
-  static bool inert[4] = {};
+  static bool inert[6] = {};
   switch (cap) {
     case GL_TEXTURE_1D: return &inert[0];
     case GL_INDEX_LOGIC_OP: return &inert[1];
     case GL_MULTISAMPLE: return &inert[2];
+    // Cube maps are always sampled across faces (as llvmpipe does); the window is not sRGB.
+    case GL_TEXTURE_CUBE_MAP_SEAMLESS: return &inert[3];
+    case GL_FRAMEBUFFER_SRGB: return &inert[4];
     default: return nullptr;
   }
 }
@@ -341,8 +348,10 @@ void copy_enables(ServerState& to, const ServerState& from) {
   to.polygon.stipple = from.polygon.stipple;
   to.scissor.test = from.scissor.test;
   to.stencil.test = from.stencil.test;
-  to.texture.enabled_2d = from.texture.enabled_2d;
-  to.texture.gen_enabled = from.texture.gen_enabled;
+  for (size_t i = 0; i < to.units.size(); ++i) {
+    to.units[i].enabled_2d = from.units[i].enabled_2d;
+    to.units[i].gen_enabled = from.units[i].gen_enabled;
+  }
   to.transform.clip_enabled = from.transform.clip_enabled;
   to.color.blend = from.color.blend;
   to.eval.map1_enabled = from.eval.map1_enabled;
@@ -368,7 +377,10 @@ void restore(ServerState& s, const ServerState& o, GLbitfield m) {
   if (m & GL_SCISSOR_BIT) s.scissor = o.scissor;
   if (m & GL_VIEWPORT_BIT) s.viewport = o.viewport;
   if (m & GL_TRANSFORM_BIT) s.transform = o.transform;
-  if (m & GL_TEXTURE_BIT) s.texture = o.texture;
+  if (m & GL_TEXTURE_BIT) {
+    s.units = o.units;
+    s.active_unit = o.active_unit;
+  }
   if (m & GL_HINT_BIT) s.hint = o.hint;
   if (m & GL_PIXEL_MODE_BIT) s.pixel = o.pixel;
   if (m & GL_LIST_BIT) s.list_base = o.list_base;
@@ -422,10 +434,32 @@ const GLubyte* GLAPIENTRY glGetString(GLenum name) {
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>("Tessel");
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>("Tessel software rasterizer (CPU)");
-    case GL_VERSION: return reinterpret_cast<const GLubyte*>("1.1 Tessel 0.1");
-    case GL_EXTENSIONS: return reinterpret_cast<const GLubyte*>("");
-    default: c.error(GL_INVALID_ENUM); return nullptr;
+    case GL_VERSION: return reinterpret_cast<const GLubyte*>(c.version_string().c_str());
+    case GL_SHADING_LANGUAGE_VERSION:
+      return reinterpret_cast<const GLubyte*>(c.glsl_version_string().c_str());
+    case GL_EXTENSIONS:
+      // A core context lists its extensions with glGetStringi only (GL 3.3 core §6.1.5).
+      if (c.core_profile) break;
+      return reinterpret_cast<const GLubyte*>(c.extension_string().c_str());
+    default: break;
   }
+  c.error(GL_INVALID_ENUM);
+  return nullptr;
+}
+
+const GLubyte* GLAPIENTRY glGetStringi(GLenum name, GLuint index) {
+  GL_CONTEXT(nullptr);
+  GL_OUTSIDE_BEGIN(nullptr);
+  if (name != GL_EXTENSIONS) {
+    c.error(GL_INVALID_ENUM);
+    return nullptr;
+  }
+  const auto& list = extensions(c);
+  if (index >= list.size()) {
+    c.error(GL_INVALID_VALUE);
+    return nullptr;
+  }
+  return reinterpret_cast<const GLubyte*>(list[index]);
 }
 
 void GLAPIENTRY glEnable(GLenum cap) { SIMPLE(enable, cap, true); }

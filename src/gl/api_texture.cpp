@@ -165,7 +165,11 @@ bool valid_min_filter(GLenum f) {
   return f == GL_NEAREST || f == GL_LINEAR || f == GL_NEAREST_MIPMAP_NEAREST ||
          f == GL_LINEAR_MIPMAP_NEAREST || f == GL_NEAREST_MIPMAP_LINEAR || f == GL_LINEAR_MIPMAP_LINEAR;
 }
-bool valid_wrap(GLenum w) { return w == GL_REPEAT || w == GL_CLAMP || w == GL_CLAMP_TO_EDGE; }
+// GL 2.1 §3.8.4 (GL_CLAMP, GL_CLAMP_TO_BORDER and GL_MIRRORED_REPEAT since 1.3/1.4).
+bool valid_wrap(GLenum w) {
+  return w == GL_REPEAT || w == GL_CLAMP || w == GL_CLAMP_TO_EDGE || w == GL_MIRRORED_REPEAT ||
+         w == GL_CLAMP_TO_BORDER;
+}
 
 void tex_parameter(Context& c, GLenum target, GLenum pname, Vec4Arg p) {
   GL_OUTSIDE_BEGIN();
@@ -219,12 +223,12 @@ void tex_env(Context& c, GLenum target, GLenum pname, Vec4Arg p) {
       if (m != GL_MODULATE && m != GL_REPLACE && m != GL_DECAL && m != GL_BLEND && m != GL_ADD)
         return c.error(GL_INVALID_ENUM);
       c.touch();
-      c.s.texture.env_mode = m;
+      c.s.unit().env_mode = m;
       break;
     }
     case GL_TEXTURE_ENV_COLOR:
       c.touch();
-      c.s.texture.env_color = glm::clamp(glm::vec4(p[0], p[1], p[2], p[3]), 0.0f, 1.0f);
+      c.s.unit().env_color = glm::clamp(glm::vec4(p[0], p[1], p[2], p[3]), 0.0f, 1.0f);
       break;
     default: c.error(GL_INVALID_ENUM); break;
   }
@@ -240,17 +244,17 @@ void tex_gen(Context& c, GLenum coord, GLenum pname, Vec4Arg p) {
       if (m != GL_OBJECT_LINEAR && m != GL_EYE_LINEAR && m != GL_SPHERE_MAP) return c.error(GL_INVALID_ENUM);
       if (m == GL_SPHERE_MAP && (coord == GL_R || coord == GL_Q)) return c.error(GL_INVALID_ENUM);
       c.touch();
-      c.s.texture.gen_mode[i] = m;
+      c.s.unit().gen_mode[i] = m;
       break;
     }
     case GL_OBJECT_PLANE:
       c.touch();
-      c.s.texture.object_plane[i] = glm::vec4(p[0], p[1], p[2], p[3]);
+      c.s.unit().object_plane[i] = glm::vec4(p[0], p[1], p[2], p[3]);
       break;
     case GL_EYE_PLANE:
       c.touch();
       // GL 2.1 §2.12.4: (p1 p2 p3 p4) M^-1 with M the model-view matrix when specified.
-      c.s.texture.eye_plane[i] = glm::vec4(p[0], p[1], p[2], p[3]) * glm::inverse(c.modelview());
+      c.s.unit().eye_plane[i] = glm::vec4(p[0], p[1], p[2], p[3]) * glm::inverse(c.modelview());
       break;
     default: c.error(GL_INVALID_ENUM); break;
   }
@@ -312,7 +316,8 @@ void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint* names) {
   for (GLsizei i = 0; i < n; ++i) {
     const GLuint name = names[i];
     if (name == 0) continue;
-    if (c.s.texture.bound_2d == name) c.s.texture.bound_2d = 0;  // GL 2.1 §3.8.12
+    for (TextureUnitState& u : c.s.units)
+      if (u.bound_2d == name) u.bound_2d = 0;  // GL 2.1 §3.8.12
     c.textures.erase(name);
   }
 }
@@ -325,7 +330,7 @@ void GLAPIENTRY glBindTexture(GLenum target, GLuint name) {
     c.touch();
     TextureObject& t = c.textures[name];
     t.name = name;
-    c.s.texture.bound_2d = name;
+    c.s.unit().bound_2d = name;
   };
   GL_LISTED(bind(c));
   bind(c);
@@ -552,9 +557,9 @@ void GLAPIENTRY glGetTexEnvfv(GLenum target, GLenum pname, GLfloat* out) {
   if (target != GL_TEXTURE_ENV) return c.error(GL_INVALID_ENUM);
   if (!out) return;
   if (pname == GL_TEXTURE_ENV_MODE)
-    out[0] = float(c.s.texture.env_mode);
+    out[0] = float(c.s.unit().env_mode);
   else if (pname == GL_TEXTURE_ENV_COLOR)
-    for (int i = 0; i < 4; ++i) out[i] = c.s.texture.env_color[i];
+    for (int i = 0; i < 4; ++i) out[i] = c.s.unit().env_color[i];
   else
     c.error(GL_INVALID_ENUM);
 }
@@ -602,12 +607,12 @@ void GLAPIENTRY glGetTexGenfv(GLenum coord, GLenum pname, GLfloat* out) {
   if (!out) return;
   const size_t i = coord - GL_S;
   switch (pname) {
-    case GL_TEXTURE_GEN_MODE: out[0] = float(c.s.texture.gen_mode[i]); break;
+    case GL_TEXTURE_GEN_MODE: out[0] = float(c.s.unit().gen_mode[i]); break;
     case GL_OBJECT_PLANE:
-      for (int k = 0; k < 4; ++k) out[k] = c.s.texture.object_plane[i][k];
+      for (int k = 0; k < 4; ++k) out[k] = c.s.unit().object_plane[i][k];
       break;
     case GL_EYE_PLANE:
-      for (int k = 0; k < 4; ++k) out[k] = c.s.texture.eye_plane[i][k];
+      for (int k = 0; k < 4; ++k) out[k] = c.s.unit().eye_plane[i][k];
       break;
     default: c.error(GL_INVALID_ENUM); break;
   }
@@ -625,14 +630,23 @@ void GLAPIENTRY glGetTexGendv(GLenum coord, GLenum pname, GLdouble* out) {
     for (int i = 0; i < (pname == GL_TEXTURE_GEN_MODE ? 1 : 4); ++i) out[i] = f[i];
 }
 
-// One texture unit: unit 0 is accepted, any other is an error.
+// The texture image units: fixed-function texturing reads unit 0; GLSL samplers read any
+// (GL 3.3 §3.8). The fixed-function coordinate sets beyond unit 0 are not drawn.
 void GLAPIENTRY glActiveTexture(GLenum unit) {
   GL_CONTEXT();
-  if (unit != GL_TEXTURE0) c.error(GL_INVALID_ENUM);
+  auto set = [unit](Context& c) {
+    GL_OUTSIDE_BEGIN();
+    if (unit < GL_TEXTURE0 || unit >= GL_TEXTURE0 + kMaxTextureUnits) return c.error(GL_INVALID_ENUM);
+    c.s.active_unit = unit - GL_TEXTURE0;
+  };
+  GL_LISTED(set(c));
+  set(c);
 }
 void GLAPIENTRY glClientActiveTexture(GLenum unit) {
   GL_CONTEXT();
-  if (unit != GL_TEXTURE0) c.error(GL_INVALID_ENUM);
+  GL_OUTSIDE_BEGIN();
+  if (unit != GL_TEXTURE0) return c.error(GL_INVALID_ENUM);  // GL_MAX_TEXTURE_COORDS is 1
+  c.c.client_active_unit = unit - GL_TEXTURE0;
 }
 
 }  // extern "C"

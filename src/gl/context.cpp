@@ -64,6 +64,8 @@ gpu::Wrap wrap_of(GLenum w) {
   switch (w) {
     case GL_CLAMP: return gpu::Wrap::Clamp;
     case GL_CLAMP_TO_EDGE: return gpu::Wrap::ClampToEdge;
+    case GL_MIRRORED_REPEAT: return gpu::Wrap::MirroredRepeat;
+    case GL_CLAMP_TO_BORDER: return gpu::Wrap::ClampToBorder;
     default: return gpu::Wrap::Repeat;
   }
 }
@@ -108,6 +110,9 @@ Context::Context(int width, int height, bool double_buffer, bool depth, bool ste
   s.light.light[0].diffuse = glm::vec4(1.0f);
   s.light.light[0].specular = glm::vec4(1.0f);
   s.light.material[0] = s.light.material[1] = FFMaterial{};
+  set_version(2, 1, false);
+  generic_type.fill(GL_FLOAT);
+  for (auto& g : generic_current) g = {0, 0, 0, 0x3F800000u};  // (0, 0, 0, 1)
   gpu_ = std::make_unique<gpu::Context>();
   resize(width, height);
   s.viewport = {0, 0, width_, height_, 0.0, 1.0};
@@ -166,6 +171,60 @@ void Context::bind_draw_target() {
   if (!fb_.color[0].texture && !depth_) fb_.color[0].texture = color_[0].get();
   fb_target_ = target;
   gpu_->bind_framebuffer(&fb_);
+}
+
+const std::vector<const char*>& extensions(const Context&) {
+  static const std::vector<const char*> list = {
+      "GL_ARB_copy_buffer",
+      "GL_ARB_depth_clamp",
+      "GL_ARB_draw_elements_base_vertex",
+      "GL_ARB_draw_instanced",
+      "GL_ARB_explicit_attrib_location",
+      "GL_ARB_fragment_shader",
+      "GL_ARB_half_float_vertex",
+      "GL_ARB_instanced_arrays",
+      "GL_ARB_map_buffer_range",
+      "GL_ARB_shader_objects",
+      "GL_ARB_shading_language_100",
+      "GL_ARB_uniform_buffer_object",
+      "GL_ARB_vertex_array_bgra",
+      "GL_ARB_vertex_array_object",
+      "GL_ARB_vertex_buffer_object",
+      "GL_ARB_vertex_shader",
+      "GL_ARB_vertex_type_2_10_10_10_rev",
+      "GL_EXT_bgra",
+  };
+  return list;
+}
+
+void Context::set_version(int major, int minor, bool core) {
+  major_version = major;
+  minor_version = minor;
+  // Only 3.2 and later have profiles; GL 3.1 has no compatibility parts to remove from.
+  core_profile = core && (major > 3 || (major == 3 && minor >= 2));
+  // A core context has no default vertex array object (GL 3.3 core §2.10): name 0 is no object.
+  if (core_profile)
+    vertex_arrays.erase(0);
+  else if (!vertex_arrays.count(0))
+    vertex_arrays[0] = std::make_unique<VertexArrayObject>();
+  version_string_ = std::to_string(major) + "." + std::to_string(minor) +
+                    (core_profile                              ? " (Core Profile)"
+                     : major > 3 || (major == 3 && minor >= 2) ? " (Compatibility Profile)"
+                                                               : "") +
+                    " Tessel 0.1";
+  // GLSL 3.30 is compiled in every context (GL 3.3 §6.1.5 names the newest the context has).
+  glsl_version_string_ = major > 3 || (major == 3 && minor >= 3) ? "3.30" : major == 3 ? "1.30" : "1.20";
+  extension_string_.clear();
+  for (const char* e : extensions(*this)) extension_string_ += std::string(e) + " ";
+}
+
+void Context::keep_until_finished(std::unique_ptr<gpu::Buffer> b) {
+  transient_bytes_ += b->size();
+  transient_buffers_.push_back(std::move(b));
+  if (transient_bytes_ > kTransientFlushBytes) {
+    gpu_->finish();
+    release_transient();
+  }
 }
 
 void Context::release_transient() {
@@ -421,10 +480,20 @@ void Context::emit_shared(std::shared_ptr<const gpu::Buffer> vertices, std::vect
 }
 
 TextureObject* Context::texture_for_draw() {
-  if (!s.texture.enabled_2d) return nullptr;
-  TextureObject& t = bound_texture();
+  if (!s.units[0].enabled_2d) return nullptr;
+  TextureObject& t = textures[s.units[0].bound_2d];
   if (t.dirty) rebuild_texture(t);
   return t.complete ? &t : nullptr;
+}
+
+gpu::SamplerState sampler_state_of(const TextureObject& t) {
+  gpu::SamplerState st;
+  st.min_filter = filter_of(t.min_filter);
+  st.mag_filter = filter_of(t.mag_filter);
+  st.wrap_s = wrap_of(t.wrap_s);
+  st.wrap_t = wrap_of(t.wrap_t);
+  st.border_color = t.border;
+  return st;
 }
 
 void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
@@ -466,32 +535,27 @@ void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
   }
   if (tex) {
     u.sampler.texture = tex->gpu.get();
-    gpu::SamplerState& st = u.sampler.state;
-    st.min_filter = filter_of(tex->min_filter);
-    st.mag_filter = filter_of(tex->mag_filter);
-    st.wrap_s = wrap_of(tex->wrap_s);
-    st.wrap_t = wrap_of(tex->wrap_t);
-    st.border_color = tex->border;
+    u.sampler.state = sampler_state_of(*tex);
     u.base_format = tex->levels[size_t(std::clamp(tex->base_level, 0, kMaxTextureLevels - 1))].base;
-    switch (s.texture.env_mode) {
+    switch (s.units[0].env_mode) {
       case GL_REPLACE: u.env = TexEnv::Replace; break;
       case GL_DECAL: u.env = TexEnv::Decal; break;
       case GL_BLEND: u.env = TexEnv::Blend; break;
       case GL_ADD: u.env = TexEnv::Add; break;
       default: u.env = TexEnv::Modulate; break;
     }
-    u.env_color = s.texture.env_color;
+    u.env_color = s.units[0].env_color;
     const glm::mat4& tm = matrices[2].back();
     u.texture_matrix = tm;
     u.identity_texture_matrix = tm == glm::mat4(1.0f);
     for (int i = 0; i < 4; ++i) {
-      u.texgen[size_t(i)] = s.texture.gen_enabled[size_t(i)];
-      const GLenum m = s.texture.gen_mode[size_t(i)];
+      u.texgen[size_t(i)] = s.units[0].gen_enabled[size_t(i)];
+      const GLenum m = s.units[0].gen_mode[size_t(i)];
       u.texgen_mode[size_t(i)] = m == GL_OBJECT_LINEAR ? TexGenMode::ObjectLinear
                                  : m == GL_SPHERE_MAP  ? TexGenMode::SphereMap
                                                        : TexGenMode::EyeLinear;
-      u.object_plane[size_t(i)] = s.texture.object_plane[size_t(i)];
-      u.eye_plane[size_t(i)] = s.texture.eye_plane[size_t(i)];
+      u.object_plane[size_t(i)] = s.units[0].object_plane[size_t(i)];
+      u.eye_plane[size_t(i)] = s.units[0].eye_plane[size_t(i)];
     }
   }
   u.fog = s.fog.enabled;
@@ -605,6 +669,34 @@ void Context::send_batch_unchecked() {
   if (!b.shared) own = std::make_unique<gpu::Buffer>(b.verts.data(), b.verts.size() * sizeof(FFVertex));
   const gpu::Buffer& vbuf = b.shared ? *b.shared : *own;
   auto ib = std::make_unique<gpu::Buffer>(b.indices.data(), b.indices.size() * sizeof(uint32_t));
+  if (executable) {
+    // A GLSL program reads the batch's vertices as the compatibility attributes.
+    gpu::DrawCall call;
+    call.topology = b.cls == PrimClass::Points  ? gpu::Topology::Points
+                    : b.cls == PrimClass::Lines ? gpu::Topology::Lines
+                                                : gpu::Topology::Triangles;
+    call.count = uint32_t(b.indices.size());
+    call.index_buffer = ib.get();
+    call.index_type = gpu::IndexType::U32;
+    gpu::RenderState rs = render_state(false);
+    rs.edge_flag_varying = -1;
+    draw_program_batch(vbuf, call, rs);
+  } else {
+    draw_fixed_function(b, vbuf, *ib);
+  }
+  transient_bytes_ += vbuf.size() + ib->size();
+  if (own)
+    transient_buffers_.push_back(std::move(own));
+  else
+    transient_shared_.push_back(b.shared);
+  transient_buffers_.push_back(std::move(ib));
+  if (transient_bytes_ > kTransientFlushBytes) {
+    gpu_->finish();
+    release_transient();
+  }
+}
+
+void Context::draw_fixed_function(const Batch& b, const gpu::Buffer& vbuf, const gpu::Buffer& ib) {
   gpu::VertexLayout layout;
   constexpr uint32_t stride = sizeof(FFVertex);
   layout.attrib(0, vbuf, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, pos));
@@ -622,7 +714,7 @@ void Context::send_batch_unchecked() {
                   : b.cls == PrimClass::Lines ? gpu::Topology::Lines
                                               : gpu::Topology::Triangles;
   call.count = uint32_t(b.indices.size());
-  call.index_buffer = ib.get();
+  call.index_buffer = &ib;
   call.index_type = gpu::IndexType::U32;
   const bool flat = s.light.shade_model == GL_FLAT;
   const bool discards = u->alpha_test || (u->stipple && b.cls == PrimClass::Triangles);
@@ -634,16 +726,6 @@ void Context::send_batch_unchecked() {
   const DrawFn draw = lean ? kDrawLean[(flat ? 2 : 0) + (discards ? 1 : 0)]
                            : kDraw[(flat ? 4 : 0) + (tex ? 2 : 0) + (discards ? 1 : 0)];
   draw(*gpu_, *u, layout, rs, call);
-  transient_bytes_ += vbuf.size() + ib->size();
-  if (own)
-    transient_buffers_.push_back(std::move(own));
-  else
-    transient_shared_.push_back(b.shared);
-  transient_buffers_.push_back(std::move(ib));
-  if (transient_bytes_ > kTransientFlushBytes) {
-    gpu_->finish();
-    release_transient();
-  }
 }
 
 // The fixed-function vertex stage on one lane (the same shader the draws use).

@@ -11,17 +11,20 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <exception>
 #include <functional>
 #include <memory>
 #include <new>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
 #include <GL/gl.h>
 
 #include "ff_shader.hpp"
+#include "objects.hpp"
 #include "tessel/gpu/context.hpp"
 #include "tessel/gpu/framebuffer.hpp"
 #include "tessel/gpu/texture.hpp"
@@ -35,6 +38,9 @@ inline constexpr int kAttribDepth = 16, kClientAttribDepth = 16;
 inline constexpr int kMaxListNesting = 64;
 inline constexpr int kMaxTextureSize = 8192;
 inline constexpr int kMaxTextureLevels = 14;  // 8192 = 2^13
+// GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS (GL 3.3's minimum, Table 6.37); each stage may use 16.
+inline constexpr int kMaxTextureUnits = 48;
+inline constexpr int kMaxStageTextureUnits = 16;
 
 struct TextureImage {
   int width = 0, height = 0;
@@ -81,6 +87,7 @@ struct LightState {
   bool color_material = false;
   GLenum color_material_face = GL_FRONT_AND_BACK, color_material_mode = GL_AMBIENT_AND_DIFFUSE;
   GLenum shade_model = GL_SMOOTH;
+  bool operator==(const LightState&) const = default;
 };
 
 struct FogState {
@@ -198,6 +205,32 @@ struct EvalState {
   EvalGrid grid1, grid2u, grid2v;
 };
 
+// The fixed-function state a GLSL 1.10-1.50 program reads through its gl_ uniforms, as last
+// written to a program (draw_glsl.cpp): written again only when it changed.
+struct CompatSnapshot {
+  glm::mat4 modelview{1.0f}, projection{1.0f}, texture{1.0f};
+  LightState light;
+  glm::vec4 fog_color{0.0f};
+  std::array<float, 3> fog{};  // density, start, end
+  float point_size = 1.0f;
+  std::array<float, 2> depth_range{};
+  std::array<glm::vec4, kMaxClipPlanes> clip_planes{};
+  bool operator==(const CompatSnapshot&) const = default;
+};
+
+// A draw with the generic attribute arrays (glDrawArrays ... glDrawElementsInstancedBaseVertex).
+struct GenericDraw {
+  GLenum mode = GL_TRIANGLES;
+  gpu::Topology topology = gpu::Topology::Triangles;
+  bool decompose = false;  // GL_QUADS, GL_QUAD_STRIP, GL_POLYGON: triangulated first
+  GLint first = 0;
+  GLsizei count = 0, instances = 1;
+  bool indexed = false;
+  gpu::IndexType index_type = gpu::IndexType::U32;
+  const void* indices = nullptr;  // an offset into the element array buffer when one is bound
+  GLint base_vertex = 0;
+};
+
 // The server state (what glPushAttrib saves), group by group.
 struct ServerState {
   CurrentState current;
@@ -213,7 +246,12 @@ struct ServerState {
   ScissorState scissor;
   ViewportState viewport;
   TransformState transform;
-  TextureUnitState texture;
+  // The texture image units (glActiveTexture): fixed-function texturing reads unit 0, GLSL
+  // samplers any of them.
+  std::array<TextureUnitState, kMaxTextureUnits> units;
+  GLuint active_unit = 0;
+  TextureUnitState& unit() { return units[active_unit]; }
+  const TextureUnitState& unit() const { return units[active_unit]; }
   HintState hint;
   PixelModeState pixel;
   EvalState eval;
@@ -232,12 +270,15 @@ struct ArrayPointer {
   GLint size = 4;
   GLenum type = GL_FLOAT;
   GLsizei stride = 0;
-  const void* pointer = nullptr;
+  const void* pointer = nullptr;  // an offset into `buffer` when one was bound (GL 1.5)
+  BufferRef buffer;               // GL_ARRAY_BUFFER when the pointer was given
+  size_t limit = SIZE_MAX;        // bytes readable from `pointer` (set while a draw reads a buffer)
 };
 
 struct ClientState {
   PixelStore pack, unpack;
   ArrayPointer vertex, normal, color, tex, edge, index;
+  GLuint client_active_unit = 0;  // glClientActiveTexture (coordinate arrays of unit 0 are drawn)
 };
 
 struct PushedAttrib {
@@ -303,7 +344,7 @@ class Context {
   const glm::mat4& projection() const { return matrices[1].back(); }
 
   std::unordered_map<GLuint, TextureObject> textures;  // 0 is the default texture
-  TextureObject& bound_texture() { return textures[s.texture.bound_2d]; }
+  TextureObject& bound_texture() { return textures[s.unit().bound_2d]; }
   GLuint next_texture_name = 1;
 
   // Display lists.
@@ -374,8 +415,64 @@ class Context {
   }
   void pass_through(float token);
 
+  // --- the version and profile (glutInitContextVersion/Profile, EGL and GLFW attributes)
+  int major_version = 2, minor_version = 1;
+  bool core_profile = false;  // GL 3.2+ core: the removed calls are GL_INVALID_OPERATION
+  void set_version(int major, int minor, bool core);
+  const std::string& version_string() const { return version_string_; }
+  const std::string& glsl_version_string() const { return glsl_version_string_; }
+  const std::string& extension_string() const { return extension_string_; }
+
+  // --- GL 1.5-3.3 objects (objects.hpp)
+  std::unordered_map<GLuint, BufferRef> buffers;  // generated names map to null until bound
+  GLuint next_buffer_name = 1;
+  BufferRef array_buffer, copy_read_buffer, copy_write_buffer, pixel_pack_buffer, pixel_unpack_buffer,
+      uniform_buffer, texture_buffer;
+  struct IndexedBuffer {
+    BufferRef buffer;
+    GLintptr offset = 0;
+    GLsizeiptr size = 0;  // 0 with glBindBufferBase: the whole buffer
+  };
+  std::array<IndexedBuffer, kMaxUniformBufferBindings> uniform_bindings{};
+  std::unordered_map<GLuint, std::unique_ptr<VertexArrayObject>> vertex_arrays;  // 0: the default
+  GLuint next_vertex_array_name = 1;
+  GLuint bound_vertex_array = 0;
+  VertexArrayObject& vao() { return *vertex_arrays.at(bound_vertex_array); }
+  // Current generic attribute values (glVertexAttrib*), as raw words of `generic_type`.
+  std::array<std::array<uint32_t, 4>, kMaxVertexAttribs> generic_current{};
+  std::array<GLenum, kMaxVertexAttribs> generic_type{};  // GL_FLOAT, GL_INT or GL_UNSIGNED_INT
+  GLuint primitive_restart_index = 0;
+  bool primitive_restart = false;
+  bool program_point_size = false, depth_clamp = false;
+  // Shader and program objects share one name space (GL 3.3 §2.11.1).
+  std::unordered_map<GLuint, ShaderObject> shaders;
+  std::unordered_map<GLuint, ProgramObject> programs;
+  GLuint next_shader_name = 1;
+  GLuint current_program = 0;
+  // What draws run: the current program's executable as of its last successful link (a
+  // failed relink of the current program keeps the old one, GL 3.3 §2.11.2).
+  std::shared_ptr<glsl::Program> executable;
+  // Draws with the executable (draw_glsl.cpp): the immediate-mode and fixed-function array
+  // batches, and the generic attribute arrays of the bound vertex array object.
+  void draw_program_batch(const gpu::Buffer& vertices, const gpu::DrawCall& call, gpu::RenderState rs);
+  void draw_generic(const GenericDraw& d);
+  void bind_current_values(gpu::VertexLayout& layout, std::vector<std::unique_ptr<gpu::Buffer>>& keep);
+  void run_program(const gpu::VertexLayout& layout, const gpu::DrawCall& call, gpu::RenderState rs);
+  void feed_compat_state();
+  struct CompatCache {
+    const glsl::Program* program = nullptr;
+    CompatSnapshot state;
+  };
+  std::unordered_map<GLuint, CompatCache> compat_cache;  // by program name
+  std::vector<glsl::TextureBinding> texture_units_for_draw();
+  std::vector<glsl::BufferBinding> uniform_buffers_for_draw() const;
+  // Keeps a buffer a queued draw reads until the work has run.
+  void keep_until_finished(std::unique_ptr<gpu::Buffer> b);
+
   gpu::Context& gpu() { return *gpu_; }
   const gpu::Context& gpu() const { return *gpu_; }
+  gpu::RenderState render_state(bool for_clear) const;
+  void bind_draw_target();
   const gpu::Framebuffer& framebuffer() const { return fb_; }
 
  private:
@@ -387,6 +484,7 @@ class Context {
   };
   void send_batch();
   void send_batch_unchecked();
+  void draw_fixed_function(const Batch& b, const gpu::Buffer& vertices, const gpu::Buffer& indices);
   // The gpu layer reports what it cannot do by exceptions; a GL program sees them as
   // GL_OUT_OF_MEMORY (no memory) or GL_INVALID_OPERATION (anything else), never as a crash.
   template <class Fn>
@@ -410,8 +508,6 @@ class Context {
   bool outside_view_volume(const FFVertex& v) const;
   void select_primitives(PrimClass cls, const std::vector<FFVertex>& verts, const std::vector<uint32_t>& idx);
   void build_uniforms(FFUniforms& u, TextureObject* tex) const;
-  gpu::RenderState render_state(bool for_clear) const;
-  void bind_draw_target();
   void release_transient();
 
   int width_ = 0, height_ = 0;
@@ -430,6 +526,7 @@ class Context {
   std::vector<std::shared_ptr<const gpu::Buffer>> transient_shared_;
   size_t transient_bytes_ = 0;
   GLenum error_ = GL_NO_ERROR;
+  std::string version_string_, glsl_version_string_, extension_string_;
   GLenum render_mode_ = GL_RENDER;
   GLuint* sel_buffer_ = nullptr;
   GLsizei sel_size_ = 0;
@@ -454,6 +551,10 @@ class Context {
   } array_cache;
 };
 
+// The extensions a context has (glGetStringi(GL_EXTENSIONS, i)): those whose whole behaviour
+// is implemented, the ARB forms of core features among them.
+const std::vector<const char*>& extensions(const Context& c);
+
 // The context GL calls go to (set by GLUT, or by tessel::gl::make_current).
 Context* current();
 void make_current(Context* c);
@@ -466,5 +567,10 @@ FFPostVertex lerp_post(const FFPostVertex& a, const FFPostVertex& b, float t);
 
 // Texture helpers (texture.cpp).
 bool rebuild_texture(TextureObject& t);
+// The sampler state of a texture object's parameters.
+gpu::SamplerState sampler_state_of(const TextureObject& t);
+// The gpu topology of a GL primitive mode; false for an invalid mode (GL_QUADS, GL_QUAD_STRIP
+// and GL_POLYGON are triangulated, `decompose`, and invalid in a core context).
+bool topology_of(GLenum mode, bool core, gpu::Topology& out, bool& decompose);
 
 }  // namespace tessel::gl

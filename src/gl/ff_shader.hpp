@@ -46,12 +46,14 @@ struct FFLight {
   bool spot = false;              // cutoff != 180
   float k0 = 1.0f, k1 = 0.0f, k2 = 0.0f;
   glm::vec4 ambient{0.0f, 0.0f, 0.0f, 1.0f}, diffuse{0.0f}, specular{0.0f};
+  bool operator==(const FFLight&) const = default;
 };
 
 struct FFMaterial {
   glm::vec4 ambient{0.2f, 0.2f, 0.2f, 1.0f}, diffuse{0.8f, 0.8f, 0.8f, 1.0f};
   glm::vec4 specular{0.0f, 0.0f, 0.0f, 1.0f}, emission{0.0f, 0.0f, 0.0f, 1.0f};
   float shininess = 0.0f;
+  bool operator==(const FFMaterial&) const = default;
 };
 
 // Which material colours follow the current colour (glColorMaterial), as bits.

@@ -228,6 +228,19 @@ bool need_init(const char* fn) {
   if (!state().initialized) report(std::string(fn) + " called before glutInit");
   return state().initialized;
 }
+// The version and profile glutInitContextVersion/Profile asked for. As GLX does for
+// freeglut, a 3.2+ request without a profile is a core context; none is a compatibility one.
+void apply_context_version(gl::Context& c) {
+  const State& s = state();
+  if (s.context_major == 0) return;
+  const bool profiles = s.context_major > 3 || (s.context_major == 3 && s.context_minor >= 2);
+  const bool core = profiles && s.context_profile != GLUT_COMPATIBILITY_PROFILE;
+  // The highest version Tessel has is 3.3: a request above it gets 3.3 (what the program can
+  // use is what it asked for, minus what is not there: GL_VERSION says which).
+  int major = s.context_major, minor = s.context_minor;
+  if (major > 3 || (major == 3 && minor > 3)) major = 3, minor = 3;
+  c.set_version(major, minor, core);
+}
 }  // namespace
 
 extern "C" {
@@ -294,6 +307,13 @@ void GLAPIENTRY glutInitWindowSize(int w, int h) {
   }
 }
 
+void GLAPIENTRY glutInitContextVersion(int major, int minor) {
+  state().context_major = major;
+  state().context_minor = minor;
+}
+void GLAPIENTRY glutInitContextFlags(int) {}  // debug and forward-compatible contexts behave alike here
+void GLAPIENTRY glutInitContextProfile(int profile) { state().context_profile = profile; }
+
 int GLAPIENTRY glutCreateWindow(const char* title) {
   if (!need_init("glutCreateWindow")) return 0;
   State& s = state();
@@ -308,6 +328,7 @@ int GLAPIENTRY glutCreateWindow(const char* title) {
   const bool dbl = (w->mode & GLUT_DOUBLE) != 0;
   w->context = std::make_unique<gl::Context>(w->width, w->height, dbl, (w->mode & GLUT_DEPTH) != 0,
                                              (w->mode & GLUT_STENCIL) != 0);
+  apply_context_version(*w->context);
   if (!s.headless.on && !native_open(*w)) parse_headless(s.headless, "");
   Window& ref = *w;
   s.windows.push_back(std::move(w));

@@ -105,6 +105,9 @@ struct State {
   int action_on_close = GLUT_ACTION_EXIT;
   bool ignore_key_repeat = false;
   int program_argc = 0;
+  // glutInitContextVersion/Profile: 0.0 is a legacy (compatibility) context.
+  int context_major = 0, context_minor = 0;
+  int context_profile = 0;  // 0: not given (a 3.2+ request is then a core context, as GLX gives)
 };
 
 State& state();

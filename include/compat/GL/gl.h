@@ -58,12 +58,13 @@
 extern "C" {
 #endif
 
-/* Only 1.1 is claimed in full: of 1.2 and 1.3 just a few entry points are
- * declared below, so GL_VERSION_1_2 / GL_VERSION_1_3 stay undefined. */
+/* 1.1 is declared here; GL/glext.h, included at the end, adds 1.2 to 3.3. */
 #define GL_VERSION_1_1 1
 
 /* ---- Scalar types -------------------------------------------------------- */
 
+#ifndef TESSEL_GL_SCALAR_TYPES /* shared with GL/glcorearb.h */
+#define TESSEL_GL_SCALAR_TYPES 1
 typedef unsigned int GLenum;     /* enumerant                          */
 typedef unsigned char GLboolean; /* GL_FALSE or GL_TRUE                 */
 typedef unsigned int GLbitfield; /* OR of *_BIT masks                   */
@@ -82,6 +83,7 @@ typedef double GLclampd; /* double clamped to [0, 1]            */
 typedef char GLchar;
 typedef ptrdiff_t GLintptr;
 typedef ptrdiff_t GLsizeiptr;
+#endif
 
 /* ==========================================================================
  * Enumerants, OpenGL 1.1 (grouped after the chapters of the 1.1 spec)
@@ -1289,6 +1291,11 @@ TESSEL_GLAPI void TESSEL_APIENTRY glMultiTexCoord2fv(GLenum target, const GLfloa
 
 #ifdef __cplusplus
 } /* extern "C" */
+#endif
+
+/* What GL 1.2 to 3.3 add (prototypes with GL_GLEXT_PROTOTYPES), as Mesa's gl.h does. */
+#ifndef GL_GLEXT_LEGACY
+#include <GL/glext.h>
 #endif
 
 #endif /* TESSEL_COMPAT_GL_GL_H */

@@ -451,6 +451,19 @@ TESSEL_GLAPI void TESSEL_APIENTRY glutWireCylinder(GLdouble radius, GLdouble hei
 TESSEL_GLAPI void TESSEL_APIENTRY glutSolidCylinder(GLdouble radius, GLdouble height, GLint slices,
                                                     GLint stacks);
 
+/* ---- Context version and profile (freeglut 2.6+) -------------------------- */
+#define GLUT_INIT_MAJOR_VERSION 0x0200
+#define GLUT_INIT_MINOR_VERSION 0x0201
+#define GLUT_INIT_FLAGS 0x0202
+#define GLUT_INIT_PROFILE 0x0203
+#define GLUT_DEBUG 0x0001
+#define GLUT_FORWARD_COMPATIBLE 0x0002
+#define GLUT_CORE_PROFILE 0x0001
+#define GLUT_COMPATIBILITY_PROFILE 0x0002
+TESSEL_GLAPI void TESSEL_APIENTRY glutInitContextVersion(int major, int minor);
+TESSEL_GLAPI void TESSEL_APIENTRY glutInitContextFlags(int flags);
+TESSEL_GLAPI void TESSEL_APIENTRY glutInitContextProfile(int profile);
+
 /* ---- Video resizing ------------------------------------------------------ */
 TESSEL_GLAPI int TESSEL_APIENTRY glutVideoResizeGet(GLenum param);
 TESSEL_GLAPI void TESSEL_APIENTRY glutSetupVideoResizing(void);

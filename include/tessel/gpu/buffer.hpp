@@ -41,6 +41,13 @@ class Buffer : public Resource {
   }
   // Throws Error when offset + bytes is past the end.
   void update(size_t offset, const void* data, size_t bytes);
+  // The bytes, for the caller to change in place (glMapBuffer): queued draws that read the
+  // buffer run first, and what was derived from the contents is forgotten.
+  std::byte* writable() {
+    before_write();
+    max_cache_.clear();
+    return data_.data();
+  }
   size_t size() const { return data_.size(); }
   const std::byte* data() const { return data_.data(); }
   // The largest of `count` 32-bit values from byte `offset` (4-aligned, in range): what a

@@ -1,0 +1,297 @@
+#!/usr/bin/env python3
+"""Writes Tessel's GL/glext.h, GL/glcorearb.h and GL/glew.h (with src/gl/glew_flags.inc) from the Khronos API registry (gl.xml).
+
+The registry is the specification's own machine-readable list of every enumerant and entry
+point by version (Debian: apt-get install khronos-api, /usr/share/khronos-api/gl.xml). The
+headers declare what GL 1.2 to 3.3 add (glext.h, for use after GL/gl.h) and the whole 3.3
+core profile (glcorearb.h, standalone). As in every glext.h, prototypes are declared when
+GL_GLEXT_PROTOTYPES is defined; the PFNGL...PROC pointer types always are.
+
+    scripts/gen_gl_headers.py [path/to/gl.xml]
+
+Run it again only to change what the headers cover; the output is committed.
+"""
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+LAST = (3, 3)  # the newest version Tessel implements
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+OUT = os.path.join(HERE, '..', 'include', 'compat', 'GL')
+
+# The scalar types beyond GL 1.1's (gl.h has those), with the C types the registry's
+# khrplatform names stand for on the platforms Tessel builds for (LP64 and ILP32 Linux).
+EXTRA_TYPES = """\
+#ifndef TESSEL_GL_EXTRA_TYPES
+#define TESSEL_GL_EXTRA_TYPES 1
+#include <stdint.h>
+typedef unsigned short GLhalf;
+typedef int64_t GLint64;
+typedef uint64_t GLuint64;
+typedef struct __GLsync* GLsync;
+typedef void (*GLDEBUGPROC)(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
+                            const GLchar* message, const void* userParam);
+#endif
+"""
+
+BASE_TYPES = """\
+#ifndef TESSEL_GL_SCALAR_TYPES
+#define TESSEL_GL_SCALAR_TYPES 1
+#include <stddef.h>
+typedef unsigned int GLenum;
+typedef unsigned char GLboolean;
+typedef unsigned int GLbitfield;
+typedef void GLvoid;
+typedef signed char GLbyte;
+typedef short GLshort;
+typedef int GLint;
+typedef int GLsizei;
+typedef unsigned char GLubyte;
+typedef unsigned short GLushort;
+typedef unsigned int GLuint;
+typedef float GLfloat;
+typedef float GLclampf;
+typedef double GLdouble;
+typedef double GLclampd;
+typedef char GLchar;
+typedef ptrdiff_t GLintptr;
+typedef ptrdiff_t GLsizeiptr;
+#endif
+"""
+
+
+def text_of(elem):
+    """A <proto> or <param> as C text."""
+    return ' '.join(''.join(elem.itertext()).split())
+
+
+def load(path):
+    root = ET.parse(path).getroot()
+    enums = {}
+    for group in root.findall('enums'):
+        for e in group.findall('enum'):
+            if e.get('api') not in (None, 'gl'):
+                continue
+            enums.setdefault(e.get('name'), e.get('value'))
+    commands = {}
+    for c in root.find('commands').findall('command'):
+        proto = c.find('proto')
+        name = proto.find('name').text
+        ret = text_of(proto)[: -len(name)].strip()
+        params = [text_of(p) for p in c.findall('param')]
+        commands[name] = (ret, params)
+    features = []
+    for f in root.findall('feature'):
+        if f.get('api') != 'gl':
+            continue
+        version = tuple(int(x) for x in f.get('number').split('.'))
+        if version > LAST:
+            continue
+        features.append((version, f))
+    return enums, commands, features
+
+
+def items(feature, profile):
+    """The enums and commands a version adds, minus what `profile` removes, in order."""
+    en, cm = [], []
+    for req in feature.findall('require'):
+        if req.get('profile') not in (None, profile):
+            continue
+        for e in req.findall('enum'):
+            en.append(e.get('name'))
+        for c in req.findall('command'):
+            cm.append(c.get('name'))
+    return en, cm
+
+
+def removed(features, profile):
+    gone = set()
+    for _, f in features:
+        for rem in f.findall('remove'):
+            if rem.get('profile') == profile:
+                gone.update(x.get('name') for x in rem if x.get('name'))
+    return gone
+
+
+def block(name, en, cm, enums, commands, seen):
+    """One version's guarded block; what an earlier block declared (3.1 and 3.2 repeat some
+    of 3.0) is left out. The guards are the GL_VERSION_x_y names in both headers, so a
+    version the first included header declared is skipped by the second."""
+    en = [e for e in en if e not in seen]
+    cm = [c for c in cm if c not in seen]
+    seen.update(en)
+    seen.update(cm)
+    out = [f'#ifndef {name}', f'#define {name} 1']
+    for e in en:
+        out.append(f'#define {e} {enums[e]}')
+    for c in cm:
+        ret, params = commands[c]
+        out.append(f'typedef {ret} (APIENTRYP PFN{c.upper()}PROC)({", ".join(params) or "void"});')
+    out.append('#ifdef GL_GLEXT_PROTOTYPES')
+    for c in cm:
+        ret, params = commands[c]
+        out.append(f'GLAPI {ret} APIENTRY {c}({", ".join(params) or "void"});')
+    out.append('#endif')
+    out.append(f'#endif /* {name} */')
+    return '\n'.join(out) + '\n'
+
+
+HEAD = """/* clang-format off */
+/*
+ * Tessel compatibility header: <GL/{file}>
+ *
+ * Generated by scripts/gen_gl_headers.py from the Khronos API registry (gl.xml):
+ * {what}.
+ * The names, numbers and parameter lists are those the OpenGL specification fixes. Entry
+ * points are declared when GL_GLEXT_PROTOTYPES is defined (or by GL/glew.h); the function
+ * pointer types (PFNGL...PROC) always are, for loaders.
+ */
+"""
+
+LINKAGE = """#ifndef APIENTRY
+#define APIENTRY
+#endif
+#ifndef APIENTRYP
+#define APIENTRYP APIENTRY*
+#endif
+#ifndef GLAPI
+#if defined(__GNUC__) || defined(__clang__)
+#define GLAPI extern __attribute__((visibility("default")))
+#else
+#define GLAPI extern
+#endif
+#endif
+"""
+
+
+def main():
+    path = sys.argv[1] if len(sys.argv) > 1 else '/usr/share/khronos-api/gl.xml'
+    enums, commands, features = load(path)
+
+    # glext.h: what 1.2 .. 3.3 add, compatibility profile (after GL/gl.h, which has 1.1).
+    parts = [HEAD.format(file='glext.h', what='every enumerant and entry point OpenGL 1.2 to 3.3\n * '
+                         'add to 1.1, compatibility profile'),
+             '#ifndef __gl_glext_h_\n#define __gl_glext_h_ 1\n#include <GL/gl.h>\n',
+             '#ifdef __cplusplus\nextern "C" {\n#endif\n', LINKAGE, EXTRA_TYPES]
+    seen = set()
+    for version, f in features:
+        if version <= (1, 1):
+            continue
+        en, cm = items(f, 'compatibility')
+        parts.append(block(f.get('name'), en, cm, enums, commands, seen))
+    parts.append('#ifdef __cplusplus\n}\n#endif\n#endif /* __gl_glext_h_ */\n')
+    with open(os.path.join(OUT, 'glext.h'), 'w') as fh:
+        fh.write('\n'.join(parts))
+
+    # glcorearb.h: the 3.3 core profile, standalone.
+    gone = removed(features, 'core')
+    parts = [HEAD.format(file='glcorearb.h', what='the OpenGL 3.3 core profile, 1.0 to 3.3 without\n * '
+                         'what the core profile removes'),
+             '#ifndef __gl_glcorearb_h_\n#define __gl_glcorearb_h_ 1\n',
+             '#ifdef __cplusplus\nextern "C" {\n#endif\n', LINKAGE, BASE_TYPES, EXTRA_TYPES]
+    seen = set()
+    for version, f in features:
+        en, cm = items(f, 'core')
+        en = [e for e in en if e not in gone]
+        cm = [c for c in cm if c not in gone]
+        name = f.get('name')
+        if version <= (1, 1):
+            # GL/gl.h defines GL_VERSION_1_1 for the whole of 1.1: the core subset takes its
+            # own guard so that both headers can be included.
+            name = 'TESSEL_GLCOREARB_' + name[3:]
+        parts.append(block(name, en, cm, enums, commands, seen))
+    parts.append('#ifdef __cplusplus\n}\n#endif\n#endif /* __gl_glcorearb_h_ */\n')
+    with open(os.path.join(OUT, 'glcorearb.h'), 'w') as fh:
+        fh.write('\n'.join(parts))
+
+    write_glew(path)
+
+
+GLEW_HEAD = """/* clang-format off */
+/*
+ * Tessel compatibility header: <GL/glew.h>
+ *
+ * GLEW's API over Tessel's OpenGL: every entry point is a function of Tessel's libraries, so
+ * glewInit has nothing to load. It succeeds when a context is current, and sets the version
+ * flags (GLEW_VERSION_x_y) and extension flags (GLEW_ARB_..., one for every extension of the
+ * Khronos registry) to what that context really has. Generated by scripts/gen_gl_headers.py.
+ */
+#ifndef __glew_h__
+#if defined(TESSEL_COMPAT_GL_GL_H) && !defined(GL_GLEXT_PROTOTYPES)
+/* As with GLEW itself: gl.h (or glut.h) included first has declared GL without the entry
+ * points GLEW provides. */
+#error gl.h included before glew.h
+#endif
+#define __glew_h__ 1
+#define __GLEW_H__ 1
+#ifndef GL_GLEXT_PROTOTYPES
+#define GL_GLEXT_PROTOTYPES 1
+#endif
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define GLEW_OK 0
+#define GLEW_NO_ERROR 0
+#define GLEW_ERROR_NO_GL_VERSION 1
+#define GLEW_ERROR_GL_VERSION_10_ONLY 2
+#define GLEW_ERROR_GLX_VERSION_11_ONLY 3
+#define GLEW_ERROR_NO_GLX_DISPLAY 4
+#define GLEW_VERSION 1
+#define GLEW_VERSION_MAJOR 2
+#define GLEW_VERSION_MINOR 3
+#define GLEW_VERSION_MICRO 4
+#define GLEW_GET_VAR(x) (x)
+#define GLEW_GET_FUN(x) (x)
+
+GLAPI GLboolean glewExperimental;
+GLAPI GLenum glewInit(void);
+GLAPI GLboolean glewIsSupported(const char* name);
+#define glewIsExtensionSupported(x) glewIsSupported(x)
+GLAPI GLboolean glewGetExtension(const char* name);
+GLAPI const GLubyte* glewGetErrorString(GLenum error);
+GLAPI const GLubyte* glewGetString(GLenum name);
+"""
+
+
+def write_glew(root_path):
+    root = ET.parse(root_path).getroot()
+    exts = sorted({e.get('name') for e in root.find('extensions').findall('extension')
+                   if 'gl' in (e.get('supported') or '').split('|') and e.get('name').startswith('GL_')})
+    versions = [f'{a}_{b}' for a, b in [(1, 1), (1, 2), (1, 3), (1, 4), (1, 5), (2, 0), (2, 1), (3, 0), (3, 1),
+                                         (3, 2), (3, 3), (4, 0), (4, 1), (4, 2), (4, 3), (4, 4), (4, 5), (4, 6)]]
+    out = [GLEW_HEAD]
+    for v in versions:
+        out.append(f'GLAPI GLboolean __GLEW_VERSION_{v};\n#define GLEW_VERSION_{v} __GLEW_VERSION_{v}')
+    out.append('#define GLEW_VERSION_1_2_1 GLEW_VERSION_1_2')
+    for e in exts:
+        n = e[3:]
+        out.append(f'GLAPI GLboolean __GLEW_{n};\n#define GLEW_{n} __GLEW_{n}')
+    out.append('\n#ifdef __cplusplus\n}\n#endif\n#endif /* __glew_h__ */\n')
+    with open(os.path.join(OUT, 'glew.h'), 'w') as fh:
+        fh.write('\n'.join(out))
+    # The flags' definitions, by name, for glewInit (src/gl/glew.cpp).
+    src = os.path.join(HERE, '..', 'src', 'gl', 'glew_flags.inc')
+    with open(src, 'w') as fh:
+        fh.write('// Generated by scripts/gen_gl_headers.py: GLEW\'s flags, defined, and listed by name.\n')
+        fh.write('// clang-format off\n')
+        for v in versions:
+            fh.write(f'GLboolean __GLEW_VERSION_{v} = GL_FALSE;\n')
+        for e in exts:
+            fh.write(f'GLboolean __GLEW_{e[3:]} = GL_FALSE;\n')
+        fh.write('const VersionFlag kVersionFlags[] = {\n')
+        for v in versions:
+            a, b = v.split('_')
+            fh.write(f'    {{{a}, {b}, &__GLEW_VERSION_{v}}},\n')
+        fh.write('};\nconst ExtensionFlag kExtensionFlags[] = {\n')
+        for e in exts:
+            fh.write(f'    {{"{e}", &__GLEW_{e[3:]}}},\n')
+        fh.write('};\n')
+
+
+if __name__ == '__main__':
+    main()

@@ -1,0 +1,635 @@
+// Draws with a GLSL program (GL 3.3 §2.8.3 and §2.11): the draw calls of GL 1.1 to 3.3 over
+// the generic attribute arrays of the bound vertex array object, and the immediate-mode and
+// fixed-function array batches when a program is current (compatibility contexts).
+//
+// Attribute arrays in buffer objects are read in place by the gpu layer, which checks every
+// fetch against the buffer's size (a draw past the end is GL_INVALID_OPERATION, never a read
+// out of bounds). Arrays in client memory (compatibility vertex array object 0), and types
+// the gpu layer does not read (GL_DOUBLE, the packed 2_10_10_10 types, GL_BGRA), are copied
+// to floats over the range of vertices the draw reads.
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+#include "api.hpp"
+
+namespace tessel::gl {
+
+namespace {
+
+bool gpu_attrib_type(GLenum t, gpu::AttribType& out) {
+  switch (t) {
+    case GL_FLOAT: out = gpu::AttribType::F32; return true;
+    case GL_HALF_FLOAT: out = gpu::AttribType::F16; return true;
+    case GL_BYTE: out = gpu::AttribType::I8; return true;
+    case GL_UNSIGNED_BYTE: out = gpu::AttribType::U8; return true;
+    case GL_SHORT: out = gpu::AttribType::I16; return true;
+    case GL_UNSIGNED_SHORT: out = gpu::AttribType::U16; return true;
+    case GL_INT: out = gpu::AttribType::I32; return true;
+    case GL_UNSIGNED_INT: out = gpu::AttribType::U32; return true;
+    default: return false;
+  }
+}
+
+// One component of a normalized or plain value, as GL 3.3 §2.8 converts it to float.
+float component(const uint8_t* p, GLenum type, bool normalized) {
+  auto norm = [&](double v, double max, bool is_signed) {
+    if (!normalized) return float(v);
+    // GL 3.3 Table 2.2 / §2.1.6.1: signed values map to [-1, 1] as (2c + 1) / (2^b - 1).
+    return is_signed ? float((2.0 * v + 1.0) / (2.0 * max + 1.0)) : float(v / max);
+  };
+  switch (type) {
+    case GL_BYTE: return norm(double(int8_t(p[0])), 127.0, true);
+    case GL_UNSIGNED_BYTE: return norm(double(p[0]), 255.0, false);
+    case GL_SHORT: {
+      int16_t v;
+      std::memcpy(&v, p, 2);
+      return norm(double(v), 32767.0, true);
+    }
+    case GL_UNSIGNED_SHORT: {
+      uint16_t v;
+      std::memcpy(&v, p, 2);
+      return norm(double(v), 65535.0, false);
+    }
+    case GL_INT: {
+      int32_t v;
+      std::memcpy(&v, p, 4);
+      return norm(double(v), 2147483647.0, true);
+    }
+    case GL_UNSIGNED_INT: {
+      uint32_t v;
+      std::memcpy(&v, p, 4);
+      return norm(double(v), 4294967295.0, false);
+    }
+    case GL_FLOAT: {
+      float v;
+      std::memcpy(&v, p, 4);
+      return v;
+    }
+    case GL_DOUBLE: {
+      double v;
+      std::memcpy(&v, p, 8);
+      return float(v);
+    }
+    case GL_HALF_FLOAT: {
+      uint16_t h;
+      std::memcpy(&h, p, 2);
+      return gpu::half_to_float(h);
+    }
+    default: return 0.0f;
+  }
+}
+
+// The four components of a packed GL_INT_2_10_10_10_REV / GL_UNSIGNED_INT_2_10_10_10_REV
+// value (GL 3.3 §2.8.2), x in the low bits.
+void unpack_2_10_10_10(uint32_t w, bool is_signed, bool normalized, float* out) {
+  const int bits[4] = {10, 10, 10, 2};
+  int shift = 0;
+  for (int i = 0; i < 4; ++i) {
+    const uint32_t raw = (w >> shift) & ((1u << bits[i]) - 1u);
+    shift += bits[i];
+    if (is_signed) {
+      const int32_t v = int32_t(raw << (32 - bits[i])) >> (32 - bits[i]);
+      const double max = double((1 << (bits[i] - 1)) - 1);
+      out[i] = normalized ? float(std::max(-1.0, v / max)) : float(v);
+    } else {
+      const double max = double((1u << bits[i]) - 1u);
+      out[i] = normalized ? float(raw / max) : float(raw);
+    }
+  }
+}
+
+int component_bytes(GLenum type) {
+  switch (type) {
+    case GL_BYTE:
+    case GL_UNSIGNED_BYTE: return 1;
+    case GL_SHORT:
+    case GL_UNSIGNED_SHORT:
+    case GL_HALF_FLOAT: return 2;
+    case GL_DOUBLE: return 8;
+    default: return 4;
+  }
+}
+
+bool packed_type(GLenum t) { return t == GL_INT_2_10_10_10_REV || t == GL_UNSIGNED_INT_2_10_10_10_REV; }
+
+}  // namespace
+
+GLsizei AttribArray::effective_stride() const {
+  if (stride) return stride;
+  if (packed_type(type)) return 4;
+  return GLsizei((size == GL_BGRA ? 4 : size) * component_bytes(type));
+}
+
+namespace {
+
+// The bytes an attribute array reads from: a buffer object's (size-checked) or client memory.
+struct ArraySource {
+  const uint8_t* base = nullptr;                      // element 0
+  size_t limit = std::numeric_limits<size_t>::max();  // bytes readable from base
+};
+
+// Copies elements [lo, hi] of an array into floats, 4 per element, at element index - lo.
+// False when an element lies outside its buffer.
+bool convert_array(const AttribArray& a, const ArraySource& src, uint32_t lo, uint32_t hi,
+                   std::vector<float>& out) {
+  const size_t stride = size_t(a.effective_stride());
+  const int n = a.size == GL_BGRA ? 4 : a.size;
+  const size_t elem = packed_type(a.type) ? 4 : size_t(n) * size_t(component_bytes(a.type));
+  out.assign(size_t(hi - lo + 1) * 4, 0.0f);
+  for (uint32_t i = lo; i <= hi; ++i) {
+    const size_t at = size_t(i) * stride;
+    if (at > src.limit || elem > src.limit - at) return false;
+    const uint8_t* p = src.base + at;
+    float* o = &out[size_t(i - lo) * 4];
+    o[3] = 1.0f;
+    if (packed_type(a.type)) {
+      uint32_t w;
+      std::memcpy(&w, p, 4);
+      unpack_2_10_10_10(w, a.type == GL_INT_2_10_10_10_REV, a.normalized, o);
+      if (n == 3) o[3] = 1.0f;
+      continue;
+    }
+    for (int k = 0; k < n; ++k)
+      o[k] = component(p + size_t(k) * size_t(component_bytes(a.type)), a.type, a.normalized);
+    if (a.size == GL_BGRA) std::swap(o[0], o[2]);
+  }
+  return true;
+}
+
+uint32_t restart_value(gpu::IndexType t) {
+  return t == gpu::IndexType::U8 ? 0xFFu : t == gpu::IndexType::U16 ? 0xFFFFu : 0xFFFFFFFFu;
+}
+
+uint32_t read_index(const uint8_t* p, gpu::IndexType t, size_t i) {
+  switch (t) {
+    case gpu::IndexType::U8: return p[i];
+    case gpu::IndexType::U16: {
+      uint16_t v;
+      std::memcpy(&v, p + 2 * i, 2);
+      return v;
+    }
+    default: {
+      uint32_t v;
+      std::memcpy(&v, p + 4 * i, 4);
+      return v;
+    }
+  }
+}
+
+// GL_QUADS, GL_QUAD_STRIP and GL_POLYGON as independent triangles over vertex numbers
+// `ids` (restart entries split the sequence). Each triangle ends with the vertex flat shading
+// takes (GL 3.3 compatibility Table 2.15: a quad's fourth vertex, a strip quad's vertex
+// 2i + 3, a polygon's first), split along the diagonal Mesa uses.
+std::vector<uint32_t> triangulate(GLenum mode, const std::vector<uint32_t>& ids, bool restart,
+                                  uint32_t restart_id) {
+  std::vector<uint32_t> out;
+  size_t start = 0;
+  auto run = [&](size_t b, size_t e) {
+    const size_t n = e - b;
+    const uint32_t* v = ids.data() + b;
+    if (mode == GL_QUADS) {
+      for (size_t i = 0; i + 3 < n; i += 4)
+        out.insert(out.end(), {v[i], v[i + 1], v[i + 3], v[i + 1], v[i + 2], v[i + 3]});
+    } else if (mode == GL_QUAD_STRIP) {
+      for (size_t i = 0; i + 3 < n; i += 2)
+        out.insert(out.end(), {v[i], v[i + 1], v[i + 3], v[i + 2], v[i], v[i + 3]});
+    } else {  // GL_POLYGON
+      for (size_t i = 1; i + 1 < n; ++i) out.insert(out.end(), {v[i], v[i + 1], v[0]});
+    }
+  };
+  for (size_t i = 0; i <= ids.size(); ++i) {
+    if (i == ids.size() || (restart && ids[i] == restart_id)) {
+      run(start, i);
+      start = i + 1;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+bool topology_of(GLenum mode, bool core, gpu::Topology& out, bool& decompose) {
+  decompose = false;
+  switch (mode) {
+    case GL_POINTS: out = gpu::Topology::Points; return true;
+    case GL_LINES: out = gpu::Topology::Lines; return true;
+    case GL_LINE_STRIP: out = gpu::Topology::LineStrip; return true;
+    case GL_LINE_LOOP: out = gpu::Topology::LineLoop; return true;
+    case GL_TRIANGLES: out = gpu::Topology::Triangles; return true;
+    case GL_TRIANGLE_STRIP: out = gpu::Topology::TriangleStrip; return true;
+    case GL_TRIANGLE_FAN: out = gpu::Topology::TriangleFan; return true;
+    case GL_QUADS:
+    case GL_QUAD_STRIP:
+    case GL_POLYGON:
+      out = gpu::Topology::Triangles;
+      decompose = true;
+      return !core;
+    default: return false;
+  }
+}
+
+// --- the draw --------------------------------------------------------------------------
+
+// The attribute locations no array feeds read the current values (glVertexAttrib*, GL 3.3
+// §2.7): one element each in a small buffer, repeated for every vertex and instance.
+void Context::bind_current_values(gpu::VertexLayout& layout,
+                                  std::vector<std::unique_ptr<gpu::Buffer>>& keep) {
+  auto values = std::make_unique<gpu::Buffer>(generic_current.data(), sizeof generic_current);
+  for (int l = 0; l < kMaxVertexAttribs; ++l) {
+    if (layout.attribs[size_t(l)].enabled) continue;
+    const GLenum t = generic_type[size_t(l)];
+    const gpu::AttribType type = t == GL_INT            ? gpu::AttribType::I32
+                                 : t == GL_UNSIGNED_INT ? gpu::AttribType::U32
+                                                        : gpu::AttribType::F32;
+    layout.attribs[size_t(l)] = {true, l, 4, type, false, t != GL_FLOAT, 0};
+    layout.bindings[size_t(l)] = {values.get(), size_t(l) * 16, 16, 0xFFFFFFFFu};
+  }
+  keep.push_back(std::move(values));
+}
+
+void Context::draw_generic(const GenericDraw& d) {
+  touch();
+  if (!executable) return;  // no program: nothing is drawn (the fixed-function path is api_arrays)
+  if (d.count == 0 || d.instances == 0) return;
+  VertexArrayObject& va = vao();
+  std::vector<std::unique_ptr<gpu::Buffer>> keep;
+
+  // The index data: a range of the element array buffer, or client memory copied.
+  gpu::DrawCall call;
+  call.topology = d.topology;
+  call.first = d.indexed ? 0 : uint32_t(d.first);
+  call.count = uint32_t(d.count);
+  call.instance_count = uint32_t(d.instances);
+  call.base_vertex = d.base_vertex;
+  const uint8_t* index_bytes = nullptr;
+  size_t index_size = 0;
+  if (d.indexed) {
+    call.index_type = d.index_type;
+    index_size = d.index_type == gpu::IndexType::U8 ? 1 : d.index_type == gpu::IndexType::U16 ? 2 : 4;
+    const size_t offset = reinterpret_cast<size_t>(d.indices);
+    if (va.element_buffer) {
+      if (va.element_buffer->mapped) return error(GL_INVALID_OPERATION);
+      const gpu::Buffer& eb = va.element_buffer->data;
+      if (offset > eb.size() || size_t(d.count) * index_size > eb.size() - offset)
+        return error(GL_INVALID_OPERATION);  // reads past the end of the element array buffer
+      index_bytes = reinterpret_cast<const uint8_t*>(eb.data()) + offset;
+      call.index_buffer = &eb;
+      call.index_offset = offset;
+    } else {
+      if (!d.indices) return;
+      index_bytes = static_cast<const uint8_t*>(d.indices);
+      keep.push_back(std::make_unique<gpu::Buffer>(index_bytes, size_t(d.count) * index_size));
+      call.index_buffer = keep.back().get();
+      call.index_offset = 0;
+    }
+  }
+  const uint32_t restart_id = primitive_restart_index;
+  const bool restart = primitive_restart && d.indexed;
+
+  // The range of vertices read (for arrays copied from client memory or converted).
+  bool have_range = false;
+  uint32_t lo = 0, hi = 0;
+  auto range = [&]() -> bool {
+    if (have_range) return hi >= lo;
+    have_range = true;
+    if (!d.indexed) {
+      lo = uint32_t(d.first);
+      hi = uint32_t(d.first + d.count - 1);
+      return true;
+    }
+    lo = std::numeric_limits<uint32_t>::max();
+    hi = 0;
+    for (size_t i = 0; i < size_t(d.count); ++i) {
+      const uint32_t v = read_index(index_bytes, d.index_type, i);
+      if (restart && v == restart_id) continue;
+      const int64_t at = int64_t(v) + d.base_vertex;
+      if (at < 0 || at > int64_t(std::numeric_limits<uint32_t>::max())) continue;
+      lo = std::min(lo, uint32_t(at));
+      hi = std::max(hi, uint32_t(at));
+    }
+    return hi >= lo;
+  };
+
+  gpu::VertexLayout layout;
+  for (int l = 0; l < kMaxVertexAttribs; ++l) {
+    const AttribArray& a = va.attribs[size_t(l)];
+    if (!a.enabled) continue;
+    if (a.buffer && a.buffer->mapped) return error(GL_INVALID_OPERATION);
+    gpu::AttribType t = gpu::AttribType::F32;
+    const bool direct = gpu_attrib_type(a.type, t) && a.size != GL_BGRA;
+    if (a.buffer && direct) {
+      layout.bindings[size_t(l)] = {&a.buffer->data, reinterpret_cast<size_t>(a.pointer),
+                                    uint32_t(a.effective_stride()), a.divisor};
+      layout.attribs[size_t(l)] = {true, l, a.size, t, a.normalized, a.integer, 0};
+      continue;
+    }
+    // Copied (client memory) or converted to floats: over the vertices, or the instances
+    // the draw reads.
+    ArraySource src;
+    if (a.buffer) {
+      const size_t off = reinterpret_cast<size_t>(a.pointer);
+      if (off > a.buffer->data.size()) return error(GL_INVALID_OPERATION);
+      src.base = reinterpret_cast<const uint8_t*>(a.buffer->data.data()) + off;
+      src.limit = a.buffer->data.size() - off;
+    } else {
+      if (!a.pointer) continue;  // nothing to read: the current value
+      src.base = static_cast<const uint8_t*>(a.pointer);
+    }
+    uint32_t first = 0, last = 0;
+    if (a.divisor) {
+      last = uint32_t((d.instances - 1) / GLsizei(a.divisor));
+    } else {
+      if (!range()) return;  // every index is a restart: nothing to draw
+      first = lo;
+      last = hi;
+    }
+    std::vector<float> floats;
+    if (direct && !a.buffer) {
+      // Client memory in a type the gpu reads: the bytes of elements [0, last], as they are.
+      const size_t stride = size_t(a.effective_stride());
+      const size_t bytes = size_t(last) * stride + size_t(a.size) * size_t(component_bytes(a.type));
+      keep.push_back(std::make_unique<gpu::Buffer>(src.base, bytes));
+      layout.bindings[size_t(l)] = {keep.back().get(), 0, uint32_t(stride), a.divisor};
+      layout.attribs[size_t(l)] = {true, l, a.size, t, a.normalized, a.integer, 0};
+      continue;
+    }
+    if (!convert_array(a, src, first, last, floats)) return error(GL_INVALID_OPERATION);
+    // Elements [first, last] at index - first: padded in front so that index i is element i.
+    std::vector<float> padded(size_t(first) * 4 + floats.size());
+    std::copy(floats.begin(), floats.end(), padded.begin() + ptrdiff_t(size_t(first) * 4));
+    keep.push_back(std::make_unique<gpu::Buffer>(padded.data(), padded.size() * sizeof(float)));
+    layout.bindings[size_t(l)] = {keep.back().get(), 0, 16, a.divisor};
+    layout.attribs[size_t(l)] = {true, l, 4, gpu::AttribType::F32, false, false, 0};
+  }
+
+  // GL_QUADS, GL_QUAD_STRIP, GL_POLYGON (compatibility): triangles over an index list; a
+  // primitive restart index other than the type's largest value: indices rewritten to 32 bits.
+  if (d.decompose || (restart && restart_id != restart_value(d.index_type))) {
+    std::vector<uint32_t> ids(size_t(d.count));
+    for (size_t i = 0; i < ids.size(); ++i) {
+      if (!d.indexed) {
+        ids[i] = uint32_t(d.first) + uint32_t(i);
+        continue;
+      }
+      const uint32_t v = read_index(index_bytes, d.index_type, i);
+      ids[i] = restart && v == restart_id ? 0xFFFFFFFFu : v;
+    }
+    if (d.decompose) ids = triangulate(d.mode, ids, restart, 0xFFFFFFFFu);
+    if (ids.empty()) return;
+    keep.push_back(std::make_unique<gpu::Buffer>(ids.data(), ids.size() * sizeof(uint32_t)));
+    call.first = 0;
+    call.count = uint32_t(ids.size());
+    call.index_buffer = keep.back().get();
+    call.index_offset = 0;
+    call.index_type = gpu::IndexType::U32;
+  }
+
+  bind_current_values(layout, keep);
+  gpu::RenderState rs = render_state(false);
+  rs.primitive_restart = restart;
+  run_program(layout, call, rs);
+  for (auto& b : keep) keep_until_finished(std::move(b));
+}
+
+void Context::draw_program_batch(const gpu::Buffer& vbuf, const gpu::DrawCall& call, gpu::RenderState rs) {
+  gpu::VertexLayout layout;
+  constexpr uint32_t stride = sizeof(FFVertex);
+  layout.attrib(glsl::kLocationVertex, vbuf, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, pos));
+  layout.attrib(glsl::kLocationNormal, vbuf, 3, gpu::AttribType::F32, stride, offsetof(FFVertex, normal));
+  layout.attrib(glsl::kLocationColor, vbuf, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, color));
+  layout.attrib(glsl::kLocationMultiTexCoord0, vbuf, 4, gpu::AttribType::F32, stride,
+                offsetof(FFVertex, tex));
+  std::vector<std::unique_ptr<gpu::Buffer>> keep;
+  bind_current_values(layout, keep);
+  run_program(layout, call, rs);
+  for (auto& b : keep) keep_until_finished(std::move(b));
+}
+
+void Context::run_program(const gpu::VertexLayout& layout, const gpu::DrawCall& call, gpu::RenderState rs) {
+  bind_draw_target();
+  feed_compat_state();
+  rs.program_point_size = program_point_size;
+  rs.depth_clamp = depth_clamp;
+  const std::vector<glsl::TextureBinding> units = texture_units_for_draw();
+  const std::vector<glsl::BufferBinding> ubos = uniform_buffers_for_draw();
+  guarded([&] { executable->draw(*gpu_, layout, rs, call, units, ubos); });
+}
+
+std::vector<glsl::TextureBinding> Context::texture_units_for_draw() {
+  std::vector<glsl::TextureBinding> units(kMaxTextureUnits);
+  for (int i = 0; i < kMaxTextureUnits; ++i) {
+    const GLuint name = s.units[size_t(i)].bound_2d;
+    auto it = textures.find(name);
+    if (it == textures.end()) continue;
+    TextureObject& t = it->second;
+    if (t.dirty) rebuild_texture(t);
+    if (!t.complete || !t.gpu) continue;
+    glsl::TextureBinding& b = units[size_t(i)];
+    b.texture_2d = t.gpu.get();
+    b.sampler = sampler_state_of(t);
+  }
+  return units;
+}
+
+std::vector<glsl::BufferBinding> Context::uniform_buffers_for_draw() const {
+  std::vector<glsl::BufferBinding> out(kMaxUniformBufferBindings);
+  for (int i = 0; i < kMaxUniformBufferBindings; ++i) {
+    const IndexedBuffer& b = uniform_bindings[size_t(i)];
+    if (!b.buffer) continue;
+    out[size_t(i)] = {&b.buffer->data, size_t(b.offset), size_t(b.size)};
+  }
+  return out;
+}
+
+// The compatibility state GLSL 1.10-1.50 programs read (GLSL 1.20 §7.5): written to the
+// program's gl_ uniforms when it changed since the last draw with that program.
+void Context::feed_compat_state() {
+  if (core_profile || !executable) return;
+  CompatSnapshot now;
+  now.modelview = modelview();
+  now.projection = projection();
+  now.texture = matrices[2].back();
+  now.light = s.light;
+  now.fog_color = s.fog.color;
+  now.fog = {s.fog.density, s.fog.start, s.fog.end};
+  now.point_size = s.point.size;
+  now.depth_range = {float(s.viewport.near_), float(s.viewport.far_)};
+  for (int i = 0; i < kMaxClipPlanes; ++i)
+    now.clip_planes[size_t(i)] = glm::vec4(s.transform.clip_plane[size_t(i)]);
+  CompatCache& cache = compat_cache[current_program];
+  if (cache.program == executable.get() && cache.state == now) return;
+  cache.program = executable.get();
+  cache.state = now;
+  glsl::Program& g = *executable;
+  auto put = [&](const std::string& name, const float* v, int n) {
+    const int loc = g.uniform_location(name);
+    if (loc >= 0) g.set_uniform(loc, v, n);
+  };
+  auto put4 = [&](const std::string& name, const glm::vec4& v) { put(name, &v[0], 4); };
+  auto put1 = [&](const std::string& name, float v) { put(name, &v, 1); };
+  g.set_compat_matrices(now.modelview, now.projection);
+  put("gl_TextureMatrix[0]", &now.texture[0][0], 16);
+  const LightState& L = now.light;
+  for (int i = 0; i < kMaxLights; ++i) {
+    const FFLight& l = L.light[size_t(i)];
+    const std::string n = "gl_LightSource[" + std::to_string(i) + "].";
+    put4(n + "ambient", l.ambient);
+    put4(n + "diffuse", l.diffuse);
+    put4(n + "specular", l.specular);
+    put4(n + "position", l.position);
+    // GLSL 1.20 §7.5: the half vector of an infinite viewer, normalize(VP + (0, 0, 1)).
+    const glm::vec3 vp = l.position.w != 0.0f ? glm::vec3(l.position) / l.position.w : glm::vec3(l.position);
+    const glm::vec3 h = glm::vec3(glm::normalize(glm::normalize(vp) + glm::vec3(0, 0, 1)));
+    put4(n + "halfVector", glm::vec4(h, 0.0f));
+    put(n + "spotDirection", &l.spot_direction[0], 3);
+    put1(n + "spotExponent", l.spot_exponent);
+    put1(n + "spotCutoff", L.spot_cutoff[size_t(i)]);
+    put1(n + "spotCosCutoff", l.spot_cos_cutoff);
+    put1(n + "constantAttenuation", l.k0);
+    put1(n + "linearAttenuation", l.k1);
+    put1(n + "quadraticAttenuation", l.k2);
+    for (int side = 0; side < 2; ++side) {
+      const FFMaterial& m = L.material[size_t(side)];
+      const std::string pr =
+          std::string(side ? "gl_BackLightProduct[" : "gl_FrontLightProduct[") + std::to_string(i) + "].";
+      put4(pr + "ambient", m.ambient * l.ambient);
+      put4(pr + "diffuse", m.diffuse * l.diffuse);
+      put4(pr + "specular", m.specular * l.specular);
+    }
+  }
+  for (int side = 0; side < 2; ++side) {
+    const FFMaterial& m = L.material[size_t(side)];
+    const std::string n = side ? "gl_BackMaterial." : "gl_FrontMaterial.";
+    put4(n + "emission", m.emission);
+    put4(n + "ambient", m.ambient);
+    put4(n + "diffuse", m.diffuse);
+    put4(n + "specular", m.specular);
+    put1(n + "shininess", m.shininess);
+    put4(std::string(side ? "gl_BackLightModelProduct" : "gl_FrontLightModelProduct") + ".sceneColor",
+         m.emission + m.ambient * L.model_ambient);
+  }
+  put4("gl_LightModel.ambient", L.model_ambient);
+  put1("gl_DepthRange.near", now.depth_range[0]);
+  put1("gl_DepthRange.far", now.depth_range[1]);
+  put1("gl_DepthRange.diff", now.depth_range[1] - now.depth_range[0]);
+  put1("gl_Point.size", now.point_size);
+  put4("gl_Fog.color", now.fog_color);
+  put1("gl_Fog.density", now.fog[0]);
+  put1("gl_Fog.start", now.fog[1]);
+  put1("gl_Fog.end", now.fog[2]);
+  put1("gl_Fog.scale", now.fog[2] != now.fog[1] ? 1.0f / (now.fog[2] - now.fog[1]) : 0.0f);
+  for (int i = 0; i < kMaxClipPlanes; ++i)
+    put4("gl_ClipPlane[" + std::to_string(i) + "]", now.clip_planes[size_t(i)]);
+}
+
+}  // namespace tessel::gl
+
+namespace tessel::gl {
+
+void draw_generic_call(Context& c, GLenum mode, GLint first, GLsizei count, GLsizei instances, GLenum type,
+                       const void* indices, GLint base_vertex) {
+  GenericDraw d;
+  d.mode = mode;
+  if (!topology_of(mode, c.core_profile, d.topology, d.decompose)) return c.error(GL_INVALID_ENUM);
+  const bool indexed = type != GL_NONE;
+  if (indexed) {
+    switch (type) {
+      case GL_UNSIGNED_BYTE: d.index_type = gpu::IndexType::U8; break;
+      case GL_UNSIGNED_SHORT: d.index_type = gpu::IndexType::U16; break;
+      case GL_UNSIGNED_INT: d.index_type = gpu::IndexType::U32; break;
+      default: return c.error(GL_INVALID_ENUM);
+    }
+  }
+  if (count < 0 || first < 0 || instances < 0) return c.error(GL_INVALID_VALUE);
+  if (c.in_begin) return c.error(GL_INVALID_OPERATION);
+  // GL 3.3 core: no vertex array object bound, or client-side indices, is an error.
+  if (!c.vertex_arrays.count(c.bound_vertex_array)) return c.error(GL_INVALID_OPERATION);
+  if (indexed && c.core_profile && !c.vao().element_buffer) return c.error(GL_INVALID_OPERATION);
+  if (!indexed && int64_t(first) + int64_t(count) > int64_t(std::numeric_limits<int32_t>::max()))
+    return c.error(GL_INVALID_VALUE);
+  d.first = first;
+  d.count = count;
+  d.instances = instances;
+  d.indexed = indexed;
+  d.indices = indices;
+  d.base_vertex = base_vertex;
+  c.draw_generic(d);
+}
+
+}  // namespace tessel::gl
+
+using namespace tessel::gl;
+
+extern "C" {
+
+void GLAPIENTRY glDrawArraysInstanced(GLenum mode, GLint first, GLsizei count, GLsizei instances) {
+  GL_CONTEXT();
+  if (generic_draw(c)) return draw_generic_call(c, mode, first, count, instances, GL_NONE, nullptr, 0);
+  if (instances < 0) return c.error(GL_INVALID_VALUE);
+  for (GLsizei i = 0; i < instances; ++i) draw_arrays(c, mode, first, count);
+}
+
+void GLAPIENTRY glDrawElementsInstanced(GLenum mode, GLsizei count, GLenum type, const void* indices,
+                                        GLsizei instances) {
+  GL_CONTEXT();
+  if (generic_draw(c)) return draw_generic_call(c, mode, 0, count, instances, type, indices, 0);
+  if (instances < 0) return c.error(GL_INVALID_VALUE);
+  for (GLsizei i = 0; i < instances; ++i) glDrawElements(mode, count, type, indices);
+}
+
+void GLAPIENTRY glDrawElementsInstancedBaseVertex(GLenum mode, GLsizei count, GLenum type,
+                                                  const void* indices, GLsizei instances, GLint base_vertex) {
+  GL_CONTEXT();
+  if (generic_draw(c)) return draw_generic_call(c, mode, 0, count, instances, type, indices, base_vertex);
+  if (base_vertex != 0) return c.error(GL_INVALID_OPERATION);  // fixed-function arrays: no base vertex
+  glDrawElementsInstanced(mode, count, type, indices, instances);
+}
+
+void GLAPIENTRY glDrawElementsBaseVertex(GLenum mode, GLsizei count, GLenum type, const void* indices,
+                                         GLint base_vertex) {
+  glDrawElementsInstancedBaseVertex(mode, count, type, indices, 1, base_vertex);
+}
+
+void GLAPIENTRY glDrawRangeElementsBaseVertex(GLenum mode, GLuint start, GLuint end, GLsizei count,
+                                              GLenum type, const void* indices, GLint base_vertex) {
+  GL_CONTEXT();
+  if (end < start) return c.error(GL_INVALID_VALUE);
+  glDrawElementsInstancedBaseVertex(mode, count, type, indices, 1, base_vertex);
+}
+
+void GLAPIENTRY glMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count, GLsizei n) {
+  GL_CONTEXT();
+  if (n < 0) return c.error(GL_INVALID_VALUE);
+  if (!first || !count) return;
+  for (GLsizei i = 0; i < n; ++i) glDrawArrays(mode, first[i], count[i]);
+}
+
+void GLAPIENTRY glMultiDrawElements(GLenum mode, const GLsizei* count, GLenum type,
+                                    const void* const* indices, GLsizei n) {
+  GL_CONTEXT();
+  if (n < 0) return c.error(GL_INVALID_VALUE);
+  if (!count || !indices) return;
+  for (GLsizei i = 0; i < n; ++i) glDrawElements(mode, count[i], type, indices[i]);
+}
+
+void GLAPIENTRY glMultiDrawElementsBaseVertex(GLenum mode, const GLsizei* count, GLenum type,
+                                              const void* const* indices, GLsizei n,
+                                              const GLint* base_vertex) {
+  GL_CONTEXT();
+  if (n < 0) return c.error(GL_INVALID_VALUE);
+  if (!count || !indices || !base_vertex) return;
+  for (GLsizei i = 0; i < n; ++i) glDrawElementsBaseVertex(mode, count[i], type, indices[i], base_vertex[i]);
+}
+
+void GLAPIENTRY glPrimitiveRestartIndex(GLuint index) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  c.touch();
+  c.primitive_restart_index = index;
+}
+
+}  // extern "C"

@@ -1,0 +1,478 @@
+// The GL 2.0-3.3 entry points (buffer objects, vertex array objects, shaders, programs,
+// uniforms, the draw calls): each error case GL 3.3 lists gives its error and changes no
+// state, draws give the pixels they should, and a randomized sequence of those calls —
+// buffers mapped and deleted while in use, objects deleted while bound, draws past the ends
+// of buffers — never crashes (this file is also built with AddressSanitizer).
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "../../src/gl/context.hpp"
+
+namespace {
+
+struct GL33Test : ::testing::Test {
+  tessel::gl::Context ctx{32, 32, false, true, true};
+  void SetUp() override { tessel::gl::make_current(&ctx); }
+  void TearDown() override { tessel::gl::make_current(nullptr); }
+};
+
+// A core 3.3 context, as glutInitContextVersion(3, 3) gives.
+struct GL33CoreTest : GL33Test {
+  void SetUp() override {
+    ctx.set_version(3, 3, true);
+    tessel::gl::make_current(&ctx);
+  }
+};
+
+GLenum err() { return glGetError(); }
+
+GLint get_int(GLenum name) {
+  GLint v[4] = {};
+  glGetIntegerv(name, v);
+  return v[0];
+}
+
+GLuint program(const char* vs, const char* fs) {
+  GLuint p = glCreateProgram();
+  for (auto [type, src] :
+       {std::pair{GLenum(GL_VERTEX_SHADER), vs}, std::pair{GLenum(GL_FRAGMENT_SHADER), fs}}) {
+    GLuint s = glCreateShader(type);
+    glShaderSource(s, 1, &src, nullptr);
+    glCompileShader(s);
+    glAttachShader(p, s);
+    glDeleteShader(s);
+  }
+  glLinkProgram(p);
+  return p;
+}
+
+const char* kVs =
+    "#version 330\nlayout(location = 0) in vec2 pos;\nuniform vec2 offset;\n"
+    "void main() { gl_Position = vec4(pos + offset, 0.0, 1.0); }\n";
+const char* kFs =
+    "#version 330\nuniform vec4 color;\nuniform sampler2D tex;\nout vec4 c;\n"
+    "void main() { c = color + 0.0 * texture(tex, vec2(0.5)); }\n";
+
+// The centre pixel of the colour buffer, RGBA8.
+std::array<GLubyte, 4> centre() {
+  std::array<GLubyte, 4> px{};
+  glReadPixels(16, 16, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
+  return px;
+}
+
+TEST_F(GL33Test, VersionAndLimits) {
+  EXPECT_EQ(get_int(GL_MAJOR_VERSION), 2);
+  EXPECT_STREQ(reinterpret_cast<const char*>(glGetString(GL_VERSION)), "2.1 Tessel 0.1");
+  EXPECT_EQ(get_int(GL_MAX_VERTEX_ATTRIBS), 16);
+  EXPECT_GE(get_int(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS), 48);
+  EXPECT_EQ(get_int(GL_NUM_EXTENSIONS), GLint(tessel::gl::extensions(ctx).size()));
+  EXPECT_NE(glGetStringi(GL_EXTENSIONS, 0), nullptr);
+  EXPECT_EQ(glGetStringi(GL_EXTENSIONS, 1000), nullptr);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(GL33CoreTest, CoreVersionStrings) {
+  EXPECT_STREQ(reinterpret_cast<const char*>(glGetString(GL_VERSION)), "3.3 (Core Profile) Tessel 0.1");
+  EXPECT_STREQ(reinterpret_cast<const char*>(glGetString(GL_SHADING_LANGUAGE_VERSION)), "3.30");
+  EXPECT_EQ(get_int(GL_CONTEXT_PROFILE_MASK), GL_CONTEXT_CORE_PROFILE_BIT);
+  // The extension string is glGetStringi's alone in a core context (GL 3.3 core §6.1.5).
+  EXPECT_EQ(glGetString(GL_EXTENSIONS), nullptr);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+}
+
+TEST_F(GL33Test, BufferErrorsChangeNothing) {
+  GLuint b = 0;
+  glGenBuffers(-1, &b);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glGenBuffers(1, &b);
+  EXPECT_FALSE(glIsBuffer(b));  // a name, not yet an object
+  glBindBuffer(0x1234, b);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glBindBuffer(GL_ARRAY_BUFFER, b);
+  EXPECT_TRUE(glIsBuffer(b));
+  const float data[4] = {1, 2, 3, 4};
+  glBufferData(GL_ARRAY_BUFFER, -1, data, GL_STATIC_DRAW);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glBufferData(GL_ARRAY_BUFFER, sizeof data, data, 0x1234);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glBufferData(GL_ARRAY_BUFFER, sizeof data, data, GL_STATIC_DRAW);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  GLint size = 0;
+  glGetBufferParameteriv(GL_ARRAY_BUFFER, GL_BUFFER_SIZE, &size);
+  EXPECT_EQ(size, 16);
+  // Past the end: GL_INVALID_VALUE, the contents unchanged.
+  const float two[2] = {9, 9};
+  glBufferSubData(GL_ARRAY_BUFFER, 12, sizeof two, two);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  float back[4] = {};
+  glGetBufferSubData(GL_ARRAY_BUFFER, 0, sizeof back, back);
+  EXPECT_EQ(std::memcmp(back, data, sizeof back), 0);
+  // No buffer bound to the target: GL_INVALID_OPERATION.
+  glBufferData(GL_COPY_READ_BUFFER, 4, data, GL_STATIC_DRAW);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  // Mapping: the flags' rules, then writes through the mapping.
+  EXPECT_EQ(glMapBufferRange(GL_ARRAY_BUFFER, 0, 8, 0), nullptr);  // neither read nor write
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(glMapBufferRange(GL_ARRAY_BUFFER, 8, 16, GL_MAP_WRITE_BIT), nullptr);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(glMapBufferRange(GL_ARRAY_BUFFER, 0, 8, GL_MAP_READ_BIT | GL_MAP_INVALIDATE_RANGE_BIT), nullptr);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  auto* p = static_cast<float*>(glMapBufferRange(GL_ARRAY_BUFFER, 4, 8, GL_MAP_WRITE_BIT));
+  ASSERT_NE(p, nullptr);
+  p[0] = 7;
+  EXPECT_EQ(glMapBuffer(GL_ARRAY_BUFFER, GL_READ_ONLY), nullptr);  // already mapped
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glBufferSubData(GL_ARRAY_BUFFER, 0, 4, data);  // mapped
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_TRUE(glUnmapBuffer(GL_ARRAY_BUFFER));
+  EXPECT_FALSE(glUnmapBuffer(GL_ARRAY_BUFFER));
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glGetBufferSubData(GL_ARRAY_BUFFER, 0, sizeof back, back);
+  EXPECT_EQ(back[1], 7.0f);
+  // Copies: overlapping ranges of one buffer are GL_INVALID_VALUE.
+  glBindBuffer(GL_COPY_READ_BUFFER, b);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, b);
+  glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 4, 8);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 8, 8);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  glGetBufferSubData(GL_ARRAY_BUFFER, 0, sizeof back, back);
+  EXPECT_EQ(back[2], 1.0f);
+  EXPECT_EQ(back[3], 7.0f);
+  // Deleting unbinds it from the context's binding points.
+  glDeleteBuffers(1, &b);
+  EXPECT_EQ(get_int(GL_ARRAY_BUFFER_BINDING), 0);
+  EXPECT_FALSE(glIsBuffer(b));
+}
+
+TEST_F(GL33CoreTest, CoreBindsOnlyGeneratedNames) {
+  glBindBuffer(GL_ARRAY_BUFFER, 77);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glBindVertexArray(5);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  // No vertex array object bound: attribute state and draws are errors.
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  // GL_QUADS is not a core primitive.
+  GLuint vao;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glDrawArrays(GL_QUADS, 0, 4);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  // Indices must be in a buffer.
+  const GLubyte idx[3] = {0, 1, 2};
+  glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_BYTE, idx);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+}
+
+TEST_F(GL33Test, VertexAttribErrorsChangeNothing) {
+  GLuint vao, vbo;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  EXPECT_TRUE(glIsVertexArray(vao));
+  glGenBuffers(1, &vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glVertexAttribPointer(16, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glVertexAttribPointer(1, 5, GL_FLOAT, GL_FALSE, 0, nullptr);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, -4, nullptr);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glVertexAttribPointer(1, 2, 0x1234, GL_FALSE, 0, nullptr);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glVertexAttribIPointer(1, 2, GL_FLOAT, 0, nullptr);  // integer arrays take integer types
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glVertexAttribPointer(1, 3, GL_INT_2_10_10_10_REV, GL_TRUE, 0, nullptr);  // packed: 4 or BGRA
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glVertexAttribPointer(1, 3, GL_SHORT, GL_TRUE, 8, reinterpret_cast<void*>(4));
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  GLint v = 0;
+  glGetVertexAttribiv(1, GL_VERTEX_ATTRIB_ARRAY_SIZE, &v);
+  EXPECT_EQ(v, 3);
+  glGetVertexAttribiv(1, GL_VERTEX_ATTRIB_ARRAY_TYPE, &v);
+  EXPECT_EQ(v, GL_SHORT);
+  glGetVertexAttribiv(1, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &v);
+  EXPECT_EQ(GLuint(v), vbo);
+  // A non-zero vertex array object reads buffers only (GL 3.3 §2.8).
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  const float client[2] = {0, 0};
+  glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, 0, client);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  // Current values.
+  glVertexAttrib4f(3, 1, 2, 3, 4);
+  GLfloat f[4] = {};
+  glGetVertexAttribfv(3, GL_CURRENT_VERTEX_ATTRIB, f);
+  EXPECT_EQ(f[2], 3.0f);
+  glVertexAttribI4i(4, -1, 2, -3, 4);
+  GLint iv[4] = {};
+  glGetVertexAttribIiv(4, GL_CURRENT_VERTEX_ATTRIB, iv);
+  EXPECT_EQ(iv[2], -3);
+  // Deleting the bound vertex array object binds 0.
+  glDeleteVertexArrays(1, &vao);
+  EXPECT_EQ(get_int(GL_VERTEX_ARRAY_BINDING), 0);
+}
+
+TEST_F(GL33Test, ShaderAndProgramErrors) {
+  // A name that is no object: GL_INVALID_VALUE; an object of the other kind: GL_INVALID_OPERATION.
+  glCompileShader(999);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  GLuint p = glCreateProgram();
+  glCompileShader(p);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(glCreateShader(0x1234), 0u);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  // A compile error names the line.
+  GLuint s = glCreateShader(GL_FRAGMENT_SHADER);
+  const char* bad = "#version 330\nout vec4 c;\nvoid main() { c = undeclared; }\n";
+  glShaderSource(s, 1, &bad, nullptr);
+  glCompileShader(s);
+  GLint ok = 1, len = 0;
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  EXPECT_EQ(ok, 0);
+  glGetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
+  std::vector<char> log(size_t(std::max(len, 1)));
+  glGetShaderInfoLog(s, len, nullptr, log.data());
+  EXPECT_NE(std::string(log.data()).find("0:3"), std::string::npos) << log.data();
+  // Linking with it fails; using the program is GL_INVALID_OPERATION.
+  glAttachShader(p, s);
+  glAttachShader(p, s);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glLinkProgram(p);
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  EXPECT_EQ(ok, 0);
+  glUseProgram(p);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(get_int(GL_CURRENT_PROGRAM), 0);
+  EXPECT_EQ(glGetUniformLocation(p, "color"), -1);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  // A shader deleted while attached lives until it is detached.
+  glDeleteShader(s);
+  EXPECT_TRUE(glIsShader(s));
+  GLint status = 0;
+  glGetShaderiv(s, GL_DELETE_STATUS, &status);
+  EXPECT_EQ(status, 1);
+  glDetachShader(p, s);
+  EXPECT_FALSE(glIsShader(s));
+  glBindAttribLocation(p, 16, "pos");
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glBindAttribLocation(p, 0, "gl_Vertex");
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glDeleteProgram(p);
+  EXPECT_FALSE(glIsProgram(p));
+}
+
+TEST_F(GL33Test, UniformErrorsChangeNothing) {
+  GLuint p = program(kVs, kFs);
+  GLint ok = 0;
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  ASSERT_EQ(ok, 1);
+  const GLint color = glGetUniformLocation(p, "color"), tex = glGetUniformLocation(p, "tex");
+  ASSERT_GE(color, 0);
+  glUniform4f(color, 1, 0, 0, 1);  // no current program
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glUseProgram(p);
+  glUniform4f(color, 0.25f, 0.5f, 0.75f, 1.0f);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  glUniform3f(color, 1, 1, 1);  // size mismatch
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glUniform4i(color, 1, 1, 1, 1);  // type mismatch
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glUniform4fv(color, -1, nullptr);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glUniform1i(tex, 99);  // no such texture unit
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glUniform1f(-1, 2.0f);  // location -1 is ignored
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  GLfloat v[4] = {};
+  glGetUniformfv(p, color, v);
+  EXPECT_EQ(v[1], 0.5f);
+  glGetUniformfv(p, 1234, v);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  // Active uniforms as GL lists them.
+  GLint n = 0;
+  glGetProgramiv(p, GL_ACTIVE_UNIFORMS, &n);
+  EXPECT_EQ(n, 3);
+  glGetActiveUniform(p, 99, 0, nullptr, nullptr, nullptr, nullptr);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+}
+
+// A program drawn over a vertex array object: the pixels it gives; a failed relink keeps
+// the executable in use (GL 3.3 §2.11.2).
+TEST_F(GL33Test, ProgramDrawsAndFailedRelinkKeepsTheExecutable) {
+  GLuint p = program(kVs, kFs);
+  glUseProgram(p);
+  glUniform4f(glGetUniformLocation(p, "color"), 0.0f, 1.0f, 0.0f, 1.0f);
+  const float tri[6] = {-1, -1, 3, -1, -1, 3};
+  GLuint vao, vbo;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glGenBuffers(1, &vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glBufferData(GL_ARRAY_BUFFER, sizeof tri, tri, GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(0);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(centre(), (std::array<GLubyte, 4>{0, 255, 0, 255}));
+  // Relink with a shader that does not compile: link fails, drawing goes on with the old one.
+  GLuint s = glCreateShader(GL_VERTEX_SHADER);
+  const char* bad = "#version 330\nvoid main() { gl_Position = nope; }\n";
+  glShaderSource(s, 1, &bad, nullptr);
+  glCompileShader(s);
+  glAttachShader(p, s);
+  glLinkProgram(p);
+  GLint ok = 1;
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  EXPECT_EQ(ok, 0);
+  glUniform4f(glGetUniformLocation(p, "color"), 1.0f, 0.0f, 0.0f, 1.0f);  // not linked: -1, ignored
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  EXPECT_EQ(centre(), (std::array<GLubyte, 4>{0, 255, 0, 255}));
+  // A draw that reads past the end of the buffer is GL_INVALID_OPERATION and draws nothing.
+  glClear(GL_COLOR_BUFFER_BIT);
+  (void)err();
+  glDrawArrays(GL_TRIANGLES, 1, 3);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(centre(), (std::array<GLubyte, 4>{0, 0, 0, 0}));
+  // A mapped buffer cannot be drawn from.
+  glMapBuffer(GL_ARRAY_BUFFER, GL_READ_ONLY);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glUnmapBuffer(GL_ARRAY_BUFFER);
+  // A deleted buffer still attached to the vertex array object? Deleting unbinds it from
+  // the bound object: the draw reads the current value instead, and does not crash.
+  glDeleteBuffers(1, &vbo);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glFinish();
+}
+
+// GLSL 1.20 with immediate mode: the compatibility attributes and matrices.
+TEST_F(GL33Test, CompatibilityProgramDrawsImmediateMode) {
+  GLuint p = program(
+      "#version 120\nvarying vec4 col;\nvoid main() { col = gl_Color; gl_Position = ftransform(); }\n",
+      "#version 120\nvarying vec4 col;\nvoid main() { gl_FragColor = col.bgra; }\n");
+  glUseProgram(p);
+  glMatrixMode(GL_PROJECTION);
+  glOrtho(-1, 1, -1, 1, -1, 1);
+  glColor4f(1.0f, 0.0f, 0.5f, 1.0f);
+  glBegin(GL_QUADS);
+  glVertex2f(-1, -1);
+  glVertex2f(1, -1);
+  glVertex2f(1, 1);
+  glVertex2f(-1, 1);
+  glEnd();
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  const auto px = centre();
+  EXPECT_EQ(px[0], 128);
+  EXPECT_EQ(px[1], 0);
+  EXPECT_EQ(px[2], 255);
+}
+
+// Random calls of the 3.3 families with random arguments: never a crash or a sanitizer report.
+// A core context, where every pointer argument is an offset into a buffer object: in a
+// compatibility context a bad client pointer is the program's own fault, in any GL.
+TEST_F(GL33CoreTest, RandomCallSequenceNeverCrashes) {
+  std::mt19937 rng(1234);
+  auto pick = [&](int n) { return int(rng() % unsigned(n)); };
+  auto name = [&]() { return GLuint(pick(4)); };
+  const GLuint p = program(kVs, kFs);
+  std::vector<unsigned char> bytes(256);
+  for (auto& b : bytes) b = static_cast<unsigned char>(rng());
+  const GLenum targets[] = {GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER, GL_UNIFORM_BUFFER, GL_COPY_READ_BUFFER,
+                            0x1234};
+  const GLenum types[] = {GL_FLOAT,      GL_UNSIGNED_BYTE,      GL_SHORT,       GL_INT, GL_DOUBLE,
+                          GL_HALF_FLOAT, GL_INT_2_10_10_10_REV, GL_UNSIGNED_INT};
+  const GLenum modes[] = {GL_POINTS,         GL_LINES, GL_LINE_LOOP, GL_TRIANGLES,
+                          GL_TRIANGLE_STRIP, GL_QUADS, GL_POLYGON,   99};
+  const GLenum itypes[] = {GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT, GL_FLOAT};
+  // A starting point that draws: a vertex array object with attribute 0 in a buffer.
+  GLuint vao, vbo;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glGenBuffers(1, &vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(bytes.size()), bytes.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 2, GL_UNSIGNED_BYTE, GL_TRUE, 0, nullptr);
+  glEnableVertexAttribArray(0);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, vbo);
+  glUseProgram(p);
+  int drawn = 0;  // draws without an error
+  for (int i = 0; i < 4000; ++i) {
+    const GLenum target = targets[pick(5)];
+    const int call = pick(22);
+    if (call >= 13 && call <= 16) (void)glGetError();
+    switch (call) {
+      case 0: {
+        GLuint b[2];
+        glGenBuffers(2, b);
+        break;
+      }
+      case 1: glBindBuffer(target, name()); break;
+      case 2: glBufferData(target, pick(300) - 10, pick(2) ? bytes.data() : nullptr, GL_DYNAMIC_DRAW); break;
+      case 3: glBufferSubData(target, pick(300) - 10, pick(300) - 10, bytes.data()); break;
+      case 4: {
+        void* m = glMapBufferRange(target, pick(64), pick(64), GLbitfield(pick(64)));
+        if (m && pick(2)) std::memset(m, pick(256), 1);
+        break;
+      }
+      case 5: glUnmapBuffer(target); break;
+      case 6: {
+        const GLuint n = name();
+        if (pick(4) == 0) glDeleteBuffers(1, &n);
+        break;
+      }
+      case 7: {
+        GLuint v;
+        glGenVertexArrays(1, &v);
+        break;
+      }
+      case 8: glBindVertexArray(name()); break;
+      case 9: {
+        const GLuint n = name();
+        if (pick(4) == 0) glDeleteVertexArrays(1, &n);
+        break;
+      }
+      case 10:
+        glVertexAttribPointer(GLuint(pick(18)), pick(6), types[pick(8)], GLboolean(pick(2)), pick(40) - 4,
+                              reinterpret_cast<void*>(size_t(pick(80))));
+        break;
+      case 11: (pick(2) ? glEnableVertexAttribArray : glDisableVertexAttribArray)(GLuint(pick(18))); break;
+      case 12: glVertexAttribDivisor(GLuint(pick(18)), GLuint(pick(3))); break;
+      case 13: glDrawArrays(modes[pick(8)], pick(10) - 2, pick(40) - 2); break;
+      case 14:
+        glDrawElements(modes[pick(8)], pick(40) - 2, itypes[pick(4)],
+                       reinterpret_cast<void*>(size_t(pick(64))));
+        break;
+      case 15:
+        glDrawElementsInstancedBaseVertex(modes[pick(8)], pick(20), itypes[pick(3)],
+                                          reinterpret_cast<void*>(size_t(pick(32))), pick(4),
+                                          pick(2000) - 1000);
+        break;
+      case 16: glDrawArraysInstanced(modes[pick(8)], pick(8), pick(20), pick(5) - 1); break;
+      case 17: glUseProgram(pick(4) ? p : 0); break;
+      case 18: glUniform4f(GLint(pick(6)) - 1, 0.5f, 0.5f, 0.5f, 1.0f); break;
+      case 19:
+        glBindBufferRange(GL_UNIFORM_BUFFER, GLuint(pick(40)), name(), pick(64) - 8, pick(64) - 8);
+        break;
+      case 20: pick(2) ? glEnable(GL_PRIMITIVE_RESTART) : glPrimitiveRestartIndex(GLuint(pick(4))); break;
+      default: glVertexAttrib4f(GLuint(pick(18)), 1.0f, 2.0f, 3.0f, 4.0f); break;
+    }
+    if (call >= 13 && call <= 16 && glGetError() == GL_NO_ERROR) ++drawn;
+  }
+  EXPECT_GT(drawn, 10);  // the sequence reaches the pipeline, not only the checks
+  glFinish();
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  EXPECT_EQ(get_int(GL_MAX_VERTEX_ATTRIBS), 16);
+}
+
+}  // namespace

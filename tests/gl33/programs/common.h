@@ -1,0 +1,171 @@
+/*
+ * Helpers the GL 3.3 acceptance programs share, written the way course frameworks write them:
+ * shaders compiled from strings with their info logs printed, a program linked from two, and
+ * a few matrices (column-major, as glUniformMatrix4fv takes them with transpose GL_FALSE).
+ */
+#ifndef TESSEL_GL33_COMMON_H
+#define TESSEL_GL33_COMMON_H
+
+// GLEW first: it must come before any other GL header.
+#include <GL/glew.h>
+// clang-format off (the order matters)
+#include <GL/freeglut.h>
+// clang-format on
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static inline GLuint compile_shader(GLenum type, const char* src) {
+  GLuint s = glCreateShader(type);
+  GLint ok = 0;
+  glShaderSource(s, 1, &src, NULL);
+  glCompileShader(s);
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[4096];
+    glGetShaderInfoLog(s, sizeof log, NULL, log);
+    fprintf(stderr, "shader compile failed:\n%s\n", log);
+    exit(1);
+  }
+  return s;
+}
+
+static inline GLuint link_program(const char* vs, const char* fs) {
+  GLuint p = glCreateProgram();
+  GLuint v = compile_shader(GL_VERTEX_SHADER, vs), f = compile_shader(GL_FRAGMENT_SHADER, fs);
+  GLint ok = 0;
+  glAttachShader(p, v);
+  glAttachShader(p, f);
+  glLinkProgram(p);
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096];
+    glGetProgramInfoLog(p, sizeof log, NULL, log);
+    fprintf(stderr, "program link failed:\n%s\n", log);
+    exit(1);
+  }
+  glDeleteShader(v);
+  glDeleteShader(f);
+  return p;
+}
+
+static inline void check_gl(const char* where) {
+  GLenum e = glGetError();
+  if (e != GL_NO_ERROR) {
+    fprintf(stderr, "GL error 0x%04X at %s\n", e, where);
+    exit(1);
+  }
+}
+
+/* 4x4 matrices, column-major: m[col * 4 + row]. */
+static inline void mat_identity(float* m) {
+  int i;
+  for (i = 0; i < 16; ++i) m[i] = (i % 5 == 0) ? 1.0f : 0.0f;
+}
+
+static inline void mat_mul(float* out, const float* a, const float* b) {
+  float r[16];
+  int c, k, i;
+  for (c = 0; c < 4; ++c)
+    for (i = 0; i < 4; ++i) {
+      float s = 0.0f;
+      for (k = 0; k < 4; ++k) s += a[k * 4 + i] * b[c * 4 + k];
+      r[c * 4 + i] = s;
+    }
+  memcpy(out, r, sizeof r);
+}
+
+static inline void mat_perspective(float* m, float fovy_deg, float aspect, float n, float f) {
+  const float t = 1.0f / (float)tan(fovy_deg * 3.14159265358979 / 360.0);
+  memset(m, 0, 16 * sizeof(float));
+  m[0] = t / aspect;
+  m[5] = t;
+  m[10] = (f + n) / (n - f);
+  m[11] = -1.0f;
+  m[14] = 2.0f * f * n / (n - f);
+}
+
+static inline void mat_translate(float* m, float x, float y, float z) {
+  mat_identity(m);
+  m[12] = x;
+  m[13] = y;
+  m[14] = z;
+}
+
+static inline void mat_rotate_y(float* m, float deg) {
+  const float a = (float)(deg * 3.14159265358979 / 180.0), c = (float)cos(a), s = (float)sin(a);
+  mat_identity(m);
+  m[0] = c;
+  m[2] = -s;
+  m[8] = s;
+  m[10] = c;
+}
+
+static inline void mat_rotate_x(float* m, float deg) {
+  const float a = (float)(deg * 3.14159265358979 / 180.0), c = (float)cos(a), s = (float)sin(a);
+  mat_identity(m);
+  m[5] = c;
+  m[6] = s;
+  m[9] = -s;
+  m[10] = c;
+}
+
+static inline void mat_transpose(float* out, const float* m) {
+  float r[16];
+  int i, j;
+  for (i = 0; i < 4; ++i)
+    for (j = 0; j < 4; ++j) r[i * 4 + j] = m[j * 4 + i];
+  memcpy(out, r, sizeof r);
+}
+
+/* A UV sphere of radius 1: positions (= normals) and indices of triangles. */
+#define SPHERE_SLICES 32
+#define SPHERE_STACKS 16
+#define SPHERE_VERTS ((SPHERE_SLICES + 1) * (SPHERE_STACKS + 1))
+#define SPHERE_INDICES (SPHERE_SLICES * SPHERE_STACKS * 6)
+static inline void make_sphere(float* pos, unsigned short* idx) {
+  int i, j, k = 0;
+  for (j = 0; j <= SPHERE_STACKS; ++j)
+    for (i = 0; i <= SPHERE_SLICES; ++i) {
+      const double th = 3.14159265358979 * j / SPHERE_STACKS, ph = 2.0 * 3.14159265358979 * i / SPHERE_SLICES;
+      pos[k++] = (float)(sin(th) * cos(ph));
+      pos[k++] = (float)cos(th);
+      pos[k++] = (float)(sin(th) * sin(ph));
+    }
+  k = 0;
+  for (j = 0; j < SPHERE_STACKS; ++j)
+    for (i = 0; i < SPHERE_SLICES; ++i) {
+      const unsigned short a = (unsigned short)(j * (SPHERE_SLICES + 1) + i),
+                           b = (unsigned short)(a + SPHERE_SLICES + 1);
+      idx[k++] = a;
+      idx[k++] = (unsigned short)(a + 1);
+      idx[k++] = b;
+      idx[k++] = (unsigned short)(a + 1);
+      idx[k++] = (unsigned short)(b + 1);
+      idx[k++] = b;
+    }
+}
+
+/* GLUT + GLEW set-up of every program: a 320x240 RGBA window with depth. */
+static inline void open_window(int* argc, char** argv, int major, int minor, int profile, const char* title) {
+  GLenum err;
+  glutInit(argc, argv);
+  if (major) {
+    glutInitContextVersion(major, minor);
+    if (profile) glutInitContextProfile(profile);
+  }
+  glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH);
+  glutInitWindowSize(320, 240);
+  glutCreateWindow(title);
+  glewExperimental = GL_TRUE;
+  err = glewInit();
+  if (err != GLEW_OK) {
+    fprintf(stderr, "glewInit: %s\n", (const char*)glewGetErrorString(err));
+    exit(1);
+  }
+  (void)glGetError(); /* GLEW on a core context leaves GL_INVALID_ENUM behind */
+}
+
+#endif
