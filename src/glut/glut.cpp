@@ -7,6 +7,7 @@
 // calls display and writes the window's visible image to DIR/frame-NNNN.png; then it
 // returns, as it does when the last window closes (the program ends when main returns). Time in that mode is
 // virtual: 1000/60 ms per frame, so a run is the same every time.
+#include "../gl/proc_address.hpp"
 #include "glut_internal.hpp"
 
 #include <algorithm>
@@ -313,6 +314,7 @@ void GLAPIENTRY glutInitContextVersion(int major, int minor) {
 }
 void GLAPIENTRY glutInitContextFlags(int) {}  // debug and forward-compatible contexts behave alike here
 void GLAPIENTRY glutInitContextProfile(int profile) { state().context_profile = profile; }
+GLUTproc GLAPIENTRY glutGetProcAddress(const char* name) { return gl::proc_address(name); }
 
 int GLAPIENTRY glutCreateWindow(const char* title) {
   if (!need_init("glutCreateWindow")) return 0;

@@ -463,6 +463,10 @@ TESSEL_GLAPI void TESSEL_APIENTRY glutSolidCylinder(GLdouble radius, GLdouble he
 TESSEL_GLAPI void TESSEL_APIENTRY glutInitContextVersion(int major, int minor);
 TESSEL_GLAPI void TESSEL_APIENTRY glutInitContextFlags(int flags);
 TESSEL_GLAPI void TESSEL_APIENTRY glutInitContextProfile(int profile);
+/* The address of a GL entry point by name, for loaders (glad, ...); null for a name Tessel's
+ * GL does not define. */
+typedef void (*GLUTproc)(void);
+TESSEL_GLAPI GLUTproc TESSEL_APIENTRY glutGetProcAddress(const char* procName);
 
 /* ---- Video resizing ------------------------------------------------------ */
 TESSEL_GLAPI int TESSEL_APIENTRY glutVideoResizeGet(GLenum param);
