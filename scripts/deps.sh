@@ -18,8 +18,8 @@ packages=(
   # GLUT windows (SDL2), and the GL 1.x comparison tests: each program built against Mesa's
   # libGL, libGLU and freeglut runs under Xvfb
   libsdl2-dev libx11-dev freeglut3-dev libglu1-mesa-dev xvfb xauth
-  # the GL 3.3 comparison tests: GLEW on the Mesa side
-  libglew-dev
+  # the GL 3.3 comparison tests: GLEW and GLFW on the Mesa side
+  libglew-dev libglfw3-dev
 )
 
 missing=()

@@ -7,6 +7,7 @@
 // calls display and writes the window's visible image to DIR/frame-NNNN.png; then it
 // returns, as it does when the last window closes (the program ends when main returns). Time in that mode is
 // virtual: 1000/60 ms per frame, so a run is the same every time.
+#include "../gl/headless.hpp"
 #include "../gl/proc_address.hpp"
 #include "glut_internal.hpp"
 
@@ -36,54 +37,11 @@ void report(const std::string& what) {
   g_state.leave = true;
 }
 
-void parse_headless(Headless& h, const char* spec) {
-  h.on = true;
-  std::string s = spec ? spec : "";
-  size_t pos = 0;
-  while (pos < s.size()) {
-    size_t end = s.find(',', pos);
-    if (end == std::string::npos) end = s.size();
-    const std::string item = s.substr(pos, end - pos);
-    if (item.rfind("frames:", 0) == 0) {
-      char* stop = nullptr;
-      const long n = std::strtol(item.c_str() + 7, &stop, 10);
-      if (stop && *stop == '\0' && n >= 0 && n <= 1000000)
-        h.frames = int(n);
-      else
-        std::fprintf(stderr, "tessel glut: TESSEL_HEADLESS: bad frame count in '%s' (using %d)\n",
-                     item.c_str(), h.frames);
-    } else if (item.rfind("out:", 0) == 0) {
-      h.out = item.substr(4);
-      if (h.out.empty()) h.out = std::string(1, '.');
-    } else if (!item.empty() && item != "1") {
-      std::fprintf(stderr, "tessel glut: TESSEL_HEADLESS: unknown item '%s' (expected frames:N or out:DIR)\n",
-                   item.c_str());
-    }
-    pos = end + 1;
-  }
-}
+void parse_headless(Headless& h, const char* spec) { gl::parse_headless(h, spec, "tessel glut"); }
 
 void write_frame(Window& w, int frame) {
-  const gpu::Texture2D& front = w.context->front();
-  const int width = front.width(), height = front.height();
-  std::vector<uint8_t> rgb(size_t(width) * size_t(height) * 3);
-  const auto* src = reinterpret_cast<const uint8_t*>(front.level(0).data.data());
-  for (size_t i = 0; i < size_t(width) * size_t(height); ++i) {
-    rgb[i * 3 + 0] = src[i * 4 + 0];
-    rgb[i * 3 + 1] = src[i * 4 + 1];
-    rgb[i * 3 + 2] = src[i * 4 + 2];
-  }
-  char name[64];
-  if (w.id == 1)
-    std::snprintf(name, sizeof name, "frame-%04d.png", frame);
-  else
-    std::snprintf(name, sizeof name, "frame-%04d-w%d.png", frame, w.id);
-  const std::string path = (std::filesystem::path(g_state.headless.out) / name).string();
-  try {
-    gpu::write_png(path, width, height, 3, rgb.data());
-  } catch (const std::exception& e) {
-    report("cannot write " + path + ": " + e.what());
-  }
+  const std::string problem = gl::write_headless_frame(*w.context, g_state.headless.out, frame, w.id);
+  if (!problem.empty()) report(problem);
 }
 
 // The main loop ends by returning to the program, never by ending the process: with GLUT_ACTION_EXIT

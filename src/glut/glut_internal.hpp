@@ -3,6 +3,8 @@
 // menus drawn by Tessel (menu.cpp).
 #pragma once
 
+#include "../gl/headless.hpp"
+
 #include <GL/glut.h>
 
 #include <chrono>
@@ -75,11 +77,7 @@ struct Window {
   ~Window();  // both in window_sdl.cpp, where NativeWindow is complete
 };
 
-struct Headless {
-  bool on = false;
-  int frames = 1;
-  std::string out = ".";
-};
+using Headless = gl::HeadlessSpec;
 
 struct State {
   bool initialized = false;
