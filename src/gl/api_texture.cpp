@@ -2,9 +2,11 @@
 // glTexSubImage2D, glCopyTexImage2D, glCopyTexSubImage2D, glTexParameter, glTexEnv,
 // glTexGen and their queries. Only 2D textures are sampled (unit 0); 1D calls are accepted
 // and checked but draw nothing.
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "api.hpp"
@@ -85,6 +87,48 @@ struct ImageData {
   std::vector<glm::vec4> px;
 };
 
+// Levels base + 1 down to 1x1 (or max_level) made from the base level (glGenerateMipmap, and
+// GL_GENERATE_MIPMAP when the base level changes): each texel is the bilinear sample of the
+// level above at its centre, clamped to the edge, rounded to nearest. That is what llvmpipe's
+// generation by blits gives: a 2x2 box where the level above has an even size.
+void generate_mipmaps(TextureObject& t) {
+  const int base = std::clamp(t.base_level, 0, kMaxTextureLevels - 1);
+  if (!t.levels[size_t(base)].defined()) return;
+  t.dirty = true;
+  for (int l = base + 1; l < kMaxTextureLevels && l <= t.max_level; ++l) {
+    const TextureImage& src = t.levels[size_t(l - 1)];
+    if (src.width == 1 && src.height == 1) break;
+    TextureImage& dst = t.levels[size_t(l)];
+    dst.width = std::max(1, src.width / 2);
+    dst.height = std::max(1, src.height / 2);
+    dst.base = src.base;
+    dst.internal_format = src.internal_format;
+    dst.rgba.assign(size_t(dst.width) * size_t(dst.height) * 4, 0);
+    const float kx = float(src.width) / float(dst.width), ky = float(src.height) / float(dst.height);
+    for (int y = 0; y < dst.height; ++y) {
+      const float sy = (float(y) + 0.5f) * ky - 0.5f;
+      const int y0 = std::clamp(int(std::floor(sy)), 0, src.height - 1),
+                y1 = std::min(y0 + 1, src.height - 1);
+      const float fy = std::clamp(sy - std::floor(sy), 0.0f, 1.0f);
+      for (int x = 0; x < dst.width; ++x) {
+        const float sx = (float(x) + 0.5f) * kx - 0.5f;
+        const int x0 = std::clamp(int(std::floor(sx)), 0, src.width - 1),
+                  x1 = std::min(x0 + 1, src.width - 1);
+        const float fx = std::clamp(sx - std::floor(sx), 0.0f, 1.0f);
+        auto at = [&](int xx, int yy, int k) {
+          return float(src.rgba[(size_t(yy) * size_t(src.width) + size_t(xx)) * 4 + size_t(k)]);
+        };
+        for (int k = 0; k < 4; ++k) {
+          const float v = (at(x0, y0, k) * (1 - fx) + at(x1, y0, k) * fx) * (1 - fy) +
+                          (at(x0, y1, k) * (1 - fx) + at(x1, y1, k) * fx) * fy;
+          dst.rgba[(size_t(y) * size_t(dst.width) + size_t(x)) * 4 + size_t(k)] =
+              uint8_t(std::clamp(std::floor(v + 0.5f), 0.0f, 255.0f));
+        }
+      }
+    }
+  }
+}
+
 void tex_image_2d(Context& c, GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border,
                   const std::shared_ptr<ImageData>& data) {
   GL_OUTSIDE_BEGIN();
@@ -104,6 +148,7 @@ void tex_image_2d(Context& c, GLenum target, GLint level, GLint internal, GLsize
     to_texture_rgba8(data->px, base, img.rgba);
   else
     img.rgba.assign(size_t(w) * size_t(h) * 4, 0);
+  if (t->generate_mipmap && level == t->base_level) generate_mipmaps(*t);  // GL 1.4 §3.8.8
 }
 
 void tex_sub_image_2d(Context& c, GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h,
@@ -123,6 +168,7 @@ void tex_sub_image_2d(Context& c, GLenum target, GLint level, GLint x, GLint y, 
   for (int j = 0; j < h; ++j)
     std::memcpy(&img.rgba[(size_t(y + j) * size_t(img.width) + size_t(x)) * 4],
                 &rgba[size_t(j) * size_t(w) * 4], size_t(w) * 4);
+  if (t->generate_mipmap && level == t->base_level) generate_mipmaps(*t);
 }
 
 // Pixels of the read buffer as floats, rows bottom-up (for glCopyTex*).
@@ -628,6 +674,18 @@ void GLAPIENTRY glGetTexGendv(GLenum coord, GLenum pname, GLdouble* out) {
   glGetTexGenfv(coord, pname, f);
   if (out)
     for (int i = 0; i < (pname == GL_TEXTURE_GEN_MODE ? 1 : 4); ++i) out[i] = f[i];
+}
+
+// GL 3.0 §3.8.10: the mipmap levels of the bound texture made from its base level.
+void GLAPIENTRY glGenerateMipmap(GLenum target) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  if (target != GL_TEXTURE_2D) return c.error(GL_INVALID_ENUM);
+  TextureObject& t = c.bound_texture();
+  if (!t.levels[size_t(std::clamp(t.base_level, 0, kMaxTextureLevels - 1))].defined())
+    return c.error(GL_INVALID_OPERATION);
+  mark_changed(c, t);
+  generate_mipmaps(t);
 }
 
 // The texture image units: fixed-function texturing reads unit 0; GLSL samplers read any

@@ -355,6 +355,42 @@ TEST_F(GL33Test, ProgramDrawsAndFailedRelinkKeepsTheExecutable) {
   glFinish();
 }
 
+// glGenerateMipmap (GL 3.0) and GL_GENERATE_MIPMAP (GL 1.4) fill every level from the base:
+// a 4x2 texture gets 2x1 and 1x1 levels holding its averages.
+TEST_F(GL33Test, MipmapsAreGeneratedFromTheBaseLevel) {
+  GLuint t[2];
+  glGenTextures(2, t);
+  const GLubyte texels[4 * 2 * 4] = {0,   0, 0, 255, 100, 0, 0, 255, 200, 0, 0, 255, 40, 0, 0, 255,
+                                     100, 0, 0, 255, 0,   0, 0, 255, 0,   0, 0, 255, 0,  0, 0, 255};
+  glBindTexture(GL_TEXTURE_2D, t[0]);
+  glGenerateMipmap(GL_TEXTURE_2D);  // no base level yet
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  glGenerateMipmap(GL_TEXTURE_3D);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glGenerateMipmap(GL_TEXTURE_2D);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  glBindTexture(GL_TEXTURE_2D, t[1]);
+  glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  for (GLuint name : t) {
+    glBindTexture(GL_TEXTURE_2D, name);
+    GLint w = 0, h = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 1, GL_TEXTURE_WIDTH, &w);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 1, GL_TEXTURE_HEIGHT, &h);
+    EXPECT_EQ(w, 2);
+    EXPECT_EQ(h, 1);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 2, GL_TEXTURE_WIDTH, &w);
+    EXPECT_EQ(w, 1);
+    GLubyte level1[2 * 4] = {}, level2[4] = {};
+    glGetTexImage(GL_TEXTURE_2D, 1, GL_RGBA, GL_UNSIGNED_BYTE, level1);
+    glGetTexImage(GL_TEXTURE_2D, 2, GL_RGBA, GL_UNSIGNED_BYTE, level2);
+    EXPECT_EQ(level1[0], 50);  // (0 + 100 + 100 + 0) / 4
+    EXPECT_EQ(level1[4], 60);  // (200 + 40 + 0 + 0) / 4
+    EXPECT_EQ(level2[0], 55);  // (50 + 60) / 2
+  }
+}
+
 // GLSL 1.20 with immediate mode: the compatibility attributes and matrices.
 TEST_F(GL33Test, CompatibilityProgramDrawsImmediateMode) {
   GLuint p = program(

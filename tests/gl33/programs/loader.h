@@ -39,6 +39,7 @@
   X(PFNGLENABLEPROC, glEnable)                                   \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray) \
   X(PFNGLGENBUFFERSPROC, glGenBuffers)                           \
+  X(PFNGLGENERATEMIPMAPPROC, glGenerateMipmap)                   \
   X(PFNGLGENTEXTURESPROC, glGenTextures)                         \
   X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays)                 \
   X(PFNGLGETERRORPROC, glGetError)                               \
@@ -112,6 +113,7 @@ static inline int load_gl(loader_proc_fn get) {
 #define glEnable loader_glEnable
 #define glEnableVertexAttribArray loader_glEnableVertexAttribArray
 #define glGenBuffers loader_glGenBuffers
+#define glGenerateMipmap loader_glGenerateMipmap
 #define glGenTextures loader_glGenTextures
 #define glGenVertexArrays loader_glGenVertexArrays
 #define glGetError loader_glGetError
