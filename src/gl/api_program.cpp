@@ -40,6 +40,17 @@ glsl::Program* linked_program(Context& c, GLuint name) {
   return p->linked.get();
 }
 
+// glGetAttribLocation, glGetUniformLocation, glGetFragData*: -1 for no name; a program that
+// is not linked is GL_INVALID_OPERATION (and -1).
+template <class Fn>
+GLint location_query(GLuint program, const GLchar* name, Fn&& find) {
+  GL_CONTEXT(-1);
+  GL_OUTSIDE_BEGIN(-1);
+  glsl::Program* p = linked_program(c, program);
+  if (!p || !name) return -1;
+  return find(*p, name);
+}
+
 GLuint fresh_object_name(Context& c) {
   while (c.next_shader_name == 0 || c.shaders.count(c.next_shader_name) ||
          c.programs.count(c.next_shader_name))
@@ -527,37 +538,26 @@ void GLAPIENTRY glGetProgramInfoLog(GLuint program, GLsizei size, GLsizei* lengt
 }
 
 GLint GLAPIENTRY glGetAttribLocation(GLuint program, const GLchar* name) {
-  GL_CONTEXT(-1);
-  GL_OUTSIDE_BEGIN(-1);
-  glsl::Program* p = linked_program(c, program);
-  if (!p || !name) return -1;
-  return p->attribute_location(name);
+  return location_query(program, name,
+                        [](const glsl::Program& p, const char* n) { return p.attribute_location(n); });
 }
 
 GLint GLAPIENTRY glGetFragDataLocation(GLuint program, const GLchar* name) {
-  GL_CONTEXT(-1);
-  GL_OUTSIDE_BEGIN(-1);
-  glsl::Program* p = linked_program(c, program);
-  if (!p || !name) return -1;
-  return p->frag_data_location(name);
+  return location_query(program, name,
+                        [](const glsl::Program& p, const char* n) { return p.frag_data_location(n); });
 }
 
 GLint GLAPIENTRY glGetFragDataIndex(GLuint program, const GLchar* name) {
-  GL_CONTEXT(-1);
-  GL_OUTSIDE_BEGIN(-1);
-  glsl::Program* p = linked_program(c, program);
-  if (!p || !name) return -1;
-  return p->frag_data_location(name) >= 0 ? 0 : -1;
+  return location_query(program, name, [](const glsl::Program& p, const char* n) {
+    return p.frag_data_location(n) >= 0 ? 0 : -1;
+  });
 }
 
 GLint GLAPIENTRY glGetUniformLocation(GLuint program, const GLchar* name) {
-  GL_CONTEXT(-1);
-  GL_OUTSIDE_BEGIN(-1);
-  glsl::Program* p = linked_program(c, program);
-  if (!p || !name) return -1;
   // The compatibility state is not a user uniform (GLSL 1.20 §7.5: gl_ names are reserved).
-  if (std::strncmp(name, "gl_", 3) == 0) return -1;
-  return p->uniform_location(name);
+  return location_query(program, name, [](const glsl::Program& p, const char* n) {
+    return std::strncmp(n, "gl_", 3) == 0 ? -1 : p.uniform_location(n);
+  });
 }
 
 void GLAPIENTRY glGetActiveAttrib(GLuint program, GLuint index, GLsizei size, GLsizei* length, GLint* count,
