@@ -47,6 +47,14 @@
 namespace tessel::gl {
 
 using Vec4Arg = std::array<float, 4>;
+// The first n values of a parameter array as floats (zeros where n < 4 or v is null).
+template <class T>
+inline Vec4Arg take(const T* v, int n) {
+  Vec4Arg a{0.0f, 0.0f, 0.0f, 0.0f};
+  if (v)
+    for (int i = 0; i < n && i < 4; ++i) a[size_t(i)] = float(v[i]);
+  return a;
+}
 
 // Number of values a glLight / glMaterial / glFog / glLightModel / glTexEnv / glTexGen
 // parameter takes (0 when the name is not one of them).

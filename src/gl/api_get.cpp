@@ -60,6 +60,46 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_PROGRAM_POINT_SIZE: return b(c.program_point_size), true;
     case GL_DEPTH_CLAMP: return b(c.depth_clamp), true;
     case GL_MAX_VERTEX_ATTRIBS: return n(kMaxVertexAttribs), true;
+    case GL_TEXTURE_BINDING_1D:
+    case GL_TEXTURE_BINDING_2D:
+    case GL_TEXTURE_BINDING_3D:
+    case GL_TEXTURE_BINDING_CUBE_MAP:
+    case GL_TEXTURE_BINDING_1D_ARRAY:
+    case GL_TEXTURE_BINDING_2D_ARRAY:
+    case GL_TEXTURE_BINDING_RECTANGLE:
+    case GL_TEXTURE_BINDING_BUFFER:
+      for (int t = 0; t < kTexTargetCount; ++t)
+        if (binding_query_of(TexTarget(t)) == pname) {
+          const TextureRef& r = c.s.unit().bound[size_t(t)];
+          return n(r ? r->name : 0), true;
+        }
+      return false;
+    case GL_DRAW_BUFFER0:
+    case GL_DRAW_BUFFER1:
+    case GL_DRAW_BUFFER2:
+    case GL_DRAW_BUFFER3:
+    case GL_DRAW_BUFFER4:
+    case GL_DRAW_BUFFER5:
+    case GL_DRAW_BUFFER6:
+    case GL_DRAW_BUFFER7: {
+      const size_t i = pname - GL_DRAW_BUFFER0;
+      if (c.draw_fbo) return n(c.draw_fbo->draw_buffers[i]), true;
+      return n(i == 0 ? c.s.color.draw_buffer : GL_NONE), true;
+    }
+    case GL_DRAW_FRAMEBUFFER_BINDING: return n(c.draw_fbo ? c.draw_fbo->name : 0), true;
+    case GL_READ_FRAMEBUFFER_BINDING: return n(c.read_fbo ? c.read_fbo->name : 0), true;
+    case GL_RENDERBUFFER_BINDING: return n(c.bound_renderbuffer ? c.bound_renderbuffer->name : 0), true;
+    case GL_MAX_DRAW_BUFFERS: return n(kMaxDrawBuffers), true;
+    case GL_MAX_COLOR_ATTACHMENTS: return n(kMaxColorAttachments), true;
+    case GL_MAX_RENDERBUFFER_SIZE: return n(kMaxRenderbufferSize), true;
+    case GL_MAX_SAMPLES: return n(kMaxSamples), true;
+    case GL_SAMPLER_BINDING: return n(c.s.unit().sampler ? c.s.unit().sampler->name : 0), true;
+    case GL_MAX_3D_TEXTURE_SIZE: return n(kMax3DTextureSize), true;
+    case GL_MAX_ARRAY_TEXTURE_LAYERS: return n(kMaxArrayTextureLayers), true;
+    case GL_MAX_CUBE_MAP_TEXTURE_SIZE:
+    case GL_MAX_RECTANGLE_TEXTURE_SIZE: return n(kMaxTextureSize), true;
+    case GL_MAX_TEXTURE_BUFFER_SIZE: return n(double(gpu::kMaxTextureBufferTexels)), true;
+    case GL_MAX_TEXTURE_LOD_BIAS: return n(16), true;
     case GL_MAX_TEXTURE_IMAGE_UNITS:
     case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS: return n(kMaxStageTextureUnits), true;
     case GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS: return n(kMaxTextureUnits), true;
@@ -75,8 +115,6 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_MAX_VARYING_COMPONENTS:  // == GL_MAX_VARYING_FLOATS
     case GL_MAX_VERTEX_OUTPUT_COMPONENTS:
     case GL_MAX_FRAGMENT_INPUT_COMPONENTS: return n(64), true;
-    case GL_MAX_DRAW_BUFFERS:
-    case GL_MAX_COLOR_ATTACHMENTS: return n(gpu::kMaxColorAttachments), true;
     case GL_MAX_DUAL_SOURCE_DRAW_BUFFERS: return n(0), true;
     case GL_MIN_PROGRAM_TEXEL_OFFSET: return n(-8), true;
     case GL_MAX_PROGRAM_TEXEL_OFFSET: return n(7), true;
@@ -182,8 +220,6 @@ bool query(Context& c, GLenum pname, Values& out) {
     // Texturing.
     case GL_TEXTURE_2D: b(s.unit().enabled_2d); return true;
     case GL_TEXTURE_1D: b(false); return true;
-    case GL_TEXTURE_BINDING_2D: put(out, {double(s.unit().bound_2d)}); return true;
-    case GL_TEXTURE_BINDING_1D: put(out, {0.0}); return true;
     case GL_TEXTURE_GEN_S: b(s.unit().gen_enabled[0]); return true;
     case GL_TEXTURE_GEN_T: b(s.unit().gen_enabled[1]); return true;
     case GL_TEXTURE_GEN_R: b(s.unit().gen_enabled[2]); return true;
@@ -210,18 +246,32 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_STENCIL_PASS_DEPTH_PASS: e(s.stencil.zpass); return true;
     case GL_DEPTH_TEST: b(s.depth.test); return true;
     case GL_DEPTH_FUNC: e(s.depth.func); return true;
-    case GL_BLEND: b(s.color.blend); return true;
-    case GL_BLEND_SRC: e(s.color.blend_src); return true;
-    case GL_BLEND_DST: e(s.color.blend_dst); return true;
+    case GL_BLEND: b(s.color.blend[0]); return true;
+    case GL_BLEND_SRC:  // == GL_BLEND_SRC_RGB
+      e(s.color.blend_src);
+      return true;
+    case GL_BLEND_DST:  // == GL_BLEND_DST_RGB
+      e(s.color.blend_dst);
+      return true;
+    case GL_BLEND_SRC_ALPHA: e(s.color.blend_src_alpha); return true;
+    case GL_BLEND_DST_ALPHA: e(s.color.blend_dst_alpha); return true;
+    case GL_BLEND_EQUATION_RGB:  // == GL_BLEND_EQUATION
+      e(s.color.blend_eq);
+      return true;
+    case GL_BLEND_EQUATION_ALPHA: e(s.color.blend_eq_alpha); return true;
+    case GL_BLEND_COLOR:
+      out.kind = Kind::Color;
+      put4(out, s.color.blend_color);
+      return true;
     case GL_DITHER: b(s.color.dither); return true;
     case GL_COLOR_LOGIC_OP: b(s.color.logic_op); return true;
     case GL_LOGIC_OP_MODE: e(s.color.logic_op_mode); return true;
     // Framebuffer control.
-    case GL_DRAW_BUFFER: e(s.color.draw_buffer); return true;
-    case GL_READ_BUFFER: e(s.pixel.read_buffer); return true;
+    case GL_DRAW_BUFFER: e(c.draw_fbo ? c.draw_fbo->draw_buffers[0] : s.color.draw_buffer); return true;
+    case GL_READ_BUFFER: e(c.read_fbo ? c.read_fbo->read_buffer : s.pixel.read_buffer); return true;
     case GL_COLOR_WRITEMASK:
       out.kind = Kind::Bool;
-      for (bool m : s.color.color_mask) out.v.push_back(m ? 1.0 : 0.0);
+      for (bool m : s.color.color_mask[0]) out.v.push_back(m ? 1.0 : 0.0);
       return true;
     case GL_DEPTH_WRITEMASK: b(s.depth.mask); return true;
     case GL_STENCIL_WRITEMASK: put(out, {double(s.stencil.write_mask)}); return true;
@@ -403,6 +453,18 @@ void GLAPIENTRY glGetIntegeri_v(GLenum pname, GLuint index, GLint* out) {
   if (out && current() && v == GLint64(GLint(v))) *out = GLint(v);
 }
 void GLAPIENTRY glGetBooleani_v(GLenum pname, GLuint index, GLboolean* out) {
+  if (pname == GL_COLOR_WRITEMASK || pname == GL_BLEND) {
+    GL_CONTEXT();
+    GL_OUTSIDE_BEGIN();
+    if (index >= GLuint(kMaxDrawBuffers)) return c.error(GL_INVALID_VALUE);
+    if (!out) return;
+    if (pname == GL_BLEND) {
+      *out = c.s.color.blend[index] ? GL_TRUE : GL_FALSE;
+      return;
+    }
+    for (int k = 0; k < 4; ++k) out[k] = c.s.color.color_mask[index][size_t(k)] ? GL_TRUE : GL_FALSE;
+    return;
+  }
   GLint64 v = 0;
   glGetInteger64i_v(pname, index, &v);
   if (out) *out = v != 0;

@@ -185,13 +185,6 @@ void fog(Context& c, GLenum pname, Vec4Arg p) {
 int fog_param_count(GLenum pname) { return pname == GL_FOG_COLOR ? 4 : 1; }
 int light_model_count(GLenum pname) { return pname == GL_LIGHT_MODEL_AMBIENT ? 4 : 1; }
 
-template <class T>
-Vec4Arg take(const T* v, int n) {
-  Vec4Arg a{0.0f, 0.0f, 0.0f, 0.0f};
-  if (v)
-    for (int i = 0; i < n && i < 4; ++i) a[size_t(i)] = float(v[i]);
-  return a;
-}
 // Integer forms of colour parameters map to [-1, 1] (GL 2.1 §2.14.2); other integers stay.
 Vec4Arg take_color_int(const GLint* v, int n) {
   Vec4Arg a{0.0f, 0.0f, 0.0f, 0.0f};

@@ -60,7 +60,7 @@ void Context::draw_pixels_rgba(float x, float y, int w, int h, const std::vector
   if (w <= 0 || h <= 0 || zoom_x == 0.0f || zoom_y == 0.0f) return;
   if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(zoom_x) || !std::isfinite(zoom_y)) return;
   touch();
-  bind_draw_target();
+  if (!bind_draw_target()) return;
   auto tex = std::make_unique<gpu::Texture2D>(gpu::Format::RGBA8, w, h);
   tex->upload(0, rgba.data(), rgba.size());
   const float x1 = x + float(w) * zoom_x, y1 = y + float(h) * zoom_y;
@@ -249,12 +249,13 @@ void copy_pixels(Context& c, GLint x, GLint y, GLsizei w, GLsizei h, GLenum type
   c.finish();
   auto data = std::make_shared<Pixels>();
   data->px.assign(size_t(w) * size_t(h), glm::vec4(0.0f));
-  gpu::Texture2D* src = type == GL_COLOR ? c.color_buffer(c.s.pixel.read_buffer) : c.depth_buffer();
+  const gpu::Attachment a = type == GL_COLOR ? c.read_color() : c.read_depth();
+  gpu::Texture2D* src = a.texture;
   if (!src) return;
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i)
-      if (x + i >= 0 && y + j >= 0 && x + i < src->width() && y + j < src->height()) {
-        glm::vec4 v = src->fetch(0, x + i, y + j);
+      if (x + i >= 0 && y + j >= 0 && x + i < src->width(a.level) && y + j < src->height(a.level)) {
+        glm::vec4 v = src->fetch(a.level, x + i, y + j);
         if (type == GL_STENCIL) v.x = v.y;
         data->px[size_t(j) * size_t(w) + size_t(i)] = v;
       }
@@ -294,46 +295,55 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum form
   GL_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (w < 0 || h < 0) return c.error(GL_INVALID_VALUE);
-  if (!valid_pixel_format(format) || !valid_pixel_type(type) || format == GL_COLOR_INDEX)
-    return c.error(GL_INVALID_ENUM);
-  if (type == GL_BITMAP) return c.error(GL_INVALID_ENUM);
-  if ((format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX) && !c.has_depth())
-    return c.error(GL_INVALID_OPERATION);
-  if (format == GL_STENCIL_INDEX && !c.has_stencil()) return c.error(GL_INVALID_OPERATION);
-  if (w == 0 || h == 0 || !pixels) return;
+  if (const GLenum e = check_format_type(format, type); e != GL_NO_ERROR) return c.error(e);
+  if (format == GL_COLOR_INDEX || type == GL_BITMAP) return c.error(GL_INVALID_ENUM);
+  if (!c.read_framebuffer_complete()) return c.error(GL_INVALID_FRAMEBUFFER_OPERATION);
+  const bool depth_stencil = format == GL_DEPTH_STENCIL;
+  const bool depth = format == GL_DEPTH_COMPONENT || depth_stencil, stencil = format == GL_STENCIL_INDEX;
+  const tessel::gpu::Attachment a = depth || stencil ? c.read_depth() : c.read_color();
+  if (!a.texture) return c.error(GL_INVALID_OPERATION);
+  if ((stencil || depth_stencil) && !c.read_has_stencil()) return c.error(GL_INVALID_OPERATION);
+  void* dst = pixels;
+  if (c.pixel_pack_buffer) {
+    BufferObject& b = *c.pixel_pack_buffer;
+    const PixelLayout L = pixel_layout(c.c.pack, w, format, type);
+    const size_t offset = reinterpret_cast<size_t>(pixels);
+    const size_t need =
+        offset + L.offset + L.row_stride * size_t(std::max(h, 1) - 1) + L.pixel_stride * size_t(w);
+    if (b.mapped || need > b.data.size() || need < offset) return c.error(GL_INVALID_OPERATION);
+    dst = b.data.writable() + offset;
+  }
+  if (w == 0 || h == 0 || !dst) return;
   c.finish();
-  const bool depth = format == GL_DEPTH_COMPONENT, stencil = format == GL_STENCIL_INDEX;
-  tessel::gpu::Texture2D* src = depth || stencil ? c.depth_buffer() : c.color_buffer(c.s.pixel.read_buffer);
-  if (!src) return c.error(GL_INVALID_OPERATION);
+  const tessel::gpu::Texture2D* src = a.texture;
   std::vector<glm::vec4> px(size_t(w) * size_t(h), glm::vec4(0.0f));
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const int sx = x + i, sy = y + j;
-      if (sx < 0 || sy < 0 || sx >= src->width() || sy >= src->height()) continue;
-      glm::vec4 v = src->fetch(0, sx, sy);
+      if (sx < 0 || sy < 0 || sx >= src->width(a.level) || sy >= src->height(a.level)) continue;
+      glm::vec4 v = src->fetch(a.level, sx, sy);
       if (stencil) v.x = v.y;
       px[size_t(j) * size_t(w) + size_t(i)] = v;
     }
   if (!depth && !stencil) transfer(c.s.pixel, px);
   if (stencil) {
     // Stencil values are integers: GL_UNSIGNED_BYTE 5 reads as 5, not 5/255.
-    for (glm::vec4& v : px) v.x = type == GL_FLOAT ? v.x : v.x / 255.0f;
+    for (glm::vec4& v : px) v.x = type == GL_FLOAT || type == GL_HALF_FLOAT ? v.x : v.x / 255.0f;
   }
-  pack_pixels(c.c.pack, w, h, format, type, px, pixels);
+  pack_pixels(c.c.pack, w, h, format, type, px, dst);
 }
 
 void GLAPIENTRY glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid* pixels) {
   GL_CONTEXT();
   if (w < 0 || h < 0) return c.error(GL_INVALID_VALUE);
-  if (!valid_pixel_format(format) || !valid_pixel_type(type)) return c.error(GL_INVALID_ENUM);
-  if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
-    return c.error(GL_INVALID_ENUM);
+  if (const GLenum e = check_format_type(format, type); e != GL_NO_ERROR) return c.error(e);
+  if (format == GL_DEPTH_STENCIL || is_integer_format(format)) return c.error(GL_INVALID_OPERATION);
   if (format == GL_COLOR_INDEX) return c.error(GL_INVALID_OPERATION);  // RGBA mode only
   std::shared_ptr<Pixels> data;
   if (pixels && w > 0 && h > 0) {
     data = std::make_shared<Pixels>();
     unpack_pixels(c.c.unpack, w, h, format, type, pixels, data->px);
-    if (format == GL_STENCIL_INDEX && type != GL_FLOAT)
+    if (format == GL_STENCIL_INDEX && type != GL_FLOAT && type != GL_HALF_FLOAT)
       for (glm::vec4& v : data->px) v.x = std::round(v.x * 255.0f);
   }
   GL_LISTED(draw_pixels(c, w, h, format, data));

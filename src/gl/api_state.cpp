@@ -30,7 +30,7 @@ bool* capability(Context& c, GLenum cap) {
     case GL_COLOR_MATERIAL: return &s.light.color_material;
     case GL_FOG: return &s.fog.enabled;
     case GL_ALPHA_TEST: return &s.color.alpha_test;
-    case GL_BLEND: return &s.color.blend;
+    case GL_BLEND: return &s.color.blend[0];
     case GL_DITHER: return &s.color.dither;
     case GL_COLOR_LOGIC_OP: return &s.color.logic_op;
     case GL_DEPTH_TEST: return &s.depth.test;
@@ -90,18 +90,45 @@ bool valid_blend(GLenum f, bool src) {
     case GL_DST_COLOR:
     case GL_ONE_MINUS_DST_COLOR:
     case GL_SRC_COLOR:
-    case GL_ONE_MINUS_SRC_COLOR: return true;
+    case GL_ONE_MINUS_SRC_COLOR:
+    case GL_CONSTANT_COLOR:
+    case GL_ONE_MINUS_CONSTANT_COLOR:
+    case GL_CONSTANT_ALPHA:
+    case GL_ONE_MINUS_CONSTANT_ALPHA: return true;
     case GL_SRC_ALPHA_SATURATE: return src;
     default: return false;
   }
 }
 
-void blend_func(Context& c, GLenum sf, GLenum df) {
+void blend_func(Context& c, GLenum sf, GLenum df, GLenum sfa, GLenum dfa) {
   GL_OUTSIDE_BEGIN();
-  if (!valid_blend(sf, true) || !valid_blend(df, false)) return c.error(GL_INVALID_ENUM);
+  if (!valid_blend(sf, true) || !valid_blend(df, false) || !valid_blend(sfa, true) ||
+      !valid_blend(dfa, false))
+    return c.error(GL_INVALID_ENUM);
   c.touch();
   c.s.color.blend_src = sf;
   c.s.color.blend_dst = df;
+  c.s.color.blend_src_alpha = sfa;
+  c.s.color.blend_dst_alpha = dfa;
+}
+
+bool valid_blend_equation(GLenum e) {
+  return e == GL_FUNC_ADD || e == GL_FUNC_SUBTRACT || e == GL_FUNC_REVERSE_SUBTRACT || e == GL_MIN ||
+         e == GL_MAX;
+}
+
+void blend_equation(Context& c, GLenum rgb, GLenum alpha) {
+  GL_OUTSIDE_BEGIN();
+  if (!valid_blend_equation(rgb) || !valid_blend_equation(alpha)) return c.error(GL_INVALID_ENUM);
+  c.touch();
+  c.s.color.blend_eq = rgb;
+  c.s.color.blend_eq_alpha = alpha;
+}
+
+void blend_color(Context& c, float r, float g, float b, float a) {
+  GL_OUTSIDE_BEGIN();
+  c.touch();
+  c.s.color.blend_color = glm::clamp(glm::vec4(r, g, b, a), 0.0f, 1.0f);
 }
 
 void depth_func(Context& c, GLenum f) {
@@ -215,7 +242,7 @@ void clip_plane(Context& c, GLenum plane, glm::dvec4 eq) {
 void color_mask(Context& c, bool r, bool g, bool b, bool a) {
   GL_OUTSIDE_BEGIN();
   c.touch();
-  c.s.color.color_mask = {r, g, b, a};
+  c.s.color.color_mask.fill({r, g, b, a});
 }
 
 void depth_mask(Context& c, bool m) {
@@ -256,6 +283,20 @@ void hint(Context& c, GLenum target, GLenum mode) {
 
 void draw_buffer(Context& c, GLenum b) {
   GL_OUTSIDE_BEGIN();
+  if (c.draw_fbo) {
+    // A framebuffer object draws to one attachment, or none (GL 3.3 §4.2.1).
+    if (b != GL_NONE && !(b >= GL_COLOR_ATTACHMENT0 && b < GL_COLOR_ATTACHMENT0 + 16)) {
+      const bool window_buffer = b == GL_FRONT || b == GL_BACK || b == GL_FRONT_AND_BACK || b == GL_LEFT ||
+                                 b == GL_RIGHT || b == GL_FRONT_LEFT || b == GL_FRONT_RIGHT ||
+                                 b == GL_BACK_LEFT || b == GL_BACK_RIGHT || b == GL_AUX0;
+      return c.error(window_buffer ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
+    }
+    if (b >= GL_COLOR_ATTACHMENT0 + kMaxColorAttachments && b != GL_NONE)
+      return c.error(GL_INVALID_OPERATION);
+    c.touch();
+    c.draw_fbo->draw_buffers = {b};
+    return;
+  }
   if (b == GL_NONE) {
     c.touch();
     c.s.color.draw_buffer = b;
@@ -271,6 +312,22 @@ void draw_buffer(Context& c, GLenum b) {
 
 void read_buffer(Context& c, GLenum b) {
   GL_OUTSIDE_BEGIN();
+  if (c.read_fbo) {
+    if (b != GL_NONE && !(b >= GL_COLOR_ATTACHMENT0 && b < GL_COLOR_ATTACHMENT0 + 16)) {
+      const bool window_buffer = b == GL_FRONT || b == GL_BACK || b == GL_FRONT_AND_BACK || b == GL_LEFT ||
+                                 b == GL_RIGHT || b == GL_FRONT_LEFT || b == GL_FRONT_RIGHT ||
+                                 b == GL_BACK_LEFT || b == GL_BACK_RIGHT || b == GL_AUX0;
+      return c.error(window_buffer ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
+    }
+    if (b >= GL_COLOR_ATTACHMENT0 + kMaxColorAttachments && b != GL_NONE)
+      return c.error(GL_INVALID_OPERATION);
+    c.read_fbo->read_buffer = b;
+    return;
+  }
+  if (b == GL_NONE) {
+    c.s.pixel.read_buffer = b;
+    return;
+  }
   if (b != GL_FRONT && b != GL_BACK && b != GL_LEFT && b != GL_FRONT_LEFT && b != GL_BACK_LEFT &&
       b != GL_RIGHT && b != GL_FRONT_RIGHT && b != GL_BACK_RIGHT && b != GL_AUX0)
     return c.error(GL_INVALID_ENUM);
@@ -317,6 +374,11 @@ void enable(Context& c, GLenum cap, bool on) {
   bool* flag = capability(c, cap);
   if (!flag) flag = inert_capability(cap);
   if (!flag) return c.error(GL_INVALID_ENUM);
+  if (cap == GL_BLEND) {
+    c.touch();
+    c.s.color.blend.fill(on);  // every draw buffer (GL 3.3 §4.1.8)
+    return;
+  }
   if (*flag == on) return;
   c.touch();
   *flag = on;
@@ -485,7 +547,13 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap) {
 }
 
 void GLAPIENTRY glAlphaFunc(GLenum func, GLclampf ref) { SIMPLE(alpha_func, func, ref); }
-void GLAPIENTRY glBlendFunc(GLenum s, GLenum d) { SIMPLE(blend_func, s, d); }
+void GLAPIENTRY glBlendFunc(GLenum s, GLenum d) { SIMPLE(blend_func, s, d, s, d); }
+void GLAPIENTRY glBlendFuncSeparate(GLenum s, GLenum d, GLenum sa, GLenum da) {
+  SIMPLE(blend_func, s, d, sa, da);
+}
+void GLAPIENTRY glBlendEquation(GLenum e) { SIMPLE(blend_equation, e, e); }
+void GLAPIENTRY glBlendEquationSeparate(GLenum rgb, GLenum alpha) { SIMPLE(blend_equation, rgb, alpha); }
+void GLAPIENTRY glBlendColor(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { SIMPLE(blend_color, r, g, b, a); }
 void GLAPIENTRY glDepthFunc(GLenum f) { SIMPLE(depth_func, f); }
 void GLAPIENTRY glDepthMask(GLboolean m) { SIMPLE(depth_mask, m != GL_FALSE); }
 void GLAPIENTRY glStencilFunc(GLenum f, GLint ref, GLuint mask) { SIMPLE(stencil_func, f, ref, mask); }
@@ -549,7 +617,8 @@ void GLAPIENTRY glColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) 
   SIMPLE(color_mask, r != GL_FALSE, g != GL_FALSE, b != GL_FALSE, a != GL_FALSE);
 }
 void GLAPIENTRY glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
-  const glm::vec4 v = glm::clamp(glm::vec4(r, g, b, a), 0.0f, 1.0f);
+  // Kept as given (GL 3.0 §4.2.3): fixed-point buffers clamp when cleared, float ones do not.
+  const glm::vec4 v(r, g, b, a);
   GL_CONTEXT();
   auto set = [v](Context& c) {
     GL_OUTSIDE_BEGIN();

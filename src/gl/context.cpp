@@ -39,6 +39,10 @@ gpu::BlendFactor blend_of(GLenum f) {
     case GL_DST_ALPHA: return B::DstAlpha;
     case GL_ONE_MINUS_DST_ALPHA: return B::OneMinusDstAlpha;
     case GL_SRC_ALPHA_SATURATE: return B::SrcAlphaSaturate;
+    case GL_CONSTANT_COLOR: return B::ConstantColor;
+    case GL_ONE_MINUS_CONSTANT_COLOR: return B::OneMinusConstantColor;
+    case GL_CONSTANT_ALPHA: return B::ConstantAlpha;
+    case GL_ONE_MINUS_CONSTANT_ALPHA: return B::OneMinusConstantAlpha;
     default: return B::One;
   }
 }
@@ -49,24 +53,22 @@ gpu::PolygonMode polygon_mode_of(GLenum m) {
                          : gpu::PolygonMode::Fill;
 }
 
-gpu::Filter filter_of(GLenum f) {
-  switch (f) {
-    case GL_NEAREST: return gpu::Filter::Nearest;
-    case GL_LINEAR: return gpu::Filter::Linear;
-    case GL_NEAREST_MIPMAP_NEAREST: return gpu::Filter::NearestMipmapNearest;
-    case GL_LINEAR_MIPMAP_NEAREST: return gpu::Filter::LinearMipmapNearest;
-    case GL_NEAREST_MIPMAP_LINEAR: return gpu::Filter::NearestMipmapLinear;
-    default: return gpu::Filter::LinearMipmapLinear;
-  }
-}
-
-gpu::Wrap wrap_of(GLenum w) {
-  switch (w) {
-    case GL_CLAMP: return gpu::Wrap::Clamp;
-    case GL_CLAMP_TO_EDGE: return gpu::Wrap::ClampToEdge;
-    case GL_MIRRORED_REPEAT: return gpu::Wrap::MirroredRepeat;
-    case GL_CLAMP_TO_BORDER: return gpu::Wrap::ClampToBorder;
-    default: return gpu::Wrap::Repeat;
+// The base format the texture environment sees (GL 3.3 compatibility Table 3.25: RED and
+// RG act as RGB; depth textures as their GL_DEPTH_TEXTURE_MODE says).
+BaseFormat ff_base_format(const TextureObject& t) {
+  switch (t.base_image().fmt.base) {
+    case TexBase::Alpha: return BaseFormat::Alpha;
+    case TexBase::Luminance: return BaseFormat::Luminance;
+    case TexBase::LuminanceAlpha: return BaseFormat::LuminanceAlpha;
+    case TexBase::Intensity: return BaseFormat::Intensity;
+    case TexBase::RGBA: return BaseFormat::RGBA;
+    case TexBase::Depth:
+    case TexBase::DepthStencil:
+      return t.depth_mode == GL_LUMINANCE   ? BaseFormat::Luminance
+             : t.depth_mode == GL_INTENSITY ? BaseFormat::Intensity
+             : t.depth_mode == GL_ALPHA     ? BaseFormat::Alpha
+                                            : BaseFormat::RGB;
+    default: return BaseFormat::RGB;
   }
 }
 
@@ -103,7 +105,7 @@ Context::Context(int width, int height, bool double_buffer, bool depth, bool ste
   matrices[0].assign(1, glm::mat4(1.0f));
   matrices[1].assign(1, glm::mat4(1.0f));
   matrices[2].assign(1, glm::mat4(1.0f));
-  textures[0].name = 0;
+  for (int i = 0; i < kTexTargetCount; ++i) default_textures[size_t(i)] = make_texture(0, TexTarget(i));
   s.color.draw_buffer = double_buffer ? GL_BACK : GL_FRONT;
   s.pixel.read_buffer = double_buffer ? GL_BACK : GL_FRONT;
   for (int i = 0; i < kMaxLights; ++i) s.light.spot_cutoff[size_t(i)] = 180.0f;
@@ -164,13 +166,167 @@ gpu::Texture2D* Context::color_buffer(GLenum which) {
   }
 }
 
-void Context::bind_draw_target() {
-  const GLenum target = s.color.draw_buffer;
-  if (fb_target_ == target && gpu_->framebuffer() == &fb_) return;
-  fb_ = gpu::Framebuffer(color_buffer(target), depth_.get());
-  if (!fb_.color[0].texture && !depth_) fb_.color[0].texture = color_[0].get();
-  fb_target_ = target;
-  gpu_->bind_framebuffer(&fb_);
+namespace {
+constexpr GLenum kFramebufferObjectTarget = 0xFFFFFFFFu;  // fb_target_ while an FBO is bound
+bool same_attachment(const gpu::Attachment& a, const gpu::Attachment& b) {
+  return a.texture == b.texture && a.level == b.level;
+}
+}  // namespace
+
+bool Context::bind_draw_target() {
+  if (!draw_fbo) {
+    const GLenum target = s.color.draw_buffer;
+    if (fb_target_ == target && gpu_->framebuffer() == &fb_) return true;
+    fb_ = gpu::Framebuffer(color_buffer(target), depth_.get());
+    if (!fb_.color[0].texture && !depth_) fb_.color[0].texture = color_[0].get();
+    fb_target_ = target;
+    gpu_->bind_framebuffer(&fb_);
+    return true;
+  }
+  FramebufferObject& f = *draw_fbo;
+  if (framebuffer_status(f) != GL_FRAMEBUFFER_COMPLETE) {
+    error(GL_INVALID_FRAMEBUFFER_OPERATION);
+    return false;
+  }
+  gpu::Framebuffer nf;
+  bool any = false;
+  auto take = [&](const Attachment& a, gpu::Attachment& out) {
+    if (!gpu_image(a, out)) return;
+    any = true;
+    if (a.type == GL_TEXTURE) a.texture->rendered = true;  // images pulled back before CPU access
+  };
+  for (int i = 0; i < kMaxDrawBuffers; ++i) {
+    const GLenum db = f.draw_buffers[size_t(i)];
+    if (db >= GL_COLOR_ATTACHMENT0 && db < GL_COLOR_ATTACHMENT0 + kMaxColorAttachments)
+      take(f.color[db - GL_COLOR_ATTACHMENT0], nf.color[size_t(i)]);
+  }
+  take(f.depth ? f.depth : f.stencil, nf.depth);
+  if (!any) return false;  // no draw buffer has an image: draws change nothing
+  bool same = fb_target_ == kFramebufferObjectTarget && gpu_->framebuffer() == &fb_ &&
+              same_attachment(fb_.depth, nf.depth);
+  for (int i = 0; i < kMaxDrawBuffers && same; ++i)
+    same = same_attachment(fb_.color[size_t(i)], nf.color[size_t(i)]);
+  if (same) return true;
+  fb_ = nf;
+  fb_target_ = kFramebufferObjectTarget;
+  bool ok = true;
+  guarded([&] {
+    ok = false;
+    gpu_->bind_framebuffer(&fb_);
+    ok = true;
+  });
+  if (!ok) fb_target_ = 0;
+  return ok;
+}
+
+Context::TargetInfo Context::target_info() const {
+  TargetInfo t;
+  if (!draw_fbo) {
+    t.depth = has_depth_;
+    t.stencil = has_stencil_;
+    t.channels[0] = 0xF;
+    return t;
+  }
+  const FramebufferObject& f = *draw_fbo;
+  TexFormat fmt;
+  int w, h;
+  for (int i = 0; i < kMaxDrawBuffers; ++i) {
+    const GLenum db = f.draw_buffers[size_t(i)];
+    if (db >= GL_COLOR_ATTACHMENT0 && db < GL_COLOR_ATTACHMENT0 + kMaxColorAttachments &&
+        f.color[db - GL_COLOR_ATTACHMENT0].image(fmt, w, h))
+      t.channels[size_t(i)] = fmt.channel_mask();
+  }
+  t.depth = f.depth.image(fmt, w, h) && fmt.is_depth();
+  t.stencil = f.stencil.image(fmt, w, h) && fmt.has_stencil();
+  return t;
+}
+
+bool Context::gpu_image(const Attachment& a, gpu::Attachment& out) {
+  out = {};
+  if (a.type == GL_RENDERBUFFER) {
+    if (!a.renderbuffer || !a.renderbuffer->image) return false;
+    out.texture = a.renderbuffer->image.get();
+    return true;
+  }
+  if (a.type != GL_TEXTURE || !a.texture || a.layered) return false;
+  TextureObject& t = *a.texture;
+  if (!update_gpu_texture(*this, t)) return false;
+  const int li = a.level - t.gpu_base;
+  if (li < 0 || li >= t.gpu_levels) return false;
+  switch (t.target) {
+    case TexTarget::T1D:
+    case TexTarget::T2D:
+    case TexTarget::Rect:
+      if (!t.tex2d) return false;
+      out.texture = t.tex2d.get();
+      break;
+    case TexTarget::Cube:
+      if (!t.cube) return false;
+      out.texture = &t.cube->face(a.face);
+      break;
+    default: return false;
+  }
+  out.level = li;
+  return true;
+}
+
+GLenum Context::framebuffer_status(FramebufferObject& f) {
+  const GLenum st = f.status();
+  if (st != GL_FRAMEBUFFER_COMPLETE) return st;
+  gpu::Attachment g;
+  auto supported = [&](const Attachment& a) {
+    if (!a) return true;
+    TexFormat fmt;
+    int w, h;
+    if (!a.image(fmt, w, h) || fmt.integer()) return false;
+    return gpu_image(a, g);
+  };
+  for (const Attachment& a : f.color)
+    if (!supported(a)) return GL_FRAMEBUFFER_UNSUPPORTED;
+  if (!supported(f.depth) || !supported(f.stencil)) return GL_FRAMEBUFFER_UNSUPPORTED;
+  if (f.depth && f.stencil) {
+    // One depth-stencil image serves both, or the pair is not supported (§4.4.4.2 allows it).
+    const bool same = f.depth.type == f.stencil.type && f.depth.texture == f.stencil.texture &&
+                      f.depth.renderbuffer == f.stencil.renderbuffer && f.depth.level == f.stencil.level &&
+                      f.depth.face == f.stencil.face;
+    if (!same) return GL_FRAMEBUFFER_UNSUPPORTED;
+  }
+  return GL_FRAMEBUFFER_COMPLETE;
+}
+
+gpu::Attachment Context::read_color() {
+  if (!read_fbo) return {color_buffer(s.pixel.read_buffer), 0};
+  const FramebufferObject& f = *read_fbo;
+  gpu::Attachment g;
+  if (f.read_buffer >= GL_COLOR_ATTACHMENT0 && f.read_buffer < GL_COLOR_ATTACHMENT0 + kMaxColorAttachments)
+    gpu_image(f.color[f.read_buffer - GL_COLOR_ATTACHMENT0], g);
+  return g;
+}
+
+gpu::Attachment Context::read_depth() {
+  if (!read_fbo) return {depth_.get(), 0};
+  const FramebufferObject& f = *read_fbo;
+  gpu::Attachment g;
+  gpu_image(f.depth ? f.depth : f.stencil, g);
+  return g;
+}
+
+bool Context::read_has_stencil() {
+  if (!read_fbo) return has_stencil_;
+  TexFormat fmt;
+  int w, h;
+  return read_fbo->stencil.image(fmt, w, h) && fmt.has_stencil();
+}
+
+void Context::renderbuffer_deleted(const RenderbufferObject& r) {
+  for (FramebufferRef* fb : {&draw_fbo, &read_fbo}) {
+    if (!*fb) continue;
+    for (Attachment* a : {&(*fb)->depth, &(*fb)->stencil})
+      if (a->renderbuffer.get() == &r) *a = Attachment{};
+    for (Attachment& a : (*fb)->color)
+      if (a.renderbuffer.get() == &r) a = Attachment{};
+  }
+  if (bound_renderbuffer.get() == &r) bound_renderbuffer = nullptr;
 }
 
 const std::vector<const char*>& extensions(const Context&) {
@@ -479,21 +635,30 @@ void Context::emit_shared(std::shared_ptr<const gpu::Buffer> vertices, std::vect
   send_batch();
 }
 
-TextureObject* Context::texture_for_draw() {
-  if (!s.units[0].enabled_2d) return nullptr;
-  TextureObject& t = textures[s.units[0].bound_2d];
-  if (t.dirty) rebuild_texture(t);
-  return t.complete ? &t : nullptr;
+void Context::texture_deleted(const TextureObject& t) {
+  for (TextureUnitState& u : s.units)
+    for (TextureRef& r : u.bound)
+      if (r.get() == &t) r = nullptr;
+  // §4.4.2.3: detached from the bound framebuffers (others keep it until they are changed).
+  for (FramebufferRef* fb : {&draw_fbo, &read_fbo}) {
+    if (!*fb) continue;
+    for (Attachment* a : {&(*fb)->depth, &(*fb)->stencil})
+      if (a->texture.get() == &t) *a = Attachment{};
+    for (Attachment& a : (*fb)->color)
+      if (a.texture.get() == &t) a = Attachment{};
+  }
 }
 
-gpu::SamplerState sampler_state_of(const TextureObject& t) {
-  gpu::SamplerState st;
-  st.min_filter = filter_of(t.min_filter);
-  st.mag_filter = filter_of(t.mag_filter);
-  st.wrap_s = wrap_of(t.wrap_s);
-  st.wrap_t = wrap_of(t.wrap_t);
-  st.border_color = t.border;
-  return st;
+TextureObject* Context::texture_for_draw() {
+  if (!s.units[0].enabled_2d) return nullptr;
+  TextureObject& t = bound_texture(TexTarget::T2D, 0);
+  if (!update_gpu_texture(*this, t) || !t.tex2d) return nullptr;
+  return texture_complete(t, sampler_params(0, t)) ? &t : nullptr;
+}
+
+const SamplerParams& Context::sampler_params(int unit, const TextureObject& t) const {
+  const SamplerRef& so = s.units[size_t(unit)].sampler;
+  return so ? so->p : t.sampler;
 }
 
 void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
@@ -534,9 +699,9 @@ void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
     }
   }
   if (tex) {
-    u.sampler.texture = tex->gpu.get();
-    u.sampler.state = sampler_state_of(*tex);
-    u.base_format = tex->levels[size_t(std::clamp(tex->base_level, 0, kMaxTextureLevels - 1))].base;
+    u.sampler.texture = tex->tex2d.get();
+    u.sampler.state = sampler_state_of(sampler_params(0, *tex), *tex);
+    u.base_format = ff_base_format(*tex);
     switch (s.units[0].env_mode) {
       case GL_REPLACE: u.env = TexEnv::Replace; break;
       case GL_DECAL: u.env = TexEnv::Decal; break;
@@ -577,6 +742,7 @@ void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
 
 gpu::RenderState Context::render_state(bool for_clear) const {
   gpu::RenderState r;
+  const TargetInfo target = target_info();
   r.viewport = {s.viewport.x, s.viewport.y, s.viewport.width, s.viewport.height};
   r.depth_near = float(s.viewport.near_);
   r.depth_far = float(s.viewport.far_);
@@ -609,11 +775,11 @@ gpu::RenderState Context::render_state(bool for_clear) const {
       const glm::vec4 pe(s.transform.clip_plane[size_t(i)]);
       r.clip_planes[size_t(i)] = pe * inv_p;
     }
-    r.depth_test = s.depth.test && has_depth_;
+    r.depth_test = s.depth.test && target.depth;
     r.depth_func = compare_of(s.depth.func);
   }
-  r.depth_write = s.depth.mask && has_depth_ && (for_clear || s.depth.test);
-  r.stencil_test = s.stencil.test && has_stencil_;
+  r.depth_write = s.depth.mask && target.depth && (for_clear || s.depth.test);
+  r.stencil_test = s.stencil.test && target.stencil;
   gpu::StencilFace f;
   f.func = compare_of(s.stencil.func);
   f.ref = uint8_t(std::clamp(s.stencil.ref, 0, 255));
@@ -623,12 +789,30 @@ gpu::RenderState Context::render_state(bool for_clear) const {
   f.depth_fail = stencil_op_of(s.stencil.zfail);
   f.pass = stencil_op_of(s.stencil.zpass);
   r.stencil_front = r.stencil_back = f;
-  gpu::BlendTarget& b = r.blend[0];
-  b.enabled = !for_clear && s.color.blend;
-  b.src_rgb = b.src_alpha = blend_of(s.color.blend_src);
-  b.dst_rgb = b.dst_alpha = blend_of(s.color.blend_dst);
-  b.write_mask = uint8_t((s.color.color_mask[0] ? 1 : 0) | (s.color.color_mask[1] ? 2 : 0) |
-                         (s.color.color_mask[2] ? 4 : 0) | (s.color.color_mask[3] ? 8 : 0));
+  auto equation = [](GLenum e) {
+    switch (e) {
+      case GL_FUNC_SUBTRACT: return gpu::BlendEquation::Subtract;
+      case GL_FUNC_REVERSE_SUBTRACT: return gpu::BlendEquation::ReverseSubtract;
+      case GL_MIN: return gpu::BlendEquation::Min;
+      case GL_MAX: return gpu::BlendEquation::Max;
+      default: return gpu::BlendEquation::Add;
+    }
+  };
+  for (int i = 0; i < kMaxDrawBuffers; ++i) {
+    gpu::BlendTarget& b = r.blend[size_t(i)];
+    const std::array<bool, 4>& m = s.color.color_mask[size_t(i)];
+    b.enabled = !for_clear && s.color.blend[size_t(i)];
+    b.eq_rgb = equation(s.color.blend_eq);
+    b.eq_alpha = equation(s.color.blend_eq_alpha);
+    b.src_rgb = blend_of(s.color.blend_src);
+    b.dst_rgb = blend_of(s.color.blend_dst);
+    b.src_alpha = blend_of(s.color.blend_src_alpha);
+    b.dst_alpha = blend_of(s.color.blend_dst_alpha);
+    // The channels the attachment's format stores (RGB keeps alpha 1, RED only red, ...).
+    b.write_mask = uint8_t(((m[0] ? 1 : 0) | (m[1] ? 2 : 0) | (m[2] ? 4 : 0) | (m[3] ? 8 : 0)) &
+                           target.channels[size_t(i)]);
+  }
+  r.blend_color = s.color.blend_color;
   return r;
 }
 
@@ -663,7 +847,7 @@ void Context::send_batch_unchecked() {
   Batch b;
   std::swap(b, batch_);
   if (b.indices.empty()) return;
-  bind_draw_target();
+  if (!bind_draw_target()) return;
   if (b.cls == PrimClass::Lines && s.line.stipple) return send_stippled_lines(b.verts, b.indices);
   std::unique_ptr<gpu::Buffer> own;
   if (!b.shared) own = std::make_unique<gpu::Buffer>(b.verts.data(), b.verts.size() * sizeof(FFVertex));
@@ -886,17 +1070,28 @@ void Context::send_stippled_lines(const std::vector<FFVertex>& verts, const std:
 
 void Context::clear(GLbitfield mask) {
   touch();
-  bind_draw_target();
+  if (!bind_draw_target()) return;
+  const TargetInfo target = target_info();
   gpu::ClearValues cv;
   cv.clear_color = (mask & GL_COLOR_BUFFER_BIT) != 0;
-  cv.color = glm::clamp(s.color.clear_color, 0.0f, 1.0f);
-  cv.clear_depth = has_depth_ && (mask & GL_DEPTH_BUFFER_BIT) != 0;
+  cv.color = s.color.clear_color;
+  cv.clear_depth = target.depth && (mask & GL_DEPTH_BUFFER_BIT) != 0;
   cv.depth = float(std::clamp(s.depth.clear, 0.0, 1.0));
-  cv.clear_stencil = has_stencil_ && (mask & GL_STENCIL_BUFFER_BIT) != 0;
+  cv.clear_stencil = target.stencil && (mask & GL_STENCIL_BUFFER_BIT) != 0;
   cv.stencil = uint8_t(s.stencil.clear & 0xFF);
   gpu::RenderState rs = render_state(true);
   rs.depth_write = s.depth.mask;
-  if (!fb_.color[0].texture) cv.clear_color = false;
+  // Unsigned normalized buffers take the clear colour clamped to [0, 1]; float ones as it is.
+  bool any_color = false;
+  for (int i = 0; i < kMaxDrawBuffers; ++i) {
+    const gpu::Texture2D* t = fb_.color[size_t(i)].texture;
+    if (!t) continue;
+    any_color = true;
+    cv.attachment_colors[size_t(i)] =
+        gpu::is_unorm8_format(t->format()) ? glm::clamp(cv.color, 0.0f, 1.0f) : cv.color;
+  }
+  cv.per_attachment = true;
+  if (!any_color) cv.clear_color = false;
   if (!cv.clear_color && !cv.clear_depth && !cv.clear_stencil) return;
   guarded([&] { gpu_->clear(cv, rs); });
 }

@@ -24,10 +24,12 @@
 #include <GL/gl.h>
 
 #include "ff_shader.hpp"
+#include "framebuffer_object.hpp"
 #include "objects.hpp"
 #include "tessel/gpu/context.hpp"
 #include "tessel/gpu/framebuffer.hpp"
 #include "tessel/gpu/texture.hpp"
+#include "texture_object.hpp"
 
 namespace tessel::gl {
 
@@ -36,34 +38,9 @@ inline constexpr int kMaxClipPlanes = 6;
 inline constexpr int kModelviewDepth = 32, kProjectionDepth = 32, kTextureDepth = 10;
 inline constexpr int kAttribDepth = 16, kClientAttribDepth = 16;
 inline constexpr int kMaxListNesting = 64;
-inline constexpr int kMaxTextureSize = 8192;
-inline constexpr int kMaxTextureLevels = 14;  // 8192 = 2^13
 // GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS (GL 3.3's minimum, Table 6.37); each stage may use 16.
 inline constexpr int kMaxTextureUnits = 48;
 inline constexpr int kMaxStageTextureUnits = 16;
-
-struct TextureImage {
-  int width = 0, height = 0;
-  BaseFormat base = BaseFormat::RGBA;
-  GLenum internal_format = GL_RGBA;
-  std::vector<uint8_t> rgba;  // RGBA8, rows bottom-up (GL's first row is t = 0)
-  bool defined() const { return width > 0 && height > 0; }
-};
-
-struct TextureObject {
-  GLuint name = 0;
-  std::array<TextureImage, kMaxTextureLevels> levels{};
-  GLenum min_filter = GL_NEAREST_MIPMAP_LINEAR, mag_filter = GL_LINEAR;
-  GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT;
-  glm::vec4 border{0.0f};
-  float priority = 1.0f;
-  int base_level = 0, max_level = 1000;
-  bool generate_mipmap = false;
-  // The gpu texture made from the levels when a draw needs it (rebuilt after a change).
-  std::unique_ptr<gpu::Texture2D> gpu;
-  bool dirty = true;
-  bool complete = false;
-};
 
 // GL_CURRENT_BIT and what glBegin/glEnd reads.
 struct CurrentState {
@@ -101,12 +78,21 @@ struct ColorBufferState {
   bool alpha_test = false;
   GLenum alpha_func = GL_ALWAYS;
   float alpha_ref = 0.0f;
-  bool blend = false;
-  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;
+  // GL_BLEND and the colour write mask per draw buffer (glEnablei, glColorMaski); glEnable
+  // and glColorMask set them all, glIsEnabled and glGet read draw buffer 0's.
+  std::array<bool, kMaxDrawBuffers> blend{};
+  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;  // the RGB factors
+  GLenum blend_src_alpha = GL_ONE, blend_dst_alpha = GL_ZERO;
+  GLenum blend_eq = GL_FUNC_ADD, blend_eq_alpha = GL_FUNC_ADD;
+  glm::vec4 blend_color{0.0f};
   bool dither = true, logic_op = false;
   GLenum logic_op_mode = GL_COPY;
   glm::vec4 clear_color{0.0f};
-  std::array<bool, 4> color_mask{true, true, true, true};
+  std::array<std::array<bool, 4>, kMaxDrawBuffers> color_mask = [] {
+    std::array<std::array<bool, 4>, kMaxDrawBuffers> m;
+    for (auto& b : m) b = {true, true, true, true};
+    return m;
+  }();
   GLenum draw_buffer = GL_BACK;
 };
 
@@ -168,7 +154,10 @@ struct TransformState {
 
 struct TextureUnitState {
   bool enabled_2d = false;
-  GLuint bound_2d = 0;
+  // The texture bound to each target (null: the target's default texture, name 0), and the
+  // sampler object bound to the unit (null: none, the texture's own parameters).
+  std::array<TextureRef, kTexTargetCount> bound{};
+  SamplerRef sampler;
   GLenum env_mode = GL_MODULATE;
   glm::vec4 env_color{0.0f};
   std::array<bool, 4> gen_enabled{};  // S, T, R, Q
@@ -343,9 +332,55 @@ class Context {
   const glm::mat4& modelview() const { return matrices[0].back(); }
   const glm::mat4& projection() const { return matrices[1].back(); }
 
-  std::unordered_map<GLuint, TextureObject> textures;  // 0 is the default texture
-  TextureObject& bound_texture() { return textures[s.unit().bound_2d]; }
+  // Texture names: null until the name is first bound (glGenTextures reserves it).
+  std::unordered_map<GLuint, TextureRef> textures;
+  std::array<TextureRef, kTexTargetCount> default_textures;  // name 0 of each target
   GLuint next_texture_name = 1;
+  // The texture bound to a target of a unit (the default texture when none is).
+  TextureObject& bound_texture(TexTarget t, int unit) {
+    const TextureRef& r = s.units[size_t(unit)].bound[size_t(t)];
+    return r ? *r : *default_textures[size_t(t)];
+  }
+  TextureObject& bound_texture(TexTarget t = TexTarget::T2D) { return bound_texture(t, int(s.active_unit)); }
+  std::array<TextureRef, kTexTargetCount> proxy_textures;  // GL_PROXY_TEXTURE_*: sizes only
+  std::unordered_map<GLuint, SamplerRef> samplers;
+  // A texture's name is deleted: every binding of it in the units goes back to 0.
+  void texture_deleted(const TextureObject& t);
+
+  // Framebuffer and renderbuffer objects (api_framebuffer.cpp). Names map to null until
+  // first bound; draw_fbo/read_fbo null is the default (window) framebuffer.
+  std::unordered_map<GLuint, FramebufferRef> framebuffers;
+  std::unordered_map<GLuint, RenderbufferRef> renderbuffers;
+  GLuint next_framebuffer_name = 1, next_renderbuffer_name = 1;
+  FramebufferRef draw_fbo, read_fbo;
+  RenderbufferRef bound_renderbuffer;
+  // glCheckFramebufferStatus of a framebuffer object: §4.4.4's rules, then what the gpu layer
+  // cannot render to (GL_FRAMEBUFFER_UNSUPPORTED: 3D and array layers, integer colour
+  // formats, a level outside the texture's level chain, separate depth and stencil images).
+  GLenum framebuffer_status(FramebufferObject& f);
+  bool draw_framebuffer_complete() {
+    return !draw_fbo || framebuffer_status(*draw_fbo) == GL_FRAMEBUFFER_COMPLETE;
+  }
+  bool read_framebuffer_complete() {
+    return !read_fbo || framebuffer_status(*read_fbo) == GL_FRAMEBUFFER_COMPLETE;
+  }
+  // The gpu image of an attachment (texture level or renderbuffer); false when there is none.
+  bool gpu_image(const Attachment& a, gpu::Attachment& out);
+  // What pixel reads (glReadPixels, glCopyTex*, glBlitFramebuffer) read: the read
+  // framebuffer's read buffer and its depth (or depth-stencil) image.
+  gpu::Attachment read_color();
+  gpu::Attachment read_depth();
+  bool read_has_stencil();
+  // What draws write: whether the draw framebuffer has depth and stencil, and the channels
+  // each draw buffer's format stores (0 where there is no image).
+  struct TargetInfo {
+    bool depth = false, stencil = false;
+    std::array<uint8_t, kMaxDrawBuffers> channels{};
+  };
+  TargetInfo target_info() const;
+  // An object's name is deleted: detached from the bound framebuffers, unbound (§4.4.2.3).
+  void renderbuffer_deleted(const RenderbufferObject& r);
+  GLuint next_sampler_name = 1;
 
   // Display lists.
   std::unordered_map<GLuint, std::vector<ListCommand>> lists;
@@ -392,6 +427,8 @@ class Context {
 
   // The texture a draw reads, or nullptr when texturing is off or the texture is incomplete.
   TextureObject* texture_for_draw();
+  // The sampling parameters of a unit's texture: the unit's sampler object's, else its own.
+  const SamplerParams& sampler_params(int unit, const TextureObject& t) const;
 
   // Selection mode (select.cpp).
   GLenum render_mode() const { return render_mode_; }
@@ -464,7 +501,7 @@ class Context {
     CompatSnapshot state;
   };
   std::unordered_map<GLuint, CompatCache> compat_cache;  // by program name
-  std::vector<glsl::TextureBinding> texture_units_for_draw();
+  bool texture_units_for_draw(std::vector<glsl::TextureBinding>& units);
   std::vector<glsl::BufferBinding> uniform_buffers_for_draw() const;
   // Keeps a buffer a queued draw reads until the work has run.
   void keep_until_finished(std::unique_ptr<gpu::Buffer> b);
@@ -472,7 +509,9 @@ class Context {
   gpu::Context& gpu() { return *gpu_; }
   const gpu::Context& gpu() const { return *gpu_; }
   gpu::RenderState render_state(bool for_clear) const;
-  void bind_draw_target();
+  // Binds the draw framebuffer for a draw or clear. False (nothing must be drawn) when it is
+  // incomplete (GL_INVALID_FRAMEBUFFER_OPERATION is raised) or has no image to draw into.
+  bool bind_draw_target();
   const gpu::Framebuffer& framebuffer() const { return fb_; }
 
  private:
@@ -565,10 +604,6 @@ gpu::CompareFunc compare_of(GLenum f);
 // Linear interpolation of every value of two post-transform vertices (clipping, stipple).
 FFPostVertex lerp_post(const FFPostVertex& a, const FFPostVertex& b, float t);
 
-// Texture helpers (texture.cpp).
-bool rebuild_texture(TextureObject& t);
-// The sampler state of a texture object's parameters.
-gpu::SamplerState sampler_state_of(const TextureObject& t);
 // The gpu topology of a GL primitive mode; false for an invalid mode (GL_QUADS, GL_QUAD_STRIP
 // and GL_POLYGON are triangulated, `decompose`, and invalid in a core context).
 bool topology_of(GLenum mode, bool core, gpu::Topology& out, bool& decompose);

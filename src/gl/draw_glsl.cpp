@@ -410,29 +410,98 @@ void Context::draw_program_batch(const gpu::Buffer& vbuf, const gpu::DrawCall& c
 }
 
 void Context::run_program(const gpu::VertexLayout& layout, const gpu::DrawCall& call, gpu::RenderState rs) {
-  bind_draw_target();
+  if (!bind_draw_target()) return;
   feed_compat_state();
   rs.program_point_size = program_point_size;
   rs.depth_clamp = depth_clamp;
-  const std::vector<glsl::TextureBinding> units = texture_units_for_draw();
+  std::vector<glsl::TextureBinding> units;
+  if (!texture_units_for_draw(units)) return error(GL_INVALID_OPERATION);
   const std::vector<glsl::BufferBinding> ubos = uniform_buffers_for_draw();
   guarded([&] { executable->draw(*gpu_, layout, rs, call, units, ubos); });
 }
 
-std::vector<glsl::TextureBinding> Context::texture_units_for_draw() {
-  std::vector<glsl::TextureBinding> units(kMaxTextureUnits);
-  for (int i = 0; i < kMaxTextureUnits; ++i) {
-    const GLuint name = s.units[size_t(i)].bound_2d;
-    auto it = textures.find(name);
-    if (it == textures.end()) continue;
-    TextureObject& t = it->second;
-    if (t.dirty) rebuild_texture(t);
-    if (!t.complete || !t.gpu) continue;
-    glsl::TextureBinding& b = units[size_t(i)];
-    b.texture_2d = t.gpu.get();
-    b.sampler = sampler_state_of(t);
+namespace {
+
+// The texture target a sampler type reads (GL 3.3 Table 2.10); false for other types.
+bool sampler_target(uint32_t type, TexTarget& t) {
+  switch (type) {
+    case GL_SAMPLER_1D:
+    case GL_SAMPLER_1D_SHADOW:
+    case GL_INT_SAMPLER_1D:
+    case GL_UNSIGNED_INT_SAMPLER_1D: t = TexTarget::T1D; return true;
+    case GL_SAMPLER_2D:
+    case GL_SAMPLER_2D_SHADOW:
+    case GL_INT_SAMPLER_2D:
+    case GL_UNSIGNED_INT_SAMPLER_2D: t = TexTarget::T2D; return true;
+    case GL_SAMPLER_3D:
+    case GL_INT_SAMPLER_3D:
+    case GL_UNSIGNED_INT_SAMPLER_3D: t = TexTarget::T3D; return true;
+    case GL_SAMPLER_CUBE:
+    case GL_SAMPLER_CUBE_SHADOW:
+    case GL_INT_SAMPLER_CUBE:
+    case GL_UNSIGNED_INT_SAMPLER_CUBE: t = TexTarget::Cube; return true;
+    case GL_SAMPLER_1D_ARRAY:
+    case GL_SAMPLER_1D_ARRAY_SHADOW:
+    case GL_INT_SAMPLER_1D_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_1D_ARRAY: t = TexTarget::T1DArray; return true;
+    case GL_SAMPLER_2D_ARRAY:
+    case GL_SAMPLER_2D_ARRAY_SHADOW:
+    case GL_INT_SAMPLER_2D_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY: t = TexTarget::T2DArray; return true;
+    case GL_SAMPLER_2D_RECT:
+    case GL_SAMPLER_2D_RECT_SHADOW:
+    case GL_INT_SAMPLER_2D_RECT:
+    case GL_UNSIGNED_INT_SAMPLER_2D_RECT: t = TexTarget::Rect; return true;
+    case GL_SAMPLER_BUFFER:
+    case GL_INT_SAMPLER_BUFFER:
+    case GL_UNSIGNED_INT_SAMPLER_BUFFER: t = TexTarget::Buffer; return true;
+    default: return false;
   }
-  return units;
+}
+
+}  // namespace
+
+// The units the current program's samplers read, each with the texture of the sampler's
+// target. Two sampler types on one unit make the draw GL_INVALID_OPERATION (GL 3.3 §2.11.7);
+// an incomplete texture samples as (0, 0, 0, 1) (§3.8.14). Returns false on the error.
+bool Context::texture_units_for_draw(std::vector<glsl::TextureBinding>& units) {
+  units.assign(kMaxTextureUnits, glsl::TextureBinding{});
+  if (!executable) return true;
+  std::array<int8_t, kMaxTextureUnits> want;
+  want.fill(-1);
+  for (const glsl::Variable& v : executable->uniforms()) {
+    TexTarget target;
+    if (!sampler_target(v.type, target)) continue;
+    for (int e = 0; e < v.size; ++e) {
+      uint32_t unit = 0;
+      if (!executable->get_uniform_words(v.location + e, &unit) || unit >= uint32_t(kMaxTextureUnits))
+        continue;
+      if (want[unit] >= 0 && want[unit] != int8_t(target)) return false;
+      want[unit] = int8_t(target);
+    }
+  }
+  for (int i = 0; i < kMaxTextureUnits; ++i) {
+    if (want[size_t(i)] < 0) continue;
+    const TexTarget target = TexTarget(want[size_t(i)]);
+    TextureObject& t = bound_texture(target, i);
+    if (!update_gpu_texture(*this, t)) continue;
+    const SamplerParams& p = sampler_params(i, t);
+    if (!texture_complete(t, p)) continue;
+    glsl::TextureBinding& b = units[size_t(i)];
+    b.sampler = sampler_state_of(p, t);
+    b.swizzle = swizzle_of(t, core_profile);
+    switch (target) {
+      case TexTarget::T1D:
+      case TexTarget::T2D:
+      case TexTarget::Rect: b.texture_2d = t.tex2d.get(); break;
+      case TexTarget::T3D: b.texture_3d = t.tex3d.get(); break;
+      case TexTarget::Cube: b.texture_cube = t.cube.get(); break;
+      case TexTarget::T1DArray:
+      case TexTarget::T2DArray: b.texture_2d_array = t.array.get(); break;
+      case TexTarget::Buffer: b.texture_buffer = t.tbuf.get(); break;
+    }
+  }
+  return true;
 }
 
 std::vector<glsl::BufferBinding> Context::uniform_buffers_for_draw() const {

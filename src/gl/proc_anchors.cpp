@@ -16,7 +16,8 @@ extern void (*const kProcAnchors[])();
     reinterpret_cast<void (*)()>(&glGenTextures),   reinterpret_cast<void (*)()>(&glAccum),
     reinterpret_cast<void (*)()>(&glBegin),         reinterpret_cast<void (*)()>(&glDrawArraysInstanced),
     reinterpret_cast<void (*)()>(&glMap1d),         reinterpret_cast<void (*)()>(&glFeedbackBuffer),
-    reinterpret_cast<void (*)()>(&glRenderMode),
+    reinterpret_cast<void (*)()>(&glRenderMode),    reinterpret_cast<void (*)()>(&glTexEnvf),
+    reinterpret_cast<void (*)()>(&glGenSamplers),   reinterpret_cast<void (*)()>(&glGenFramebuffers),
 };
 
 }  // namespace tessel::gl

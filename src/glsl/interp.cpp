@@ -615,7 +615,7 @@ bool texture_2d_implicit(const ir::TexOp& t) {
 
 void run_texture_2d_implicit(const ir::TexOp& t, const RunInputs& in, TexLanes& tl) {
   const TextureUnit* unit = unit_of(t, in);
-  if (unit && unit->texture_2d) {
+  if (unit && unit->texture_2d && !unit->swizzled()) {
     texture_2d_rows(gpu::Sampler2D{unit->texture_2d, unit->sampler}, tl);
     return;
   }
@@ -626,7 +626,7 @@ void run_texture_2d_implicit(const ir::TexOp& t, const RunInputs& in, TexLanes& 
 
 void run_texture_2d_implicit_pair(const ir::TexOp& t, const RunInputs& in, TexLanes& a, TexLanes& b) {
   const TextureUnit* unit = unit_of(t, in);
-  if (unit && unit->texture_2d) {
+  if (unit && unit->texture_2d && !unit->swizzled()) {
     texture_2d_rows_pair(gpu::Sampler2D{unit->texture_2d, unit->sampler}, a, b);
     return;
   }
@@ -634,10 +634,28 @@ void run_texture_2d_implicit_pair(const ir::TexOp& t, const RunInputs& in, TexLa
   run_texture_2d_implicit(t, in, b);
 }
 
+static void run_texture_unswizzled(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl);
+
+// The lookup, then the unit's swizzle (GL 3.3 §3.8.14): on sampled and fetched texels, not on
+// textureSize's.
 void run_texture(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl) {
+  run_texture_unswizzled(t, in_, tl);
+  if (t.kind == ir::TexKind::Size) return;
+  const TextureUnit* unit = unit_of(t, in_);
+  if (!unit || !unit->swizzled()) return;
+  alignas(64) uint32_t src[4][ir::kLanes];
+  std::memcpy(src, tl.out, sizeof src);
+  const uint32_t one = t.result == 0 ? 0x3F800000u : 1u;
+  for (int k = 0; k < 4; ++k) {
+    const uint8_t sw = unit->swizzle[size_t(k)];
+    for (int l = 0; l < L; ++l) tl.out[k][l] = sw < 4 ? src[sw][l] : (sw == 4 ? 0u : one);
+  }
+}
+
+static void run_texture_unswizzled(const ir::TexOp& t, const RunInputs& in_, TexLanes& tl) {
   if (in_.fragment && texture_2d_implicit(t)) {
     const TextureUnit* unit = unit_of(t, in_);
-    if (unit && unit->texture_2d) {
+    if (unit && unit->texture_2d && !unit->swizzled()) {
       texture_2d_rows(gpu::Sampler2D{unit->texture_2d, unit->sampler}, tl);
       return;
     }

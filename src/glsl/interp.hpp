@@ -2,6 +2,7 @@
 // (every operation written once, lane by lane, for clarity) that the tests compare with.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct TextureUnit {
   const gpu::Texture3D* texture_3d = nullptr;
   const gpu::Texture2DArray* texture_2d_array = nullptr;
   const gpu::TextureBuffer* texture_buffer = nullptr;
+  // GL_TEXTURE_SWIZZLE_*: each result component from 0-3 (R, G, B, A), 4 (zero) or 5 (one).
+  std::array<uint8_t, 4> swizzle{0, 1, 2, 3};
+  bool swizzled() const { return swizzle != std::array<uint8_t, 4>{0, 1, 2, 3}; }
 };
 
 struct alignas(64) LaneReg {

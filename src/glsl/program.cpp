@@ -812,8 +812,8 @@ std::shared_ptr<const gpu::RuntimeShader> Program::bind(
   std::vector<TextureUnit> u;
   u.reserve(units.size());
   for (const TextureBinding& b : units)
-    u.push_back(
-        {b.texture_2d, b.texture_cube, b.sampler, b.texture_3d, b.texture_2d_array, b.texture_buffer});
+    u.push_back({b.texture_2d, b.texture_cube, b.sampler, b.texture_3d, b.texture_2d_array, b.texture_buffer,
+                 b.swizzle});
   std::vector<uint32_t> values = m.values;
   for (size_t i = 0; i < m.blocks.size(); ++i) {
     const UniformBlockLayout& bl = m.layout.blocks[i];

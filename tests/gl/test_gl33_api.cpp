@@ -366,8 +366,10 @@ TEST_F(GL33Test, MipmapsAreGeneratedFromTheBaseLevel) {
   glGenerateMipmap(GL_TEXTURE_2D);  // no base level yet
   EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
-  glGenerateMipmap(GL_TEXTURE_3D);
+  glGenerateMipmap(GL_TEXTURE_RECTANGLE);  // rectangles have no mipmaps
   EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glGenerateMipmap(GL_TEXTURE_3D);  // the 3D texture has no base level
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
   glGenerateMipmap(GL_TEXTURE_2D);
   EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
   glBindTexture(GL_TEXTURE_2D, t[1]);

@@ -14,6 +14,7 @@
 // (gl_Vertex, gl_ModelViewMatrix, ...) as attributes and uniforms of those names.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -82,6 +83,9 @@ struct TextureBinding {
   const gpu::Texture3D* texture_3d = nullptr;
   const gpu::Texture2DArray* texture_2d_array = nullptr;
   const gpu::TextureBuffer* texture_buffer = nullptr;
+  // GL_TEXTURE_SWIZZLE_R..A: result component i is component swizzle[i] of the texel
+  // (0-3 = R, G, B, A), or 0 (4) or 1 (5).
+  std::array<uint8_t, 4> swizzle{0, 1, 2, 3};
 };
 
 // A range of a buffer bound to a uniform buffer binding point (glBindBufferRange).
