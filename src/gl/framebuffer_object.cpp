@@ -63,10 +63,10 @@ GLenum FramebufferObject::status() const {
   if (GLenum e = check(depth, 1); e != GL_FRAMEBUFFER_COMPLETE) return e;
   if (GLenum e = check(stencil, 2); e != GL_FRAMEBUFFER_COMPLETE) return e;
   if (!any) return GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT;
-  for (GLenum db : draw_buffers)
-    if (db != GL_NONE && !color[db - GL_COLOR_ATTACHMENT0]) return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
-  if (read_buffer != GL_NONE && !color[read_buffer - GL_COLOR_ATTACHMENT0])
-    return GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER;
+  // GL 3.3's FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER and _READ_BUFFER are not reported: Mesa drops
+  // them with ARB_ES2_compatibility (as GL 4.1 does), and programs written against it (seed
+  // 001's FBO example among them) leave the read buffer at an empty COLOR_ATTACHMENT0. A draw
+  // buffer without an image is not written; reading from one is GL_INVALID_OPERATION.
   return GL_FRAMEBUFFER_COMPLETE;
 }
 

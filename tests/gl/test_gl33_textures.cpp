@@ -419,7 +419,15 @@ TEST_F(TexTest, RenderToTexturesWithMrtAndDepth) {
   glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1,
                                         GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
   EXPECT_EQ(type, GL_NONE);
-  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER));
+  // Draw buffer 1 has no image now: not an incomplete framebuffer (as Mesa with
+  // ARB_ES2_compatibility), and reading from it is an error.
+  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  pixel(0, 0);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  // An attachment without an image is: draws and clears are GL_INVALID_FRAMEBUFFER_OPERATION.
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, 0, 0);
+  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT));
   glClear(GL_COLOR_BUFFER_BIT);
   EXPECT_EQ(err(), GLenum(GL_INVALID_FRAMEBUFFER_OPERATION));
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -513,10 +521,10 @@ TEST_F(TexTest, FramebufferCompletenessAndErrors) {
   EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT));
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
   EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
-  // A draw buffer naming an empty attachment point.
+  // A draw buffer naming an empty attachment point: complete (see RenderToTexturesWithMrtAndDepth).
   const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT3};
   glDrawBuffers(2, two);
-  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER));
+  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
   const GLenum dup[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT0};
   glDrawBuffers(2, dup);
   EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));

@@ -120,6 +120,43 @@ static inline void mat_transpose(float* out, const float* m) {
   memcpy(out, r, sizeof r);
 }
 
+/* gluLookAt's matrix: the eye at e looking at c, up u. */
+static inline void mat_lookat(float* m, float ex, float ey, float ez, float cx, float cy, float cz, float ux,
+                              float uy, float uz) {
+  float f[3] = {cx - ex, cy - ey, cz - ez}, s[3], u[3], l;
+  int i;
+  l = (float)sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+  for (i = 0; i < 3; ++i) f[i] /= l;
+  s[0] = f[1] * uz - f[2] * uy;
+  s[1] = f[2] * ux - f[0] * uz;
+  s[2] = f[0] * uy - f[1] * ux;
+  l = (float)sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+  for (i = 0; i < 3; ++i) s[i] /= l;
+  u[0] = s[1] * f[2] - s[2] * f[1];
+  u[1] = s[2] * f[0] - s[0] * f[2];
+  u[2] = s[0] * f[1] - s[1] * f[0];
+  mat_identity(m);
+  for (i = 0; i < 3; ++i) {
+    m[i * 4 + 0] = s[i];
+    m[i * 4 + 1] = u[i];
+    m[i * 4 + 2] = -f[i];
+  }
+  m[12] = -(s[0] * ex + s[1] * ey + s[2] * ez);
+  m[13] = -(u[0] * ex + u[1] * ey + u[2] * ez);
+  m[14] = f[0] * ex + f[1] * ey + f[2] * ez;
+}
+
+/* glOrtho's matrix. */
+static inline void mat_ortho(float* m, float l, float r, float b, float t, float n, float f) {
+  mat_identity(m);
+  m[0] = 2.0f / (r - l);
+  m[5] = 2.0f / (t - b);
+  m[10] = -2.0f / (f - n);
+  m[12] = -(r + l) / (r - l);
+  m[13] = -(t + b) / (t - b);
+  m[14] = -(f + n) / (f - n);
+}
+
 /* A UV sphere of radius 1: positions (= normals) and indices of triangles. */
 #define SPHERE_SLICES 32
 #define SPHERE_STACKS 16
