@@ -328,10 +328,26 @@ std::string find_peer(const BenchOptions& o) {
   return "tessel_peer";  // from PATH
 }
 
-// One scene on llvmpipe, in a child process (so its memory is its own).
+// The folder of Tessel's libEGL.so.1 and libOpenGL.so.0: --glvnd-path, else the build's.
+std::string find_glvnd(const BenchOptions& o) {
+  namespace fs = std::filesystem;
+  if (!o.glvnd_path.empty()) return o.glvnd_path;
+  std::error_code ec;
+  const fs::path self = fs::canonical("/proc/self/exe", ec);
+  if (!ec)
+    for (const fs::path& p : {self.parent_path() / "glvnd", self.parent_path().parent_path() / "glvnd"})
+      if (fs::exists(p / "libOpenGL.so.0", ec)) return p.string();
+  throw std::runtime_error(
+      "--api gl33: Tessel's libOpenGL.so.0 was not found (build the tessel_libegl target, "
+      "or give --glvnd-path)");
+}
+
+// One scene through the peer program, in a child process (so its memory is its own): on
+// llvmpipe, or with `ld_path` on the GL libraries found there (Tessel's).
 Run run_peer(const std::string& peer, const scenes::Scene& s, int threads, int frames, int warmup,
-             bool instanced, const std::string& image) {
+             bool instanced, const std::string& image, const std::string& ld_path = "") {
   std::ostringstream cmd;
+  if (!ld_path.empty()) cmd << "LD_LIBRARY_PATH=" << quote(ld_path) << " TESSEL_THREADS=" << threads << " ";
   cmd << quote(peer) << " --scene " << quote(s.name) << " --size " << s.width << "x" << s.height
       << " --threads " << threads << " --frames " << frames << " --warmup " << warmup
       << (instanced ? " --instanced" : "") << " --image " << quote(image) << " 2>&1";
@@ -344,10 +360,15 @@ Run run_peer(const std::string& peer, const scenes::Scene& s, int threads, int f
   const auto brace = out.rfind("{\"scene\"");
   if (status != 0 || brace == std::string::npos) {
     while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
-    throw std::runtime_error("the llvmpipe peer failed (" + peer + "): " + (out.empty() ? "no output" : out));
+    throw std::runtime_error(std::string(ld_path.empty() ? "the llvmpipe peer" : "the peer on Tessel's GL") +
+                             " failed (" + peer + "): " + (out.empty() ? "no output" : out));
   }
   const std::string json = out.substr(brace);
-  Run r = start_run("llvmpipe", s, threads);
+  const std::string renderer = json_field(json, "renderer");
+  if (!ld_path.empty() && renderer.find("Tessel") == std::string::npos)
+    throw std::runtime_error("the peer did not run on Tessel's GL from " + ld_path +
+                             " (renderer: " + renderer + ")");
+  Run r = start_run(ld_path.empty() ? "llvmpipe" : "tessel-gl33", s, threads);
   r.ms_median = std::strtod(json_field(json, "ms_median").c_str(), nullptr);
   r.peak_rss_mb = std::strtod(json_field(json, "peak_rss_mb").c_str(), nullptr);
   r.image = image;
@@ -413,13 +434,23 @@ int run_bench(const BenchOptions& o) {
     temp_dir = image_dir = tmpl;
   }
   if (!image_dir.empty()) fs::create_directories(image_dir);
+  const bool api_gl33 = o.api == "gl33";
+  if (api_gl33 && !o.peer)
+    return run_bench([&] {
+      BenchOptions p = o;
+      p.peer = true;
+      return p;
+    }());
   const std::string peer = o.peer ? find_peer(o) : "";
+  const std::string glvnd = api_gl33 ? find_glvnd(o) : "";
 
   if (o.shaders != "cpp" && o.shaders != "glsl")
     throw std::runtime_error("--shaders must be cpp or glsl, not " + o.shaders);
   const bool glsl_shaders = o.shaders == "glsl";
   std::printf("CPU: %s\n", cpu_flags().c_str());
-  if (glsl_shaders)
+  if (api_gl33)
+    std::printf("Tessel runs the peer program itself on its libEGL/libOpenGL (%s)\n", glvnd.c_str());
+  else if (glsl_shaders)
     std::printf("Tessel runs the peer's GLSL (tessel::glsl); fixed-100k stays fixed function\n");
   std::printf("%d frames after %d warm-up frames; ms = median per frame\n\n", o.frames, o.warmup);
   if (o.peer)
@@ -450,8 +481,20 @@ int run_bench(const BenchOptions& o) {
         const scenes::Scene s = scenes::make_scene(name, w, h);
         std::string stem = name;
         if (several) stem += "_" + std::to_string(w) + "x" + std::to_string(h) + "_t" + std::to_string(t);
-        Run mine = run_tessel(s, t, o.frames, o.warmup, o.instanced, glsl_shaders);
-        if (!image_dir.empty()) {
+        Run mine;
+        if (api_gl33) {
+          try {
+            mine = run_peer(peer, s, t, o.frames, o.warmup, o.instanced,
+                            (fs::path(image_dir) / (stem + ".png")).string(), glvnd);
+          } catch (const std::exception& e) {
+            std::fprintf(stderr, "tessel bench: %s\n", e.what());
+            ++failures;
+            continue;
+          }
+        } else {
+          mine = run_tessel(s, t, o.frames, o.warmup, o.instanced, glsl_shaders);
+        }
+        if (!image_dir.empty() && !api_gl33) {
           mine.image = (fs::path(image_dir) / (stem + ".png")).string();
           write_png(mine.image, w, h, 4, mine.rgba.data());
         }

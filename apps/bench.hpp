@@ -20,6 +20,11 @@ struct BenchOptions {
   std::string images;            // write images into this folder
   double max_diff_percent = -1;  // with peer: fail when more pixels than this differ by > 2/255
   std::string shaders = "cpp";   // "cpp": the C++ shader; "glsl": the peer's GLSL through tessel::glsl
+  // "engine": Tessel's side is the engine in this process (the shaders above). "gl33": Tessel's
+  // side is the peer program itself, unchanged, on Tessel's libEGL.so.1 and libOpenGL.so.0
+  // (LD_LIBRARY_PATH=glvnd_path): the same GL calls and the same GLSL as on llvmpipe.
+  std::string api = "engine";
+  std::string glvnd_path;  // empty: the build's glvnd folder next to this program
 };
 
 // Runs the benchmark and prints its table; returns the process exit code. Throws on errors

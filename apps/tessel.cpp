@@ -76,6 +76,15 @@ int main(int argc, char** argv) {
                    "cpp: Tessel's C++ shader; glsl: the peer's GLSL, compiled by tessel::glsl")
       ->check(CLI::IsMember({"cpp", "glsl"}))
       ->capture_default_str();
+  bench
+      ->add_option("--api", bo.api,
+                   "engine: Tessel's engine in this process; gl33: the peer program itself on Tessel's "
+                   "libEGL/libOpenGL (same GL calls and GLSL as on llvmpipe; implies --peer)")
+      ->check(CLI::IsMember({"engine", "gl33"}))
+      ->capture_default_str();
+  bench->add_option("--glvnd-path", bo.glvnd_path,
+                    "With --api gl33: the folder of Tessel's libEGL.so.1 and libOpenGL.so.0 (default: the "
+                    "build's glvnd folder)");
   bench->add_flag("--peer", bo.peer,
                   "Also run each scene on Mesa llvmpipe (tessel_peer), alternating, and compare");
   bench->add_option("--peer-path", bo.peer_path,

@@ -258,7 +258,8 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string* why, const
     }
 
     const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (!renderer || !std::strstr(renderer, "llvmpipe")) {
+    const bool tessel = options.accept_tessel && renderer && std::strstr(renderer, "Tessel");
+    if (!renderer || (!std::strstr(renderer, "llvmpipe") && !tessel)) {
       *why = std::string("GL_RENDERER is '") + (renderer ? renderer : "(null)") +
              "', not llvmpipe (check LIBGL_ALWAYS_SOFTWARE / GALLIUM_DRIVER)";
       return nullptr;

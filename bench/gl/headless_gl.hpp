@@ -20,6 +20,10 @@ struct HeadlessOptions {
   bool compat_fallback = false;
   // Ask for a compatibility-profile context first (for OpenGL 1.x fixed function).
   bool compat_profile = false;
+  // Accept Tessel's own GL as well as llvmpipe (the peer run on Tessel's libEGL.so.1 and
+  // libOpenGL.so.0 by LD_LIBRARY_PATH, as `tessel bench --api gl33` does). Any other
+  // renderer (a hardware driver) is refused either way.
+  bool accept_tessel = false;
 };
 
 // A desktop GL 3.3 context on Mesa llvmpipe, current on the creating thread, with no surface

@@ -253,6 +253,7 @@ int run(const Options& opt, const scenes::Scene& scene) {
   std::string why;
   tessel::gl::HeadlessOptions hopt;
   hopt.compat_profile = scene.fixed_function;  // fixed function needs a compatibility context
+  hopt.accept_tessel = true;                   // this binary also runs on Tessel's libraries
   const auto gl = tessel::gl::HeadlessContext::create(&why, hopt);
   if (!gl) throw std::runtime_error(why);
   const std::string renderer = gl->renderer();

@@ -300,7 +300,11 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
     const gpu::Attachment src = c.read_depth();
     const gpu::Attachment dst = fb.depth;
     if (src.texture && dst.texture) {
-      if (src.texture->format() != dst.texture->format()) return c.error(GL_INVALID_OPERATION);
+      // The depth formats must match in bits and kind (as Mesa checks): D24 with D24S8 is
+      // fine, float depth with fixed-point is not.
+      const bool src_float = src.texture->format() == gpu::Format::Depth32F;
+      const bool dst_float = dst.texture->format() == gpu::Format::Depth32F;
+      if (src_float != dst_float) return c.error(GL_INVALID_OPERATION);
       passes.push_back({src, dst, true});
     }
   }

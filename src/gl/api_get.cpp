@@ -4,6 +4,7 @@
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -93,6 +94,13 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_MAX_COLOR_ATTACHMENTS: return n(kMaxColorAttachments), true;
     case GL_MAX_RENDERBUFFER_SIZE: return n(kMaxRenderbufferSize), true;
     case GL_MAX_SAMPLES: return n(kMaxSamples), true;
+    case GL_TIMESTAMP:
+      c.touch();
+      c.finish();
+      return n(double(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                          std::chrono::steady_clock::now().time_since_epoch())
+                          .count())),
+             true;
     case GL_SAMPLER_BINDING: return n(c.s.unit().sampler ? c.s.unit().sampler->name : 0), true;
     case GL_MAX_3D_TEXTURE_SIZE: return n(kMax3DTextureSize), true;
     case GL_MAX_ARRAY_TEXTURE_LAYERS: return n(kMaxArrayTextureLayers), true;

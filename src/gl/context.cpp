@@ -174,6 +174,7 @@ bool same_attachment(const gpu::Attachment& a, const gpu::Attachment& b) {
 }  // namespace
 
 bool Context::bind_draw_target() {
+  if (conditional_render_skips()) return false;
   if (!draw_fbo) {
     const GLenum target = s.color.draw_buffer;
     if (fb_target_ == target && gpu_->framebuffer() == &fb_) return true;

@@ -220,6 +220,13 @@ struct GenericDraw {
   GLint base_vertex = 0;
 };
 
+// A query object (GL 3.3 §2.14): its target, and the counters when it began.
+struct QueryObject {
+  GLenum target = 0;
+  uint64_t start_samples = 0, start_primitives = 0, start_ns = 0;
+  uint64_t result = 0;
+};
+
 // The server state (what glPushAttrib saves), group by group.
 struct ServerState {
   CurrentState current;
@@ -346,6 +353,17 @@ class Context {
   std::unordered_map<GLuint, SamplerRef> samplers;
   // A texture's name is deleted: every binding of it in the units goes back to 0.
   void texture_deleted(const TextureObject& t);
+
+  // Queries, conditional rendering and sync objects (api_query.cpp). Query names map to null
+  // until glBeginQuery makes the object; one active query per target (samples passed, any
+  // samples passed, primitives generated, transform feedback primitives, time elapsed).
+  std::unordered_map<GLuint, std::shared_ptr<QueryObject>> queries;
+  GLuint next_query_name = 1;
+  std::array<QueryObject*, 5> active_queries{};
+  std::shared_ptr<QueryObject> conditional_query;  // between glBegin/EndConditionalRender
+  std::unordered_map<GLsync, std::shared_ptr<void>> syncs;
+  // Whether conditional rendering skips draws and clears now (its query counted nothing).
+  bool conditional_render_skips();
 
   // Framebuffer and renderbuffer objects (api_framebuffer.cpp). Names map to null until
   // first bound; draw_fbo/read_fbo null is the default (window) framebuffer.

@@ -1,7 +1,8 @@
 // Textures, samplers and framebuffer objects of GL 3.3: every texture target sampled by a
 // GLSL program, internal formats (what is stored, what reads back), sampler objects,
 // swizzles, depth comparison, render to texture with MRT, renderbuffers, completeness,
-// glClearBuffer and glBlitFramebuffer, and their errors. Also built with AddressSanitizer.
+// glClearBuffer and glBlitFramebuffer, queries, conditional rendering and sync objects, and
+// their errors. Also built with AddressSanitizer.
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 
@@ -662,6 +663,96 @@ TEST_F(TexTest, BlendEquationsAndSeparateFunctions) {
   EXPECT_EQ(m[1], GL_FALSE);
   glColorMaski(8, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+}
+
+// Occlusion and primitive queries count what the pipeline did; conditional rendering skips
+// draws after a query that counted nothing; fences are signaled.
+TEST_F(TexTest, QueriesConditionalRenderingAndSyncs) {
+  GLuint q[3];
+  glGenQueries(3, q);
+  EXPECT_FALSE(glIsQuery(q[0]));  // a name until glBeginQuery
+  glBeginQuery(GL_SAMPLES_PASSED, q[0]);
+  EXPECT_TRUE(glIsQuery(q[0]));
+  GLint current = 0;
+  glGetQueryiv(GL_SAMPLES_PASSED, GL_CURRENT_QUERY, &current);
+  EXPECT_EQ(GLuint(current), q[0]);
+  glBeginQuery(GL_SAMPLES_PASSED, q[1]);  // one active query per target
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  GLuint result = 0;
+  glGetQueryObjectuiv(q[0], GL_QUERY_RESULT, &result);  // not while active
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  // The left half of the 32x32 window: 512 samples.
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, 0, 16, 32);
+  draw_quad("out vec4 c;", "c = vec4(1.0);");
+  glDisable(GL_SCISSOR_TEST);
+  glEndQuery(GL_SAMPLES_PASSED);
+  glGetQueryObjectuiv(q[0], GL_QUERY_RESULT_AVAILABLE, &result);
+  EXPECT_EQ(result, 1u);
+  glGetQueryObjectuiv(q[0], GL_QUERY_RESULT, &result);
+  EXPECT_EQ(result, 512u);
+  glBeginQuery(GL_TIME_ELAPSED, q[0]);  // a query keeps its target
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  // Nothing passes the depth test: zero, and the conditional draw is skipped.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_NEVER);
+  glBeginQuery(GL_ANY_SAMPLES_PASSED, q[1]);
+  draw_quad("out vec4 c;", "c = vec4(1.0);");
+  glEndQuery(GL_ANY_SAMPLES_PASSED);
+  glDisable(GL_DEPTH_TEST);
+  GLuint64 any = 7;
+  glGetQueryObjectui64v(q[1], GL_QUERY_RESULT, &any);
+  EXPECT_EQ(any, 0u);
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBeginConditionalRender(q[1], GL_QUERY_WAIT);
+  draw_quad("out vec4 c;", "c = vec4(1.0);");
+  glEndConditionalRender();
+  EXPECT_PX(pixel(16, 16), 0, 0, 0, 255);
+  glBeginConditionalRender(q[0], GL_QUERY_WAIT);
+  draw_quad("out vec4 c;", "c = vec4(1.0);");
+  glEndConditionalRender();
+  EXPECT_PX(pixel(16, 16), 255, 255, 255, 255);
+  glEndConditionalRender();
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  // Primitives generated: two triangles of the strip.
+  glBeginQuery(GL_PRIMITIVES_GENERATED, q[2]);
+  draw_quad("out vec4 c;", "c = vec4(1.0);");
+  glEndQuery(GL_PRIMITIVES_GENERATED);
+  glGetQueryObjectuiv(q[2], GL_QUERY_RESULT, &result);
+  EXPECT_EQ(result, 2u);
+  glEndQuery(GL_PRIMITIVES_GENERATED);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glBeginQuery(0x1234, q[2]);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glDeleteQueries(3, q);
+  EXPECT_FALSE(glIsQuery(q[0]));
+  // Timer: a timestamp later than one before it.
+  GLint64 t0 = 0, t1 = 0;
+  glGetInteger64v(GL_TIMESTAMP, &t0);
+  GLuint tq;
+  glGenQueries(1, &tq);
+  glQueryCounter(tq, GL_TIMESTAMP);
+  glGetQueryObjecti64v(tq, GL_QUERY_RESULT, &t1);
+  EXPECT_GE(t1, t0);
+  glDeleteQueries(1, &tq);
+  // Syncs.
+  GLsync s = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+  ASSERT_NE(s, nullptr);
+  EXPECT_TRUE(glIsSync(s));
+  EXPECT_EQ(glClientWaitSync(s, GL_SYNC_FLUSH_COMMANDS_BIT, 1000000), GLenum(GL_ALREADY_SIGNALED));
+  GLint status = 0;
+  GLsizei len = 0;
+  glGetSynciv(s, GL_SYNC_STATUS, 1, &len, &status);
+  EXPECT_EQ(status, GL_SIGNALED);
+  glWaitSync(s, 1, GL_TIMEOUT_IGNORED);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glDeleteSync(s);
+  EXPECT_FALSE(glIsSync(s));
+  glDeleteSync(s);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(glFenceSync(0x1234, 0), nullptr);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
 }
 
 // Random texture and framebuffer calls, valid and not: never a crash (with ASan), every
