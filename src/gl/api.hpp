@@ -77,7 +77,11 @@ bool generic_draw(Context& c);
 void array_element(Context& c, GLint i);
 void raster_pos(Context& c, float x, float y, float z, float w);
 void mult_matrix(Context& c, const glm::mat4& m);
+void load_matrix(Context& c, const glm::mat4& m);
 void clear_accum_buffer(Context& c);
+// The four components of a packed GL_INT_2_10_10_10_REV / GL_UNSIGNED_INT_2_10_10_10_REV value
+// (GL 3.3 §2.8.2), x in the low bits (draw_glsl.cpp).
+void unpack_2_10_10_10(uint32_t w, bool is_signed, bool normalized, float* out);
 
 inline bool is_finite4(float a, float b, float c, float d) {
   return std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && std::isfinite(d);

@@ -252,6 +252,13 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_STENCIL_FAIL: e(s.stencil.fail); return true;
     case GL_STENCIL_PASS_DEPTH_FAIL: e(s.stencil.zfail); return true;
     case GL_STENCIL_PASS_DEPTH_PASS: e(s.stencil.zpass); return true;
+    case GL_STENCIL_BACK_FUNC: e(s.stencil.back_func); return true;
+    case GL_STENCIL_BACK_VALUE_MASK: put(out, {double(s.stencil.back_value_mask)}); return true;
+    case GL_STENCIL_BACK_REF: put(out, {double(s.stencil.back_ref)}); return true;
+    case GL_STENCIL_BACK_WRITEMASK: put(out, {double(s.stencil.back_write_mask)}); return true;
+    case GL_STENCIL_BACK_FAIL: e(s.stencil.back_fail); return true;
+    case GL_STENCIL_BACK_PASS_DEPTH_FAIL: e(s.stencil.back_zfail); return true;
+    case GL_STENCIL_BACK_PASS_DEPTH_PASS: e(s.stencil.back_zpass); return true;
     case GL_DEPTH_TEST: b(s.depth.test); return true;
     case GL_DEPTH_FUNC: e(s.depth.func); return true;
     case GL_BLEND: b(s.color.blend[0]); return true;

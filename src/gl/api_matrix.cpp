@@ -18,6 +18,12 @@ void mult_matrix(Context& c, const glm::mat4& m) {
   c.top() = c.top() * m;
 }
 
+void load_matrix(Context& c, const glm::mat4& m) {
+  GL_OUTSIDE_BEGIN();
+  c.touch();
+  c.top() = m;
+}
+
 namespace {
 
 void matrix_mode(Context& c, GLenum mode) {
@@ -27,12 +33,6 @@ void matrix_mode(Context& c, GLenum mode) {
     return;
   }
   c.s.transform.matrix_mode = mode;
-}
-
-void load_matrix(Context& c, const glm::mat4& m) {
-  GL_OUTSIDE_BEGIN();
-  c.touch();
-  c.top() = m;
 }
 
 void push_matrix(Context& c) {

@@ -140,26 +140,36 @@ void depth_func(Context& c, GLenum f) {
 
 bool valid_stencil_op(GLenum op) {
   return op == GL_KEEP || op == GL_ZERO || op == GL_REPLACE || op == GL_INCR || op == GL_DECR ||
-         op == GL_INVERT;
+         op == GL_INVERT || op == GL_INCR_WRAP || op == GL_DECR_WRAP;
 }
 
-void stencil_func(Context& c, GLenum f, GLint ref, GLuint mask) {
+// Which faces a glStencil*Separate call sets; false for a bad face (GL_INVALID_ENUM).
+bool stencil_faces(GLenum face, bool& front, bool& back) {
+  front = face == GL_FRONT || face == GL_FRONT_AND_BACK;
+  back = face == GL_BACK || face == GL_FRONT_AND_BACK;
+  return front || back;
+}
+
+void stencil_func(Context& c, GLenum face, GLenum f, GLint ref, GLuint mask) {
   GL_OUTSIDE_BEGIN();
-  if (f < GL_NEVER || f > GL_ALWAYS) return c.error(GL_INVALID_ENUM);
+  bool front, back;
+  if (!stencil_faces(face, front, back) || f < GL_NEVER || f > GL_ALWAYS) return c.error(GL_INVALID_ENUM);
   c.touch();
-  c.s.stencil.func = f;
-  c.s.stencil.ref = ref;
-  c.s.stencil.value_mask = mask;
+  StencilState& st = c.s.stencil;
+  if (front) st.func = f, st.ref = ref, st.value_mask = mask;
+  if (back) st.back_func = f, st.back_ref = ref, st.back_value_mask = mask;
 }
 
-void stencil_op(Context& c, GLenum fail, GLenum zfail, GLenum zpass) {
+void stencil_op(Context& c, GLenum face, GLenum fail, GLenum zfail, GLenum zpass) {
   GL_OUTSIDE_BEGIN();
-  if (!valid_stencil_op(fail) || !valid_stencil_op(zfail) || !valid_stencil_op(zpass))
+  bool front, back;
+  if (!stencil_faces(face, front, back) || !valid_stencil_op(fail) || !valid_stencil_op(zfail) ||
+      !valid_stencil_op(zpass))
     return c.error(GL_INVALID_ENUM);
   c.touch();
-  c.s.stencil.fail = fail;
-  c.s.stencil.zfail = zfail;
-  c.s.stencil.zpass = zpass;
+  StencilState& st = c.s.stencil;
+  if (front) st.fail = fail, st.zfail = zfail, st.zpass = zpass;
+  if (back) st.back_fail = fail, st.back_zfail = zfail, st.back_zpass = zpass;
 }
 
 void scissor(Context& c, GLint x, GLint y, GLsizei w, GLsizei h) {
@@ -251,10 +261,13 @@ void depth_mask(Context& c, bool m) {
   c.s.depth.mask = m;
 }
 
-void stencil_mask(Context& c, GLuint m) {
+void stencil_mask(Context& c, GLenum face, GLuint m) {
   GL_OUTSIDE_BEGIN();
+  bool front, back;
+  if (!stencil_faces(face, front, back)) return c.error(GL_INVALID_ENUM);
   c.touch();
-  c.s.stencil.write_mask = m;
+  if (front) c.s.stencil.write_mask = m;
+  if (back) c.s.stencil.back_write_mask = m;
 }
 
 void clear(Context& c, GLbitfield mask) {
@@ -556,11 +569,20 @@ void GLAPIENTRY glBlendEquationSeparate(GLenum rgb, GLenum alpha) { SIMPLE(blend
 void GLAPIENTRY glBlendColor(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { SIMPLE(blend_color, r, g, b, a); }
 void GLAPIENTRY glDepthFunc(GLenum f) { SIMPLE(depth_func, f); }
 void GLAPIENTRY glDepthMask(GLboolean m) { SIMPLE(depth_mask, m != GL_FALSE); }
-void GLAPIENTRY glStencilFunc(GLenum f, GLint ref, GLuint mask) { SIMPLE(stencil_func, f, ref, mask); }
-void GLAPIENTRY glStencilOp(GLenum fail, GLenum zfail, GLenum zpass) {
-  SIMPLE(stencil_op, fail, zfail, zpass);
+void GLAPIENTRY glStencilFunc(GLenum f, GLint ref, GLuint mask) {
+  SIMPLE(stencil_func, GL_FRONT_AND_BACK, f, ref, mask);
 }
-void GLAPIENTRY glStencilMask(GLuint m) { SIMPLE(stencil_mask, m); }
+void GLAPIENTRY glStencilFuncSeparate(GLenum face, GLenum f, GLint ref, GLuint mask) {
+  SIMPLE(stencil_func, face, f, ref, mask);
+}
+void GLAPIENTRY glStencilOpSeparate(GLenum face, GLenum fail, GLenum zfail, GLenum zpass) {
+  SIMPLE(stencil_op, face, fail, zfail, zpass);
+}
+void GLAPIENTRY glStencilMaskSeparate(GLenum face, GLuint m) { SIMPLE(stencil_mask, face, m); }
+void GLAPIENTRY glStencilOp(GLenum fail, GLenum zfail, GLenum zpass) {
+  SIMPLE(stencil_op, GL_FRONT_AND_BACK, fail, zfail, zpass);
+}
+void GLAPIENTRY glStencilMask(GLuint m) { SIMPLE(stencil_mask, GL_FRONT_AND_BACK, m); }
 void GLAPIENTRY glScissor(GLint x, GLint y, GLsizei w, GLsizei h) { SIMPLE(scissor, x, y, w, h); }
 void GLAPIENTRY glCullFace(GLenum mode) { SIMPLE(cull_face, mode); }
 void GLAPIENTRY glFrontFace(GLenum mode) { SIMPLE(front_face, mode); }

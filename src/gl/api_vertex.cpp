@@ -236,14 +236,6 @@ void GLAPIENTRY glTexCoord4fv(const GLfloat* v) { TEX4(v[0], v[1], v[2], v[3]); 
 void GLAPIENTRY glTexCoord4iv(const GLint* v) { TEX4(v[0], v[1], v[2], v[3]); }
 void GLAPIENTRY glTexCoord4sv(const GLshort* v) { TEX4(v[0], v[1], v[2], v[3]); }
 
-// Texture unit 0 is the only unit: glMultiTexCoord on it is glTexCoord.
-void GLAPIENTRY glMultiTexCoord2f(GLenum unit, GLfloat s, GLfloat t) {
-  if (unit == GL_TEXTURE0) glTexCoord2f(s, t);
-}
-void GLAPIENTRY glMultiTexCoord2fv(GLenum unit, const GLfloat* v) {
-  if (unit == GL_TEXTURE0) glTexCoord2fv(v);
-}
-
 void GLAPIENTRY glEdgeFlag(GLboolean flag) {
   GL_CONTEXT();
   const bool f = flag != GL_FALSE;

@@ -21,6 +21,8 @@ gpu::StencilOp stencil_op_of(GLenum op) {
     case GL_INCR: return gpu::StencilOp::Incr;
     case GL_DECR: return gpu::StencilOp::Decr;
     case GL_INVERT: return gpu::StencilOp::Invert;
+    case GL_INCR_WRAP: return gpu::StencilOp::IncrWrap;
+    case GL_DECR_WRAP: return gpu::StencilOp::DecrWrap;
     default: return gpu::StencilOp::Keep;
   }
 }
@@ -781,15 +783,24 @@ gpu::RenderState Context::render_state(bool for_clear) const {
   }
   r.depth_write = s.depth.mask && target.depth && (for_clear || s.depth.test);
   r.stencil_test = s.stencil.test && target.stencil;
+  const StencilState& st = s.stencil;
   gpu::StencilFace f;
-  f.func = compare_of(s.stencil.func);
-  f.ref = uint8_t(std::clamp(s.stencil.ref, 0, 255));
-  f.read_mask = uint8_t(s.stencil.value_mask & 0xFF);
-  f.write_mask = uint8_t(s.stencil.write_mask & 0xFF);
-  f.fail = stencil_op_of(s.stencil.fail);
-  f.depth_fail = stencil_op_of(s.stencil.zfail);
-  f.pass = stencil_op_of(s.stencil.zpass);
-  r.stencil_front = r.stencil_back = f;
+  f.func = compare_of(st.func);
+  f.ref = uint8_t(std::clamp(st.ref, 0, 255));
+  f.read_mask = uint8_t(st.value_mask & 0xFF);
+  f.write_mask = uint8_t(st.write_mask & 0xFF);
+  f.fail = stencil_op_of(st.fail);
+  f.depth_fail = stencil_op_of(st.zfail);
+  f.pass = stencil_op_of(st.zpass);
+  r.stencil_front = f;
+  f.func = compare_of(st.back_func);
+  f.ref = uint8_t(std::clamp(st.back_ref, 0, 255));
+  f.read_mask = uint8_t(st.back_value_mask & 0xFF);
+  f.write_mask = uint8_t(st.back_write_mask & 0xFF);
+  f.fail = stencil_op_of(st.back_fail);
+  f.depth_fail = stencil_op_of(st.back_zfail);
+  f.pass = stencil_op_of(st.back_zpass);
+  r.stencil_back = f;
   auto equation = [](GLenum e) {
     switch (e) {
       case GL_FUNC_SUBTRACT: return gpu::BlendEquation::Subtract;

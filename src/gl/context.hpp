@@ -110,6 +110,12 @@ struct StencilState {
   GLuint value_mask = 0xFFFFFFFFu, write_mask = 0xFFFFFFFFu;
   GLenum fail = GL_KEEP, zfail = GL_KEEP, zpass = GL_KEEP;
   GLint clear = 0;
+  // Back-facing primitives' state (glStencil*Separate, GL 2.0 §4.1.5); the calls without
+  // a face set both.
+  GLenum back_func = GL_ALWAYS;
+  GLint back_ref = 0;
+  GLuint back_value_mask = 0xFFFFFFFFu, back_write_mask = 0xFFFFFFFFu;
+  GLenum back_fail = GL_KEEP, back_zfail = GL_KEEP, back_zpass = GL_KEEP;
 };
 
 struct PolygonState {

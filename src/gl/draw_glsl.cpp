@@ -18,6 +18,25 @@
 
 namespace tessel::gl {
 
+// The four components of a packed GL_INT_2_10_10_10_REV / GL_UNSIGNED_INT_2_10_10_10_REV
+// value (GL 3.3 §2.8.2), x in the low bits.
+void unpack_2_10_10_10(uint32_t w, bool is_signed, bool normalized, float* out) {
+  const int bits[4] = {10, 10, 10, 2};
+  int shift = 0;
+  for (int i = 0; i < 4; ++i) {
+    const uint32_t raw = (w >> shift) & ((1u << bits[i]) - 1u);
+    shift += bits[i];
+    if (is_signed) {
+      const int32_t v = int32_t(raw << (32 - bits[i])) >> (32 - bits[i]);
+      const double max = double((1 << (bits[i] - 1)) - 1);
+      out[i] = normalized ? float(std::max(-1.0, v / max)) : float(v);
+    } else {
+      const double max = double((1u << bits[i]) - 1u);
+      out[i] = normalized ? float(raw / max) : float(raw);
+    }
+  }
+}
+
 namespace {
 
 bool gpu_attrib_type(GLenum t, gpu::AttribType& out) {
@@ -80,25 +99,6 @@ float component(const uint8_t* p, GLenum type, bool normalized) {
       return gpu::half_to_float(h);
     }
     default: return 0.0f;
-  }
-}
-
-// The four components of a packed GL_INT_2_10_10_10_REV / GL_UNSIGNED_INT_2_10_10_10_REV
-// value (GL 3.3 §2.8.2), x in the low bits.
-void unpack_2_10_10_10(uint32_t w, bool is_signed, bool normalized, float* out) {
-  const int bits[4] = {10, 10, 10, 2};
-  int shift = 0;
-  for (int i = 0; i < 4; ++i) {
-    const uint32_t raw = (w >> shift) & ((1u << bits[i]) - 1u);
-    shift += bits[i];
-    if (is_signed) {
-      const int32_t v = int32_t(raw << (32 - bits[i])) >> (32 - bits[i]);
-      const double max = double((1 << (bits[i] - 1)) - 1);
-      out[i] = normalized ? float(std::max(-1.0, v / max)) : float(v);
-    } else {
-      const double max = double((1u << bits[i]) - 1u);
-      out[i] = normalized ? float(raw / max) : float(raw);
-    }
   }
 }
 

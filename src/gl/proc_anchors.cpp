@@ -18,7 +18,7 @@ extern void (*const kProcAnchors[])();
     reinterpret_cast<void (*)()>(&glMap1d),         reinterpret_cast<void (*)()>(&glFeedbackBuffer),
     reinterpret_cast<void (*)()>(&glRenderMode),    reinterpret_cast<void (*)()>(&glTexEnvf),
     reinterpret_cast<void (*)()>(&glGenSamplers),   reinterpret_cast<void (*)()>(&glGenFramebuffers),
-    reinterpret_cast<void (*)()>(&glGenQueries),
+    reinterpret_cast<void (*)()>(&glGenQueries),    reinterpret_cast<void (*)()>(&glWindowPos2f),
 };
 
 }  // namespace tessel::gl

@@ -514,3 +514,86 @@ TEST_F(GL33CoreTest, RandomCallSequenceNeverCrashes) {
 }
 
 }  // namespace
+
+namespace {
+
+// GL 1.3/1.4/2.0/3.3 calls that restate others: transposed matrices, glWindowPos,
+// glMultiTexCoord (one coordinate set), packed attribute values, separate stencil state.
+TEST_F(GL33Test, RestatedCallsAndSeparateStencil) {
+  const float rows[16] = {1, 0, 0, 5, 0, 1, 0, 6, 0, 0, 1, 7, 0, 0, 0, 1};  // a translation, row-major
+  glMatrixMode(GL_MODELVIEW);
+  glLoadTransposeMatrixf(rows);
+  float m[16] = {};
+  glGetFloatv(GL_MODELVIEW_MATRIX, m);
+  EXPECT_EQ(m[12], 5.0f);
+  EXPECT_EQ(m[14], 7.0f);
+  glMultTransposeMatrixf(rows);
+  glGetFloatv(GL_MODELVIEW_MATRIX, m);
+  EXPECT_EQ(m[13], 12.0f);
+  glLoadIdentity();
+
+  glWindowPos3f(5.0f, 7.0f, 0.5f);
+  float rp[4] = {};
+  glGetFloatv(GL_CURRENT_RASTER_POSITION, rp);
+  EXPECT_EQ(rp[0], 5.0f);
+  EXPECT_EQ(rp[1], 7.0f);
+  EXPECT_FLOAT_EQ(rp[2], 0.5f);
+  GLboolean valid = GL_FALSE;
+  glGetBooleanv(GL_CURRENT_RASTER_POSITION_VALID, &valid);
+  EXPECT_TRUE(valid);
+
+  glMultiTexCoord2f(GL_TEXTURE0, 0.25f, 0.5f);
+  float tc[4] = {};
+  glGetFloatv(GL_CURRENT_TEXTURE_COORDS, tc);
+  EXPECT_EQ(tc[0], 0.25f);
+  EXPECT_EQ(tc[3], 1.0f);
+  glMultiTexCoord2f(GL_TEXTURE1, 1.0f, 1.0f);  // GL_MAX_TEXTURE_COORDS is 1
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+
+  // x = 1023 (1.0), y = 0, z = 512 (~0.5), w = 3 (1.0), unsigned normalized.
+  const GLuint packed = 1023u | (0u << 10) | (512u << 20) | (3u << 30);
+  glVertexAttribP4ui(1, GL_UNSIGNED_INT_2_10_10_10_REV, GL_TRUE, packed);
+  float a[4] = {};
+  glGetVertexAttribfv(1, GL_CURRENT_VERTEX_ATTRIB, a);
+  EXPECT_FLOAT_EQ(a[0], 1.0f);
+  EXPECT_FLOAT_EQ(a[2], 512.0f / 1023.0f);
+  EXPECT_FLOAT_EQ(a[3], 1.0f);
+  glVertexAttribP4ui(1, GL_FLOAT, GL_TRUE, packed);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glVertexAttribP4ui(99, GL_UNSIGNED_INT_2_10_10_10_REV, GL_TRUE, packed);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+
+  // Separate stencil: back faces replace with 5, front faces keep.
+  glStencilFuncSeparate(GL_BACK, GL_ALWAYS, 5, 0xFF);
+  glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_REPLACE);
+  glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilMaskSeparate(0x1234, 0xFF);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  EXPECT_EQ(get_int(GL_STENCIL_BACK_REF), 5);
+  EXPECT_EQ(get_int(GL_STENCIL_BACK_PASS_DEPTH_PASS), GL_REPLACE);
+  EXPECT_EQ(get_int(GL_STENCIL_PASS_DEPTH_PASS), GL_KEEP);
+  glClearStencil(0);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_STENCIL_TEST);
+  glBegin(GL_TRIANGLES);  // clockwise: back-facing, left half
+  glVertex2f(-1, -1);
+  glVertex2f(-1, 1);
+  glVertex2f(0, -1);
+  glEnd();
+  glBegin(GL_TRIANGLES);  // counter-clockwise: front-facing, right half
+  glVertex2f(0.2f, -1);
+  glVertex2f(1, -1);
+  glVertex2f(1, 1);
+  glEnd();
+  glDisable(GL_STENCIL_TEST);
+  GLubyte s[2] = {9, 9};
+  glReadPixels(2, 4, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &s[0]);
+  glReadPixels(30, 4, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &s[1]);
+  EXPECT_EQ(s[0], 5);
+  EXPECT_EQ(s[1], 0);
+  glStencilOp(GL_INCR_WRAP, GL_DECR_WRAP, GL_KEEP);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(get_int(GL_STENCIL_BACK_FAIL), GL_INCR_WRAP);
+}
+
+}  // namespace

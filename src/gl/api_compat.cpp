@@ -1,0 +1,197 @@
+// GL 1.3-1.4 and 3.3 calls that restate others (GL 3.3 compatibility profile): the transposed
+// matrix loads (§2.12.1), glWindowPos (§2.13), glMultiTexCoord for the texture coordinate sets
+// Tessel has (GL_MAX_TEXTURE_COORDS is 1: GL_TEXTURE0 only, other units are GL_INVALID_ENUM),
+// and the packed generic attribute values glVertexAttribP* (§2.7).
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <algorithm>
+
+#include "api.hpp"
+
+namespace tessel::gl {
+
+namespace {
+
+template <class T>
+glm::mat4 transposed(const T* m) {
+  glm::mat4 r(1.0f);
+  if (m)
+    for (int col = 0; col < 4; ++col)
+      for (int row = 0; row < 4; ++row) r[col][row] = float(m[row * 4 + col]);
+  return r;
+}
+
+// GL 2.1 §2.13: the raster position given in window coordinates, always valid; z mapped
+// into the depth range; colour and texture coordinates the current ones, unlit.
+void window_pos(Context& c, float x, float y, float z) {
+  GL_OUTSIDE_BEGIN();
+  CurrentState& cur = c.s.current;
+  const ViewportState& v = c.s.viewport;
+  const double zc = std::clamp(double(z), 0.0, 1.0);
+  cur.raster_pos = glm::vec4(x, y, float(v.near_ + zc * (v.far_ - v.near_)), 1.0f);
+  cur.raster_valid = true;
+  cur.raster_distance = 0.0f;
+  cur.raster_color = glm::clamp(cur.color, 0.0f, 1.0f);
+  cur.raster_tex = cur.tex;
+}
+
+void multi_tex(Context& c, GLenum unit, float s, float t, float r, float q) {
+  if (unit != GL_TEXTURE0) return c.error(GL_INVALID_ENUM);
+  c.s.current.tex = glm::vec4(s, t, r, q);
+}
+
+void attrib_p(Context& c, GLuint index, GLenum type, bool normalized, int n, GLuint value) {
+  if (index >= GLuint(kMaxVertexAttribs)) return c.error(GL_INVALID_VALUE);
+  if (type != GL_INT_2_10_10_10_REV && type != GL_UNSIGNED_INT_2_10_10_10_REV)
+    return c.error(GL_INVALID_ENUM);
+  float v[4];
+  unpack_2_10_10_10(value, type == GL_INT_2_10_10_10_REV, normalized, v);
+  const float w = n == 4 ? v[3] : 1.0f;
+  glVertexAttrib4f(index, v[0], n >= 2 ? v[1] : 0.0f, n >= 3 ? v[2] : 0.0f, w);
+}
+
+}  // namespace
+}  // namespace tessel::gl
+
+using namespace tessel::gl;
+
+#define WINDOW_POS(x, y, z)                                   \
+  GL_CONTEXT();                                               \
+  const float wx_ = float(x), wy_ = float(y), wz_ = float(z); \
+  GL_LISTED(window_pos(c, wx_, wy_, wz_));                    \
+  window_pos(c, wx_, wy_, wz_)
+
+#define MULTI_TEX(u, s, t, r, q)                                              \
+  GL_CONTEXT();                                                               \
+  const GLenum mu_ = (u);                                                     \
+  const float ms_ = float(s), mt_ = float(t), mr_ = float(r), mq_ = float(q); \
+  GL_LISTED(multi_tex(c, mu_, ms_, mt_, mr_, mq_));                           \
+  multi_tex(c, mu_, ms_, mt_, mr_, mq_)
+
+extern "C" {
+
+void GLAPIENTRY glLoadTransposeMatrixf(const GLfloat* m) {
+  GL_CONTEXT();
+  const glm::mat4 a = transposed(m);
+  GL_LISTED(load_matrix(c, a));
+  load_matrix(c, a);
+}
+void GLAPIENTRY glLoadTransposeMatrixd(const GLdouble* m) {
+  GL_CONTEXT();
+  const glm::mat4 a = transposed(m);
+  GL_LISTED(load_matrix(c, a));
+  load_matrix(c, a);
+}
+void GLAPIENTRY glMultTransposeMatrixf(const GLfloat* m) {
+  GL_CONTEXT();
+  const glm::mat4 a = transposed(m);
+  GL_LISTED(mult_matrix(c, a));
+  mult_matrix(c, a);
+}
+void GLAPIENTRY glMultTransposeMatrixd(const GLdouble* m) {
+  GL_CONTEXT();
+  const glm::mat4 a = transposed(m);
+  GL_LISTED(mult_matrix(c, a));
+  mult_matrix(c, a);
+}
+
+void GLAPIENTRY glWindowPos2s(GLshort x, GLshort y) { WINDOW_POS(x, y, 0); }
+void GLAPIENTRY glWindowPos2sv(const GLshort* v) { WINDOW_POS(v[0], v[1], 0); }
+void GLAPIENTRY glWindowPos2i(GLint x, GLint y) { WINDOW_POS(x, y, 0); }
+void GLAPIENTRY glWindowPos2iv(const GLint* v) { WINDOW_POS(v[0], v[1], 0); }
+void GLAPIENTRY glWindowPos2f(GLfloat x, GLfloat y) { WINDOW_POS(x, y, 0); }
+void GLAPIENTRY glWindowPos2fv(const GLfloat* v) { WINDOW_POS(v[0], v[1], 0); }
+void GLAPIENTRY glWindowPos2d(GLdouble x, GLdouble y) { WINDOW_POS(x, y, 0); }
+void GLAPIENTRY glWindowPos2dv(const GLdouble* v) { WINDOW_POS(v[0], v[1], 0); }
+void GLAPIENTRY glWindowPos3s(GLshort x, GLshort y, GLshort z) { WINDOW_POS(x, y, z); }
+void GLAPIENTRY glWindowPos3sv(const GLshort* v) { WINDOW_POS(v[0], v[1], v[2]); }
+void GLAPIENTRY glWindowPos3i(GLint x, GLint y, GLint z) { WINDOW_POS(x, y, z); }
+void GLAPIENTRY glWindowPos3iv(const GLint* v) { WINDOW_POS(v[0], v[1], v[2]); }
+void GLAPIENTRY glWindowPos3f(GLfloat x, GLfloat y, GLfloat z) { WINDOW_POS(x, y, z); }
+void GLAPIENTRY glWindowPos3fv(const GLfloat* v) { WINDOW_POS(v[0], v[1], v[2]); }
+void GLAPIENTRY glWindowPos3d(GLdouble x, GLdouble y, GLdouble z) { WINDOW_POS(x, y, z); }
+void GLAPIENTRY glWindowPos3dv(const GLdouble* v) { WINDOW_POS(v[0], v[1], v[2]); }
+void GLAPIENTRY glMultiTexCoord1s(GLenum unit, GLshort s) { MULTI_TEX(unit, s, 0, 0, 1); }
+void GLAPIENTRY glMultiTexCoord1sv(GLenum unit, const GLshort* v) { MULTI_TEX(unit, v[0], 0, 0, 1); }
+void GLAPIENTRY glMultiTexCoord1i(GLenum unit, GLint s) { MULTI_TEX(unit, s, 0, 0, 1); }
+void GLAPIENTRY glMultiTexCoord1iv(GLenum unit, const GLint* v) { MULTI_TEX(unit, v[0], 0, 0, 1); }
+void GLAPIENTRY glMultiTexCoord1f(GLenum unit, GLfloat s) { MULTI_TEX(unit, s, 0, 0, 1); }
+void GLAPIENTRY glMultiTexCoord1fv(GLenum unit, const GLfloat* v) { MULTI_TEX(unit, v[0], 0, 0, 1); }
+void GLAPIENTRY glMultiTexCoord1d(GLenum unit, GLdouble s) { MULTI_TEX(unit, s, 0, 0, 1); }
+void GLAPIENTRY glMultiTexCoord1dv(GLenum unit, const GLdouble* v) { MULTI_TEX(unit, v[0], 0, 0, 1); }
+void GLAPIENTRY glMultiTexCoord2s(GLenum unit, GLshort s, GLshort t) { MULTI_TEX(unit, s, t, 0, 1); }
+void GLAPIENTRY glMultiTexCoord2sv(GLenum unit, const GLshort* v) { MULTI_TEX(unit, v[0], v[1], 0, 1); }
+void GLAPIENTRY glMultiTexCoord2i(GLenum unit, GLint s, GLint t) { MULTI_TEX(unit, s, t, 0, 1); }
+void GLAPIENTRY glMultiTexCoord2iv(GLenum unit, const GLint* v) { MULTI_TEX(unit, v[0], v[1], 0, 1); }
+void GLAPIENTRY glMultiTexCoord2f(GLenum unit, GLfloat s, GLfloat t) { MULTI_TEX(unit, s, t, 0, 1); }
+void GLAPIENTRY glMultiTexCoord2fv(GLenum unit, const GLfloat* v) { MULTI_TEX(unit, v[0], v[1], 0, 1); }
+void GLAPIENTRY glMultiTexCoord2d(GLenum unit, GLdouble s, GLdouble t) { MULTI_TEX(unit, s, t, 0, 1); }
+void GLAPIENTRY glMultiTexCoord2dv(GLenum unit, const GLdouble* v) { MULTI_TEX(unit, v[0], v[1], 0, 1); }
+void GLAPIENTRY glMultiTexCoord3s(GLenum unit, GLshort s, GLshort t, GLshort r) {
+  MULTI_TEX(unit, s, t, r, 1);
+}
+void GLAPIENTRY glMultiTexCoord3sv(GLenum unit, const GLshort* v) { MULTI_TEX(unit, v[0], v[1], v[2], 1); }
+void GLAPIENTRY glMultiTexCoord3i(GLenum unit, GLint s, GLint t, GLint r) { MULTI_TEX(unit, s, t, r, 1); }
+void GLAPIENTRY glMultiTexCoord3iv(GLenum unit, const GLint* v) { MULTI_TEX(unit, v[0], v[1], v[2], 1); }
+void GLAPIENTRY glMultiTexCoord3f(GLenum unit, GLfloat s, GLfloat t, GLfloat r) {
+  MULTI_TEX(unit, s, t, r, 1);
+}
+void GLAPIENTRY glMultiTexCoord3fv(GLenum unit, const GLfloat* v) { MULTI_TEX(unit, v[0], v[1], v[2], 1); }
+void GLAPIENTRY glMultiTexCoord3d(GLenum unit, GLdouble s, GLdouble t, GLdouble r) {
+  MULTI_TEX(unit, s, t, r, 1);
+}
+void GLAPIENTRY glMultiTexCoord3dv(GLenum unit, const GLdouble* v) { MULTI_TEX(unit, v[0], v[1], v[2], 1); }
+void GLAPIENTRY glMultiTexCoord4s(GLenum unit, GLshort s, GLshort t, GLshort r, GLshort q) {
+  MULTI_TEX(unit, s, t, r, q);
+}
+void GLAPIENTRY glMultiTexCoord4sv(GLenum unit, const GLshort* v) { MULTI_TEX(unit, v[0], v[1], v[2], v[3]); }
+void GLAPIENTRY glMultiTexCoord4i(GLenum unit, GLint s, GLint t, GLint r, GLint q) {
+  MULTI_TEX(unit, s, t, r, q);
+}
+void GLAPIENTRY glMultiTexCoord4iv(GLenum unit, const GLint* v) { MULTI_TEX(unit, v[0], v[1], v[2], v[3]); }
+void GLAPIENTRY glMultiTexCoord4f(GLenum unit, GLfloat s, GLfloat t, GLfloat r, GLfloat q) {
+  MULTI_TEX(unit, s, t, r, q);
+}
+void GLAPIENTRY glMultiTexCoord4fv(GLenum unit, const GLfloat* v) { MULTI_TEX(unit, v[0], v[1], v[2], v[3]); }
+void GLAPIENTRY glMultiTexCoord4d(GLenum unit, GLdouble s, GLdouble t, GLdouble r, GLdouble q) {
+  MULTI_TEX(unit, s, t, r, q);
+}
+void GLAPIENTRY glMultiTexCoord4dv(GLenum unit, const GLdouble* v) {
+  MULTI_TEX(unit, v[0], v[1], v[2], v[3]);
+}
+void GLAPIENTRY glVertexAttribP1ui(GLuint index, GLenum type, GLboolean normalized, GLuint value) {
+  GL_CONTEXT();
+  attrib_p(c, index, type, normalized != GL_FALSE, 1, value);
+}
+void GLAPIENTRY glVertexAttribP1uiv(GLuint index, GLenum type, GLboolean normalized, const GLuint* value) {
+  GL_CONTEXT();
+  if (value) attrib_p(c, index, type, normalized != GL_FALSE, 1, *value);
+}
+void GLAPIENTRY glVertexAttribP2ui(GLuint index, GLenum type, GLboolean normalized, GLuint value) {
+  GL_CONTEXT();
+  attrib_p(c, index, type, normalized != GL_FALSE, 2, value);
+}
+void GLAPIENTRY glVertexAttribP2uiv(GLuint index, GLenum type, GLboolean normalized, const GLuint* value) {
+  GL_CONTEXT();
+  if (value) attrib_p(c, index, type, normalized != GL_FALSE, 2, *value);
+}
+void GLAPIENTRY glVertexAttribP3ui(GLuint index, GLenum type, GLboolean normalized, GLuint value) {
+  GL_CONTEXT();
+  attrib_p(c, index, type, normalized != GL_FALSE, 3, value);
+}
+void GLAPIENTRY glVertexAttribP3uiv(GLuint index, GLenum type, GLboolean normalized, const GLuint* value) {
+  GL_CONTEXT();
+  if (value) attrib_p(c, index, type, normalized != GL_FALSE, 3, *value);
+}
+void GLAPIENTRY glVertexAttribP4ui(GLuint index, GLenum type, GLboolean normalized, GLuint value) {
+  GL_CONTEXT();
+  attrib_p(c, index, type, normalized != GL_FALSE, 4, value);
+}
+void GLAPIENTRY glVertexAttribP4uiv(GLuint index, GLenum type, GLboolean normalized, const GLuint* value) {
+  GL_CONTEXT();
+  if (value) attrib_p(c, index, type, normalized != GL_FALSE, 4, *value);
+}
+
+}  // extern "C"
