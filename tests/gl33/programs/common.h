@@ -185,7 +185,7 @@ static inline void make_sphere(float* pos, unsigned short* idx) {
     }
 }
 
-/* GLUT + GLEW set-up of every program: a 320x240 RGBA window with depth. */
+/* GLUT + GLEW set-up of every program: a 320x240 RGBA window with depth and stencil. */
 static inline void open_window(int* argc, char** argv, int major, int minor, int profile, const char* title) {
   GLenum err;
   glutInit(argc, argv);
@@ -193,7 +193,7 @@ static inline void open_window(int* argc, char** argv, int major, int minor, int
     glutInitContextVersion(major, minor);
     if (profile) glutInitContextProfile(profile);
   }
-  glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH);
+  glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH | GLUT_STENCIL);
   glutInitWindowSize(320, 240);
   glutCreateWindow(title);
   glewExperimental = GL_TRUE;

@@ -19,29 +19,39 @@
   X(PFNGLATTACHSHADERPROC, glAttachShader)                       \
   X(PFNGLBINDBUFFERPROC, glBindBuffer)                           \
   X(PFNGLBINDBUFFERBASEPROC, glBindBufferBase)                   \
+  X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                 \
+  X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer)               \
   X(PFNGLBINDTEXTUREPROC, glBindTexture)                         \
   X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                 \
   X(PFNGLBLENDFUNCPROC, glBlendFunc)                             \
+  X(PFNGLBLITFRAMEBUFFERPROC, glBlitFramebuffer)                 \
   X(PFNGLBUFFERDATAPROC, glBufferData)                           \
   X(PFNGLBUFFERSUBDATAPROC, glBufferSubData)                     \
+  X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)   \
   X(PFNGLCLEARPROC, glClear)                                     \
   X(PFNGLCLEARCOLORPROC, glClearColor)                           \
+  X(PFNGLCLEARSTENCILPROC, glClearStencil)                       \
   X(PFNGLCOMPILESHADERPROC, glCompileShader)                     \
   X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                     \
   X(PFNGLCREATESHADERPROC, glCreateShader)                       \
   X(PFNGLCULLFACEPROC, glCullFace)                               \
   X(PFNGLDELETESHADERPROC, glDeleteShader)                       \
   X(PFNGLDEPTHFUNCPROC, glDepthFunc)                             \
+  X(PFNGLDEPTHMASKPROC, glDepthMask)                             \
   X(PFNGLDISABLEPROC, glDisable)                                 \
   X(PFNGLDRAWARRAYSPROC, glDrawArrays)                           \
   X(PFNGLDRAWARRAYSINSTANCEDPROC, glDrawArraysInstanced)         \
   X(PFNGLDRAWELEMENTSPROC, glDrawElements)                       \
   X(PFNGLENABLEPROC, glEnable)                                   \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray) \
+  X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer) \
+  X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D)       \
   X(PFNGLGENBUFFERSPROC, glGenBuffers)                           \
-  X(PFNGLGENERATEMIPMAPPROC, glGenerateMipmap)                   \
+  X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                 \
+  X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)               \
   X(PFNGLGENTEXTURESPROC, glGenTextures)                         \
   X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays)                 \
+  X(PFNGLGENERATEMIPMAPPROC, glGenerateMipmap)                   \
   X(PFNGLGETERRORPROC, glGetError)                               \
   X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)             \
   X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                       \
@@ -52,7 +62,11 @@
   X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)           \
   X(PFNGLLINKPROGRAMPROC, glLinkProgram)                         \
   X(PFNGLPOLYGONMODEPROC, glPolygonMode)                         \
+  X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)         \
   X(PFNGLSHADERSOURCEPROC, glShaderSource)                       \
+  X(PFNGLSTENCILFUNCPROC, glStencilFunc)                         \
+  X(PFNGLSTENCILMASKPROC, glStencilMask)                         \
+  X(PFNGLSTENCILOPPROC, glStencilOp)                             \
   X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                           \
   X(PFNGLTEXPARAMETERIPROC, glTexParameteri)                     \
   X(PFNGLUNIFORM1FPROC, glUniform1f)                             \
@@ -93,29 +107,39 @@ static inline int load_gl(loader_proc_fn get) {
 #define glAttachShader loader_glAttachShader
 #define glBindBuffer loader_glBindBuffer
 #define glBindBufferBase loader_glBindBufferBase
+#define glBindFramebuffer loader_glBindFramebuffer
+#define glBindRenderbuffer loader_glBindRenderbuffer
 #define glBindTexture loader_glBindTexture
 #define glBindVertexArray loader_glBindVertexArray
 #define glBlendFunc loader_glBlendFunc
+#define glBlitFramebuffer loader_glBlitFramebuffer
 #define glBufferData loader_glBufferData
 #define glBufferSubData loader_glBufferSubData
+#define glCheckFramebufferStatus loader_glCheckFramebufferStatus
 #define glClear loader_glClear
 #define glClearColor loader_glClearColor
+#define glClearStencil loader_glClearStencil
 #define glCompileShader loader_glCompileShader
 #define glCreateProgram loader_glCreateProgram
 #define glCreateShader loader_glCreateShader
 #define glCullFace loader_glCullFace
 #define glDeleteShader loader_glDeleteShader
 #define glDepthFunc loader_glDepthFunc
+#define glDepthMask loader_glDepthMask
 #define glDisable loader_glDisable
 #define glDrawArrays loader_glDrawArrays
 #define glDrawArraysInstanced loader_glDrawArraysInstanced
 #define glDrawElements loader_glDrawElements
 #define glEnable loader_glEnable
 #define glEnableVertexAttribArray loader_glEnableVertexAttribArray
+#define glFramebufferRenderbuffer loader_glFramebufferRenderbuffer
+#define glFramebufferTexture2D loader_glFramebufferTexture2D
 #define glGenBuffers loader_glGenBuffers
-#define glGenerateMipmap loader_glGenerateMipmap
+#define glGenFramebuffers loader_glGenFramebuffers
+#define glGenRenderbuffers loader_glGenRenderbuffers
 #define glGenTextures loader_glGenTextures
 #define glGenVertexArrays loader_glGenVertexArrays
+#define glGenerateMipmap loader_glGenerateMipmap
 #define glGetError loader_glGetError
 #define glGetProgramInfoLog loader_glGetProgramInfoLog
 #define glGetProgramiv loader_glGetProgramiv
@@ -126,7 +150,11 @@ static inline int load_gl(loader_proc_fn get) {
 #define glGetUniformLocation loader_glGetUniformLocation
 #define glLinkProgram loader_glLinkProgram
 #define glPolygonMode loader_glPolygonMode
+#define glRenderbufferStorage loader_glRenderbufferStorage
 #define glShaderSource loader_glShaderSource
+#define glStencilFunc loader_glStencilFunc
+#define glStencilMask loader_glStencilMask
+#define glStencilOp loader_glStencilOp
 #define glTexImage2D loader_glTexImage2D
 #define glTexParameteri loader_glTexParameteri
 #define glUniform1f loader_glUniform1f
