@@ -511,13 +511,16 @@ EGLContext EGLAPIENTRY eglCreateContext(EGLDisplay dpy, EGLConfig config, EGLCon
     if (major >= 3) ctx->gl->set_version(major, minor, core);
     // The rendering threads: TESSEL_THREADS, else llvmpipe's LP_NUM_THREADS (0 there means
     // none besides the caller's: one here), else one per hardware thread.
-    const char* threads = std::getenv("TESSEL_THREADS");
-    if (!threads || !*threads) threads = std::getenv("LP_NUM_THREADS");
-    if (threads && *threads) {
-      const long n = std::strtol(threads, nullptr, 10);
-      if (n >= 0 && n <= 1024) ctx->gl->gpu().set_threads(std::max(1, int(n)));
-    }
-  } catch (const std::bad_alloc&) {
+    // TESSEL_THREADS=0 keeps one per hardware thread; at most gpu's limit of 64.
+    const char* tessel_threads = std::getenv("TESSEL_THREADS");
+    const char* lp_threads = std::getenv("LP_NUM_THREADS");
+    long n = -1;
+    if (tessel_threads && *tessel_threads)
+      n = std::strtol(tessel_threads, nullptr, 10);
+    else if (lp_threads && *lp_threads)
+      n = std::max(1L, std::strtol(lp_threads, nullptr, 10));
+    if (n > 0) ctx->gl->gpu().set_threads(int(std::min(n, 64L)));
+  } catch (const std::exception&) {
     delete ctx;
     return fail(EGL_BAD_ALLOC, EGL_NO_CONTEXT);
   }
@@ -554,7 +557,9 @@ EGLBoolean EGLAPIENTRY eglMakeCurrent(EGLDisplay dpy, EGLSurface draw, EGLSurfac
     s = surface_of(*d, draw);
     if (!s || s->destroyed || surface_of(*d, read) != s) return fail(EGL_BAD_SURFACE);
     if (c->config && s->config != c->config) return fail(EGL_BAD_MATCH);
-    if (s->current && s != c->draw) return fail(EGL_BAD_ACCESS);
+    // Current in another thread's context (not this thread's, which is released below).
+    const bool ours = t_context && t_context->draw == s;
+    if (s->current && s != c->draw && !ours) return fail(EGL_BAD_ACCESS);
   }
   if (t_context && t_context != c) release_current(*d);
   if (c->draw && c->draw != s) c->draw->current = false;

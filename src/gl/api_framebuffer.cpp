@@ -284,15 +284,20 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
   struct Pass {
     gpu::Attachment src, dst;
     bool depth;
+    uint8_t channels;  // the colour channels written: the draw buffer's mask and format
   };
   std::vector<Pass> passes;
   if (mask & GL_COLOR_BUFFER_BIT) {
     const gpu::Attachment src = c.read_color();
+    const Context::TargetInfo target = c.target_info();
     if (src.texture) {
-      for (const gpu::Attachment& d : fb.color) {
+      for (int i = 0; i < kMaxDrawBuffers; ++i) {
+        const gpu::Attachment& d = fb.color[size_t(i)];
         if (!d.texture) continue;
         // Float and fixed-point may mix; depth formats never reach here.
-        passes.push_back({src, d, false});
+        const std::array<bool, 4>& cm = c.s.color.color_mask[size_t(i)];
+        const uint8_t m = uint8_t((cm[0] ? 1 : 0) | (cm[1] ? 2 : 0) | (cm[2] ? 4 : 0) | (cm[3] ? 8 : 0));
+        passes.push_back({src, d, false, uint8_t(m & target.channels[size_t(i)])});
       }
     }
   }
@@ -305,7 +310,7 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
       const bool src_float = src.texture->format() == gpu::Format::Depth32F;
       const bool dst_float = dst.texture->format() == gpu::Format::Depth32F;
       if (src_float != dst_float) return c.error(GL_INVALID_OPERATION);
-      passes.push_back({src, dst, true});
+      passes.push_back({src, dst, true, 0});
     }
   }
   if (sx0 == sx1 || sy0 == sy1 || dx0 == dx1 || dy0 == dy1) return;
@@ -323,7 +328,6 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
       x0 = std::max(x0, sc.x), x1 = std::min(x1, sc.x + sc.width);
       y0 = std::max(y0, sc.y), y1 = std::min(y1, sc.y + sc.height);
     }
-    const std::array<bool, 4>& cm = c.s.color.color_mask[0];
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
         const double u = double(sx0) + (double(x) + 0.5 - double(dx0)) * kx;
@@ -350,7 +354,7 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
           if (!(mask & GL_STENCIL_BUFFER_BIT)) out.y = old.y;
         } else {
           for (int k = 0; k < 4; ++k)
-            if (!cm[size_t(k)]) out[k] = old[k];
+            if (!(p.channels & (1u << k))) out[k] = old[k];
         }
         dt.store(p.dst.level, x, y, out);
       }

@@ -173,6 +173,13 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_MODELVIEW_MATRIX: put_mat(out, c.matrices[0].back()); return true;
     case GL_PROJECTION_MATRIX: put_mat(out, c.matrices[1].back()); return true;
     case GL_TEXTURE_MATRIX: put_mat(out, c.matrices[2].back()); return true;
+    // GL 1.3 §6.1.2: the same matrices, row by row.
+    case GL_TRANSPOSE_MODELVIEW_MATRIX: put_mat(out, glm::transpose(c.matrices[0].back())); return true;
+    case GL_TRANSPOSE_PROJECTION_MATRIX: put_mat(out, glm::transpose(c.matrices[1].back())); return true;
+    case GL_TRANSPOSE_TEXTURE_MATRIX: put_mat(out, glm::transpose(c.matrices[2].back())); return true;
+    // No compressed internal format is accepted (GL_COMPRESSED_* ask for none in particular).
+    case GL_NUM_COMPRESSED_TEXTURE_FORMATS: put(out, {0.0}); return true;
+    case GL_COMPRESSED_TEXTURE_FORMATS: return true;
     case GL_MODELVIEW_STACK_DEPTH: put(out, {double(c.matrices[0].size())}); return true;
     case GL_PROJECTION_STACK_DEPTH: put(out, {double(c.matrices[1].size())}); return true;
     case GL_TEXTURE_STACK_DEPTH: put(out, {double(c.matrices[2].size())}); return true;

@@ -338,14 +338,18 @@ bool get_level_parameter(Context& c, GLenum target, GLint level, GLenum pname, d
     if (!r) r = make_texture(0, tt);
     t = r.get();
   }
-  TextureImage img = t->image(face, level);
+  // The image's sizes and format (not its texels); a buffer texture's from its buffer.
+  TextureImage img;
   if (tt == TexTarget::Buffer) {
-    img = TextureImage{};
     if (t->buffer && level == 0) {
       img.fmt = t->buffer_format;
       img.width = int(t->buffer->data.size() / gpu::format_info(t->buffer_format.storage).bytes);
       img.height = img.depth = 1;
     }
+  } else {
+    const TextureImage& src = t->image(face, level);
+    img.width = src.width, img.height = src.height, img.depth = src.depth;
+    img.fmt = src.fmt;
   }
   const bool d = img.defined();
   const TexFormat& f = img.fmt;

@@ -196,17 +196,26 @@ void tex_image(Context& c, const ImageTarget& it, GLint level, const TexFormat& 
   if (t.generate_mipmap && level == t.effective_base()) generate_mipmaps(c, t);  // GL 1.4 §3.8.8
 }
 
+// The errors of a glTexSubImage/glCopyTexSubImage region (§3.8.5): no such level or image, or
+// a region outside the image (in 64 bits: x + w must not wrap).
+GLenum sub_image_error(Context& c, const ImageTarget& it, GLint level, GLint x, GLint y, GLint z, GLsizei w,
+                       GLsizei h, GLsizei d) {
+  if (it.proxy) return GL_INVALID_ENUM;
+  if (level < 0 || level >= kMaxTextureLevels) return GL_INVALID_VALUE;
+  const TextureImage& img = c.bound_texture(it.target).image(it.face, level);
+  if (!img.defined()) return GL_INVALID_OPERATION;
+  if (x < 0 || y < 0 || z < 0 || w < 0 || h < 0 || d < 0 || int64_t(x) + w > img.width ||
+      int64_t(y) + h > img.height || int64_t(z) + d > img.depth)
+    return GL_INVALID_VALUE;
+  return GL_NO_ERROR;
+}
+
 void tex_sub_image(Context& c, const ImageTarget& it, GLint level, GLint x, GLint y, GLint z, GLsizei w,
                    GLsizei h, GLsizei d, GLenum format, const ImageRef& data) {
   GL_OUTSIDE_BEGIN();
-  if (it.proxy) return c.error(GL_INVALID_ENUM);
+  if (const GLenum e = sub_image_error(c, it, level, x, y, z, w, h, d); e != GL_NO_ERROR) return c.error(e);
   TextureObject& t = c.bound_texture(it.target);
-  if (level < 0 || level >= kMaxTextureLevels) return c.error(GL_INVALID_VALUE);
   TextureImage& img = t.image(it.face, level);
-  if (!img.defined()) return c.error(GL_INVALID_OPERATION);
-  if (x < 0 || y < 0 || z < 0 || w < 0 || h < 0 || d < 0 || x + w > img.width || y + h > img.height ||
-      z + d > img.depth)
-    return c.error(GL_INVALID_VALUE);
   if (format != GL_NONE) {
     const GLenum e = check_format_match(img.fmt, format, it.target);
     if (e != GL_NO_ERROR) return c.error(e);
@@ -251,9 +260,19 @@ void tex_image_entry(GLenum target, int dims, GLint level, GLint internal, GLsiz
   if (!image_target(target, dims, it)) return c.error(GL_INVALID_ENUM);
   TexFormat fmt;
   if (!image_checks(c, it, level, internal, w, h, d, border, format, type, fmt)) return;
-  GLenum err;
-  const ImageRef data = it.proxy ? nullptr : unpack(c, w, h * d, format, type, pixels, err);
-  if (!it.proxy && err != GL_NO_ERROR) return c.error(err);
+  // What the image would take: more than a texture may hold is GL_OUT_OF_MEMORY, before the
+  // client's pixels are read.
+  if (!it.proxy &&
+      uint64_t(w) * uint64_t(h) * uint64_t(d) * gpu::format_info(fmt.storage).bytes > gpu::kMaxTextureBytes)
+    return c.error(GL_OUT_OF_MEMORY);
+  GLenum err = GL_NO_ERROR;
+  ImageRef data;
+  try {
+    if (!it.proxy) data = unpack(c, w, h * d, format, type, pixels, err);
+  } catch (const std::bad_alloc&) {
+    return c.error(GL_OUT_OF_MEMORY);
+  }
+  if (err != GL_NO_ERROR) return c.error(err);
   // Proxies are not compiled into display lists (GL 2.1 §5.4).
   if (!it.proxy) GL_LISTED(tex_image(c, it, level, fmt, w, h, d, data));
   tex_image(c, it, level, fmt, w, h, d, data);
@@ -267,8 +286,16 @@ void tex_sub_image_entry(GLenum target, int dims, GLint level, GLint x, GLint y,
   if (!image_target(target, dims, it) || it.proxy) return c.error(GL_INVALID_ENUM);
   const GLenum ft = check_format_type(format, type);
   if (ft != GL_NO_ERROR) return c.error(ft);
-  GLenum err;
-  const ImageRef data = unpack(c, std::max(w, 0), std::max(h, 0) * std::max(d, 0), format, type, pixels, err);
+  // The region is checked against the texture before the client's pixels are read: a region
+  // larger than the image reads nothing.
+  if (const GLenum e = sub_image_error(c, it, level, x, y, z, w, h, d); e != GL_NO_ERROR) return c.error(e);
+  GLenum err = GL_NO_ERROR;
+  ImageRef data;
+  try {
+    data = unpack(c, w, h * d, format, type, pixels, err);
+  } catch (const std::bad_alloc&) {
+    return c.error(GL_OUT_OF_MEMORY);
+  }
   if (err != GL_NO_ERROR) return c.error(err);
   GL_LISTED(tex_sub_image(c, it, level, x, y, z, w, h, d, format, data));
   tex_sub_image(c, it, level, x, y, z, w, h, d, format, data);
@@ -302,7 +329,11 @@ void copy_tex_image(Context& c, const ImageTarget& it, GLint level, GLint intern
   if (!c.read_framebuffer_complete()) return c.error(GL_INVALID_FRAMEBUFFER_OPERATION);
   if (!(fmt.is_depth() ? c.read_depth() : c.read_color()).texture) return c.error(GL_INVALID_OPERATION);
   auto data = std::make_shared<ImageData>();
-  data->px = read_block(c, x, y, w, it.target == TexTarget::T1D ? 1 : h, fmt.is_depth());
+  try {
+    data->px = read_block(c, x, y, w, it.target == TexTarget::T1D ? 1 : h, fmt.is_depth());
+  } catch (const std::bad_alloc&) {
+    return c.error(GL_OUT_OF_MEMORY);
+  }
   if (fmt.is_depth() && fmt.has_stencil())
     for (glm::vec4& p : data->px) p.y = 0.0f;
   tex_image(c, it, level, fmt, w, it.target == TexTarget::T1D ? 1 : h, 1, data);
@@ -311,14 +342,18 @@ void copy_tex_image(Context& c, const ImageTarget& it, GLint level, GLint intern
 void copy_tex_sub_image(Context& c, const ImageTarget& it, GLint level, GLint xo, GLint yo, GLint zo, GLint x,
                         GLint y, GLsizei w, GLsizei h) {
   GL_OUTSIDE_BEGIN();
-  if (level < 0 || level >= kMaxTextureLevels) return c.error(GL_INVALID_VALUE);
+  if (const GLenum e = sub_image_error(c, it, level, xo, yo, zo, w, h, 1); e != GL_NO_ERROR)
+    return c.error(e);
   const TextureImage& img = c.bound_texture(it.target).image(it.face, level);
-  if (!img.defined()) return c.error(GL_INVALID_OPERATION);
   if (!c.read_framebuffer_complete()) return c.error(GL_INVALID_FRAMEBUFFER_OPERATION);
   const bool depth = img.fmt.is_depth();
   if (!(depth ? c.read_depth() : c.read_color()).texture) return c.error(GL_INVALID_OPERATION);
   auto data = std::make_shared<ImageData>();
-  data->px = read_block(c, x, y, std::max(w, 0), std::max(h, 0), depth);
+  try {
+    data->px = read_block(c, x, y, w, h, depth);
+  } catch (const std::bad_alloc&) {
+    return c.error(GL_OUT_OF_MEMORY);
+  }
   tex_sub_image(c, it, level, xo, yo, zo, w, h, 1, GL_NONE, data);
 }
 
@@ -445,8 +480,7 @@ void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internal, GL
                                  GLsizei h, GLint border) {
   GL_CONTEXT();
   ImageTarget it;
-  if (!image_target(target, 2, it) || it.proxy || it.target == TexTarget::T1DArray)
-    return c.error(GL_INVALID_ENUM);
+  if (!image_target(target, 2, it) || it.proxy) return c.error(GL_INVALID_ENUM);
   GL_LISTED(copy_tex_image(c, it, level, GLint(internal), x, y, w, h, border));
   copy_tex_image(c, it, level, GLint(internal), x, y, w, h, border);
 }
@@ -461,8 +495,7 @@ void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xo, GLint 
                                     GLsizei w, GLsizei h) {
   GL_CONTEXT();
   ImageTarget it;
-  if (!image_target(target, 2, it) || it.proxy || it.target == TexTarget::T1DArray)
-    return c.error(GL_INVALID_ENUM);
+  if (!image_target(target, 2, it) || it.proxy) return c.error(GL_INVALID_ENUM);
   GL_LISTED(copy_tex_sub_image(c, it, level, xo, yo, 0, x, y, w, h));
   copy_tex_sub_image(c, it, level, xo, yo, 0, x, y, w, h);
 }

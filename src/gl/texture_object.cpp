@@ -125,7 +125,8 @@ bool texture_complete(const TextureObject& t, const SamplerParams& p) {
   if (t.target == TexTarget::Buffer) return t.buffer != nullptr;
   const int base = t.effective_base();
   const TextureImage& b = t.image(0, base);
-  if (!b.defined() || t.base_level > t.max_level) return false;
+  // A base level beyond the last level has no image: incomplete (§3.8.14).
+  if (t.base_level >= kMaxTextureLevels || !b.defined() || t.base_level > t.max_level) return false;
   // Integer textures filter with NEAREST only (§3.8.14).
   if (b.fmt.integer() && (p.mag_filter != GL_NEAREST ||
                           (p.min_filter != GL_NEAREST && p.min_filter != GL_NEAREST_MIPMAP_NEAREST)))
@@ -164,7 +165,7 @@ bool update_gpu_texture(Context& c, TextureObject& t) {
   t.dirty = false;
   const int base = t.effective_base();
   const TextureImage& b = t.image(0, base);
-  if (!b.defined()) {
+  if (!b.defined() || t.base_level >= kMaxTextureLevels) {
     t.gpu_levels = 0;
     return false;
   }

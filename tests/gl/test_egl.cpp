@@ -160,6 +160,12 @@ TEST_F(EglTest, PbufferIsTheDefaultFramebuffer) {
   EXPECT_TRUE(eglDestroySync(dpy, sync));
   EXPECT_FALSE(eglDestroySync(dpy, sync));
   EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
+  // Another context of this thread takes the surface over (EGL_BAD_ACCESS is for other threads).
+  EGLContext other = eglCreateContext(dpy, cfg, EGL_NO_CONTEXT, nullptr);
+  ASSERT_TRUE(eglMakeCurrent(dpy, s, s, other));
+  EXPECT_EQ(eglGetCurrentContext(), other);
+  ASSERT_TRUE(eglMakeCurrent(dpy, s, s, ctx));
+  eglDestroyContext(dpy, other);
   // A destroyed current surface lives until it is released.
   EXPECT_TRUE(eglDestroySurface(dpy, s));
   glClear(GL_COLOR_BUFFER_BIT);

@@ -530,6 +530,8 @@ TEST_F(GL33Test, RestatedCallsAndSeparateStencil) {
   glMultTransposeMatrixf(rows);
   glGetFloatv(GL_MODELVIEW_MATRIX, m);
   EXPECT_EQ(m[13], 12.0f);
+  glGetFloatv(GL_TRANSPOSE_MODELVIEW_MATRIX, m);
+  EXPECT_EQ(m[7], 12.0f);
   glLoadIdentity();
 
   glWindowPos3f(5.0f, 7.0f, 0.5f);

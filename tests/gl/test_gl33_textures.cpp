@@ -755,6 +755,83 @@ TEST_F(TexTest, QueriesConditionalRenderingAndSyncs) {
   EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
 }
 
+// Regions past the image, sizes that would not fit, and a base level beyond the last level:
+// errors and incomplete textures, never a write out of bounds or an abort.
+TEST_F(TexTest, HugeAndOverflowingRegionsAreErrors) {
+  GLuint t;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  const GLubyte px[4] = {1, 2, 3, 4};
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0x7fffffff, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 100000, 100000, GL_RGBA, GL_UNSIGNED_BYTE, px);  // not read
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0x7fffffff, 0, 0, 0, 1, 1);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 100000, 100000);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  // A 2D array as large as the limits allow, in a float format: more than a texture may hold.
+  glBindTexture(GL_TEXTURE_2D_ARRAY, t + 1000);
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, 8192, 8192, 2048, 0, GL_RGBA, GL_FLOAT, nullptr);
+  EXPECT_EQ(err(), GLenum(GL_OUT_OF_MEMORY));
+  // Base level 20: no image there, so the texture is incomplete and samples (0, 0, 0, 1).
+  glBindTexture(GL_TEXTURE_2D, t);
+  const GLubyte white[4 * 16] = {255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255,
+                                 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255,
+                                 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255,
+                                 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255,
+                                 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  draw_quad("uniform sampler2D s;\nout vec4 c;", "c = texture(s, v);");
+  EXPECT_PX(pixel(16, 16), 255, 255, 255, 255);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 20);
+  draw_quad("uniform sampler2D s;\nout vec4 c;", "c = texture(s, v);");
+  EXPECT_PX(pixel(16, 16), 0, 0, 0, 255);
+  glDeleteTextures(1, &t);
+}
+
+// A blit into an RGB texture keeps its alpha at 1, and each draw buffer's colour mask holds.
+TEST_F(TexTest, BlitKeepsTheDestinationsChannelsAndMasks) {
+  GLuint tex[3], fbo[2];
+  glGenTextures(3, tex);
+  glGenFramebuffers(2, fbo);
+  const float half[4] = {0.2f, 0.4f, 0.6f, 0.5f};
+  glBindTexture(GL_TEXTURE_2D, tex[0]);
+  std::vector<float> src(4 * 4 * 4);
+  for (size_t i = 0; i < src.size(); ++i) src[i] = half[i % 4];
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_FLOAT, src.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo[0]);
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex[0], 0);
+  glBindTexture(GL_TEXTURE_2D, tex[1]);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, 4, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, nullptr);
+  glBindTexture(GL_TEXTURE_2D, tex[2]);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo[1]);
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex[1], 0);
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, tex[2], 0);
+  const GLenum bufs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, bufs);
+  glColorMaski(1, GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE);
+  glBlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  GLubyte out[4 * 16] = {};
+  glBindTexture(GL_TEXTURE_2D, tex[1]);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, out);
+  EXPECT_EQ(out[0], 51);
+  EXPECT_EQ(out[3], 255);  // RGB: alpha reads 1
+  glBindTexture(GL_TEXTURE_2D, tex[2]);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, out);
+  EXPECT_EQ(out[0], 51);
+  EXPECT_EQ(out[1], 0);  // green masked off for draw buffer 1
+  EXPECT_EQ(out[3], 128);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(2, fbo);
+  glDeleteTextures(3, tex);
+}
+
 // Random texture and framebuffer calls, valid and not: never a crash (with ASan), every
 // error one GL names.
 TEST_F(TexCoreTest, RandomTextureAndFramebufferCallsNeverCrash) {
