@@ -83,6 +83,13 @@ void clear_accum_buffer(Context& c);
 // (GL 3.3 §2.8.2), x in the low bits (draw_glsl.cpp).
 void unpack_2_10_10_10(uint32_t w, bool is_signed, bool normalized, float* out);
 
+// Object names are taken in increasing order, skipping any in use (GL 3.3 §2.5: unused names).
+template <class Map>
+GLuint fresh_name(const Map& used, GLuint& next) {
+  while (next == 0 || used.count(next)) ++next;
+  return next++;
+}
+
 inline bool is_finite4(float a, float b, float c, float d) {
   return std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && std::isfinite(d);
 }

@@ -81,13 +81,6 @@ void unmap(BufferObject& b) {
   b.map_offset = b.map_length = 0;
 }
 
-// Names are taken in increasing order, skipping any in use (GL 3.3 §2.5: unused names).
-template <class Map>
-GLuint fresh_name(const Map& used, GLuint& next) {
-  while (next == 0 || used.count(next)) ++next;
-  return next++;
-}
-
 GLenum access_of_flags(GLbitfield f) {
   const bool r = f & GL_MAP_READ_BIT, w = f & GL_MAP_WRITE_BIT;
   return r && w ? GL_READ_WRITE : w ? GL_WRITE_ONLY : GL_READ_ONLY;

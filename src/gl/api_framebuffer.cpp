@@ -365,8 +365,7 @@ template <class T>
 void gen_names(Context& c, GLsizei n, GLuint* names, std::unordered_map<GLuint, T>& map, GLuint& next) {
   if (n < 0) return c.error(GL_INVALID_VALUE);
   for (GLsizei i = 0; i < n; ++i) {
-    while (next == 0 || map.count(next)) ++next;
-    const GLuint name = next++;
+    const GLuint name = fresh_name(map, next);
     map[name] = nullptr;
     if (names) names[i] = name;
   }

@@ -82,8 +82,7 @@ void GLAPIENTRY glGenQueries(GLsizei n, GLuint* ids) {
   GL_OUTSIDE_BEGIN();
   if (n < 0) return c.error(GL_INVALID_VALUE);
   for (GLsizei i = 0; i < n; ++i) {
-    while (c.next_query_name == 0 || c.queries.count(c.next_query_name)) ++c.next_query_name;
-    const GLuint name = c.next_query_name++;
+    const GLuint name = fresh_name(c.queries, c.next_query_name);
     c.queries[name] = nullptr;  // the object is made by glBeginQuery
     if (ids) ids[i] = name;
   }

@@ -469,8 +469,7 @@ void GLAPIENTRY glGenSamplers(GLsizei n, GLuint* names) {
   GL_CONTEXT();
   if (n < 0) return c.error(GL_INVALID_VALUE);
   for (GLsizei i = 0; i < n; ++i) {
-    while (c.next_sampler_name == 0 || c.samplers.count(c.next_sampler_name)) ++c.next_sampler_name;
-    const GLuint name = c.next_sampler_name++;
+    const GLuint name = fresh_name(c.samplers, c.next_sampler_name);
     // GL 3.3 §3.8.2: glGenSamplers makes the objects (unlike textures, which wait for a bind).
     auto s = std::make_shared<SamplerObject>();
     s->name = name;

@@ -294,18 +294,26 @@ void hint(Context& c, GLenum target, GLenum mode) {
   }
 }
 
+bool window_buffer(GLenum b) {
+  return b == GL_FRONT || b == GL_BACK || b == GL_FRONT_AND_BACK || b == GL_LEFT || b == GL_RIGHT ||
+         b == GL_FRONT_LEFT || b == GL_FRONT_RIGHT || b == GL_BACK_LEFT || b == GL_BACK_RIGHT || b == GL_AUX0;
+}
+
+// The error of naming `b` as the draw or read buffer of a framebuffer object (GL 3.3 §4.2.1,
+// §4.3.3): GL_NONE and GL_COLOR_ATTACHMENTi are fine; a window's buffer or an attachment
+// past the last is GL_INVALID_OPERATION; anything else GL_INVALID_ENUM.
+GLenum fbo_buffer_error(GLenum b) {
+  if (b == GL_NONE) return GL_NO_ERROR;
+  if (b >= GL_COLOR_ATTACHMENT0 && b < GL_COLOR_ATTACHMENT0 + 16)
+    return b < GL_COLOR_ATTACHMENT0 + kMaxColorAttachments ? GL_NO_ERROR : GL_INVALID_OPERATION;
+  return window_buffer(b) ? GL_INVALID_OPERATION : GL_INVALID_ENUM;
+}
+
 void draw_buffer(Context& c, GLenum b) {
   GL_OUTSIDE_BEGIN();
   if (c.draw_fbo) {
     // A framebuffer object draws to one attachment, or none (GL 3.3 §4.2.1).
-    if (b != GL_NONE && !(b >= GL_COLOR_ATTACHMENT0 && b < GL_COLOR_ATTACHMENT0 + 16)) {
-      const bool window_buffer = b == GL_FRONT || b == GL_BACK || b == GL_FRONT_AND_BACK || b == GL_LEFT ||
-                                 b == GL_RIGHT || b == GL_FRONT_LEFT || b == GL_FRONT_RIGHT ||
-                                 b == GL_BACK_LEFT || b == GL_BACK_RIGHT || b == GL_AUX0;
-      return c.error(window_buffer ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
-    }
-    if (b >= GL_COLOR_ATTACHMENT0 + kMaxColorAttachments && b != GL_NONE)
-      return c.error(GL_INVALID_OPERATION);
+    if (const GLenum e = fbo_buffer_error(b); e != GL_NO_ERROR) return c.error(e);
     c.touch();
     c.draw_fbo->draw_buffers = {b};
     return;
@@ -315,9 +323,7 @@ void draw_buffer(Context& c, GLenum b) {
     c.s.color.draw_buffer = b;
     return;
   }
-  if (b != GL_FRONT && b != GL_BACK && b != GL_FRONT_AND_BACK && b != GL_LEFT && b != GL_FRONT_LEFT &&
-      b != GL_BACK_LEFT && b != GL_RIGHT && b != GL_FRONT_RIGHT && b != GL_BACK_RIGHT && b != GL_AUX0)
-    return c.error(GL_INVALID_ENUM);
+  if (!window_buffer(b)) return c.error(GL_INVALID_ENUM);
   if (!c.color_buffer(b)) return c.error(GL_INVALID_OPERATION);
   c.touch();
   c.s.color.draw_buffer = b;
@@ -326,14 +332,7 @@ void draw_buffer(Context& c, GLenum b) {
 void read_buffer(Context& c, GLenum b) {
   GL_OUTSIDE_BEGIN();
   if (c.read_fbo) {
-    if (b != GL_NONE && !(b >= GL_COLOR_ATTACHMENT0 && b < GL_COLOR_ATTACHMENT0 + 16)) {
-      const bool window_buffer = b == GL_FRONT || b == GL_BACK || b == GL_FRONT_AND_BACK || b == GL_LEFT ||
-                                 b == GL_RIGHT || b == GL_FRONT_LEFT || b == GL_FRONT_RIGHT ||
-                                 b == GL_BACK_LEFT || b == GL_BACK_RIGHT || b == GL_AUX0;
-      return c.error(window_buffer ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
-    }
-    if (b >= GL_COLOR_ATTACHMENT0 + kMaxColorAttachments && b != GL_NONE)
-      return c.error(GL_INVALID_OPERATION);
+    if (const GLenum e = fbo_buffer_error(b); e != GL_NO_ERROR) return c.error(e);
     c.read_fbo->read_buffer = b;
     return;
   }
@@ -341,9 +340,7 @@ void read_buffer(Context& c, GLenum b) {
     c.s.pixel.read_buffer = b;
     return;
   }
-  if (b != GL_FRONT && b != GL_BACK && b != GL_LEFT && b != GL_FRONT_LEFT && b != GL_BACK_LEFT &&
-      b != GL_RIGHT && b != GL_FRONT_RIGHT && b != GL_BACK_RIGHT && b != GL_AUX0)
-    return c.error(GL_INVALID_ENUM);
+  if (!window_buffer(b) || b == GL_FRONT_AND_BACK) return c.error(GL_INVALID_ENUM);
   if (!c.color_buffer(b)) return c.error(GL_INVALID_OPERATION);
   c.s.pixel.read_buffer = b;
 }

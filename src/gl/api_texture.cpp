@@ -387,8 +387,7 @@ void GLAPIENTRY glGenTextures(GLsizei n, GLuint* names) {
   GL_OUTSIDE_BEGIN();
   if (n < 0) return c.error(GL_INVALID_VALUE);
   for (GLsizei i = 0; i < n; ++i) {
-    while (c.next_texture_name == 0 || c.textures.count(c.next_texture_name)) ++c.next_texture_name;
-    const GLuint name = c.next_texture_name++;
+    const GLuint name = fresh_name(c.textures, c.next_texture_name);
     c.textures[name] = nullptr;  // reserved; the object is made when first bound
     if (names) names[i] = name;
   }

@@ -784,23 +784,21 @@ gpu::RenderState Context::render_state(bool for_clear) const {
   r.depth_write = s.depth.mask && target.depth && (for_clear || s.depth.test);
   r.stencil_test = s.stencil.test && target.stencil;
   const StencilState& st = s.stencil;
-  gpu::StencilFace f;
-  f.func = compare_of(st.func);
-  f.ref = uint8_t(std::clamp(st.ref, 0, 255));
-  f.read_mask = uint8_t(st.value_mask & 0xFF);
-  f.write_mask = uint8_t(st.write_mask & 0xFF);
-  f.fail = stencil_op_of(st.fail);
-  f.depth_fail = stencil_op_of(st.zfail);
-  f.pass = stencil_op_of(st.zpass);
-  r.stencil_front = f;
-  f.func = compare_of(st.back_func);
-  f.ref = uint8_t(std::clamp(st.back_ref, 0, 255));
-  f.read_mask = uint8_t(st.back_value_mask & 0xFF);
-  f.write_mask = uint8_t(st.back_write_mask & 0xFF);
-  f.fail = stencil_op_of(st.back_fail);
-  f.depth_fail = stencil_op_of(st.back_zfail);
-  f.pass = stencil_op_of(st.back_zpass);
-  r.stencil_back = f;
+  auto face = [](GLenum func, GLint ref, GLuint value_mask, GLuint write_mask, GLenum fail, GLenum zfail,
+                 GLenum zpass) {
+    gpu::StencilFace f;
+    f.func = compare_of(func);
+    f.ref = uint8_t(std::clamp(ref, 0, 255));
+    f.read_mask = uint8_t(value_mask & 0xFF);
+    f.write_mask = uint8_t(write_mask & 0xFF);
+    f.fail = stencil_op_of(fail);
+    f.depth_fail = stencil_op_of(zfail);
+    f.pass = stencil_op_of(zpass);
+    return f;
+  };
+  r.stencil_front = face(st.func, st.ref, st.value_mask, st.write_mask, st.fail, st.zfail, st.zpass);
+  r.stencil_back = face(st.back_func, st.back_ref, st.back_value_mask, st.back_write_mask, st.back_fail,
+                        st.back_zfail, st.back_zpass);
   auto equation = [](GLenum e) {
     switch (e) {
       case GL_FUNC_SUBTRACT: return gpu::BlendEquation::Subtract;

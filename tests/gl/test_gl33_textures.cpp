@@ -58,7 +58,8 @@ GLuint program(const std::string& vs, const std::string& fs) {
 }
 
 // A full-screen quad drawn with a fragment shader body `fs_main` over `decls`; v in [0, 1]^2.
-void draw_quad(const std::string& decls, const std::string& fs_main) {
+// With `unit` >= 0 the sampler uniform `s` reads that texture unit.
+void draw_quad(const std::string& decls, const std::string& fs_main, int unit = -1) {
   static const float quad[] = {-1, -1, 1, -1, -1, 1, 1, 1};
   const std::string vs =
       "#version 330\nlayout(location = 0) in vec2 p;\nout vec2 v;\n"
@@ -66,6 +67,7 @@ void draw_quad(const std::string& decls, const std::string& fs_main) {
   const std::string fs = "#version 330\nin vec2 v;\n" + decls + "\nvoid main() {\n" + fs_main + "\n}\n";
   GLuint prog = program(vs, fs);
   glUseProgram(prog);
+  if (unit >= 0) glUniform1i(glGetUniformLocation(prog, "s"), unit);
   GLuint vao, vbo;
   glGenVertexArrays(1, &vao);
   glBindVertexArray(vao);
@@ -226,27 +228,7 @@ TEST_F(TexTest, EveryTargetIsSampled) {
 
   // A full-screen quad whose sampler `s` reads `unit`; the centre pixel.
   auto run = [&](const std::string& decl, const std::string& body, int unit) {
-    const std::string fs =
-        "#version 330\nin vec2 v;\n" + decl + "\nout vec4 c;\nvoid main() {\n" + body + "\n}\n";
-    static const float quad[] = {-1, -1, 1, -1, -1, 1, 1, 1};
-    GLuint p = program(
-        "#version 330\nlayout(location = 0) in vec2 p;\nout vec2 v;\n"
-        "void main() { v = p * 0.5 + 0.5; gl_Position = vec4(p, 0.0, 1.0); }\n",
-        fs);
-    glUseProgram(p);
-    glUniform1i(glGetUniformLocation(p, "s"), unit);
-    GLuint vao, vbo;
-    glGenVertexArrays(1, &vao);
-    glBindVertexArray(vao);
-    glGenBuffers(1, &vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo);
-    glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
-    glEnableVertexAttribArray(0);
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-    glDeleteBuffers(1, &vbo);
-    glDeleteVertexArrays(1, &vao);
-    glDeleteProgram(p);
+    draw_quad(decl + "\nout vec4 c;", body, unit);
     return pixel(16, 16);
   };
   EXPECT_PX(run("uniform sampler1D s;", "c = texture(s, 0.6);", 1), 0, 255, 0, 255);
