@@ -322,6 +322,10 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_PACK_SKIP_ROWS: put(out, {double(c.c.pack.skip_rows)}); return true;
     case GL_PACK_SKIP_PIXELS: put(out, {double(c.c.pack.skip_pixels)}); return true;
     case GL_PACK_ALIGNMENT: put(out, {double(c.c.pack.alignment)}); return true;
+    case GL_UNPACK_IMAGE_HEIGHT: put(out, {double(c.c.unpack.image_height)}); return true;
+    case GL_UNPACK_SKIP_IMAGES: put(out, {double(c.c.unpack.skip_images)}); return true;
+    case GL_PACK_IMAGE_HEIGHT: put(out, {double(c.c.pack.image_height)}); return true;
+    case GL_PACK_SKIP_IMAGES: put(out, {double(c.c.pack.skip_images)}); return true;
     case GL_ZOOM_X: put(out, {s.pixel.zoom_x}); return true;
     case GL_ZOOM_Y: put(out, {s.pixel.zoom_y}); return true;
     case GL_RED_SCALE: put(out, {s.pixel.red_scale}); return true;

@@ -116,12 +116,16 @@ void pixel_store(Context& c, GLenum pname, float v) {
     case GL_PACK_ROW_LENGTH:
     case GL_PACK_SKIP_ROWS:
     case GL_PACK_SKIP_PIXELS:
+    case GL_PACK_IMAGE_HEIGHT:
+    case GL_PACK_SKIP_IMAGES:
     case GL_PACK_ALIGNMENT: ps = &c.c.pack; break;
     case GL_UNPACK_SWAP_BYTES:
     case GL_UNPACK_LSB_FIRST:
     case GL_UNPACK_ROW_LENGTH:
     case GL_UNPACK_SKIP_ROWS:
     case GL_UNPACK_SKIP_PIXELS:
+    case GL_UNPACK_IMAGE_HEIGHT:
+    case GL_UNPACK_SKIP_IMAGES:
     case GL_UNPACK_ALIGNMENT: ps = &c.c.unpack; break;
     default: return c.error(GL_INVALID_ENUM);
   }
@@ -142,6 +146,10 @@ void pixel_store(Context& c, GLenum pname, float v) {
         ps->row_length = i;
       else if (pname == GL_PACK_SKIP_ROWS || pname == GL_UNPACK_SKIP_ROWS)
         ps->skip_rows = i;
+      else if (pname == GL_PACK_IMAGE_HEIGHT || pname == GL_UNPACK_IMAGE_HEIGHT)
+        ps->image_height = i;
+      else if (pname == GL_PACK_SKIP_IMAGES || pname == GL_UNPACK_SKIP_IMAGES)
+        ps->skip_images = i;
       else
         ps->skip_pixels = i;
       break;

@@ -95,42 +95,67 @@ GLenum check_format_match(const TexFormat& f, GLenum format, TexTarget target) {
   return GL_NO_ERROR;
 }
 
-// The client's pixels, or the unpack buffer's bytes at the offset `pixels` (GL 3.3 §3.7.1)
-// when one is bound. Null when there is nothing to read; sets `err` when the buffer is mapped
-// or too small.
-const void* unpack_source(Context& c, GLsizei w, GLsizei rows, GLenum format, GLenum type, const void* pixels,
-                          GLenum& err) {
-  err = GL_NO_ERROR;
-  if (!c.pixel_unpack_buffer) return pixels;
-  const BufferObject& b = *c.pixel_unpack_buffer;
-  if (b.mapped) {
-    err = GL_INVALID_OPERATION;
-    return nullptr;
-  }
-  if (w <= 0 || rows <= 0) return nullptr;
-  const PixelLayout L = pixel_layout(c.c.unpack, w, format, type);
-  const size_t offset = reinterpret_cast<size_t>(pixels);
-  const size_t need = offset + L.offset + L.row_stride * size_t(rows - 1) + L.pixel_stride * size_t(w);
-  if (need > b.data.size() || need < offset) {
-    err = GL_INVALID_OPERATION;
-    return nullptr;
-  }
-  return b.data.data() + offset;
-}
-
 // Unpacked texels of an image call, taken when the call is made (a display list keeps them).
 struct ImageData {
   std::vector<glm::vec4> px;
 };
 using ImageRef = std::shared_ptr<const ImageData>;
 
-ImageRef unpack(Context& c, GLsizei w, GLsizei rows, GLenum format, GLenum type, const void* pixels,
-                GLenum& err) {
-  const void* src = unpack_source(c, w, rows, format, type, pixels, err);
-  if (!src || w <= 0 || rows <= 0) return nullptr;
-  auto d = std::make_shared<ImageData>();
-  unpack_pixels(c.c.unpack, w, rows, format, type, src, d->px);
-  return d;
+// Where the images of a w x h x d block lie in client memory: each image's rows as the pixel
+// store's layout says, images `image_stride` bytes apart from image `first` on. 3D calls
+// (glTexImage3D, glTexSubImage3D, glGetTexImage of a 3D or array texture) use
+// GL_*_IMAGE_HEIGHT and GL_*_SKIP_IMAGES (GL 3.3 §3.7.4, §6.1.4); the others do not.
+struct BlockLayout {
+  PixelLayout rows;
+  size_t image_stride = 0, first = 0;
+  size_t bytes = 0;  // from the start of the memory to the end of the last pixel
+};
+BlockLayout block_layout(const PixelStore& ps, GLsizei w, GLsizei h, GLsizei d, bool three_d, GLenum format,
+                         GLenum type) {
+  BlockLayout b;
+  b.rows = pixel_layout(ps, w, format, type);
+  const size_t rows_per_image = three_d && ps.image_height > 0 ? size_t(ps.image_height) : size_t(h);
+  b.image_stride = b.rows.row_stride * rows_per_image;
+  b.first = three_d ? size_t(ps.skip_images) : 0;
+  b.bytes = b.rows.offset + (b.first + size_t(d) - 1) * b.image_stride + b.rows.row_stride * size_t(h - 1) +
+            b.rows.pixel_stride * size_t(w);
+  return b;
+}
+
+// The memory of a transfer: the client's pointer, or the pixel unpack/pack buffer's bytes at
+// the offset `pixels` (GL 3.3 §3.7.1, §4.3.2). Null with `err` set when that buffer is mapped or
+// too small; null without an error when there is nothing to read or write.
+std::byte* transfer_memory(const BufferRef& pbo, void* pixels, size_t bytes, GLenum& err) {
+  err = GL_NO_ERROR;
+  if (!pbo) return static_cast<std::byte*>(pixels);
+  if (pbo->mapped) {
+    err = GL_INVALID_OPERATION;
+    return nullptr;
+  }
+  const size_t offset = reinterpret_cast<size_t>(pixels);
+  if (offset + bytes > pbo->data.size() || offset + bytes < offset) {
+    err = GL_INVALID_OPERATION;
+    return nullptr;
+  }
+  return pbo->data.writable() + offset;
+}
+
+ImageRef unpack(Context& c, GLsizei w, GLsizei h, GLsizei d, bool three_d, GLenum format, GLenum type,
+                const void* pixels, GLenum& err) {
+  err = GL_NO_ERROR;
+  if (w <= 0 || h <= 0 || d <= 0) return nullptr;
+  const PixelStore& ps = c.c.unpack;
+  const BlockLayout b = block_layout(ps, w, h, d, three_d, format, type);
+  const std::byte* base = transfer_memory(c.pixel_unpack_buffer, const_cast<void*>(pixels), b.bytes, err);
+  if (!base) return nullptr;
+  auto data = std::make_shared<ImageData>();
+  data->px.reserve(size_t(w) * size_t(h) * size_t(d));
+  std::vector<glm::vec4> image;
+  for (GLsizei k = 0; k < d; ++k) {
+    unpack_pixels(ps, w, h, format, type, base + (b.first + size_t(k)) * b.image_stride, image);
+    data->px.insert(data->px.end(), image.begin(), image.end());
+  }
+  return data;
 }
 
 // Fills `img` (already sized) at texel offset (x, y, z) with a w x h x d block of unpacked
@@ -268,7 +293,7 @@ void tex_image_entry(GLenum target, int dims, GLint level, GLint internal, GLsiz
   GLenum err = GL_NO_ERROR;
   ImageRef data;
   try {
-    if (!it.proxy) data = unpack(c, w, h * d, format, type, pixels, err);
+    if (!it.proxy) data = unpack(c, w, h, d, dims == 3, format, type, pixels, err);
   } catch (const std::bad_alloc&) {
     return c.error(GL_OUT_OF_MEMORY);
   }
@@ -292,7 +317,7 @@ void tex_sub_image_entry(GLenum target, int dims, GLint level, GLint x, GLint y,
   GLenum err = GL_NO_ERROR;
   ImageRef data;
   try {
-    data = unpack(c, w, h * d, format, type, pixels, err);
+    data = unpack(c, w, h, d, dims == 3, format, type, pixels, err);
   } catch (const std::bad_alloc&) {
     return c.error(GL_OUT_OF_MEMORY);
   }
@@ -524,25 +549,22 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
   if (format == GL_STENCIL_INDEX || format == GL_COLOR_INDEX) return c.error(GL_INVALID_OPERATION);
   const GLenum m = check_format_match(img.fmt, format, TexTarget::T2D);
   if (m != GL_NO_ERROR) return c.error(m);
-  const int rows = img.height * img.depth;
-  void* dst = pixels;
-  if (c.pixel_pack_buffer) {
-    BufferObject& b = *c.pixel_pack_buffer;
-    const PixelLayout L = pixel_layout(c.c.pack, img.width, format, type);
-    const size_t offset = reinterpret_cast<size_t>(pixels);
-    const size_t need =
-        offset + L.offset + L.row_stride * size_t(rows - 1) + L.pixel_stride * size_t(img.width);
-    if (b.mapped || need > b.data.size() || need < offset) return c.error(GL_INVALID_OPERATION);
-    dst = b.data.writable() + offset;
-  }
+  const bool three_d = it.target == TexTarget::T3D || it.target == TexTarget::T2DArray;
+  const int rows = three_d ? img.height : img.height * img.depth, images = three_d ? img.depth : 1;
+  const BlockLayout b = block_layout(c.c.pack, img.width, rows, images, three_d, format, type);
+  GLenum err = GL_NO_ERROR;
+  std::byte* dst = transfer_memory(c.pixel_pack_buffer, pixels, b.bytes, err);
+  if (err != GL_NO_ERROR) return c.error(err);
   if (!dst) return;
   pull_rendered(c, t);
   const size_t bpp = tessel::gpu::format_info(img.fmt.storage).bytes;
   std::vector<glm::vec4> px(size_t(img.width) * size_t(rows));
-  for (size_t i = 0; i < px.size(); ++i)
-    px[i] =
-        from_storage(img.fmt, tessel::gpu::detail::decode_texel(img.fmt.storage, img.data.data() + i * bpp));
-  pack_pixels(c.c.pack, img.width, rows, format, type, px, dst);
+  for (int k = 0; k < images; ++k) {
+    const std::byte* src = img.data.data() + size_t(k) * px.size() * bpp;
+    for (size_t i = 0; i < px.size(); ++i)
+      px[i] = from_storage(img.fmt, tessel::gpu::detail::decode_texel(img.fmt.storage, src + i * bpp));
+    pack_pixels(c.c.pack, img.width, rows, format, type, px, dst + (b.first + size_t(k)) * b.image_stride);
+  }
 }
 
 // GL 3.3 §3.8.7: a buffer texture reads a buffer object's store as an array of texels.

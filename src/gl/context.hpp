@@ -265,6 +265,7 @@ struct ServerState {
 struct PixelStore {
   bool swap_bytes = false, lsb_first = false;
   GLint row_length = 0, skip_rows = 0, skip_pixels = 0, alignment = 4;
+  GLint image_height = 0, skip_images = 0;  // 3D images (GL 1.2 §3.8.1)
 };
 
 struct ArrayPointer {

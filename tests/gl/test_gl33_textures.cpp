@@ -34,6 +34,11 @@ struct TexCoreTest : TexTest {
 };
 
 GLenum err() { return glGetError(); }
+GLint get_int_value(GLenum name) {
+  GLint v[4] = {};
+  glGetIntegerv(name, v);
+  return v[0];
+}
 
 GLuint program(const std::string& vs, const std::string& fs) {
   GLuint p = glCreateProgram();
@@ -812,6 +817,48 @@ TEST_F(TexTest, BlitKeepsTheDestinationsChannelsAndMasks) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glDeleteFramebuffers(2, fbo);
   glDeleteTextures(3, tex);
+}
+
+// 3D images with GL_UNPACK_IMAGE_HEIGHT and GL_UNPACK_SKIP_IMAGES, read back with the pack
+// equivalents (GL 3.3 §3.7.4, §6.1.4).
+TEST_F(TexTest, ImageHeightAndSkipImagesForThreeDimensionalImages) {
+  // Client memory: 4 images of 3 rows of 2 RGBA8 texels; the texture takes 2x2x2 from it,
+  // skipping the first image and each image's last row.
+  std::vector<GLubyte> mem(4 * 3 * 2 * 4);
+  for (size_t i = 0; i < mem.size(); ++i) mem[i] = GLubyte(i);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 3);
+  glPixelStorei(GL_UNPACK_SKIP_IMAGES, 1);
+  EXPECT_EQ(get_int_value(GL_UNPACK_IMAGE_HEIGHT), 3);
+  GLuint t;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_3D, t);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, 2, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, mem.data());
+  ASSERT_EQ(err(), GLenum(GL_NO_ERROR));
+  glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
+  glPixelStorei(GL_UNPACK_SKIP_IMAGES, 0);
+  std::vector<GLubyte> back(2 * 2 * 2 * 4, 0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, back.data());
+  // Texel (x, y, z) came from image z + 1, row y, column x.
+  for (int z = 0; z < 2; ++z)
+    for (int y = 0; y < 2; ++y)
+      for (int x = 0; x < 2; ++x)
+        EXPECT_EQ(back[size_t(((z * 2 + y) * 2 + x) * 4)], GLubyte((((z + 1) * 3 + y) * 2 + x) * 4))
+            << x << "," << y << "," << z;
+  // Packed back the same way: the skipped image and rows are left alone.
+  std::vector<GLubyte> out(mem.size(), 0xEE);
+  glPixelStorei(GL_PACK_IMAGE_HEIGHT, 3);
+  glPixelStorei(GL_PACK_SKIP_IMAGES, 1);
+  glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+  EXPECT_EQ(out[0], 0xEE);
+  EXPECT_EQ(out[size_t((1 * 3 + 0) * 2 * 4)], mem[size_t((1 * 3 + 0) * 2 * 4)]);
+  EXPECT_EQ(out[size_t((1 * 3 + 2) * 2 * 4)], 0xEE);  // row 2 of image 1: not part of the texture
+  glPixelStorei(GL_PACK_IMAGE_HEIGHT, -1);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  glPixelStorei(GL_PACK_IMAGE_HEIGHT, 0);
+  glPixelStorei(GL_PACK_SKIP_IMAGES, 0);
+  glDeleteTextures(1, &t);
 }
 
 // Random texture and framebuffer calls, valid and not: never a crash (with ASan), every
