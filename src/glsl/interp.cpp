@@ -1,6 +1,7 @@
 // The IR interpreter (interp.hpp). Structured control flow under execution masks, as
 // ir.hpp describes: `live` is the set of lanes that run a node.
 #include "interp.hpp"
+#include "texture_avx512.hpp"
 
 #include "tessel/gpu/format.hpp"
 
@@ -587,6 +588,7 @@ static void store_rows(const gpu::Vec4<gpu::Float16>& r, TexLanes& tl) {
   r.w.store(reinterpret_cast<float*>(tl.out[3]));
 }
 __attribute__((flatten, noinline)) static void texture_2d_rows(const gpu::Sampler2D& s2, TexLanes& tl) {
+  if (trilinear_avx512(*s2.texture, s2.state, tl)) return;
   store_rows(gpu::texture(s2, coord_rows(tl)), tl);
 }
 
@@ -595,6 +597,7 @@ __attribute__((flatten, noinline)) static void texture_2d_rows(const gpu::Sample
 // lookups), else one after the other.
 __attribute__((flatten, noinline)) static void texture_2d_rows_pair(const gpu::Sampler2D& s2, TexLanes& a,
                                                                     TexLanes& b) {
+  if (trilinear_avx512(*s2.texture, s2.state, a, b)) return;
 #if defined(__AVX2__)
   gpu::Vec4<gpu::Float16> ra, rb;
   if (gpu::detail::trilinear32(*s2.texture, s2.state, coord_rows(a), coord_rows(b), ra, rb)) {

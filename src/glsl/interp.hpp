@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "ir.hpp"
@@ -21,7 +22,11 @@ struct TextureUnit {
   const gpu::TextureBuffer* texture_buffer = nullptr;
   // GL_TEXTURE_SWIZZLE_*: each result component from 0-3 (R, G, B, A), 4 (zero) or 5 (one).
   std::array<uint8_t, 4> swizzle{0, 1, 2, 3};
-  bool swizzled() const { return swizzle != std::array<uint8_t, 4>{0, 1, 2, 3}; }
+  bool swizzled() const {
+    uint32_t w;  // (one compare: std::array's operator!= is a call to memcmp)
+    std::memcpy(&w, swizzle.data(), 4);
+    return w != 0x03020100u;  // bytes 0, 1, 2, 3 in memory order (little-endian)
+  }
 };
 
 struct alignas(64) LaneReg {

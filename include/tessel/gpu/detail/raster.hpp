@@ -630,7 +630,14 @@ class Program final : public ProgramBase {
       const float *pla = pa.planes(), *plb = pb.planes();
       // A run-time shader's unused components (its varyings round up to K) are not read.
       int n = K;
-      if constexpr (shader_runtime<S>()) n = shader_.live_varyings();
+      float* rows = nullptr;  // its lane rows (thread-local: looked up once), `stride` apart
+      size_t stride = 0;
+      if constexpr (shader_runtime<S>()) {
+        n = shader_.live_varyings();
+        auto& lanes = S::fragment_lanes(slot);
+        rows = &lanes.varyings[0][0];
+        stride = std::size(lanes.varyings[0]);
+      }
       for (int k = 0; k < n; ++k) {
         F v;
         if (shader_runtime<S>() && ((flat >> k) & 1)) {
@@ -640,7 +647,7 @@ class Program final : public ProgramBase {
           if (!(((flat | noperspective) >> k) & 1)) v = v * w;
         }
         if constexpr (shader_runtime<S>())
-          v.store(S::fragment_lanes(slot).varyings[k]);
+          v.store(rows + size_t(k) * stride);
         else
           lanes[k] = v;
       }
