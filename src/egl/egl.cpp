@@ -565,6 +565,7 @@ EGLBoolean EGLAPIENTRY eglMakeCurrent(EGLDisplay dpy, EGLSurface draw, EGLSurfac
   if (c->draw && c->draw != s) c->draw->current = false;
   c->current = true;
   c->draw = s;
+  c->gl->has_default_framebuffer = s != nullptr;
   if (s) {
     s->current = true;
     // The context's default framebuffer is the surface's size (surfaceless: 1x1, never shown).

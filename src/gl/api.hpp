@@ -23,6 +23,24 @@
   if (ctx_ == nullptr) return __VA_ARGS__;               \
   ::tessel::gl::Context& c = *ctx_
 
+// An entry point the core profile removed (GL 3.2 core, appendix E.2.2; the Khronos registry's
+// <remove profile="core"> list): in a core context it does nothing and records
+// GL_INVALID_OPERATION, as Mesa's core contexts answer. GL_COMPAT_CONTEXT is GL_CONTEXT with
+// that check; GL_REMOVED_IN_CORE is the check alone, for bodies that do not start with it.
+#define GL_COMPAT_CONTEXT(...)     \
+  GL_CONTEXT(__VA_ARGS__);         \
+  if (c.core_profile) {            \
+    c.error(GL_INVALID_OPERATION); \
+    return __VA_ARGS__;            \
+  }                                \
+  static_assert(true)
+#define GL_REMOVED_IN_CORE(...)                                                                    \
+  if (::tessel::gl::Context* rc_ = ::tessel::gl::current(); rc_ != nullptr && rc_->core_profile) { \
+    rc_->error(GL_INVALID_OPERATION);                                                              \
+    return __VA_ARGS__;                                                                            \
+  }                                                                                                \
+  static_assert(true)
+
 #define GL_LISTED(...)                                                 \
   do {                                                                 \
     if (c.compiling_list != 0 && !c.record([=]() {                     \

@@ -327,48 +327,48 @@ using namespace tessel::gl;
 extern "C" {
 
 void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   set_pointer(c, c.c.vertex, size, type, stride, ptr, {2, 3, 4}, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 void GLAPIENTRY glNormalPointer(GLenum type, GLsizei stride, const GLvoid* ptr) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   set_pointer(c, c.c.normal, 3, type, stride, ptr, {3}, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 void GLAPIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   set_pointer(
       c, c.c.color, size, type, stride, ptr, {3, 4},
       {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE});
 }
 void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   set_pointer(c, c.c.tex, size, type, stride, ptr, {1, 2, 3, 4}, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid* ptr) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   set_pointer(c, c.c.edge, 1, GL_UNSIGNED_BYTE, stride, ptr, {1}, {GL_UNSIGNED_BYTE});
 }
 void GLAPIENTRY glIndexPointer(GLenum type, GLsizei stride, const GLvoid* ptr) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   set_pointer(c, c.c.index, 1, type, stride, ptr, {1},
               {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 void GLAPIENTRY glEnableClientState(GLenum cap) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   ArrayPointer* a = client_array(c, cap);
   if (!a) return c.error(GL_INVALID_ENUM);
   a->enabled = true;
 }
 void GLAPIENTRY glDisableClientState(GLenum cap) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   ArrayPointer* a = client_array(c, cap);
   if (!a) return c.error(GL_INVALID_ENUM);
   a->enabled = false;
 }
 void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid** out) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (!out) return;
   switch (pname) {
@@ -486,13 +486,13 @@ void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsiz
 }
 
 void GLAPIENTRY glArrayElement(GLint i) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   array_element(c, i);
 }
 
 // GL 2.1 Table 2.5: the interleaved formats.
 void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid* pointer) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (stride < 0) return c.error(GL_INVALID_VALUE);
   struct Row {

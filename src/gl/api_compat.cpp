@@ -58,13 +58,13 @@ void attrib_p(Context& c, GLuint index, GLenum type, bool normalized, int n, GLu
 using namespace tessel::gl;
 
 #define WINDOW_POS(x, y, z)                                   \
-  GL_CONTEXT();                                               \
+  GL_COMPAT_CONTEXT();                                        \
   const float wx_ = float(x), wy_ = float(y), wz_ = float(z); \
   GL_LISTED(window_pos(c, wx_, wy_, wz_));                    \
   window_pos(c, wx_, wy_, wz_)
 
 #define MULTI_TEX(u, s, t, r, q)                                              \
-  GL_CONTEXT();                                                               \
+  GL_COMPAT_CONTEXT();                                                        \
   const GLenum mu_ = (u);                                                     \
   const float ms_ = float(s), mt_ = float(t), mr_ = float(r), mq_ = float(q); \
   GL_LISTED(multi_tex(c, mu_, ms_, mt_, mr_, mq_));                           \
@@ -73,25 +73,25 @@ using namespace tessel::gl;
 extern "C" {
 
 void GLAPIENTRY glLoadTransposeMatrixf(const GLfloat* m) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const glm::mat4 a = transposed(m);
   GL_LISTED(load_matrix(c, a));
   load_matrix(c, a);
 }
 void GLAPIENTRY glLoadTransposeMatrixd(const GLdouble* m) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const glm::mat4 a = transposed(m);
   GL_LISTED(load_matrix(c, a));
   load_matrix(c, a);
 }
 void GLAPIENTRY glMultTransposeMatrixf(const GLfloat* m) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const glm::mat4 a = transposed(m);
   GL_LISTED(mult_matrix(c, a));
   mult_matrix(c, a);
 }
 void GLAPIENTRY glMultTransposeMatrixd(const GLdouble* m) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const glm::mat4 a = transposed(m);
   GL_LISTED(mult_matrix(c, a));
   mult_matrix(c, a);

@@ -491,7 +491,8 @@ GLenum GLAPIENTRY glCheckFramebufferStatus(GLenum target) {
     return 0;
   }
   FramebufferRef& r = draw ? c.draw_fbo : c.read_fbo;
-  return r ? c.framebuffer_status(*r) : GLenum(GL_FRAMEBUFFER_COMPLETE);
+  if (r) return c.framebuffer_status(*r);
+  return c.has_default_framebuffer ? GLenum(GL_FRAMEBUFFER_COMPLETE) : GLenum(GL_FRAMEBUFFER_UNDEFINED);
 }
 void GLAPIENTRY glFramebufferTexture1D(GLenum target, GLenum attachment, GLenum textarget, GLuint texture,
                                        GLint level) {

@@ -215,6 +215,15 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_LIGHT_MODEL_COLOR_CONTROL: e(GL_SINGLE_COLOR); return true;
     // Rasterization.
     case GL_POINT_SIZE: put(out, {s.point.size}); return true;
+    case GL_POINT_SIZE_MIN: put(out, {s.point.size_min}); return true;
+    case GL_POINT_SIZE_MAX: put(out, {s.point.size_max}); return true;
+    case GL_POINT_DISTANCE_ATTENUATION:
+      put(out, {s.point.attenuation[0], s.point.attenuation[1], s.point.attenuation[2]});
+      return true;
+    case GL_POINT_FADE_THRESHOLD_SIZE: put(out, {s.point.fade_threshold}); return true;
+    case GL_POINT_SPRITE_COORD_ORIGIN:
+      e(s.point.sprite_lower_left ? GL_LOWER_LEFT : GL_UPPER_LEFT);
+      return true;
     case GL_POINT_SMOOTH: b(s.point.smooth); return true;
     case GL_LINE_WIDTH: put(out, {s.line.width}); return true;
     case GL_LINE_SMOOTH: b(s.line.smooth); return true;
@@ -503,7 +512,7 @@ void GLAPIENTRY glGetDoublev(GLenum pname, GLdouble* out) {
 }
 
 void GLAPIENTRY glGetLightfv(GLenum light, GLenum pname, GLfloat* out) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (light < GL_LIGHT0 || light >= GL_LIGHT0 + kMaxLights || light_param_count(pname) == 0)
     return c.error(GL_INVALID_ENUM);
@@ -530,6 +539,7 @@ void GLAPIENTRY glGetLightfv(GLenum light, GLenum pname, GLfloat* out) {
   }
 }
 void GLAPIENTRY glGetLightiv(GLenum light, GLenum pname, GLint* out) {
+  GL_REMOVED_IN_CORE();
   GLfloat f[4] = {0, 0, 0, 0};
   glGetLightfv(light, pname, f);
   if (!out) return;
@@ -540,7 +550,7 @@ void GLAPIENTRY glGetLightiv(GLenum light, GLenum pname, GLint* out) {
                    : GLint(std::lround(f[k]));
 }
 void GLAPIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if ((face != GL_FRONT && face != GL_BACK) || material_param_count(pname) == 0 ||
       pname == GL_AMBIENT_AND_DIFFUSE)
@@ -561,6 +571,7 @@ void GLAPIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
   }
 }
 void GLAPIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint* out) {
+  GL_REMOVED_IN_CORE();
   GLfloat f[4] = {0, 0, 0, 0};
   glGetMaterialfv(face, pname, f);
   if (!out) return;

@@ -203,13 +203,14 @@ bool is_color_param(GLenum pname) {
 using namespace tessel::gl;
 
 #define LIGHT_CALL(fn, ...)      \
-  GL_CONTEXT();                  \
+  GL_COMPAT_CONTEXT();           \
   GL_LISTED(fn(c, __VA_ARGS__)); \
   fn(c, __VA_ARGS__)
 
 extern "C" {
 
 void GLAPIENTRY glLightf(GLenum l, GLenum pname, GLfloat v) {
+  GL_REMOVED_IN_CORE();
   const Vec4Arg a{v, 0, 0, 0};
   GL_CONTEXT();
   if (light_param_count(pname) != 1) return c.error(GL_INVALID_ENUM);
@@ -218,15 +219,18 @@ void GLAPIENTRY glLightf(GLenum l, GLenum pname, GLfloat v) {
 }
 void GLAPIENTRY glLighti(GLenum l, GLenum pname, GLint v) { glLightf(l, pname, float(v)); }
 void GLAPIENTRY glLightfv(GLenum l, GLenum pname, const GLfloat* v) {
+  GL_REMOVED_IN_CORE();
   const Vec4Arg a = take(v, light_param_count(pname));
   LIGHT_CALL(light, l, pname, a);
 }
 void GLAPIENTRY glLightiv(GLenum l, GLenum pname, const GLint* v) {
+  GL_REMOVED_IN_CORE();
   const int n = light_param_count(pname);
   const Vec4Arg a = is_color_param(pname) ? take_color_int(v, n) : take(v, n);
   LIGHT_CALL(light, l, pname, a);
 }
 void GLAPIENTRY glLightModelf(GLenum pname, GLfloat v) {
+  GL_REMOVED_IN_CORE();
   const Vec4Arg a{v, 0, 0, 0};
   GL_CONTEXT();
   if (pname == GL_LIGHT_MODEL_AMBIENT) return c.error(GL_INVALID_ENUM);
@@ -235,15 +239,18 @@ void GLAPIENTRY glLightModelf(GLenum pname, GLfloat v) {
 }
 void GLAPIENTRY glLightModeli(GLenum pname, GLint v) { glLightModelf(pname, float(v)); }
 void GLAPIENTRY glLightModelfv(GLenum pname, const GLfloat* v) {
+  GL_REMOVED_IN_CORE();
   const Vec4Arg a = take(v, light_model_count(pname));
   LIGHT_CALL(light_model, pname, a);
 }
 void GLAPIENTRY glLightModeliv(GLenum pname, const GLint* v) {
+  GL_REMOVED_IN_CORE();
   const int n = light_model_count(pname);
   const Vec4Arg a = is_color_param(pname) ? take_color_int(v, n) : take(v, n);
   LIGHT_CALL(light_model, pname, a);
 }
 void GLAPIENTRY glMaterialf(GLenum face, GLenum pname, GLfloat v) {
+  GL_REMOVED_IN_CORE();
   const Vec4Arg a{v, 0, 0, 0};
   GL_CONTEXT();
   if (pname != GL_SHININESS) return c.error(GL_INVALID_ENUM);
@@ -252,10 +259,12 @@ void GLAPIENTRY glMaterialf(GLenum face, GLenum pname, GLfloat v) {
 }
 void GLAPIENTRY glMateriali(GLenum face, GLenum pname, GLint v) { glMaterialf(face, pname, float(v)); }
 void GLAPIENTRY glMaterialfv(GLenum face, GLenum pname, const GLfloat* v) {
+  GL_REMOVED_IN_CORE();
   const Vec4Arg a = take(v, material_param_count(pname));
   LIGHT_CALL(material, face, pname, a);
 }
 void GLAPIENTRY glMaterialiv(GLenum face, GLenum pname, const GLint* v) {
+  GL_REMOVED_IN_CORE();
   const int n = material_param_count(pname);
   const Vec4Arg a = is_color_param(pname) ? take_color_int(v, n) : take(v, n);
   LIGHT_CALL(material, face, pname, a);
@@ -264,6 +273,7 @@ void GLAPIENTRY glColorMaterial(GLenum face, GLenum mode) { LIGHT_CALL(color_mat
 void GLAPIENTRY glShadeModel(GLenum mode) { LIGHT_CALL(shade_model, mode); }
 
 void GLAPIENTRY glFogf(GLenum pname, GLfloat v) {
+  GL_REMOVED_IN_CORE();
   const Vec4Arg a{v, 0, 0, 0};
   GL_CONTEXT();
   if (pname == GL_FOG_COLOR) return c.error(GL_INVALID_ENUM);
@@ -272,10 +282,12 @@ void GLAPIENTRY glFogf(GLenum pname, GLfloat v) {
 }
 void GLAPIENTRY glFogi(GLenum pname, GLint v) { glFogf(pname, float(v)); }
 void GLAPIENTRY glFogfv(GLenum pname, const GLfloat* v) {
+  GL_REMOVED_IN_CORE();
   const Vec4Arg a = take(v, fog_param_count(pname));
   LIGHT_CALL(fog, pname, a);
 }
 void GLAPIENTRY glFogiv(GLenum pname, const GLint* v) {
+  GL_REMOVED_IN_CORE();
   const int n = fog_param_count(pname);
   const Vec4Arg a = is_color_param(pname) ? take_color_int(v, n) : take(v, n);
   LIGHT_CALL(fog, pname, a);

@@ -141,41 +141,41 @@ using namespace tessel::gl;
 extern "C" {
 
 void GLAPIENTRY glMatrixMode(GLenum mode) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(matrix_mode(c, mode));
   matrix_mode(c, mode);
 }
 void GLAPIENTRY glLoadIdentity(void) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(load_matrix(c, glm::mat4(1.0f)));
   load_matrix(c, glm::mat4(1.0f));
 }
 void GLAPIENTRY glLoadMatrixf(const GLfloat* m) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const glm::mat4 a = mat_from(m);
   GL_LISTED(load_matrix(c, a));
   load_matrix(c, a);
 }
 void GLAPIENTRY glLoadMatrixd(const GLdouble* m) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const glm::mat4 a = mat_from(m);
   GL_LISTED(load_matrix(c, a));
   load_matrix(c, a);
 }
 void GLAPIENTRY glMultMatrixf(const GLfloat* m) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const glm::mat4 a = mat_from(m);
   GL_LISTED(mult_matrix(c, a));
   mult_matrix(c, a);
 }
 void GLAPIENTRY glMultMatrixd(const GLdouble* m) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const glm::mat4 a = mat_from(m);
   GL_LISTED(mult_matrix(c, a));
   mult_matrix(c, a);
 }
 void GLAPIENTRY glTranslatef(GLfloat x, GLfloat y, GLfloat z) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   glm::mat4 m(1.0f);
   m[3] = glm::vec4(x, y, z, 1.0f);
   GL_LISTED(mult_matrix(c, m));
@@ -185,7 +185,7 @@ void GLAPIENTRY glTranslated(GLdouble x, GLdouble y, GLdouble z) {
   glTranslatef(float(x), float(y), float(z));
 }
 void GLAPIENTRY glScalef(GLfloat x, GLfloat y, GLfloat z) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const glm::mat4 m(glm::vec4(x, 0, 0, 0), glm::vec4(0, y, 0, 0), glm::vec4(0, 0, z, 0),
                     glm::vec4(0, 0, 0, 1));
   GL_LISTED(mult_matrix(c, m));
@@ -193,7 +193,7 @@ void GLAPIENTRY glScalef(GLfloat x, GLfloat y, GLfloat z) {
 }
 void GLAPIENTRY glScaled(GLdouble x, GLdouble y, GLdouble z) { glScalef(float(x), float(y), float(z)); }
 void GLAPIENTRY glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const glm::mat4 m = rotation(angle, x, y, z);
   GL_LISTED(mult_matrix(c, m));
   mult_matrix(c, m);
@@ -202,22 +202,22 @@ void GLAPIENTRY glRotated(GLdouble angle, GLdouble x, GLdouble y, GLdouble z) {
   glRotatef(float(angle), float(x), float(y), float(z));
 }
 void GLAPIENTRY glFrustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(frustum(c, l, r, b, t, n, f));
   frustum(c, l, r, b, t, n, f);
 }
 void GLAPIENTRY glOrtho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(ortho(c, l, r, b, t, n, f));
   ortho(c, l, r, b, t, n, f);
 }
 void GLAPIENTRY glPushMatrix(void) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(push_matrix(c));
   push_matrix(c);
 }
 void GLAPIENTRY glPopMatrix(void) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(pop_matrix(c));
   pop_matrix(c);
 }

@@ -287,12 +287,12 @@ void GLAPIENTRY glPixelStoref(GLenum pname, GLfloat v) {
 }
 void GLAPIENTRY glPixelStorei(GLenum pname, GLint v) { glPixelStoref(pname, float(v)); }
 void GLAPIENTRY glPixelZoom(GLfloat x, GLfloat y) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(pixel_zoom(c, x, y));
   pixel_zoom(c, x, y);
 }
 void GLAPIENTRY glPixelTransferf(GLenum pname, GLfloat v) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(pixel_transfer(c, pname, v));
   pixel_transfer(c, pname, v);
 }
@@ -342,7 +342,7 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum form
 }
 
 void GLAPIENTRY glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid* pixels) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   if (w < 0 || h < 0) return c.error(GL_INVALID_VALUE);
   if (const GLenum e = check_format_type(format, type); e != GL_NO_ERROR) return c.error(e);
   if (format == GL_DEPTH_STENCIL || is_integer_format(format)) return c.error(GL_INVALID_OPERATION);
@@ -359,14 +359,14 @@ void GLAPIENTRY glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, c
 }
 
 void GLAPIENTRY glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(copy_pixels(c, x, y, w, h, type));
   copy_pixels(c, x, y, w, h, type);
 }
 
 void GLAPIENTRY glBitmap(GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym,
                          const GLubyte* b) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   std::shared_ptr<std::vector<uint8_t>> bits;
   if (b && w > 0 && h > 0) {
     bits = std::make_shared<std::vector<uint8_t>>();

@@ -58,9 +58,15 @@ bool* capability(Context& c, GLenum cap) {
 
 // Capabilities that are accepted and kept but change nothing Tessel draws (1D textures,
 // colour-index logic op, multisampling, seamless cube maps, sRGB writes to a linear window).
+// (The sample-coverage capabilities act only on multisample buffers, which Tessel's
+// framebuffers do not have: GL 3.3 §4.1.3.)
 bool* inert_capability(GLenum cap) {
-  static bool inert[6] = {};
+  static bool inert[10] = {};
   switch (cap) {
+    case GL_SAMPLE_ALPHA_TO_COVERAGE: return &inert[5];
+    case GL_SAMPLE_ALPHA_TO_ONE: return &inert[6];
+    case GL_SAMPLE_COVERAGE: return &inert[7];
+    case GL_SAMPLE_MASK: return &inert[8];
     case GL_TEXTURE_1D: return &inert[0];
     case GL_INDEX_LOGIC_OP: return &inert[1];
     case GL_MULTISAMPLE: return &inert[2];
@@ -69,6 +75,44 @@ bool* inert_capability(GLenum cap) {
     case GL_FRAMEBUFFER_SRGB: return &inert[4];
     default: return nullptr;
   }
+}
+
+// The capabilities of the core profile (GL 3.3 core, table 6.x "Enable"); the others are
+// GL_INVALID_ENUM in a core context, as Mesa's are.
+bool core_capability(GLenum cap) {
+  if (cap >= GL_CLIP_DISTANCE0 && cap < GL_CLIP_DISTANCE0 + kMaxClipPlanes) return true;
+  switch (cap) {
+    case GL_BLEND:
+    case GL_COLOR_LOGIC_OP:
+    case GL_CULL_FACE:
+    case GL_DEPTH_CLAMP:
+    case GL_DEPTH_TEST:
+    case GL_DITHER:
+    case GL_FRAMEBUFFER_SRGB:
+    case GL_LINE_SMOOTH:
+    case GL_MULTISAMPLE:
+    case GL_POLYGON_OFFSET_FILL:
+    case GL_POLYGON_OFFSET_LINE:
+    case GL_POLYGON_OFFSET_POINT:
+    case GL_POLYGON_SMOOTH:
+    case GL_PRIMITIVE_RESTART:
+    case GL_PROGRAM_POINT_SIZE:
+    case GL_SAMPLE_ALPHA_TO_COVERAGE:
+    case GL_SAMPLE_ALPHA_TO_ONE:
+    case GL_SAMPLE_COVERAGE:
+    case GL_SAMPLE_MASK:
+    case GL_SCISSOR_TEST:
+    case GL_STENCIL_TEST:
+    case GL_TEXTURE_CUBE_MAP_SEAMLESS: return true;
+    default: return false;
+  }
+}
+
+// The flag glEnable/glDisable/glIsEnabled name, for this context's profile (nullptr: none).
+bool* enable_flag(Context& c, GLenum cap) {
+  if (c.core_profile && !core_capability(cap)) return nullptr;
+  bool* flag = capability(c, cap);
+  return flag ? flag : inert_capability(cap);
 }
 
 void alpha_func(Context& c, GLenum func, float ref) {
@@ -198,7 +242,9 @@ void front_face(Context& c, GLenum mode) {
 
 void polygon_mode(Context& c, GLenum face, GLenum mode) {
   GL_OUTSIDE_BEGIN();
+  // The core profile has one mode for both faces (GL 3.2 core, appendix E.2.2).
   if ((face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) ||
+      (c.core_profile && face != GL_FRONT_AND_BACK) ||
       (mode != GL_POINT && mode != GL_LINE && mode != GL_FILL))
     return c.error(GL_INVALID_ENUM);
   c.touch();
@@ -225,6 +271,36 @@ void point_size(Context& c, float s) {
   if (!(s > 0.0f)) return c.error(GL_INVALID_VALUE);
   c.touch();
   c.s.point.size = s;
+}
+
+// glPointParameter*: `v` holds one value (three for GL_POINT_DISTANCE_ATTENUATION).
+void point_parameter(Context& c, GLenum pname, const float* v) {
+  GL_OUTSIDE_BEGIN();
+  PointState& p = c.s.point;
+  // The core profile keeps the fade threshold and the sprite origin (GL 3.3 core §3.4).
+  if (c.core_profile && pname != GL_POINT_FADE_THRESHOLD_SIZE && pname != GL_POINT_SPRITE_COORD_ORIGIN)
+    return c.error(GL_INVALID_ENUM);
+  switch (pname) {
+    case GL_POINT_SIZE_MIN:
+    case GL_POINT_SIZE_MAX:
+    case GL_POINT_FADE_THRESHOLD_SIZE:
+      if (!(v[0] >= 0.0f)) return c.error(GL_INVALID_VALUE);
+      c.touch();
+      (pname == GL_POINT_SIZE_MIN   ? p.size_min
+       : pname == GL_POINT_SIZE_MAX ? p.size_max
+                                    : p.fade_threshold) = v[0];
+      return;
+    case GL_POINT_DISTANCE_ATTENUATION:
+      c.touch();
+      std::copy(v, v + 3, p.attenuation);
+      return;
+    case GL_POINT_SPRITE_COORD_ORIGIN:
+      if (v[0] != float(GL_LOWER_LEFT) && v[0] != float(GL_UPPER_LEFT)) return c.error(GL_INVALID_VALUE);
+      c.touch();
+      p.sprite_lower_left = v[0] == float(GL_LOWER_LEFT);
+      return;
+    default: return c.error(GL_INVALID_ENUM);
+  }
 }
 
 void line_stipple(Context& c, GLint factor, GLushort pattern) {
@@ -283,7 +359,14 @@ void hint(Context& c, GLenum target, GLenum mode) {
   GL_OUTSIDE_BEGIN();
   if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) return c.error(GL_INVALID_ENUM);
   HintState& h = c.s.hint;
+  // The core profile keeps the line and polygon smoothing, compression and derivative hints.
+  if (c.core_profile && target != GL_LINE_SMOOTH_HINT && target != GL_POLYGON_SMOOTH_HINT &&
+      target != GL_TEXTURE_COMPRESSION_HINT && target != GL_FRAGMENT_SHADER_DERIVATIVE_HINT)
+    return c.error(GL_INVALID_ENUM);
   switch (target) {
+    // Hints Tessel has no choice to make for (one compression, one derivative rule).
+    case GL_TEXTURE_COMPRESSION_HINT:
+    case GL_FRAGMENT_SHADER_DERIVATIVE_HINT: break;
     case GL_PERSPECTIVE_CORRECTION_HINT: h.perspective = mode; break;
     case GL_POINT_SMOOTH_HINT: h.point = mode; break;
     case GL_LINE_SMOOTH_HINT: h.line = mode; break;
@@ -381,8 +464,7 @@ void call_list(Context& c, GLuint list) {
 
 void enable(Context& c, GLenum cap, bool on) {
   GL_OUTSIDE_BEGIN();
-  bool* flag = capability(c, cap);
-  if (!flag) flag = inert_capability(cap);
+  bool* flag = enable_flag(c, cap);
   if (!flag) return c.error(GL_INVALID_ENUM);
   if (cap == GL_BLEND) {
     c.touch();
@@ -539,11 +621,10 @@ void GLAPIENTRY glDisable(GLenum cap) { SIMPLE(enable, cap, false); }
 GLboolean GLAPIENTRY glIsEnabled(GLenum cap) {
   GL_CONTEXT(GLboolean(GL_FALSE));
   GL_OUTSIDE_BEGIN(GLboolean(GL_FALSE));
-  bool* flag = capability(c, cap);
-  if (!flag) flag = inert_capability(cap);
+  bool* flag = enable_flag(c, cap);
   if (!flag) {
-    // Client-state arrays are queried with glIsEnabled too.
-    switch (cap) {
+    // Client-state arrays are queried with glIsEnabled too (not in a core context).
+    switch (c.core_profile ? GLenum(0) : cap) {
       case GL_VERTEX_ARRAY: return c.c.vertex.enabled;
       case GL_NORMAL_ARRAY: return c.c.normal.enabled;
       case GL_COLOR_ARRAY: return c.c.color.enabled;
@@ -556,7 +637,10 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap) {
   return *flag ? GL_TRUE : GL_FALSE;
 }
 
-void GLAPIENTRY glAlphaFunc(GLenum func, GLclampf ref) { SIMPLE(alpha_func, func, ref); }
+void GLAPIENTRY glAlphaFunc(GLenum func, GLclampf ref) {
+  GL_REMOVED_IN_CORE();
+  SIMPLE(alpha_func, func, ref);
+}
 void GLAPIENTRY glBlendFunc(GLenum s, GLenum d) { SIMPLE(blend_func, s, d, s, d); }
 void GLAPIENTRY glBlendFuncSeparate(GLenum s, GLenum d, GLenum sa, GLenum da) {
   SIMPLE(blend_func, s, d, sa, da);
@@ -587,9 +671,43 @@ void GLAPIENTRY glPolygonMode(GLenum face, GLenum mode) { SIMPLE(polygon_mode, f
 void GLAPIENTRY glPolygonOffset(GLfloat factor, GLfloat units) { SIMPLE(polygon_offset, factor, units); }
 void GLAPIENTRY glLineWidth(GLfloat w) { SIMPLE(line_width, w); }
 void GLAPIENTRY glPointSize(GLfloat s) { SIMPLE(point_size, s); }
-void GLAPIENTRY glLineStipple(GLint factor, GLushort pattern) { SIMPLE(line_stipple, factor, pattern); }
-void GLAPIENTRY glPolygonStipple(const GLubyte* mask) {
+void GLAPIENTRY glPointParameterf(GLenum pname, GLfloat param) {
+  const float v[3] = {param, 0.0f, 0.0f};
   GL_CONTEXT();
+  // (One value of GL_POINT_DISTANCE_ATTENUATION is not a call the specification has.)
+  if (pname == GL_POINT_DISTANCE_ATTENUATION) return c.error(GL_INVALID_ENUM);
+  GL_LISTED(point_parameter(c, pname, v));
+  point_parameter(c, pname, v);
+}
+void GLAPIENTRY glPointParameterfv(GLenum pname, const GLfloat* params) {
+  GL_CONTEXT();
+  if (!params) return c.error(GL_INVALID_VALUE);
+  float v[3] = {params[0], 0.0f, 0.0f};
+  if (pname == GL_POINT_DISTANCE_ATTENUATION) v[1] = params[1], v[2] = params[2];
+  GL_LISTED(point_parameter(c, pname, v));
+  point_parameter(c, pname, v);
+}
+void GLAPIENTRY glPointParameteri(GLenum pname, GLint param) {
+  const float v[3] = {float(param), 0.0f, 0.0f};
+  GL_CONTEXT();
+  if (pname == GL_POINT_DISTANCE_ATTENUATION) return c.error(GL_INVALID_ENUM);
+  GL_LISTED(point_parameter(c, pname, v));
+  point_parameter(c, pname, v);
+}
+void GLAPIENTRY glPointParameteriv(GLenum pname, const GLint* params) {
+  GL_CONTEXT();
+  if (!params) return c.error(GL_INVALID_VALUE);
+  float v[3] = {float(params[0]), 0.0f, 0.0f};
+  if (pname == GL_POINT_DISTANCE_ATTENUATION) v[1] = float(params[1]), v[2] = float(params[2]);
+  GL_LISTED(point_parameter(c, pname, v));
+  point_parameter(c, pname, v);
+}
+void GLAPIENTRY glLineStipple(GLint factor, GLushort pattern) {
+  GL_REMOVED_IN_CORE();
+  SIMPLE(line_stipple, factor, pattern);
+}
+void GLAPIENTRY glPolygonStipple(const GLubyte* mask) {
+  GL_COMPAT_CONTEXT();
   // A 32x32 bitmap unpacked with the unpack state (GL 2.1 §3.5.2): bit (x, y) of row y.
   std::array<uint32_t, 32> rows{};
   if (mask) {
@@ -603,7 +721,7 @@ void GLAPIENTRY glPolygonStipple(const GLubyte* mask) {
   polygon_stipple(c, rows);
 }
 void GLAPIENTRY glGetPolygonStipple(GLubyte* mask) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (!mask) return;
   // Packed with the pack state as a bitmap: MSB first unless LSB_FIRST.
@@ -622,11 +740,12 @@ void GLAPIENTRY glGetPolygonStipple(GLubyte* mask) {
   }
 }
 void GLAPIENTRY glClipPlane(GLenum plane, const GLdouble* eq) {
+  GL_REMOVED_IN_CORE();
   const glm::dvec4 e = eq ? glm::dvec4(eq[0], eq[1], eq[2], eq[3]) : glm::dvec4(0.0);
   SIMPLE(clip_plane, plane, e);
 }
 void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble* eq) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (plane < GL_CLIP_PLANE0 || plane >= GL_CLIP_PLANE0 + kMaxClipPlanes) return c.error(GL_INVALID_ENUM);
   const glm::dvec4& p = c.s.transform.clip_plane[plane - GL_CLIP_PLANE0];
@@ -666,6 +785,7 @@ void GLAPIENTRY glClearStencil(GLint s) {
   set(c);
 }
 void GLAPIENTRY glClearAccum(GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+  GL_REMOVED_IN_CORE();
   const glm::vec4 v = glm::clamp(glm::vec4(r, g, b, a), -1.0f, 1.0f);
   GL_CONTEXT();
   auto set = [v](Context& c) {
@@ -675,7 +795,7 @@ void GLAPIENTRY glClearAccum(GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
   GL_LISTED(set(c));
   set(c);
 }
-void GLAPIENTRY glClearIndex(GLfloat) {}
+void GLAPIENTRY glClearIndex(GLfloat) { GL_REMOVED_IN_CORE(); }
 void GLAPIENTRY glClear(GLbitfield mask) { SIMPLE(clear, mask); }
 void GLAPIENTRY glHint(GLenum target, GLenum mode) { SIMPLE(hint, target, mode); }
 void GLAPIENTRY glDrawBuffer(GLenum b) { SIMPLE(draw_buffer, b); }
@@ -704,20 +824,20 @@ void GLAPIENTRY glFinish(void) {
 }
 
 void GLAPIENTRY glNewList(GLuint list, GLenum mode) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   new_list(c, list, mode);
 }
 void GLAPIENTRY glEndList(void) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   end_list(c);
 }
 void GLAPIENTRY glCallList(GLuint list) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(call_list(c, list));
   call_list(c, list);
 }
 void GLAPIENTRY glCallLists(GLsizei n, GLenum type, const GLvoid* lists) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   if (n < 0) return c.error(GL_INVALID_VALUE);
   std::vector<GLuint> names;
   const auto* b = static_cast<const uint8_t*>(lists);
@@ -779,7 +899,7 @@ void GLAPIENTRY glCallLists(GLsizei n, GLenum type, const GLvoid* lists) {
   run(c);
 }
 void GLAPIENTRY glListBase(GLuint base) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   auto set = [base](Context& c) {
     GL_OUTSIDE_BEGIN();
     c.s.list_base = base;
@@ -788,7 +908,7 @@ void GLAPIENTRY glListBase(GLuint base) {
   set(c);
 }
 GLuint GLAPIENTRY glGenLists(GLsizei range) {
-  GL_CONTEXT(0u);
+  GL_COMPAT_CONTEXT(0u);
   GL_OUTSIDE_BEGIN(0u);
   if (range < 0) {
     c.error(GL_INVALID_VALUE);
@@ -817,31 +937,34 @@ GLuint GLAPIENTRY glGenLists(GLsizei range) {
   return start;
 }
 void GLAPIENTRY glDeleteLists(GLuint list, GLsizei range) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (range < 0) return c.error(GL_INVALID_VALUE);
   for (GLsizei k = 0; k < range; ++k) c.lists.erase(list + GLuint(k));
 }
 GLboolean GLAPIENTRY glIsList(GLuint list) {
-  GL_CONTEXT(GLboolean(GL_FALSE));
+  GL_COMPAT_CONTEXT(GLboolean(GL_FALSE));
   GL_OUTSIDE_BEGIN(GLboolean(GL_FALSE));
   return c.lists.count(list) ? GL_TRUE : GL_FALSE;
 }
 
-void GLAPIENTRY glPushAttrib(GLbitfield mask) { SIMPLE(push_attrib, mask); }
+void GLAPIENTRY glPushAttrib(GLbitfield mask) {
+  GL_REMOVED_IN_CORE();
+  SIMPLE(push_attrib, mask);
+}
 void GLAPIENTRY glPopAttrib(void) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(pop_attrib(c));
   pop_attrib(c);
 }
 void GLAPIENTRY glPushClientAttrib(GLbitfield mask) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (int(c.client_stack.size()) >= kClientAttribDepth) return c.error(GL_STACK_OVERFLOW);
   c.client_stack.push_back({mask, c.c});
 }
 void GLAPIENTRY glPopClientAttrib(void) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (c.client_stack.empty()) return c.error(GL_STACK_UNDERFLOW);
   const PushedClient top = c.client_stack.back();

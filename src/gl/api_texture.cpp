@@ -442,7 +442,7 @@ GLboolean GLAPIENTRY glIsTexture(GLuint name) {
   return name != 0 && it != c.textures.end() && it->second ? GL_TRUE : GL_FALSE;
 }
 GLboolean GLAPIENTRY glAreTexturesResident(GLsizei n, const GLuint* names, GLboolean* residences) {
-  GL_CONTEXT(GLboolean(GL_FALSE));
+  GL_COMPAT_CONTEXT(GLboolean(GL_FALSE));
   GL_OUTSIDE_BEGIN(GLboolean(GL_FALSE));
   if (n < 0) {
     c.error(GL_INVALID_VALUE);
@@ -457,7 +457,7 @@ GLboolean GLAPIENTRY glAreTexturesResident(GLsizei n, const GLuint* names, GLboo
   return GL_TRUE;
 }
 void GLAPIENTRY glPrioritizeTextures(GLsizei n, const GLuint* names, const GLclampf* priorities) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (n < 0) return c.error(GL_INVALID_VALUE);
   for (GLsizei i = 0; i < n && names && priorities; ++i) {

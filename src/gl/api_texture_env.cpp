@@ -66,7 +66,7 @@ using namespace tessel::gl;
 extern "C" {
 
 void GLAPIENTRY glTexEnvf(GLenum target, GLenum pname, GLfloat v) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   if (pname == GL_TEXTURE_ENV_COLOR) return c.error(GL_INVALID_ENUM);
   const Vec4Arg a{v, 0, 0, 0};
   GL_LISTED(tex_env(c, target, pname, a));
@@ -74,13 +74,13 @@ void GLAPIENTRY glTexEnvf(GLenum target, GLenum pname, GLfloat v) {
 }
 void GLAPIENTRY glTexEnvi(GLenum target, GLenum pname, GLint v) { glTexEnvf(target, pname, float(v)); }
 void GLAPIENTRY glTexEnvfv(GLenum target, GLenum pname, const GLfloat* v) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const Vec4Arg a = take(v, pname == GL_TEXTURE_ENV_COLOR ? 4 : 1);
   GL_LISTED(tex_env(c, target, pname, a));
   tex_env(c, target, pname, a);
 }
 void GLAPIENTRY glTexEnviv(GLenum target, GLenum pname, const GLint* v) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   Vec4Arg a = take(v, pname == GL_TEXTURE_ENV_COLOR ? 4 : 1);
   if (pname == GL_TEXTURE_ENV_COLOR && v)
     for (int i = 0; i < 4; ++i) a[size_t(i)] = float((2.0 * double(v[i]) + 1.0) / 4294967295.0);
@@ -88,7 +88,7 @@ void GLAPIENTRY glTexEnviv(GLenum target, GLenum pname, const GLint* v) {
   tex_env(c, target, pname, a);
 }
 void GLAPIENTRY glGetTexEnvfv(GLenum target, GLenum pname, GLfloat* out) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (target != GL_TEXTURE_ENV) return c.error(GL_INVALID_ENUM);
   if (!out) return;
@@ -100,6 +100,7 @@ void GLAPIENTRY glGetTexEnvfv(GLenum target, GLenum pname, GLfloat* out) {
     c.error(GL_INVALID_ENUM);
 }
 void GLAPIENTRY glGetTexEnviv(GLenum target, GLenum pname, GLint* out) {
+  GL_REMOVED_IN_CORE();
   GLfloat f[4] = {0, 0, 0, 0};
   glGetTexEnvfv(target, pname, f);
   if (!out) return;
@@ -110,7 +111,7 @@ void GLAPIENTRY glGetTexEnviv(GLenum target, GLenum pname, GLint* out) {
 }
 
 void GLAPIENTRY glTexGenf(GLenum coord, GLenum pname, GLfloat v) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   if (pname != GL_TEXTURE_GEN_MODE) return c.error(GL_INVALID_ENUM);
   const Vec4Arg a{v, 0, 0, 0};
   GL_LISTED(tex_gen(c, coord, pname, a));
@@ -119,25 +120,25 @@ void GLAPIENTRY glTexGenf(GLenum coord, GLenum pname, GLfloat v) {
 void GLAPIENTRY glTexGeni(GLenum coord, GLenum pname, GLint v) { glTexGenf(coord, pname, float(v)); }
 void GLAPIENTRY glTexGend(GLenum coord, GLenum pname, GLdouble v) { glTexGenf(coord, pname, float(v)); }
 void GLAPIENTRY glTexGenfv(GLenum coord, GLenum pname, const GLfloat* v) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const Vec4Arg a = take(v, pname == GL_TEXTURE_GEN_MODE ? 1 : 4);
   GL_LISTED(tex_gen(c, coord, pname, a));
   tex_gen(c, coord, pname, a);
 }
 void GLAPIENTRY glTexGeniv(GLenum coord, GLenum pname, const GLint* v) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const Vec4Arg a = take(v, pname == GL_TEXTURE_GEN_MODE ? 1 : 4);
   GL_LISTED(tex_gen(c, coord, pname, a));
   tex_gen(c, coord, pname, a);
 }
 void GLAPIENTRY glTexGendv(GLenum coord, GLenum pname, const GLdouble* v) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const Vec4Arg a = take(v, pname == GL_TEXTURE_GEN_MODE ? 1 : 4);
   GL_LISTED(tex_gen(c, coord, pname, a));
   tex_gen(c, coord, pname, a);
 }
 void GLAPIENTRY glGetTexGenfv(GLenum coord, GLenum pname, GLfloat* out) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (coord < GL_S || coord > GL_Q) return c.error(GL_INVALID_ENUM);
   if (!out) return;
@@ -154,12 +155,14 @@ void GLAPIENTRY glGetTexGenfv(GLenum coord, GLenum pname, GLfloat* out) {
   }
 }
 void GLAPIENTRY glGetTexGeniv(GLenum coord, GLenum pname, GLint* out) {
+  GL_REMOVED_IN_CORE();
   GLfloat f[4] = {0, 0, 0, 0};
   glGetTexGenfv(coord, pname, f);
   if (out)
     for (int i = 0; i < (pname == GL_TEXTURE_GEN_MODE ? 1 : 4); ++i) out[i] = GLint(f[i]);
 }
 void GLAPIENTRY glGetTexGendv(GLenum coord, GLenum pname, GLdouble* out) {
+  GL_REMOVED_IN_CORE();
   GLfloat f[4] = {0, 0, 0, 0};
   glGetTexGenfv(coord, pname, f);
   if (out)
@@ -179,7 +182,7 @@ void GLAPIENTRY glActiveTexture(GLenum unit) {
   set(c);
 }
 void GLAPIENTRY glClientActiveTexture(GLenum unit) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (unit != GL_TEXTURE0) return c.error(GL_INVALID_ENUM);  // GL_MAX_TEXTURE_COORDS is 1
   c.c.client_active_unit = unit - GL_TEXTURE0;

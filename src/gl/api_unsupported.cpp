@@ -91,26 +91,26 @@ using namespace tessel::gl;
 extern "C" {
 
 void GLAPIENTRY glAccum(GLenum op, GLfloat value) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(accum(c, op, value));
   accum(c, op, value);
 }
 
 // Colour index mode does not exist in an RGBA window: the current index is kept only.
-void GLAPIENTRY glIndexMask(GLuint) {}
-void GLAPIENTRY glIndexd(GLdouble) {}
-void GLAPIENTRY glIndexdv(const GLdouble*) {}
-void GLAPIENTRY glIndexf(GLfloat) {}
-void GLAPIENTRY glIndexfv(const GLfloat*) {}
-void GLAPIENTRY glIndexi(GLint) {}
-void GLAPIENTRY glIndexiv(const GLint*) {}
-void GLAPIENTRY glIndexs(GLshort) {}
-void GLAPIENTRY glIndexsv(const GLshort*) {}
-void GLAPIENTRY glIndexub(GLubyte) {}
-void GLAPIENTRY glIndexubv(const GLubyte*) {}
+void GLAPIENTRY glIndexMask(GLuint) { GL_REMOVED_IN_CORE(); }
+void GLAPIENTRY glIndexd(GLdouble) { GL_REMOVED_IN_CORE(); }
+void GLAPIENTRY glIndexdv(const GLdouble*) { GL_REMOVED_IN_CORE(); }
+void GLAPIENTRY glIndexf(GLfloat) { GL_REMOVED_IN_CORE(); }
+void GLAPIENTRY glIndexfv(const GLfloat*) { GL_REMOVED_IN_CORE(); }
+void GLAPIENTRY glIndexi(GLint) { GL_REMOVED_IN_CORE(); }
+void GLAPIENTRY glIndexiv(const GLint*) { GL_REMOVED_IN_CORE(); }
+void GLAPIENTRY glIndexs(GLshort) { GL_REMOVED_IN_CORE(); }
+void GLAPIENTRY glIndexsv(const GLshort*) { GL_REMOVED_IN_CORE(); }
+void GLAPIENTRY glIndexub(GLubyte) { GL_REMOVED_IN_CORE(); }
+void GLAPIENTRY glIndexubv(const GLubyte*) { GL_REMOVED_IN_CORE(); }
 
 void GLAPIENTRY glPixelMapfv(GLenum map, GLsizei n, const GLfloat* values) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (!valid_map(map)) return c.error(GL_INVALID_ENUM);
   if (n < 1 || n > 256) return c.error(GL_INVALID_VALUE);
@@ -118,17 +118,19 @@ void GLAPIENTRY glPixelMapfv(GLenum map, GLsizei n, const GLfloat* values) {
   pixel_maps()[map].assign(values, values + n);
 }
 void GLAPIENTRY glPixelMapuiv(GLenum map, GLsizei n, const GLuint* values) {
+  GL_REMOVED_IN_CORE();
   std::vector<float> v(size_t(std::max(n, 0)));
   for (size_t i = 0; i < v.size() && values; ++i) v[i] = float(double(values[i]) / 4294967295.0);
   glPixelMapfv(map, n, v.data());
 }
 void GLAPIENTRY glPixelMapusv(GLenum map, GLsizei n, const GLushort* values) {
+  GL_REMOVED_IN_CORE();
   std::vector<float> v(size_t(std::max(n, 0)));
   for (size_t i = 0; i < v.size() && values; ++i) v[i] = float(values[i]) / 65535.0f;
   glPixelMapfv(map, n, v.data());
 }
 void GLAPIENTRY glGetPixelMapfv(GLenum map, GLfloat* values) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (!valid_map(map)) return c.error(GL_INVALID_ENUM);
   const auto it = pixel_maps().find(map);
@@ -139,6 +141,7 @@ void GLAPIENTRY glGetPixelMapfv(GLenum map, GLfloat* values) {
     std::copy(it->second.begin(), it->second.end(), values);
 }
 void GLAPIENTRY glGetPixelMapuiv(GLenum map, GLuint* values) {
+  GL_REMOVED_IN_CORE();
   GLfloat tmp[256] = {};
   glGetPixelMapfv(map, tmp);
   const auto it = pixel_maps().find(map);
@@ -146,6 +149,7 @@ void GLAPIENTRY glGetPixelMapuiv(GLenum map, GLuint* values) {
   for (size_t i = 0; i < n && values; ++i) values[i] = GLuint(double(tmp[i]) * 4294967295.0);
 }
 void GLAPIENTRY glGetPixelMapusv(GLenum map, GLushort* values) {
+  GL_REMOVED_IN_CORE();
   GLfloat tmp[256] = {};
   glGetPixelMapfv(map, tmp);
   const auto it = pixel_maps().find(map);

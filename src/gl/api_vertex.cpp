@@ -94,7 +94,7 @@ void raster_pos(Context& c, float x, float y, float z, float w) {
 using namespace tessel::gl;
 
 #define VERTEX4(x, y, z, w)                                                   \
-  GL_CONTEXT();                                                               \
+  GL_COMPAT_CONTEXT();                                                        \
   const float vx_ = float(x), vy_ = float(y), vz_ = float(z), vw_ = float(w); \
   GL_LISTED(vertex(c, vx_, vy_, vz_, vw_));                                   \
   vertex(c, vx_, vy_, vz_, vw_)
@@ -102,12 +102,12 @@ using namespace tessel::gl;
 extern "C" {
 
 void GLAPIENTRY glBegin(GLenum mode) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(begin(c, mode));
   begin(c, mode);
 }
 void GLAPIENTRY glEnd(void) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(end(c));
   end(c);
 }
@@ -138,7 +138,7 @@ void GLAPIENTRY glVertex4iv(const GLint* v) { VERTEX4(v[0], v[1], v[2], v[3]); }
 void GLAPIENTRY glVertex4sv(const GLshort* v) { VERTEX4(v[0], v[1], v[2], v[3]); }
 
 #define COLOR4(r, g, b, a)                                \
-  GL_CONTEXT();                                           \
+  GL_COMPAT_CONTEXT();                                    \
   const float cr_ = (r), cg_ = (g), cb_ = (b), ca_ = (a); \
   GL_LISTED(set_color(c, cr_, cg_, cb_, ca_));            \
   set_color(c, cr_, cg_, cb_, ca_)
@@ -181,7 +181,7 @@ void GLAPIENTRY glColor4uiv(const GLuint* v) { COLOR4(ui(v[0]), ui(v[1]), ui(v[2
 void GLAPIENTRY glColor4usv(const GLushort* v) { COLOR4(us(v[0]), us(v[1]), us(v[2]), us(v[3])); }
 
 #define NORMAL3(x, y, z)                       \
-  GL_CONTEXT();                                \
+  GL_COMPAT_CONTEXT();                         \
   const float nx_ = (x), ny_ = (y), nz_ = (z); \
   GL_LISTED(set_normal(c, nx_, ny_, nz_));     \
   set_normal(c, nx_, ny_, nz_)
@@ -198,7 +198,7 @@ void GLAPIENTRY glNormal3iv(const GLint* v) { NORMAL3(si(v[0]), si(v[1]), si(v[2
 void GLAPIENTRY glNormal3sv(const GLshort* v) { NORMAL3(ss(v[0]), ss(v[1]), ss(v[2])); }
 
 #define TEX4(s, t, r, q)                                                      \
-  GL_CONTEXT();                                                               \
+  GL_COMPAT_CONTEXT();                                                        \
   const float ts_ = float(s), tt_ = float(t), tr_ = float(r), tq_ = float(q); \
   GL_LISTED(set_tex(c, ts_, tt_, tr_, tq_));                                  \
   set_tex(c, ts_, tt_, tr_, tq_)
@@ -237,7 +237,7 @@ void GLAPIENTRY glTexCoord4iv(const GLint* v) { TEX4(v[0], v[1], v[2], v[3]); }
 void GLAPIENTRY glTexCoord4sv(const GLshort* v) { TEX4(v[0], v[1], v[2], v[3]); }
 
 void GLAPIENTRY glEdgeFlag(GLboolean flag) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const bool f = flag != GL_FALSE;
   GL_LISTED(c.s.current.edge = f);
   c.s.current.edge = f;
@@ -246,7 +246,7 @@ void GLAPIENTRY glEdgeFlagv(const GLboolean* flag) { glEdgeFlag(*flag); }
 
 // glRect: a polygon (x1,y1), (x2,y1), (x2,y2), (x1,y2) in z = 0 (GL 2.1 §2.10).
 #define RECT(x1, y1, x2, y2)                                                      \
-  GL_CONTEXT();                                                                   \
+  GL_COMPAT_CONTEXT();                                                            \
   const float ax_ = float(x1), ay_ = float(y1), bx_ = float(x2), by_ = float(y2); \
   auto rect_ = [=](Context& c) {                                                  \
     GL_OUTSIDE_BEGIN();                                                           \
@@ -270,7 +270,7 @@ void GLAPIENTRY glRectiv(const GLint* a, const GLint* b) { RECT(a[0], a[1], b[0]
 void GLAPIENTRY glRectsv(const GLshort* a, const GLshort* b) { RECT(a[0], a[1], b[0], b[1]); }
 
 #define RASTER4(x, y, z, w)                                                   \
-  GL_CONTEXT();                                                               \
+  GL_COMPAT_CONTEXT();                                                        \
   const float rx_ = float(x), ry_ = float(y), rz_ = float(z), rw_ = float(w); \
   GL_LISTED(raster_pos(c, rx_, ry_, rz_, rw_));                               \
   raster_pos(c, rx_, ry_, rz_, rw_)

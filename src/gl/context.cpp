@@ -177,6 +177,10 @@ bool same_attachment(const gpu::Attachment& a, const gpu::Attachment& b) {
 
 bool Context::bind_draw_target() {
   if (conditional_render_skips()) return false;
+  if (!draw_fbo && !has_default_framebuffer) {
+    error(GL_INVALID_FRAMEBUFFER_OPERATION);
+    return false;
+  }
   if (!draw_fbo) {
     const GLenum target = s.color.draw_buffer;
     if (fb_target_ == target && gpu_->framebuffer() == &fb_) return true;
@@ -770,6 +774,7 @@ gpu::RenderState Context::render_state(bool for_clear) const {
     // (GL 2.1 §3.3, §3.4: ALIASED_POINT_SIZE_RANGE and ALIASED_LINE_WIDTH_RANGE are 1..255).
     r.line_width = std::clamp(s.line.width, 1.0f, 255.0f);
     r.point_size = std::clamp(s.point.size, 1.0f, 255.0f);
+    r.point_sprite_lower_left = s.point.sprite_lower_left;
     const glm::mat4 inv_p = glm::inverse(projection());
     for (int i = 0; i < kMaxClipPlanes; ++i) {
       if (!s.transform.clip_enabled[size_t(i)]) continue;

@@ -137,6 +137,12 @@ struct LineState {
 struct PointState {
   float size = 1.0f;
   bool smooth = false;
+  // glPointParameter (GL 2.1 §3.4): the derived-size limits, fade threshold and distance
+  // attenuation are kept and queried (Tessel's fixed-function points keep glPointSize's size);
+  // the sprite origin places gl_PointCoord.
+  float size_min = 0.0f, size_max = 255.0f, fade_threshold = 1.0f;
+  float attenuation[3] = {1.0f, 0.0f, 0.0f};
+  bool sprite_lower_left = false;
 };
 
 struct ScissorState {
@@ -384,10 +390,10 @@ class Context {
   // formats, a level outside the texture's level chain, separate depth and stencil images).
   GLenum framebuffer_status(FramebufferObject& f);
   bool draw_framebuffer_complete() {
-    return !draw_fbo || framebuffer_status(*draw_fbo) == GL_FRAMEBUFFER_COMPLETE;
+    return draw_fbo ? framebuffer_status(*draw_fbo) == GL_FRAMEBUFFER_COMPLETE : has_default_framebuffer;
   }
   bool read_framebuffer_complete() {
-    return !read_fbo || framebuffer_status(*read_fbo) == GL_FRAMEBUFFER_COMPLETE;
+    return read_fbo ? framebuffer_status(*read_fbo) == GL_FRAMEBUFFER_COMPLETE : has_default_framebuffer;
   }
   // The gpu image of an attachment (texture level or renderbuffer); false when there is none.
   bool gpu_image(const Attachment& a, gpu::Attachment& out);
@@ -479,6 +485,10 @@ class Context {
 
   // --- the version and profile (glutInitContextVersion/Profile, EGL and GLFW attributes)
   int major_version = 2, minor_version = 1;
+  // False while the context is current without a surface (EGL_KHR_surfaceless_context):
+  // framebuffer 0 is then GL_FRAMEBUFFER_UNDEFINED (GL 3.3 §4.4.4.2) and drawing to it, or
+  // reading from it, is GL_INVALID_FRAMEBUFFER_OPERATION.
+  bool has_default_framebuffer = true;
   bool core_profile = false;  // GL 3.2+ core: the removed calls are GL_INVALID_OPERATION
   void set_version(int major, int minor, bool core);
   const std::string& version_string() const { return version_string_; }

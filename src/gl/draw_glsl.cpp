@@ -615,6 +615,9 @@ void draw_generic_call(Context& c, GLenum mode, GLint first, GLsizei count, GLsi
   }
   if (count < 0 || first < 0 || instances < 0) return c.error(GL_INVALID_VALUE);
   if (c.in_begin) return c.error(GL_INVALID_OPERATION);
+  // An incomplete (or, current without a surface, absent) draw framebuffer comes first, as in
+  // Mesa's checks.
+  if (!c.draw_framebuffer_complete()) return c.error(GL_INVALID_FRAMEBUFFER_OPERATION);
   // GL 3.3 core: no vertex array object bound, or client-side indices, is an error.
   if (!c.vertex_arrays.count(c.bound_vertex_array)) return c.error(GL_INVALID_OPERATION);
   if (indexed && c.core_profile && !c.vao().element_buffer) return c.error(GL_INVALID_OPERATION);

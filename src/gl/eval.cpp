@@ -365,37 +365,46 @@ extern "C" {
 
 void GLAPIENTRY glMap1d(GLenum target, GLdouble u1, GLdouble u2, GLint stride, GLint order,
                         const GLdouble* p) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const auto d = copy1(c, target, stride, order, p);
   GL_LISTED(map1(c, target, u1, u2, order, d));
   map1(c, target, u1, u2, order, d);
 }
 void GLAPIENTRY glMap1f(GLenum target, GLfloat u1, GLfloat u2, GLint stride, GLint order, const GLfloat* p) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const auto d = copy1(c, target, stride, order, p);
   GL_LISTED(map1(c, target, u1, u2, order, d));
   map1(c, target, u1, u2, order, d);
 }
 void GLAPIENTRY glMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint us, GLint uo, GLdouble v1, GLdouble v2,
                         GLint vs, GLint vo, const GLdouble* p) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const auto d = copy2(c, target, us, uo, vs, vo, p);
   GL_LISTED(map2(c, target, u1, u2, uo, v1, v2, vo, d));
   map2(c, target, u1, u2, uo, v1, v2, vo, d);
 }
 void GLAPIENTRY glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint us, GLint uo, GLfloat v1, GLfloat v2,
                         GLint vs, GLint vo, const GLfloat* p) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   const auto d = copy2(c, target, us, uo, vs, vo, p);
   GL_LISTED(map2(c, target, u1, u2, uo, v1, v2, vo, d));
   map2(c, target, u1, u2, uo, v1, v2, vo, d);
 }
-void GLAPIENTRY glGetMapdv(GLenum target, GLenum query, GLdouble* v) { get_map(target, query, v); }
-void GLAPIENTRY glGetMapfv(GLenum target, GLenum query, GLfloat* v) { get_map(target, query, v); }
-void GLAPIENTRY glGetMapiv(GLenum target, GLenum query, GLint* v) { get_map(target, query, v); }
+void GLAPIENTRY glGetMapdv(GLenum target, GLenum query, GLdouble* v) {
+  GL_REMOVED_IN_CORE();
+  get_map(target, query, v);
+}
+void GLAPIENTRY glGetMapfv(GLenum target, GLenum query, GLfloat* v) {
+  GL_REMOVED_IN_CORE();
+  get_map(target, query, v);
+}
+void GLAPIENTRY glGetMapiv(GLenum target, GLenum query, GLint* v) {
+  GL_REMOVED_IN_CORE();
+  get_map(target, query, v);
+}
 
 void GLAPIENTRY glEvalCoord1d(GLdouble u) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(eval_coord1(c, u));
   eval_coord1(c, u);
 }
@@ -403,7 +412,7 @@ void GLAPIENTRY glEvalCoord1f(GLfloat u) { glEvalCoord1d(u); }
 void GLAPIENTRY glEvalCoord1dv(const GLdouble* u) { glEvalCoord1d(u[0]); }
 void GLAPIENTRY glEvalCoord1fv(const GLfloat* u) { glEvalCoord1d(u[0]); }
 void GLAPIENTRY glEvalCoord2d(GLdouble u, GLdouble v) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(eval_coord2(c, u, v));
   eval_coord2(c, u, v);
 }
@@ -412,13 +421,13 @@ void GLAPIENTRY glEvalCoord2dv(const GLdouble* u) { glEvalCoord2d(u[0], u[1]); }
 void GLAPIENTRY glEvalCoord2fv(const GLfloat* u) { glEvalCoord2d(u[0], u[1]); }
 
 void GLAPIENTRY glMapGrid1d(GLint n, GLdouble u1, GLdouble u2) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(map_grid1(c, n, u1, u2));
   map_grid1(c, n, u1, u2);
 }
 void GLAPIENTRY glMapGrid1f(GLint n, GLfloat u1, GLfloat u2) { glMapGrid1d(n, u1, u2); }
 void GLAPIENTRY glMapGrid2d(GLint nu, GLdouble u1, GLdouble u2, GLint nv, GLdouble v1, GLdouble v2) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(map_grid2(c, nu, u1, u2, nv, v1, v2));
   map_grid2(c, nu, u1, u2, nv, v1, v2);
 }
@@ -426,23 +435,23 @@ void GLAPIENTRY glMapGrid2f(GLint nu, GLfloat u1, GLfloat u2, GLint nv, GLfloat 
   glMapGrid2d(nu, u1, u2, nv, v1, v2);
 }
 void GLAPIENTRY glEvalMesh1(GLenum mode, GLint i1, GLint i2) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(eval_mesh1(c, mode, i1, i2));
   eval_mesh1(c, mode, i1, i2);
 }
 void GLAPIENTRY glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(eval_mesh2(c, mode, i1, i2, j1, j2));
   eval_mesh2(c, mode, i1, i2, j1, j2);
 }
 void GLAPIENTRY glEvalPoint1(GLint i) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   auto run = [i](Context& c) { eval_coord1(c, grid_at(c.s.eval.grid1, i)); };
   GL_LISTED(run(c));
   run(c);
 }
 void GLAPIENTRY glEvalPoint2(GLint i, GLint j) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   auto run = [i, j](Context& c) { eval_coord2(c, grid_at(c.s.eval.grid2u, i), grid_at(c.s.eval.grid2v, j)); };
   GL_LISTED(run(c));
   run(c);

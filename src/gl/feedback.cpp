@@ -112,7 +112,7 @@ using namespace tessel::gl;
 extern "C" {
 
 void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (type != GL_2D && type != GL_3D && type != GL_3D_COLOR && type != GL_3D_COLOR_TEXTURE &&
       type != GL_4D_COLOR_TEXTURE)
@@ -123,7 +123,7 @@ void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer) {
 }
 
 void GLAPIENTRY glPassThrough(GLfloat token) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(c.pass_through(token));
   GL_OUTSIDE_BEGIN();
   c.pass_through(token);

@@ -200,34 +200,34 @@ using namespace tessel::gl;
 extern "C" {
 
 GLint GLAPIENTRY glRenderMode(GLenum mode) {
-  GL_CONTEXT(0);
+  GL_COMPAT_CONTEXT(0);
   GL_OUTSIDE_BEGIN(0);
   return c.set_render_mode(mode);
 }
 void GLAPIENTRY glSelectBuffer(GLsizei size, GLuint* buffer) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (size < 0) return c.error(GL_INVALID_VALUE);
   if (c.render_mode() == GL_SELECT) return c.error(GL_INVALID_OPERATION);
   c.set_select_buffer(buffer, size);
 }
 void GLAPIENTRY glInitNames(void) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(name_op(c, 0, 0));
   name_op(c, 0, 0);
 }
 void GLAPIENTRY glLoadName(GLuint name) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(name_op(c, 1, name));
   name_op(c, 1, name);
 }
 void GLAPIENTRY glPushName(GLuint name) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(name_op(c, 2, name));
   name_op(c, 2, name);
 }
 void GLAPIENTRY glPopName(void) {
-  GL_CONTEXT();
+  GL_COMPAT_CONTEXT();
   GL_LISTED(name_op(c, 3, 0));
   name_op(c, 3, 0);
 }

@@ -174,6 +174,113 @@ TEST_F(GL33CoreTest, CoreBindsOnlyGeneratedNames) {
   EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
 }
 
+// GL 3.2 core removed the fixed-function, immediate-mode, display-list and client-array calls
+// (appendix E.2.2): in a core context each is GL_INVALID_OPERATION and changes nothing, as
+// Mesa's core contexts answer; the capabilities, hints and polygon faces the core profile
+// dropped are GL_INVALID_ENUM. The same calls work in a compatibility context.
+TEST_F(GL33CoreTest, RemovedCallsAreInvalidOperationsAndChangeNothing) {
+  GLint mode = get_int(GL_MATRIX_MODE);
+  glMatrixMode(GL_PROJECTION);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(get_int(GL_MATRIX_MODE), mode);
+  float colour[4] = {};
+  glColor4f(0.25f, 0.5f, 0.75f, 1.0f);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glGetFloatv(GL_CURRENT_COLOR, colour);
+  EXPECT_EQ(colour[0], 1.0f);
+  glBegin(GL_TRIANGLES);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glVertex3f(0, 0, 0);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glEnd();
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(glGenLists(1), 0u);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(glIsList(1), GLboolean(GL_FALSE));
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(glRenderMode(GL_SELECT), 0);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  float light[4] = {-7, -7, -7, -7};
+  glGetLightfv(GL_LIGHT0, GL_POSITION, light);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(light[0], -7.0f);  // nothing written
+  glEnableClientState(GL_VERTEX_ARRAY);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glAlphaFunc(GL_LESS, 0.5f);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glPushAttrib(GL_ALL_ATTRIB_BITS);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glRectf(0, 0, 1, 1);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glLoadIdentity();
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glShadeModel(GL_FLAT);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(get_int(GL_SHADE_MODEL), GL_SMOOTH);
+
+  // Capabilities the core profile dropped, and the kept ones.
+  for (GLenum cap : {GL_LIGHTING, GL_LIGHT0, GL_TEXTURE_2D, GL_FOG, GL_ALPHA_TEST, GL_COLOR_MATERIAL,
+                     GL_NORMALIZE, GL_POINT_SPRITE, GL_TEXTURE_GEN_S, GL_LINE_STIPPLE}) {
+    glEnable(cap);
+    EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM)) << std::hex << cap;
+    EXPECT_EQ(glIsEnabled(cap), GLboolean(GL_FALSE));
+    EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM)) << std::hex << cap;
+  }
+  EXPECT_EQ(glIsEnabled(GL_VERTEX_ARRAY), GLboolean(GL_FALSE));
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  for (GLenum cap : {GL_BLEND, GL_CLIP_DISTANCE0, GL_DEPTH_CLAMP, GL_PROGRAM_POINT_SIZE,
+                     GL_SAMPLE_ALPHA_TO_COVERAGE, GL_TEXTURE_CUBE_MAP_SEAMLESS, GL_PRIMITIVE_RESTART}) {
+    glEnable(cap);
+    EXPECT_EQ(err(), GLenum(GL_NO_ERROR)) << std::hex << cap;
+    EXPECT_EQ(glIsEnabled(cap), GLboolean(GL_TRUE));
+    glDisable(cap);
+  }
+  glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glHint(GL_GENERATE_MIPMAP_HINT, GL_NICEST);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glHint(GL_FRAGMENT_SHADER_DERIVATIVE_HINT, GL_NICEST);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  glPolygonMode(GL_FRONT, GL_LINE);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  EXPECT_EQ(get_int(GL_POLYGON_MODE), GL_FILL);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  // Point parameters: the core profile keeps the fade threshold and the sprite origin.
+  glPointParameterf(GL_POINT_SIZE_MIN, 2.0f);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_LOWER_LEFT);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(get_int(GL_POINT_SPRITE_COORD_ORIGIN), GL_LOWER_LEFT);
+  glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_FRONT);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(get_int(GL_POINT_SPRITE_COORD_ORIGIN), GL_LOWER_LEFT);
+  glPointParameterf(GL_POINT_FADE_THRESHOLD_SIZE, -1.0f);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+}
+
+TEST_F(GL33Test, CompatibilityKeepsTheRemovedCalls) {
+  glMatrixMode(GL_PROJECTION);
+  EXPECT_EQ(get_int(GL_MATRIX_MODE), GL_PROJECTION);
+  glEnable(GL_LIGHTING);
+  EXPECT_EQ(glIsEnabled(GL_LIGHTING), GLboolean(GL_TRUE));
+  glPolygonMode(GL_FRONT, GL_LINE);
+  glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);
+  const GLfloat att[3] = {1.0f, 0.5f, 0.25f};
+  glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, att);
+  glPointParameterf(GL_POINT_SIZE_MAX, 20.0f);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  GLfloat got[3] = {};
+  glGetFloatv(GL_POINT_DISTANCE_ATTENUATION, got);
+  EXPECT_EQ(got[1], 0.5f);
+  glGetFloatv(GL_POINT_SIZE_MAX, got);
+  EXPECT_EQ(got[0], 20.0f);
+  EXPECT_NE(glGenLists(1), 0u);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+}
+
 TEST_F(GL33Test, VertexAttribErrorsChangeNothing) {
   GLuint vao, vbo;
   glGenVertexArrays(1, &vao);
