@@ -608,6 +608,9 @@ void GLAPIENTRY glGenerateMipmap(GLenum target) {
   TextureObject& t = c.bound_texture(tt);
   const int base = t.effective_base();
   if (!t.image(0, base).defined()) return c.error(GL_INVALID_OPERATION);
+  // Integer and depth-stencil images have no mipmaps to filter (Mesa refuses them too).
+  const TexFormat& bf = t.image(0, base).fmt;
+  if (bf.integer() || bf.base == TexBase::DepthStencil) return c.error(GL_INVALID_OPERATION);
   if (tt == TexTarget::Cube)
     for (int f = 1; f < 6; ++f) {
       const TextureImage& a = t.image(0, base);

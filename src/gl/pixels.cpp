@@ -2,6 +2,7 @@
 #include "pixels.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <initializer_list>
@@ -219,41 +220,31 @@ void swap_bytes(uint8_t* b, int size) {
   }
 }
 
-// A component of a non-packed type as its integer value (the *_INTEGER formats), not normalized.
+// A component of a non-packed type as its integer value (the *_INTEGER formats), not
+// normalized: the value's 32 bits (as int32 or uint32, by the type's sign) in the float, so
+// that integer texels travel exactly (texture_format.hpp).
+float int_bits(int64_t v) { return std::bit_cast<float>(uint32_t(v)); }
 float read_integer_component(const uint8_t* b, GLenum type) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: return float(b[0]);
-    case GL_BYTE: return float(int8_t(b[0]));
+    case GL_UNSIGNED_BYTE: return int_bits(b[0]);
+    case GL_BYTE: return int_bits(int8_t(b[0]));
     case GL_UNSIGNED_SHORT: {
       uint16_t v;
       std::memcpy(&v, b, 2);
-      return float(v);
+      return int_bits(v);
     }
     case GL_SHORT: {
       int16_t v;
       std::memcpy(&v, b, 2);
-      return float(v);
+      return int_bits(v);
     }
-    case GL_UNSIGNED_INT: {
-      uint32_t v;
-      std::memcpy(&v, b, 4);
-      return float(v);
-    }
+    case GL_UNSIGNED_INT:
     case GL_INT: {
-      int32_t v;
-      std::memcpy(&v, b, 4);
-      return float(v);
-    }
-    case GL_HALF_FLOAT: {
-      uint16_t v;
-      std::memcpy(&v, b, 2);
-      return gpu::half_to_float(v);
-    }
-    default: {
       float v;
       std::memcpy(&v, b, 4);
       return v;
     }
+    default: return 0.0f;  // (no float type goes with an *_INTEGER format: checked before)
   }
 }
 
@@ -305,44 +296,41 @@ double round_clamp(float v, double lo, double hi) {
   return std::clamp(std::nearbyint(double(v)), lo, hi);
 }
 
+// An integer component (its 32 bits in v, as read_integer_component gives them) as `type`:
+// read as signed for the signed types and unsigned for the others, then clamped.
 void write_integer_component(uint8_t* b, GLenum type, float v) {
+  const uint32_t bits = std::bit_cast<uint32_t>(v);
+  const int64_t sv = int32_t(bits), uv = bits;
   switch (type) {
-    case GL_UNSIGNED_BYTE: b[0] = uint8_t(round_clamp(v, 0, 255)); break;
-    case GL_BYTE: b[0] = uint8_t(int8_t(round_clamp(v, -128, 127))); break;
+    case GL_UNSIGNED_BYTE: b[0] = uint8_t(std::min<int64_t>(uv, 255)); break;
+    case GL_BYTE: b[0] = uint8_t(int8_t(std::clamp<int64_t>(sv, -128, 127))); break;
     case GL_UNSIGNED_SHORT: {
-      const uint16_t x = uint16_t(round_clamp(v, 0, 65535));
+      const uint16_t x = uint16_t(std::min<int64_t>(uv, 65535));
       std::memcpy(b, &x, 2);
       break;
     }
     case GL_SHORT: {
-      const int16_t x = int16_t(round_clamp(v, -32768, 32767));
+      const int16_t x = int16_t(std::clamp<int64_t>(sv, -32768, 32767));
       std::memcpy(b, &x, 2);
       break;
     }
-    case GL_UNSIGNED_INT: {
-      const uint32_t x = uint32_t(round_clamp(v, 0, 4294967295.0));
-      std::memcpy(b, &x, 4);
-      break;
-    }
-    case GL_INT: {
-      const int32_t x = int32_t(round_clamp(v, -2147483648.0, 2147483647.0));
-      std::memcpy(b, &x, 4);
-      break;
-    }
-    case GL_HALF_FLOAT: {
-      const uint16_t x = gpu::float_to_half(v);
-      std::memcpy(b, &x, 2);
-      break;
-    }
-    default: std::memcpy(b, &v, 4); break;
+    default: std::memcpy(b, &bits, 4); break;  // GL_INT, GL_UNSIGNED_INT: the bits
   }
+}
+
+void write_half(uint8_t* b, float v) {
+  const uint16_t x = gpu::float_to_half(v);
+  std::memcpy(b, &x, 2);
 }
 
 void write_component(uint8_t* p, GLenum type, float v, bool swap, bool integer) {
   uint8_t b[4] = {0, 0, 0, 0};
   const int sz = std::clamp(type_bytes(type), 1, 4);
   if (integer || type == GL_HALF_FLOAT) {
-    write_integer_component(b, type, v);
+    if (integer)
+      write_integer_component(b, type, v);
+    else
+      write_half(b, v);
     if (swap) swap_bytes(b, sz);
     std::memcpy(p, b, size_t(sz));
     return;
@@ -477,7 +465,7 @@ int read_packed(const uint8_t* p, GLenum type, bool swap, bool integer, float c[
     for (int k = 0; k < P.n; ++k) {
       const uint32_t mask = (1u << P.width[k]) - 1u;
       const uint32_t f = (v >> field_shift(P, k)) & mask;
-      c[k] = integer ? float(f) : float(f) / float(mask);
+      c[k] = integer ? int_bits(f) : float(f) / float(mask);
     }
     return P.n;
   }
@@ -519,7 +507,7 @@ void write_packed(uint8_t* p, GLenum type, bool swap, bool integer, const float 
       const double m = double(mask);
       uint32_t f;
       if (integer) {
-        f = uint32_t(round_clamp(c[k], 0.0, m));
+        f = std::min(std::bit_cast<uint32_t>(c[k]), mask);
       } else {
         const double x = std::isnan(c[k]) ? 0.0 : std::clamp(double(c[k]), 0.0, 1.0);
         f = uint32_t(std::lround(x * m));
@@ -606,6 +594,8 @@ void unpack_pixels(const PixelStore& ps, int w, int h, GLenum format, GLenum typ
         case GL_BGRA_INTEGER: o = {c[2], c[1], c[0], c[3]}; break;
         default: o = {c[0], 0, 0, 1}; break;  // depth, stencil, index: the value in .x
       }
+      // An integer format without alpha gives alpha 1 as an integer (its bits, as above).
+      if (integer && format != GL_RGBA_INTEGER && format != GL_BGRA_INTEGER) o.a = int_bits(1);
     }
   }
 }

@@ -5,6 +5,7 @@
 #include <GL/glext.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace tessel::gl {
@@ -164,17 +165,16 @@ float quantize_snorm(float v, int bits) {
   const float m = float((1u << (bits - 1)) - 1u);
   return std::nearbyint(v * m) / m;
 }
+// An integer component (its 32 bits in v: int32 for Int, uint32 for Uint) clamped to a
+// format of `bits` bits, as bits again.
 float quantize_int(float v, TexKind kind, int bits) {
-  if (std::isnan(v)) return 0.0f;
-  double lo, hi;
-  if (kind == TexKind::Uint) {
-    lo = 0.0;
-    hi = double((uint64_t(1) << bits) - 1);
-  } else {
-    lo = -double(uint64_t(1) << (bits - 1));
-    hi = double((uint64_t(1) << (bits - 1)) - 1);
-  }
-  return float(std::clamp(std::nearbyint(double(v)), lo, hi));
+  const uint32_t b = std::bit_cast<uint32_t>(v);
+  int64_t x = kind == TexKind::Uint ? int64_t(b) : int64_t(int32_t(b));
+  if (kind == TexKind::Uint)
+    x = std::clamp<int64_t>(x, 0, (int64_t(1) << bits) - 1);
+  else
+    x = std::clamp<int64_t>(x, -(int64_t(1) << (bits - 1)), (int64_t(1) << (bits - 1)) - 1);
+  return std::bit_cast<float>(uint32_t(x));
 }
 
 }  // namespace
@@ -252,7 +252,12 @@ glm::vec4 to_storage(const TexFormat& f, const glm::vec4& px) {
   const uint8_t bits[4] = {uint8_t(f.r | f.l | f.i), uint8_t(f.g | f.l | f.i), uint8_t(f.b | f.l | f.i),
                            uint8_t(f.a | f.i)};
   for (int k = 0; k < 4; ++k) {
-    if (bits[k] == 0) continue;  // a component the format lacks keeps its fixed value
+    if (bits[k] == 0) {
+      // A component the format lacks keeps its fixed value: 0, or alpha 1 (for an integer
+      // format, the integer's bits).
+      if (f.integer()) v[k] = std::bit_cast<float>(k == 3 ? 1u : 0u);
+      continue;
+    }
     switch (f.kind) {
       case TexKind::Unorm: v[k] = quantize_unorm(v[k], bits[k]); break;
       case TexKind::Snorm: v[k] = quantize_snorm(v[k], bits[k]); break;

@@ -9,7 +9,9 @@
 //   and RGB formats store alpha 1.
 // - float, snorm, 16-bit unorm, sRGB and integer formats: RGBA16F (half formats and
 //   R11F_G11F_B10F) or RGBA32F (the rest). Values are rounded to the format's own precision
-//   at upload; integer texels are exact up to 2^24 in magnitude. sRGB texels are stored as
+//   at upload. Integer texels are kept exactly: each component's 32 bits (int32 or uint32) in
+//   the float slot, from pixel transfer (pixels.hpp) to GLSL's integer samplers, which read the
+//   bits (glsl/interp.cpp); nothing does float arithmetic on them. sRGB texels are stored as
 //   linear values (§3.8.15's decoding at upload instead of at sampling).
 // - depth formats: DEPTH_COMPONENT16 and 24 as Depth24 (16-bit depth keeps 24 bits),
 //   DEPTH_COMPONENT32 and 32F as Depth32F; depth-stencil as Depth24Stencil8.

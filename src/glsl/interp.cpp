@@ -56,6 +56,14 @@ uint32_t f2u(float x) {
   return uint32_t(x);
 }
 
+// A texel as an integer sampler returns it: integer textures hold each component's 32 bits
+// in the float slot (gl/texture_format.hpp), so the bits are the value; with no texture
+// there, GL's (0, 0, 0, 1) as integers.
+uint32_t integer_texel(const glm::vec4& v, int k, bool texture) {
+  if (!texture) return k == 3 ? 1u : 0u;
+  return std::bit_cast<uint32_t>(v[k]);
+}
+
 int find_msb_u(uint32_t x) { return x == 0 ? -1 : 31 - std::countl_zero(x); }
 int find_msb_i(int32_t x) { return find_msb_u(uint32_t(x < 0 ? ~x : x)); }
 uint32_t bit_reverse(uint32_t x) {
@@ -464,14 +472,17 @@ void run_texture_layered(const ir::TexOp& t, const TextureUnit* unit, const RunI
   using ir::SamplerDim;
   auto lanef = [&](int k, int l) { return f(tl.in[k][l]); };
   auto lanei = [&](int k, int l) { return s(tl.in[k][l]); };
-  auto put = [&](int l, const glm::vec4& v) {
-    for (int k = 0; k < 4; ++k)
-      tl.out[k][l] = t.result == 0 ? u(v[k]) : uint32_t(t.result == 1 ? f2i(v[k]) : f2u(v[k]));
-  };
   const bool d1 = t.dim == SamplerDim::D1, d3 = t.dim == SamplerDim::D3, cube = t.dim == SamplerDim::Cube;
   const gpu::Texture3D* t3 = unit ? unit->texture_3d : nullptr;
   const gpu::Texture2DArray* ta = unit ? unit->texture_2d_array : nullptr;
   const gpu::TextureCube* tc = unit ? unit->texture_cube : nullptr;
+  const bool present = t.dim == SamplerDim::Buffer ? unit && unit->texture_buffer
+                       : d3                        ? t3 != nullptr
+                       : t.array                   ? ta != nullptr
+                                                   : tc != nullptr;
+  auto put = [&](int l, const glm::vec4& v) {
+    for (int k = 0; k < 4; ++k) tl.out[k][l] = t.result == 0 ? u(v[k]) : integer_texel(v, k, present);
+  };
   if (t.kind == ir::TexKind::Size) {
     for (int l = 0; l < L; ++l) {
       const int level = lanei(TexLanes::kLod, l);
@@ -665,10 +676,6 @@ static void run_texture_unswizzled(const ir::TexOp& t, const RunInputs& in_, Tex
   }
   auto lanef = [&](int k, int l) { return f(tl.in[k][l]); };
   auto lanei = [&](int k, int l) { return s(tl.in[k][l]); };
-  auto put = [&](const ir::TexOp& op, int l, const glm::vec4& v) {
-    for (int k = 0; k < 4; ++k)
-      tl.out[k][l] = op.result == 0 ? u(v[k]) : uint32_t(op.result == 1 ? f2i(v[k]) : f2u(v[k]));
-  };
   const TextureUnit* unit = unit_of(t, in_);
   if (t.dim == ir::SamplerDim::D3 || t.dim == ir::SamplerDim::Buffer || t.array ||
       (t.dim == ir::SamplerDim::Cube && t.shadow)) {
@@ -678,6 +685,10 @@ static void run_texture_unswizzled(const ir::TexOp& t, const RunInputs& in_, Tex
   const gpu::Texture2D* tex2 = unit ? unit->texture_2d : nullptr;
   const gpu::TextureCube* cube = unit ? unit->texture_cube : nullptr;
   const glm::vec4 missing(0.0f, 0.0f, 0.0f, 1.0f);
+  const bool present = t.dim == ir::SamplerDim::Cube ? cube != nullptr : tex2 != nullptr;
+  auto put = [&](const ir::TexOp& op, int l, const glm::vec4& v) {
+    for (int k = 0; k < 4; ++k) tl.out[k][l] = op.result == 0 ? u(v[k]) : integer_texel(v, k, present);
+  };
   if (t.kind == ir::TexKind::Size) {
     for (int l = 0; l < L; ++l) {
       const int level = lanei(TexLanes::kLod, l);

@@ -177,6 +177,48 @@ TEST_F(TexTest, IntegerTexturesReadByTexelFetch) {
   glDeleteTextures(1, &t);
 }
 
+// 32-bit integer texels are kept exactly, whatever their bits would mean as floats (values
+// past 2^24, NaN and infinity patterns), through upload, texelFetch and glGetTexImage.
+TEST_F(TexTest, ThirtyTwoBitIntegerTexelsAreExact) {
+  GLuint t[2];
+  glGenTextures(2, t);
+  const GLuint u[4] = {0xFFFFFFFFu, 0x7F800001u, 0x98F87620u, 16777217u};
+  glBindTexture(GL_TEXTURE_2D, t[0]);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32UI, 4, 1, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, u);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  GLuint back[4] = {};
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, back);
+  ASSERT_EQ(err(), GLenum(GL_NO_ERROR));
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(back[i], u[i]) << i;
+  draw_quad("uniform usampler2D s;\nout vec4 c;",
+            "uvec4 a = texelFetch(s, ivec2(0, 0), 0), b = texelFetch(s, ivec2(1, 0), 0),\n"
+            "      d = texelFetch(s, ivec2(2, 0), 0), e = texelFetch(s, ivec2(3, 0), 0);\n"
+            "c = vec4(a.x == 0xFFFFFFFFu && b.x == 0x7F800001u ? 1.0 : 0.0,\n"
+            "         d.x == 0x98F87620u && e.x == 16777217u ? 1.0 : 0.0, a.a == 1u ? 1.0 : 0.0, 1.0);");
+  EXPECT_PX(pixel(5, 5), 255, 255, 255, 255);
+  const GLint i[2] = {-123456789, int(0x80000000u)};
+  glBindTexture(GL_TEXTURE_2D, t[1]);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32I, 2, 1, 0, GL_RED_INTEGER, GL_INT, i);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  draw_quad("uniform isampler2D s;\nout vec4 c;",
+            "ivec4 a = texelFetch(s, ivec2(0, 0), 0), b = texelFetch(s, ivec2(1, 0), 0);\n"
+            "c = vec4(a.x == -123456789 ? 1.0 : 0.0, b.x == int(0x80000000u) ? 1.0 : 0.0, 0.0, 1.0);");
+  EXPECT_PX(pixel(5, 5), 255, 255, 0, 255);
+  // Narrower formats clamp; reading back as a narrower type clamps too.
+  const GLint wide[2] = {300, -5};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R8I, 2, 1, 0, GL_RED_INTEGER, GL_INT, wide);
+  GLshort s16[2] = {};
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RED_INTEGER, GL_SHORT, s16);
+  EXPECT_EQ(s16[0], 127);
+  EXPECT_EQ(s16[1], -5);
+  // There are no mipmaps to filter from integer images.
+  glGenerateMipmap(GL_TEXTURE_2D);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glDeleteTextures(2, t);
+}
+
 TEST_F(TexTest, EveryTargetIsSampled) {
   GLuint tex[7];
   glGenTextures(7, tex);

@@ -4,6 +4,8 @@
 #include <GL/gl.h>
 #include <gtest/gtest.h>
 
+#include <bit>
+
 #include <cstdint>
 #include <cstring>
 #include <random>
@@ -244,55 +246,63 @@ TEST(PixelsRG, UnpackPack) {
   expect_vec(out[0], {-3.5f, 7, 0, 1});
 }
 
-TEST(PixelsInteger, ValuesAreNotNormalized) {
+// Integer components travel as their 32 bits in the float (texture_format.hpp): I(v) is how
+// the integer v looks there.
+float I(int64_t v) { return std::bit_cast<float>(uint32_t(v)); }
+glm::vec4 I4(int64_t r, int64_t g, int64_t b, int64_t a) { return {I(r), I(g), I(b), I(a)}; }
+void expect_bits(const glm::vec4& got, const glm::vec4& want) {
+  for (int k = 0; k < 4; ++k)
+    EXPECT_EQ(std::bit_cast<uint32_t>(got[k]), std::bit_cast<uint32_t>(want[k])) << "component " << k;
+}
+
+TEST(PixelsInteger, ValuesAreNotNormalizedAndKeepTheirBits) {
   EXPECT_TRUE(is_integer_format(GL_RED_INTEGER));
   EXPECT_TRUE(is_integer_format(GL_BGRA_INTEGER));
   EXPECT_FALSE(is_integer_format(GL_RGBA));
-  EXPECT_EQ(unpack1(GL_RED_INTEGER, GL_INT, int32_t(1000000)).x, 1000000.0f);
-  EXPECT_EQ(unpack1(GL_RED_INTEGER, GL_INT, int32_t(-7)).x, -7.0f);
-  EXPECT_EQ(unpack1(GL_GREEN_INTEGER, GL_UNSIGNED_INT, uint32_t(4000000000u)).y, 4000000000.0f);
-  EXPECT_EQ(unpack1(GL_BLUE_INTEGER, GL_BYTE, int8_t(-5)).z, -5.0f);
-  EXPECT_EQ(unpack1(GL_RED_INTEGER, GL_UNSIGNED_SHORT, uint16_t(65535)).x, 65535.0f);
-  EXPECT_EQ(unpack1(GL_RED_INTEGER, GL_SHORT, int16_t(-32768)).x, -32768.0f);
-  // Missing components: 0 and alpha 1.
-  expect_vec(unpack1(GL_RED_INTEGER, GL_UNSIGNED_BYTE, uint8_t(200)), {200, 0, 0, 1});
+  expect_bits(unpack1(GL_RED_INTEGER, GL_INT, int32_t(1000000)), I4(1000000, 0, 0, 1));
+  expect_bits(unpack1(GL_RED_INTEGER, GL_INT, int32_t(-7)), I4(-7, 0, 0, 1));
+  expect_bits(unpack1(GL_GREEN_INTEGER, GL_UNSIGNED_INT, uint32_t(4000000001u)), I4(0, 4000000001u, 0, 1));
+  expect_bits(unpack1(GL_RED_INTEGER, GL_UNSIGNED_INT, uint32_t(0x7F800001u)), I4(0x7F800001u, 0, 0, 1));
+  expect_bits(unpack1(GL_BLUE_INTEGER, GL_BYTE, int8_t(-5)), I4(0, 0, -5, 1));
+  expect_bits(unpack1(GL_RED_INTEGER, GL_UNSIGNED_SHORT, uint16_t(65535)), I4(65535, 0, 0, 1));
+  expect_bits(unpack1(GL_RED_INTEGER, GL_SHORT, int16_t(-32768)), I4(-32768, 0, 0, 1));
+  expect_bits(unpack1(GL_RED_INTEGER, GL_UNSIGNED_BYTE, uint8_t(200)), I4(200, 0, 0, 1));
   const uint8_t bgra[4] = {1, 2, 3, 4};
   std::vector<glm::vec4> out;
   unpack_pixels(store(), 1, 1, GL_BGRA_INTEGER, GL_UNSIGNED_BYTE, bgra, out);
-  expect_vec(out[0], {3, 2, 1, 4});
-  const int32_t rgb[3] = {100000, -200000, 300000};
+  expect_bits(out[0], I4(3, 2, 1, 4));
+  const int32_t rgb[3] = {100000, -200000, 16777217};
   unpack_pixels(store(), 1, 1, GL_RGB_INTEGER, GL_INT, rgb, out);
-  expect_vec(out[0], {100000, -200000, 300000, 1});
+  expect_bits(out[0], I4(100000, -200000, 16777217, 1));
   unpack_pixels(store(), 1, 1, GL_BGR_INTEGER, GL_INT, rgb, out);
-  expect_vec(out[0], {300000, -200000, 100000, 1});
+  expect_bits(out[0], I4(16777217, -200000, 100000, 1));
   const uint16_t rg[2] = {1234, 4321};
   unpack_pixels(store(), 1, 1, GL_RG_INTEGER, GL_UNSIGNED_SHORT, rg, out);
-  expect_vec(out[0], {1234, 4321, 0, 1});
+  expect_bits(out[0], I4(1234, 4321, 0, 1));
   // Packed types with integer formats give the raw fields.
-  expect_vec(unpack1(GL_RGBA_INTEGER, GL_UNSIGNED_INT_10_10_10_2, uint32_t(0xFFC00000u | 2u)),
-             {1023, 0, 0, 2});
-  expect_vec(unpack1(GL_RGB_INTEGER, GL_UNSIGNED_SHORT_5_6_5, uint16_t(0xF800 | (40 << 5))), {31, 40, 0, 1});
+  expect_bits(unpack1(GL_RGBA_INTEGER, GL_UNSIGNED_INT_10_10_10_2, uint32_t(0xFFC00000u | 2u)),
+              I4(1023, 0, 0, 2));
+  expect_bits(unpack1(GL_RGB_INTEGER, GL_UNSIGNED_SHORT_5_6_5, uint16_t(0xF800 | (40 << 5))),
+              I4(31, 40, 0, 1));
 }
 
-TEST(PixelsInteger, PackRoundsAndClamps) {
-  EXPECT_EQ(pack1<int32_t>(GL_RED_INTEGER, GL_INT, {1000000, 0, 0, 1}), 1000000);
-  EXPECT_EQ(pack1<int32_t>(GL_RED_INTEGER, GL_INT, {-1e10f, 0, 0, 1}), INT32_MIN);
-  EXPECT_EQ(pack1<int32_t>(GL_RED_INTEGER, GL_INT, {1e10f, 0, 0, 1}), INT32_MAX);
-  EXPECT_EQ(pack1<uint32_t>(GL_RED_INTEGER, GL_UNSIGNED_INT, {4000000000.0f, 0, 0, 1}), 4000000000u);
-  EXPECT_EQ(pack1<uint32_t>(GL_RED_INTEGER, GL_UNSIGNED_INT, {-5, 0, 0, 1}), 0u);
-  EXPECT_EQ(pack1<uint8_t>(GL_RED_INTEGER, GL_UNSIGNED_BYTE, {300, 0, 0, 1}), 255);
-  EXPECT_EQ(pack1<uint8_t>(GL_RED_INTEGER, GL_UNSIGNED_BYTE, {2.6f, 0, 0, 1}), 3);
-  EXPECT_EQ(pack1<uint8_t>(GL_RED_INTEGER, GL_UNSIGNED_BYTE, {-1, 0, 0, 1}), 0);
-  EXPECT_EQ(pack1<int8_t>(GL_RED_INTEGER, GL_BYTE, {-200, 0, 0, 1}), -128);
-  EXPECT_EQ(pack1<int8_t>(GL_RED_INTEGER, GL_BYTE, {-5, 0, 0, 1}), -5);
-  EXPECT_EQ(pack1<int16_t>(GL_GREEN_INTEGER, GL_SHORT, {0, 40000, 0, 1}), 32767);
-  EXPECT_EQ(pack1<uint16_t>(GL_BLUE_INTEGER, GL_UNSIGNED_SHORT, {0, 0, 1234, 1}), 1234);
+TEST(PixelsInteger, PackClampsToTheType) {
+  EXPECT_EQ(pack1<int32_t>(GL_RED_INTEGER, GL_INT, I4(1000000, 0, 0, 1)), 1000000);
+  EXPECT_EQ(pack1<int32_t>(GL_RED_INTEGER, GL_INT, I4(INT32_MIN, 0, 0, 1)), INT32_MIN);
+  EXPECT_EQ(pack1<uint32_t>(GL_RED_INTEGER, GL_UNSIGNED_INT, I4(4000000001u, 0, 0, 1)), 4000000001u);
+  EXPECT_EQ(pack1<uint32_t>(GL_RED_INTEGER, GL_UNSIGNED_INT, I4(0x7F800001u, 0, 0, 1)), 0x7F800001u);
+  EXPECT_EQ(pack1<uint8_t>(GL_RED_INTEGER, GL_UNSIGNED_BYTE, I4(300, 0, 0, 1)), 255);
+  EXPECT_EQ(pack1<uint8_t>(GL_RED_INTEGER, GL_UNSIGNED_BYTE, I4(3, 0, 0, 1)), 3);
+  EXPECT_EQ(pack1<int8_t>(GL_RED_INTEGER, GL_BYTE, I4(-200, 0, 0, 1)), -128);
+  EXPECT_EQ(pack1<int8_t>(GL_RED_INTEGER, GL_BYTE, I4(-5, 0, 0, 1)), -5);
+  EXPECT_EQ(pack1<int16_t>(GL_GREEN_INTEGER, GL_SHORT, I4(0, 40000, 0, 1)), 32767);
+  EXPECT_EQ(pack1<uint16_t>(GL_BLUE_INTEGER, GL_UNSIGNED_SHORT, I4(0, 0, 1234, 1)), 1234);
   uint8_t bgra[4] = {};
-  pack_pixels(store(), 1, 1, GL_BGRA_INTEGER, GL_UNSIGNED_BYTE, {glm::vec4(3, 2, 1, 4)}, bgra);
+  pack_pixels(store(), 1, 1, GL_BGRA_INTEGER, GL_UNSIGNED_BYTE, {I4(3, 2, 1, 4)}, bgra);
   EXPECT_EQ(std::vector<uint8_t>(bgra, bgra + 4), (std::vector<uint8_t>{1, 2, 3, 4}));
   // Packed fields clamp to their width.
-  EXPECT_EQ(pack1<uint32_t>(GL_RGBA_INTEGER, GL_UNSIGNED_INT_2_10_10_10_REV, {2000, 5, -3, 9}),
-            1023u | (5u << 10) | (3u << 30));
+  EXPECT_EQ(pack1<uint32_t>(GL_RGBA_INTEGER, GL_UNSIGNED_INT_2_10_10_10_REV, I4(2000, 5, 3, 9)),
+            1023u | (5u << 10) | (3u << 20) | (3u << 30));
 }
 
 TEST(PixelsDepthStencil, Uint24_8) {

@@ -3,6 +3,7 @@
 // way (rows bottom-up), so that the two results compare value for value.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -103,8 +104,8 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
     if (!done) r.log += "uniform '" + u.name + "' could not be set\n";
   }
   // Textures: 1D and rectangle ones as 2D, 1D arrays as height-1 2D arrays, buffer textures
-  // as views of a buffer of RGBA32F texels (integer formats hold their values as floats, which
-  // the isampler/usampler lookups convert back).
+  // as views of a buffer of RGBA32F texels (integer formats hold each value's 32 bits in the
+  // float, which the isampler/usampler lookups read, as the GL layer stores them).
   std::vector<std::unique_ptr<gpu::Texture2D>> textures;
   std::vector<std::unique_ptr<gpu::TextureCube>> cubes;
   std::vector<std::unique_ptr<gpu::Texture3D>> volumes;
@@ -126,6 +127,10 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
                                                           : gpu::Format::RGBA32F;
     // The data as RGBA floats (depth textures give one float per texel).
     std::vector<float> rgba = t.data;
+    const bool sint = t.internal_format == 0x8D82 || t.internal_format == 0x8235,  // GL_RGBA32I, GL_R32I
+        uint = t.internal_format == 0x8D70 || t.internal_format == 0x8236;         // GL_RGBA32UI, GL_R32UI
+    if (sint || uint)
+      for (float& v : rgba) v = std::bit_cast<float>(sint ? uint32_t(int32_t(v)) : uint32_t(v));
     if (depth) {
       rgba.assign(t.data.size() * 4, 0.0f);
       for (size_t i = 0; i < t.data.size(); ++i) rgba[i * 4] = t.data[i];
