@@ -126,9 +126,38 @@ int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const 
   // direction: the parallelogram's lattice position moves by one sub-pixel step along the
   // major axis for a line drawn backwards (the planes keep the unmoved float positions).
   const bool backwards = x_major ? dx < 0 : dy < 0;
+  // The diamond-exit rule at the ends of a width-1 line (GL 4.6 §14.5.1): an end inside its
+  // pixel's diamond (|x - xc| + |y - yc| < 1/2) decides that pixel itself — the last one
+  // is not drawn (the line does not leave its diamond), the first one is (it does) —
+  // where the parallelogram would decide by which side of the centre the end lies. Such an
+  // end is moved along the line to the pixel centre for coverage only (as llvmpipe's
+  // lp_setup_line does); depth and attributes keep the ends' own positions.
+  float rx[2] = {v0.x, v1.x}, ry[2] = {v0.y, v1.y};  // the ends for coverage: start, end
+  if (d.state.line_width < 1.5f) {
+    const float dmaj = x_major ? dx : dy;
+    for (int e = 0; e < 2; ++e) {
+      const float cx = std::floor(rx[e]) + 0.5f, cy = std::floor(ry[e]) + 0.5f;
+      if (!(std::fabs(rx[e] - cx) + std::fabs(ry[e] - cy) < 0.5f)) continue;
+      const float past = (x_major ? rx[e] - cx : ry[e] - cy) * (dmaj > 0.0f ? 1.0f : -1.0f);
+      if (!(past > 0.0f)) continue;  // already on the side of the centre the rule wants
+      const float t = (x_major ? cx - rx[e] : cy - ry[e]) / dmaj;
+      rx[e] += t * dx;
+      ry[e] += t * dy;
+      if (x_major)
+        rx[e] = cx;
+      else
+        ry[e] = cy;
+    }
+  }
   WinVert a = v0, b = v1;
-  if (backwards) std::swap(a, b);
+  if (backwards) {
+    std::swap(a, b);
+    std::swap(rx[0], rx[1]);
+    std::swap(ry[0], ry[1]);
+  }
   WinVert q[4] = {a, b, b, a};
+  // Each corner's end (0: a, 1: b) for its coverage position.
+  static constexpr int kEnd[4] = {0, 1, 1, 0};
   if (x_major) {
     q[0].y -= half;
     q[1].y -= half;
@@ -140,22 +169,25 @@ int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const 
     q[2].x -= half;
     q[3].x -= half;
   }
-  for (auto& v : q) {
+  for (int i = 0; i < 4; ++i) {
+    WinVert& v = q[i];
     v.z += z_offset;
+    // The lattice position comes from the coverage end (moved by the diamond rule, and one
+    // sub-pixel step further for a line drawn backwards); the float position (for the
+    // planes) stays.
+    const float ox = v.x, oy = v.y;
+    const int e = kEnd[i];
+    v.x += rx[e] - (e == 0 ? a.x : b.x);
+    v.y += ry[e] - (e == 0 ? a.y : b.y);
     if (backwards) {
-      // The lattice position of the point one sub-pixel step further; the float position
-      // (for the planes) stays.
-      const float ox = v.x, oy = v.y;
       if (x_major)
         v.x += 1.0f / float(kSubpixelOne);
       else
         v.y += 1.0f / float(kSubpixelOne);
-      snap_vertex(v);
-      v.x = ox;
-      v.y = oy;
-    } else {
-      snap_vertex(v);
     }
+    snap_vertex(v);
+    v.x = ox;
+    v.y = oy;
   }
   const Facing f = front ? Facing::Front : Facing::Back;
   int n = 0;
