@@ -94,7 +94,8 @@ void* map_range(Context& c, BufferObject& b, GLintptr offset, GLsizeiptr length,
     c.error(GL_INVALID_VALUE);
     return nullptr;
   }
-  if (b.mapped || !(access & (GL_MAP_READ_BIT | GL_MAP_WRITE_BIT)) ||
+  // (A range of no bytes is GL_INVALID_OPERATION on Mesa; GL 4.5 makes it an error too.)
+  if (b.mapped || length == 0 || !(access & (GL_MAP_READ_BIT | GL_MAP_WRITE_BIT)) ||
       ((access & GL_MAP_READ_BIT) &&
        (access & (GL_MAP_INVALIDATE_RANGE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT | GL_MAP_UNSYNCHRONIZED_BIT))) ||
       ((access & GL_MAP_FLUSH_EXPLICIT_BIT) && !(access & GL_MAP_WRITE_BIT))) {
@@ -270,9 +271,9 @@ void GLAPIENTRY glFlushMappedBufferRange(GLenum target, GLintptr offset, GLsizei
   GL_OUTSIDE_BEGIN();
   BufferObject* b = bound(c, target);
   if (!b) return;
+  if (!b->mapped || !(b->map_access & GL_MAP_FLUSH_EXPLICIT_BIT)) return c.error(GL_INVALID_OPERATION);
   if (offset < 0 || length < 0 || size_t(offset) + size_t(length) > b->map_length)
     return c.error(GL_INVALID_VALUE);
-  if (!b->mapped || !(b->map_access & GL_MAP_FLUSH_EXPLICIT_BIT)) return c.error(GL_INVALID_OPERATION);
   // The mapping is the buffer's own memory: what was written is there already.
 }
 

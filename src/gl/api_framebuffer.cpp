@@ -45,6 +45,21 @@ bool attachment_points(FramebufferObject& f, GLenum attachment, Attachment*& a, 
   return a != nullptr;
 }
 
+// The error of an attachment point that is not one: COLOR_ATTACHMENTm past the last is
+// GL_INVALID_OPERATION (GL 4.6 §9.2.7, as Mesa answers), anything else GL_INVALID_ENUM.
+GLenum attachment_error(GLenum attachment) {
+  return attachment >= GL_COLOR_ATTACHMENT0 && attachment < GL_COLOR_ATTACHMENT0 + 16 ? GL_INVALID_OPERATION
+                                                                                      : GL_INVALID_ENUM;
+}
+
+// glClearBuffer* on an incomplete framebuffer: GL_INVALID_FRAMEBUFFER_OPERATION, reported
+// before the arguments are looked at, as by Mesa.
+bool incomplete_for_clear(Context& c) {
+  if (c.in_begin || c.draw_framebuffer_complete()) return false;
+  c.error(GL_INVALID_FRAMEBUFFER_OPERATION);
+  return true;
+}
+
 void changed(Context& c) { c.touch(); }
 
 void attach_texture(Context& c, GLenum target, GLenum attachment, GLenum textarget, GLuint texture,
@@ -53,7 +68,7 @@ void attach_texture(Context& c, GLenum target, GLenum attachment, GLenum textarg
   FramebufferObject* f = target_fbo(c, target);
   if (!f) return;
   Attachment *a, *b;
-  if (!attachment_points(*f, attachment, a, b)) return c.error(GL_INVALID_ENUM);
+  if (!attachment_points(*f, attachment, a, b)) return c.error(attachment_error(attachment));
   Attachment n;
   if (texture != 0) {
     auto it = c.textures.find(texture);
@@ -112,7 +127,7 @@ void attach_renderbuffer(Context& c, GLenum target, GLenum attachment, GLenum rb
   FramebufferObject* f = target_fbo(c, target);
   if (!f) return;
   Attachment *a, *b;
-  if (!attachment_points(*f, attachment, a, b)) return c.error(GL_INVALID_ENUM);
+  if (!attachment_points(*f, attachment, a, b)) return c.error(attachment_error(attachment));
   if (rbtarget != GL_RENDERBUFFER) return c.error(GL_INVALID_ENUM);
   Attachment n;
   if (rb != 0) {
@@ -145,7 +160,9 @@ void renderbuffer_storage(Context& c, GLenum target, GLsizei samples, GLenum int
   }
   if (w < 0 || h < 0 || w > kMaxRenderbufferSize || h > kMaxRenderbufferSize)
     return c.error(GL_INVALID_VALUE);
-  if (samples < 0 || samples > kMaxSamples) return c.error(GL_INVALID_VALUE);
+  if (samples < 0) return c.error(GL_INVALID_VALUE);
+  // More samples than the format has: GL_INVALID_OPERATION (GL 4.6 §9.2.4, as Mesa answers).
+  if (samples > kMaxSamples) return c.error(GL_INVALID_OPERATION);
   RenderbufferObject& r = *c.bound_renderbuffer;
   c.touch();
   c.finish();
@@ -201,8 +218,9 @@ void draw_buffers(Context& c, GLsizei n, const std::array<GLenum, kMaxDrawBuffer
     if (b == GL_NONE) continue;
     if (b >= GL_COLOR_ATTACHMENT0 && b < GL_COLOR_ATTACHMENT0 + 16) {
       if (b >= GL_COLOR_ATTACHMENT0 + kMaxColorAttachments) return c.error(GL_INVALID_OPERATION);
-    } else if (b == GL_FRONT || b == GL_BACK || b == GL_LEFT || b == GL_RIGHT || b == GL_FRONT_AND_BACK ||
-               b == GL_FRONT_LEFT || b == GL_FRONT_RIGHT || b == GL_BACK_LEFT || b == GL_BACK_RIGHT ||
+    } else if (b == GL_FRONT || b == GL_BACK || b == GL_LEFT || b == GL_RIGHT || b == GL_FRONT_AND_BACK) {
+      return c.error(GL_INVALID_ENUM);  // names of several buffers: never in glDrawBuffers (§4.2.1)
+    } else if (b == GL_FRONT_LEFT || b == GL_FRONT_RIGHT || b == GL_BACK_LEFT || b == GL_BACK_RIGHT ||
                (b >= GL_AUX0 && b <= GL_AUX3)) {
       return c.error(GL_INVALID_OPERATION);  // a window's buffer named for a framebuffer object
     } else {
@@ -657,6 +675,7 @@ void GLAPIENTRY glDrawBuffers(GLsizei n, const GLenum* bufs) {
 void GLAPIENTRY glClearBufferfv(GLenum buffer, GLint drawbuffer, const GLfloat* value) {
   GL_CONTEXT();
   if (!value) return;
+  if (incomplete_for_clear(c)) return;
   if (buffer == GL_STENCIL || buffer == GL_DEPTH_STENCIL) return c.error(GL_INVALID_ENUM);
   const glm::vec4 col =
       buffer == GL_COLOR ? glm::vec4(value[0], value[1], value[2], value[3]) : glm::vec4(0.0f);
@@ -665,6 +684,7 @@ void GLAPIENTRY glClearBufferfv(GLenum buffer, GLint drawbuffer, const GLfloat* 
 void GLAPIENTRY glClearBufferiv(GLenum buffer, GLint drawbuffer, const GLint* value) {
   GL_CONTEXT();
   if (!value) return;
+  if (incomplete_for_clear(c)) return;
   if (buffer == GL_DEPTH || buffer == GL_DEPTH_STENCIL) return c.error(GL_INVALID_ENUM);
   const glm::vec4 col = buffer == GL_COLOR
                             ? glm::vec4(float(value[0]), float(value[1]), float(value[2]), float(value[3]))
@@ -674,13 +694,15 @@ void GLAPIENTRY glClearBufferiv(GLenum buffer, GLint drawbuffer, const GLint* va
 void GLAPIENTRY glClearBufferuiv(GLenum buffer, GLint drawbuffer, const GLuint* value) {
   GL_CONTEXT();
   if (!value) return;
+  if (incomplete_for_clear(c)) return;
   if (buffer != GL_COLOR) return c.error(GL_INVALID_ENUM);
   clear_buffer(c, buffer, drawbuffer,
                glm::vec4(float(value[0]), float(value[1]), float(value[2]), float(value[3])), 0.0f, 0, true);
 }
 void GLAPIENTRY glClearBufferfi(GLenum buffer, GLint drawbuffer, GLfloat depth, GLint stencil) {
   GL_CONTEXT();
-  if (buffer != GL_DEPTH_STENCIL) return c.error(GL_INVALID_ENUM);
+  if (buffer != GL_DEPTH_STENCIL) return c.error(GL_INVALID_ENUM);  // (checked first here, as by Mesa)
+  if (incomplete_for_clear(c)) return;
   clear_buffer(c, buffer, drawbuffer, glm::vec4(0.0f), depth, stencil, false);
 }
 

@@ -310,6 +310,8 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum form
   const bool depth = format == GL_DEPTH_COMPONENT || depth_stencil, stencil = format == GL_STENCIL_INDEX;
   const tessel::gpu::Attachment a = depth || stencil ? c.read_depth() : c.read_color();
   if (!a.texture) return c.error(GL_INVALID_OPERATION);
+  // Integer formats read integer colour buffers only, which Tessel's framebuffers do not have.
+  if (is_integer_format(format)) return c.error(GL_INVALID_OPERATION);
   if ((stencil || depth_stencil) && !c.read_has_stencil()) return c.error(GL_INVALID_OPERATION);
   void* dst = pixels;
   if (c.pixel_pack_buffer) {

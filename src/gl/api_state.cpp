@@ -406,6 +406,9 @@ void draw_buffer(Context& c, GLenum b) {
     c.s.color.draw_buffer = b;
     return;
   }
+  // An attachment named for the default framebuffer is GL_INVALID_OPERATION (GL 4.6 §17.4.1,
+  // as Mesa answers); any other non-window name GL_INVALID_ENUM.
+  if (b >= GL_COLOR_ATTACHMENT0 && b < GL_COLOR_ATTACHMENT0 + 16) return c.error(GL_INVALID_OPERATION);
   if (!window_buffer(b)) return c.error(GL_INVALID_ENUM);
   if (!c.color_buffer(b)) return c.error(GL_INVALID_OPERATION);
   c.touch();
@@ -423,6 +426,7 @@ void read_buffer(Context& c, GLenum b) {
     c.s.pixel.read_buffer = b;
     return;
   }
+  if (b >= GL_COLOR_ATTACHMENT0 && b < GL_COLOR_ATTACHMENT0 + 16) return c.error(GL_INVALID_OPERATION);
   if (!window_buffer(b) || b == GL_FRONT_AND_BACK) return c.error(GL_INVALID_ENUM);
   if (!c.color_buffer(b)) return c.error(GL_INVALID_OPERATION);
   c.s.pixel.read_buffer = b;

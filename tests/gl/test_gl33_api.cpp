@@ -261,6 +261,190 @@ TEST_F(GL33CoreTest, RemovedCallsAreInvalidOperationsAndChangeNothing) {
   EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
 }
 
+// Each call's error as GL 3.3 lists it and as Mesa's llvmpipe answers it (the same calls were
+// run on both through EGL; where they differ, the comment says why Tessel keeps its answer),
+// and the state a failed call leaves alone.
+#define EXPECT_GL(call, e)                       \
+  do {                                           \
+    call;                                        \
+    EXPECT_EQ(glGetError(), GLenum(e)) << #call; \
+  } while (0)
+
+TEST_F(GL33CoreTest, ErrorsOfDrawsBuffersBindingsQueriesSyncsAndFramebuffers) {
+  GLuint vao, vbo, ebo;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glGenBuffers(1, &vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glBufferData(GL_ARRAY_BUFFER, 64, nullptr, GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(0);
+  glGenBuffers(1, &ebo);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, 64, nullptr, GL_STATIC_DRAW);
+  const char* vs =
+      "#version 330\nlayout(location=0) in vec2 p; layout(std140) uniform B { vec4 k; };\n"
+      "void main() { gl_Position = vec4(p, 0, 1) + k; }\n";
+  const GLuint pr = program(vs, "#version 330\nout vec4 o; void main() { o = vec4(1); }\n");
+  glUseProgram(pr);
+  ASSERT_EQ(err(), GLenum(GL_NO_ERROR));
+
+  // Draws.
+  EXPECT_GL(glDrawArrays(0x99, 0, 3), GL_INVALID_ENUM);
+  EXPECT_GL(glDrawArrays(GL_TRIANGLES, 0, -1), GL_INVALID_VALUE);
+  EXPECT_GL(glDrawElements(GL_TRIANGLES, 3, GL_FLOAT, nullptr), GL_INVALID_ENUM);
+  EXPECT_GL(glDrawRangeElements(GL_TRIANGLES, 5, 2, 3, GL_UNSIGNED_SHORT, nullptr), GL_INVALID_VALUE);
+  EXPECT_GL(glDrawArraysInstanced(GL_TRIANGLES, 0, 3, -1), GL_INVALID_VALUE);
+  const GLint first[1] = {0};
+  const GLsizei count[1] = {3};
+  EXPECT_GL(glMultiDrawArrays(GL_TRIANGLES, first, count, -1), GL_INVALID_VALUE);
+  // A mapped buffer in use by a draw: GL 3.3 §2.9.3 makes it GL_INVALID_OPERATION (Mesa draws).
+  glMapBufferRange(GL_ARRAY_BUFFER, 0, 16, GL_MAP_WRITE_BIT);
+  EXPECT_GL(glDrawArrays(GL_TRIANGLES, 0, 3), GL_INVALID_OPERATION);
+  glUnmapBuffer(GL_ARRAY_BUFFER);
+
+  // Mapping.
+  EXPECT_GL(glMapBufferRange(GL_ARRAY_BUFFER, 0, 0, GL_MAP_WRITE_BIT), GL_INVALID_OPERATION);
+  EXPECT_GL(glMapBufferRange(GL_ARRAY_BUFFER, 0, 16, GL_MAP_READ_BIT | GL_MAP_INVALIDATE_RANGE_BIT),
+            GL_INVALID_OPERATION);
+  EXPECT_GL(glMapBufferRange(GL_ARRAY_BUFFER, 0, 16, GL_MAP_READ_BIT | GL_MAP_FLUSH_EXPLICIT_BIT),
+            GL_INVALID_OPERATION);
+  EXPECT_GL(glMapBufferRange(GL_ARRAY_BUFFER, 60, 16, GL_MAP_WRITE_BIT), GL_INVALID_VALUE);
+  EXPECT_GL(glFlushMappedBufferRange(GL_ARRAY_BUFFER, 0, 4), GL_INVALID_OPERATION);  // not mapped
+  glMapBufferRange(GL_ARRAY_BUFFER, 0, 16, GL_MAP_WRITE_BIT);
+  EXPECT_GL(glMapBufferRange(GL_ARRAY_BUFFER, 0, 16, GL_MAP_WRITE_BIT), GL_INVALID_OPERATION);
+  EXPECT_GL(glFlushMappedBufferRange(GL_ARRAY_BUFFER, 0, 4), GL_INVALID_OPERATION);  // no FLUSH_EXPLICIT
+  EXPECT_GL(glBufferSubData(GL_ARRAY_BUFFER, 0, 4, first), GL_INVALID_OPERATION);
+  EXPECT_GL(glUnmapBuffer(GL_ARRAY_BUFFER), GL_NO_ERROR);
+  EXPECT_GL(glUnmapBuffer(GL_ARRAY_BUFFER), GL_INVALID_OPERATION);
+
+  // Indexed uniform buffer bindings and blocks.
+  const GLint max_bindings = get_int(GL_MAX_UNIFORM_BUFFER_BINDINGS);
+  GLuint ub;
+  glGenBuffers(1, &ub);
+  glBindBuffer(GL_UNIFORM_BUFFER, ub);
+  glBufferData(GL_UNIFORM_BUFFER, 1024, nullptr, GL_DYNAMIC_DRAW);
+  EXPECT_GL(glBindBufferRange(GL_UNIFORM_BUFFER, GLuint(max_bindings), ub, 0, 16), GL_INVALID_VALUE);
+  EXPECT_GL(glBindBufferRange(GL_UNIFORM_BUFFER, 0, ub, 1, 16), GL_INVALID_VALUE);  // misaligned
+  EXPECT_GL(glBindBufferRange(GL_UNIFORM_BUFFER, 0, ub, 0, 0), GL_INVALID_VALUE);
+  // A negative offset (GL 4.5 names it; Mesa 22 accepts -256).
+  EXPECT_GL(glBindBufferRange(GL_UNIFORM_BUFFER, 0, ub, -256, 16), GL_INVALID_VALUE);
+  GLint bound = -1;
+  glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, 0, &bound);
+  EXPECT_EQ(bound, 0);  // none of the failed calls bound it
+  EXPECT_GL(glBindBufferBase(GL_ARRAY_BUFFER, 0, ub), GL_INVALID_ENUM);
+  EXPECT_GL(glBindBufferBase(GL_UNIFORM_BUFFER, 0, 999), GL_INVALID_OPERATION);
+  EXPECT_GL(glUniformBlockBinding(pr, 7, 0), GL_INVALID_VALUE);
+  EXPECT_GL(glUniformBlockBinding(pr, 0, GLuint(max_bindings)), GL_INVALID_VALUE);
+  GLint v = -5;
+  EXPECT_GL(glGetActiveUniformBlockiv(pr, 3, GL_UNIFORM_BLOCK_DATA_SIZE, &v), GL_INVALID_VALUE);
+  EXPECT_GL(glGetActiveUniformBlockiv(pr, 0, 0x1234, &v), GL_INVALID_ENUM);
+  EXPECT_EQ(v, -5);
+  EXPECT_EQ(glGetUniformBlockIndex(pr, "Nope"), GLuint(GL_INVALID_INDEX));
+  EXPECT_GL(glVertexAttribDivisor(16, 1), GL_INVALID_VALUE);
+
+  // Queries.
+  GLuint q[2];
+  glGenQueries(2, q);
+  EXPECT_GL(glBeginQuery(0x1234, q[0]), GL_INVALID_ENUM);
+  EXPECT_GL(glBeginQuery(GL_SAMPLES_PASSED, 0), GL_INVALID_OPERATION);
+  glBeginQuery(GL_SAMPLES_PASSED, q[0]);
+  EXPECT_GL(glBeginQuery(GL_SAMPLES_PASSED, q[1]), GL_INVALID_OPERATION);
+  EXPECT_GL(glBeginQuery(GL_ANY_SAMPLES_PASSED, q[0]), GL_INVALID_OPERATION);
+  glEndQuery(GL_SAMPLES_PASSED);
+  EXPECT_GL(glEndQuery(GL_SAMPLES_PASSED), GL_INVALID_OPERATION);
+  EXPECT_GL(glBeginQuery(GL_ANY_SAMPLES_PASSED, q[0]), GL_INVALID_OPERATION);  // made for another target
+  GLuint result = 0;
+  EXPECT_GL(glGetQueryObjectuiv(q[1], GL_QUERY_RESULT, &result), GL_INVALID_OPERATION);  // never begun
+  EXPECT_GL(glQueryCounter(q[0], GL_TIMESTAMP), GL_INVALID_OPERATION);
+  EXPECT_GL(glQueryCounter(q[1], GL_SAMPLES_PASSED), GL_INVALID_ENUM);
+
+  // Syncs.
+  EXPECT_GL(glFenceSync(0x1234, 0), GL_INVALID_ENUM);
+  EXPECT_GL(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 1), GL_INVALID_VALUE);
+  GLsync sync = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+  EXPECT_GL(glClientWaitSync(sync, 0x8, 0), GL_INVALID_VALUE);
+  EXPECT_GL(glWaitSync(sync, 1, GL_TIMEOUT_IGNORED), GL_INVALID_VALUE);
+  EXPECT_GL(glWaitSync(sync, 0, 5), GL_INVALID_VALUE);
+  EXPECT_GL(glClientWaitSync(reinterpret_cast<GLsync>(0x1234), 0, 0), GL_INVALID_VALUE);
+  EXPECT_GL(glDeleteSync(reinterpret_cast<GLsync>(0x1234)), GL_INVALID_VALUE);
+  EXPECT_GL(glDeleteSync(nullptr), GL_NO_ERROR);
+  GLint sv = 0;
+  GLsizei sl = 0;
+  EXPECT_GL(glGetSynciv(sync, 0x1234, 1, &sl, &sv), GL_INVALID_ENUM);
+  glDeleteSync(sync);
+
+  // Samplers and blending.
+  GLuint sm;
+  glGenSamplers(1, &sm);
+  EXPECT_GL(glSamplerParameteri(777, GL_TEXTURE_MIN_FILTER, GL_LINEAR), GL_INVALID_OPERATION);
+  EXPECT_GL(glSamplerParameteri(sm, 0x1234, GL_LINEAR), GL_INVALID_ENUM);
+  EXPECT_GL(glSamplerParameteri(sm, GL_TEXTURE_MIN_FILTER, GL_REPEAT), GL_INVALID_ENUM);
+  EXPECT_GL(glSamplerParameteri(sm, GL_TEXTURE_WRAP_S, GL_LINEAR), GL_INVALID_ENUM);
+  EXPECT_GL(glSamplerParameteri(sm, GL_TEXTURE_COMPARE_MODE, GL_LINEAR), GL_INVALID_ENUM);
+  EXPECT_GL(glBindSampler(0, 777), GL_INVALID_OPERATION);
+  EXPECT_GL(glBlendFunc(0x1234, GL_ONE), GL_INVALID_ENUM);
+  EXPECT_GL(glBlendEquation(0x1234), GL_INVALID_ENUM);
+  EXPECT_GL(glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, 0x1234), GL_INVALID_ENUM);
+  EXPECT_GL(glBlendEquationSeparate(GL_FUNC_ADD, 0x1234), GL_INVALID_ENUM);
+  EXPECT_GL(glEnablei(GL_BLEND, 8), GL_INVALID_VALUE);
+  EXPECT_GL(glEnablei(GL_DEPTH_TEST, 0), GL_INVALID_ENUM);
+  EXPECT_GL(glColorMaski(8, 1, 1, 1, 1), GL_INVALID_VALUE);
+
+  // Draw and read buffers, clears and attachments.
+  EXPECT_GL(glDrawBuffer(GL_COLOR_ATTACHMENT0), GL_INVALID_OPERATION);  // the default framebuffer
+  EXPECT_GL(glReadBuffer(GL_COLOR_ATTACHMENT0), GL_INVALID_OPERATION);
+  GLuint fb;
+  glGenFramebuffers(1, &fb);
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  const GLenum twice[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT0}, back[1] = {GL_BACK};
+  EXPECT_GL(glDrawBuffers(2, twice), GL_INVALID_OPERATION);
+  EXPECT_GL(glDrawBuffers(1, back), GL_INVALID_ENUM);
+  EXPECT_GL(glDrawBuffers(9, twice), GL_INVALID_VALUE);
+  EXPECT_GL(glReadBuffer(GL_BACK), GL_INVALID_OPERATION);
+  EXPECT_GL(glReadBuffer(GL_COLOR_ATTACHMENT0 + 8), GL_INVALID_OPERATION);
+  const float zero[4] = {};
+  const GLint izero[4] = {};
+  EXPECT_GL(glClearBufferfv(GL_COLOR, 8, zero), GL_INVALID_FRAMEBUFFER_OPERATION);  // incomplete first
+  EXPECT_GL(glClearBufferiv(GL_DEPTH, 0, izero), GL_INVALID_FRAMEBUFFER_OPERATION);
+  EXPECT_GL(glClearBufferfi(GL_COLOR, 0, 1.0f, 0), GL_INVALID_ENUM);
+  GLuint tx;
+  glGenTextures(1, &tx);
+  glBindTexture(GL_TEXTURE_2D, tx);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_GL(glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 999, 0),
+            GL_INVALID_OPERATION);
+  EXPECT_GL(
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X, tx, 0),
+      GL_INVALID_OPERATION);
+  EXPECT_GL(glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tx, -1),
+            GL_INVALID_VALUE);
+  EXPECT_GL(glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + 8, GL_TEXTURE_2D, tx, 0),
+            GL_INVALID_OPERATION);
+  EXPECT_GL(glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0),
+            GL_INVALID_ENUM);
+  GLint type = -1;
+  glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                        GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  EXPECT_EQ(type, GL_NONE);  // nothing was attached
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  EXPECT_GL(glBlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, GL_DEPTH_BUFFER_BIT, GL_LINEAR), GL_INVALID_OPERATION);
+  EXPECT_GL(glBlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, 0x10, GL_NEAREST), GL_INVALID_VALUE);
+  EXPECT_GL(glBlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, GL_COLOR_BUFFER_BIT, 0x1234), GL_INVALID_ENUM);
+  GLubyte px[4];
+  EXPECT_GL(glReadPixels(0, 0, 1, 1, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, px), GL_INVALID_OPERATION);
+  GLuint rb;
+  glGenRenderbuffers(1, &rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb);
+  EXPECT_GL(glRenderbufferStorage(GL_RENDERBUFFER, 0x1234, 4, 4), GL_INVALID_ENUM);
+  EXPECT_GL(glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, -1, 4), GL_INVALID_VALUE);
+  EXPECT_GL(glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 100000, 4), GL_INVALID_VALUE);
+  EXPECT_GL(glRenderbufferStorageMultisample(GL_RENDERBUFFER, 64, GL_RGBA8, 4, 4), GL_INVALID_OPERATION);
+  EXPECT_GL(glUseProgram(999), GL_INVALID_VALUE);
+}
+
+#undef EXPECT_GL
+
 TEST_F(GL33Test, CompatibilityKeepsTheRemovedCalls) {
   glMatrixMode(GL_PROJECTION);
   EXPECT_EQ(get_int(GL_MATRIX_MODE), GL_PROJECTION);

@@ -560,7 +560,7 @@ TEST_F(TexTest, FramebufferCompletenessAndErrors) {
   EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
   const GLenum back[1] = {GL_BACK};
   glDrawBuffers(1, back);
-  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));  // names several buffers: never in glDrawBuffers (as Mesa)
   glDrawBuffers(9, two);
   EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
   glDrawBuffer(GL_COLOR_ATTACHMENT0);
@@ -574,7 +574,7 @@ TEST_F(TexTest, FramebufferCompletenessAndErrors) {
   glRenderbufferStorage(GL_RENDERBUFFER, 0x1234, 4, 4);
   EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
   glRenderbufferStorageMultisample(GL_RENDERBUFFER, 64, GL_RGBA8, 4, 4);
-  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));  // more samples than there are (as Mesa)
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, 4, 4);
   GLint w = 0;
   glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_WIDTH, &w);
@@ -590,7 +590,7 @@ TEST_F(TexTest, FramebufferCompletenessAndErrors) {
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb + 50);
   EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + 8, GL_TEXTURE_2D, tex, 0);
-  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));  // past the last colour attachment (as Mesa)
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X, tex, 0);
   EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, -1);
