@@ -300,6 +300,9 @@ bool query(Context& c, GLenum pname, Values& out) {
     // Framebuffer control.
     case GL_DRAW_BUFFER: e(c.draw_fbo ? c.draw_fbo->draw_buffers[0] : s.color.draw_buffer); return true;
     case GL_READ_BUFFER: e(c.read_fbo ? c.read_fbo->read_buffer : s.pixel.read_buffer); return true;
+    case GL_CLAMP_READ_COLOR: e(s.pixel.clamp_read); return true;
+    case GL_CLAMP_VERTEX_COLOR: e(s.pixel.clamp_vertex); return true;
+    case GL_CLAMP_FRAGMENT_COLOR: e(s.pixel.clamp_fragment); return true;
     case GL_COLOR_WRITEMASK:
       out.kind = Kind::Bool;
       for (bool m : s.color.color_mask[0]) out.v.push_back(m ? 1.0 : 0.0);

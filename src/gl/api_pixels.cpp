@@ -336,11 +336,30 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum form
       px[size_t(j) * size_t(w) + size_t(i)] = v;
     }
   if (!depth && !stencil) transfer(c.s.pixel, px);
+  const bool fixed_point = src->format() == tessel::gpu::Format::RGBA8 ||
+                           src->format() == tessel::gpu::Format::R8 ||
+                           src->format() == tessel::gpu::Format::RG8;
+  if (!depth && !stencil &&
+      (c.s.pixel.clamp_read == GL_TRUE || (c.s.pixel.clamp_read == GL_FIXED_ONLY && fixed_point)))
+    for (glm::vec4& v : px) v = glm::clamp(v, 0.0f, 1.0f);
   if (stencil) {
     // Stencil values are integers: GL_UNSIGNED_BYTE 5 reads as 5, not 5/255.
     for (glm::vec4& v : px) v.x = type == GL_FLOAT || type == GL_HALF_FLOAT ? v.x : v.x / 255.0f;
   }
   pack_pixels(c.c.pack, w, h, format, type, px, dst);
+}
+
+void GLAPIENTRY glClampColor(GLenum target, GLenum clamp) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  if (clamp != GL_TRUE && clamp != GL_FALSE && clamp != GL_FIXED_ONLY) return c.error(GL_INVALID_ENUM);
+  PixelModeState& p = c.s.pixel;
+  switch (c.core_profile ? (target == GL_CLAMP_READ_COLOR ? target : GLenum(0)) : target) {
+    case GL_CLAMP_READ_COLOR: p.clamp_read = clamp; break;
+    case GL_CLAMP_VERTEX_COLOR: p.clamp_vertex = clamp; break;
+    case GL_CLAMP_FRAGMENT_COLOR: p.clamp_fragment = clamp; break;
+    default: return c.error(GL_INVALID_ENUM);
+  }
 }
 
 void GLAPIENTRY glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid* pixels) {

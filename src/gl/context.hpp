@@ -187,6 +187,11 @@ struct HintState {
 
 struct PixelModeState {
   GLenum read_buffer = GL_BACK;
+  // glClampColor (GL 3.0 §4.3.2, compatibility §2.19.6 and §3.9): GL_CLAMP_READ_COLOR clamps
+  // what glReadPixels returns (GL_FIXED_ONLY: from fixed-point buffers, whose values are in
+  // [0, 1] already); the vertex and fragment clamps are kept and queried (Tessel clamps
+  // fixed-function colours and fixed-point targets always, float targets never).
+  GLenum clamp_read = GL_FIXED_ONLY, clamp_vertex = GL_TRUE, clamp_fragment = GL_FIXED_ONLY;
   float zoom_x = 1.0f, zoom_y = 1.0f;
   bool map_color = false, map_stencil = false;
   GLint index_shift = 0, index_offset = 0;

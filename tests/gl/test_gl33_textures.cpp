@@ -219,6 +219,44 @@ TEST_F(TexTest, ThirtyTwoBitIntegerTexelsAreExact) {
   glDeleteTextures(2, t);
 }
 
+// glClampColor(GL_CLAMP_READ_COLOR): glReadPixels of a float buffer returns its values as
+// they are (GL_FIXED_ONLY, the default, or GL_FALSE) or clamped to [0, 1] (GL_TRUE).
+TEST_F(TexTest, ClampReadColorAppliesToFloatBuffers) {
+  GLuint fb, rb;
+  glGenFramebuffers(1, &fb);
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  glGenRenderbuffers(1, &rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, 4, 4);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+  const GLfloat value[4] = {2.5f, -1.0f, 0.25f, 1.0f};
+  glClearBufferfv(GL_COLOR, 0, value);
+  GLfloat px[4] = {};
+  EXPECT_EQ(get_int_value(GL_CLAMP_READ_COLOR), GL_FIXED_ONLY);
+  glReadPixels(1, 1, 1, 1, GL_RGBA, GL_FLOAT, px);
+  EXPECT_EQ(px[0], 2.5f);
+  EXPECT_EQ(px[1], -1.0f);
+  glClampColor(GL_CLAMP_READ_COLOR, GL_TRUE);
+  glReadPixels(1, 1, 1, 1, GL_RGBA, GL_FLOAT, px);
+  EXPECT_EQ(px[0], 1.0f);
+  EXPECT_EQ(px[1], 0.0f);
+  EXPECT_EQ(px[2], 0.25f);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  glClampColor(GL_CLAMP_READ_COLOR, GL_RGBA);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glClampColor(0x1234, GL_TRUE);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  EXPECT_EQ(get_int_value(GL_CLAMP_READ_COLOR), GL_TRUE);
+  glClampColor(GL_CLAMP_VERTEX_COLOR, GL_FALSE);  // compatibility only
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(get_int_value(GL_CLAMP_VERTEX_COLOR), GL_FALSE);
+  ctx.set_version(3, 3, true);
+  glClampColor(GL_CLAMP_VERTEX_COLOR, GL_TRUE);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glDeleteFramebuffers(1, &fb);
+  glDeleteRenderbuffers(1, &rb);
+}
+
 TEST_F(TexTest, EveryTargetIsSampled) {
   GLuint tex[7];
   glGenTextures(7, tex);
