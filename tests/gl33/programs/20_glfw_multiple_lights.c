@@ -12,6 +12,7 @@
 #include "loader.h"
 // clang-format off (the order matters)
 #include <GLFW/glfw3.h>
+#include "util.h"
 // clang-format on
 
 #include <math.h>
@@ -134,98 +135,6 @@ static const char* lamp_fs =
     "uniform vec3 lampColor;\n"
     "void main() { FragColor = vec4(lampColor, 1.0); }\n";
 
-static GLuint compile(GLenum type, const char* src) {
-  GLuint s = glCreateShader(type);
-  GLint ok = 0;
-  glShaderSource(s, 1, &src, NULL);
-  glCompileShader(s);
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetShaderInfoLog(s, sizeof log, NULL, log);
-    fprintf(stderr, "ERROR::SHADER::COMPILATION_FAILED\n%s\n", log);
-    exit(1);
-  }
-  return s;
-}
-static GLuint program(const char* v, const char* f) {
-  GLuint p = glCreateProgram(), vs = compile(GL_VERTEX_SHADER, v), fs = compile(GL_FRAGMENT_SHADER, f);
-  GLint ok = 0;
-  glAttachShader(p, vs);
-  glAttachShader(p, fs);
-  glLinkProgram(p);
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetProgramInfoLog(p, sizeof log, NULL, log);
-    fprintf(stderr, "ERROR::PROGRAM::LINKING_FAILED\n%s\n", log);
-    exit(1);
-  }
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  return p;
-}
-
-/* Column-major 4x4 helpers (the glm calls the chapter uses). */
-static void identity(float* m) {
-  int i;
-  for (i = 0; i < 16; ++i) m[i] = (i % 5 == 0) ? 1.0f : 0.0f;
-}
-static void multiply(float* out, const float* a, const float* b) {
-  float r[16];
-  int c, i, k;
-  for (c = 0; c < 4; ++c)
-    for (i = 0; i < 4; ++i) {
-      float s = 0.0f;
-      for (k = 0; k < 4; ++k) s += a[k * 4 + i] * b[c * 4 + k];
-      r[c * 4 + i] = s;
-    }
-  memcpy(out, r, sizeof r);
-}
-static void translate(float* m, float x, float y, float z) {
-  float t[16];
-  identity(t);
-  t[12] = x, t[13] = y, t[14] = z;
-  multiply(m, m, t);
-}
-static void scale(float* m, float x, float y, float z) {
-  float t[16];
-  identity(t);
-  t[0] = x, t[5] = y, t[10] = z;
-  multiply(m, m, t);
-}
-static void rotate(float* m, float deg, float x, float y, float z) {
-  const float a = deg * 3.14159265f / 180.0f, c = cosf(a), s = sinf(a), l = sqrtf(x * x + y * y + z * z);
-  float r[16];
-  x /= l, y /= l, z /= l;
-  identity(r);
-  r[0] = c + x * x * (1 - c), r[1] = y * x * (1 - c) + z * s, r[2] = z * x * (1 - c) - y * s;
-  r[4] = x * y * (1 - c) - z * s, r[5] = c + y * y * (1 - c), r[6] = z * y * (1 - c) + x * s;
-  r[8] = x * z * (1 - c) + y * s, r[9] = y * z * (1 - c) - x * s, r[10] = c + z * z * (1 - c);
-  multiply(m, m, r);
-}
-static void perspective(float* m, float fovy_deg, float aspect, float n, float f) {
-  const float t = 1.0f / tanf(fovy_deg * 3.14159265f / 360.0f);
-  memset(m, 0, 16 * sizeof(float));
-  m[0] = t / aspect, m[5] = t, m[10] = (f + n) / (n - f), m[11] = -1.0f, m[14] = 2.0f * f * n / (n - f);
-}
-static void look_at(float* m, const float* eye, const float* center, const float* up) {
-  float f[3], s[3], u[3], l;
-  int i;
-  for (i = 0; i < 3; ++i) f[i] = center[i] - eye[i];
-  l = sqrtf(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-  for (i = 0; i < 3; ++i) f[i] /= l;
-  s[0] = f[1] * up[2] - f[2] * up[1], s[1] = f[2] * up[0] - f[0] * up[2], s[2] = f[0] * up[1] - f[1] * up[0];
-  l = sqrtf(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-  for (i = 0; i < 3; ++i) s[i] /= l;
-  u[0] = s[1] * f[2] - s[2] * f[1], u[1] = s[2] * f[0] - s[0] * f[2], u[2] = s[0] * f[1] - s[1] * f[0];
-  identity(m);
-  for (i = 0; i < 3; ++i) m[i * 4 + 0] = s[i], m[i * 4 + 1] = u[i], m[i * 4 + 2] = -f[i];
-  m[12] = -(s[0] * eye[0] + s[1] * eye[1] + s[2] * eye[2]);
-  m[13] = -(u[0] * eye[0] + u[1] * eye[1] + u[2] * eye[2]);
-  m[14] = f[0] * eye[0] + f[1] * eye[1] + f[2] * eye[2];
-}
-
 static void framebuffer_size_callback(GLFWwindow* window, int width, int height) {
   (void)window;
   glViewport(0, 0, width, height);
@@ -268,8 +177,8 @@ int main(void) {
   glfwSetFramebufferSizeCallback(window, framebuffer_size_callback);
   if (!load_gl(glfwGetProcAddress)) return -1;
   glEnable(GL_DEPTH_TEST);
-  lighting_prog = program(lighting_vs, lighting_fs);
-  lamp_prog = program(lamp_vs, lamp_fs);
+  lighting_prog = link_program(lighting_vs, lighting_fs);
+  lamp_prog = link_program(lamp_vs, lamp_fs);
 
   /* The chapter's cube: position, normal, texture coordinates; each face counter-clockwise. */
   for (f = 0; f < 6; ++f)
@@ -343,8 +252,8 @@ int main(void) {
     char name[64];
     glClearColor(0.05f, 0.05f, 0.07f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    perspective(projection, 45.0f, (float)W / (float)H, 0.1f, 100.0f);
-    look_at(view, eye, center, up);
+    mat_perspective(projection, 45.0f, (float)W / (float)H, 0.1f, 100.0f);
+    mat_lookat(view, eye[0], eye[1], eye[2], center[0], center[1], center[2], up[0], up[1], up[2]);
 
     glUseProgram(lighting_prog);
     glUniform3fv(glGetUniformLocation(lighting_prog, "viewPos"), 1, eye);
@@ -388,18 +297,18 @@ int main(void) {
     glBindTexture(GL_TEXTURE_2D, tex[1]);
     glBindVertexArray(cube_vao);
     /* the floor: a flat slab, its tiles repeated */
-    identity(model);
-    translate(model, 0.0f, -1.53f, -1.0f);
-    rotate(model, 7.0f, 0.0f, 1.0f, 0.0f);
-    scale(model, 9.0f, 0.2f, 9.0f);
+    mat_identity(model);
+    mat_mul_translate(model, 0.0f, -1.53f, -1.0f);
+    mat_mul_rotate(model, 7.0f, 0.0f, 1.0f, 0.0f);
+    mat_mul_scale(model, 9.0f, 0.2f, 9.0f);
     glUniform2f(glGetUniformLocation(lighting_prog, "uvScale"), 4.0f, 4.0f);
     glUniformMatrix4fv(glGetUniformLocation(lighting_prog, "model"), 1, GL_FALSE, model);
     glDrawArrays(GL_TRIANGLES, 0, 36);
     glUniform2f(glGetUniformLocation(lighting_prog, "uvScale"), 1.0f, 1.0f);
     for (i = 0; i < 6; ++i) {
-      identity(model);
-      translate(model, cubePositions[i][0], cubePositions[i][1], cubePositions[i][2]);
-      rotate(model, 20.0f * (float)i + 13.0f, 1.0f, 0.3f, 0.5f);
+      mat_identity(model);
+      mat_mul_translate(model, cubePositions[i][0], cubePositions[i][1], cubePositions[i][2]);
+      mat_mul_rotate(model, 20.0f * (float)i + 13.0f, 1.0f, 0.3f, 0.5f);
       glUniformMatrix4fv(glGetUniformLocation(lighting_prog, "model"), 1, GL_FALSE, model);
       glDrawArrays(GL_TRIANGLES, 0, 36);
     }
@@ -410,10 +319,11 @@ int main(void) {
     glUniformMatrix4fv(glGetUniformLocation(lamp_prog, "view"), 1, GL_FALSE, view);
     glBindVertexArray(lamp_vao);
     for (i = 0; i < NR_POINT_LIGHTS; ++i) {
-      identity(model);
-      translate(model, pointLightPositions[i][0], pointLightPositions[i][1], pointLightPositions[i][2]);
-      rotate(model, 11.0f + 9.0f * (float)i, 0.3f, 1.0f, 0.2f);
-      scale(model, 0.17f, 0.17f, 0.17f);
+      mat_identity(model);
+      mat_mul_translate(model, pointLightPositions[i][0], pointLightPositions[i][1],
+                        pointLightPositions[i][2]);
+      mat_mul_rotate(model, 11.0f + 9.0f * (float)i, 0.3f, 1.0f, 0.2f);
+      mat_mul_scale(model, 0.17f, 0.17f, 0.17f);
       glUniformMatrix4fv(glGetUniformLocation(lamp_prog, "model"), 1, GL_FALSE, model);
       glUniform3fv(glGetUniformLocation(lamp_prog, "lampColor"), 1, pointLightColors[i]);
       glDrawArrays(GL_TRIANGLES, 0, 36);

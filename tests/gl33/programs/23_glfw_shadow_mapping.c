@@ -11,6 +11,7 @@
 #include "loader.h"
 // clang-format off (the order matters)
 #include <GLFW/glfw3.h>
+#include "util.h"
 // clang-format on
 
 #include <math.h>
@@ -104,103 +105,6 @@ static const char* scene_fs =
     "  FragColor = vec4(lighting, 1.0);\n"
     "}\n";
 
-static GLuint compile(GLenum type, const char* src) {
-  GLuint s = glCreateShader(type);
-  GLint ok = 0;
-  glShaderSource(s, 1, &src, NULL);
-  glCompileShader(s);
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetShaderInfoLog(s, sizeof log, NULL, log);
-    fprintf(stderr, "ERROR::SHADER::COMPILATION_FAILED\n%s\n", log);
-    exit(1);
-  }
-  return s;
-}
-static GLuint program(const char* v, const char* f) {
-  GLuint p = glCreateProgram(), vs = compile(GL_VERTEX_SHADER, v), fs = compile(GL_FRAGMENT_SHADER, f);
-  GLint ok = 0;
-  glAttachShader(p, vs);
-  glAttachShader(p, fs);
-  glLinkProgram(p);
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetProgramInfoLog(p, sizeof log, NULL, log);
-    fprintf(stderr, "ERROR::PROGRAM::LINKING_FAILED\n%s\n", log);
-    exit(1);
-  }
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  return p;
-}
-
-/* Column-major 4x4 helpers (the glm calls the chapter uses). */
-static void identity(float* m) {
-  int i;
-  for (i = 0; i < 16; ++i) m[i] = (i % 5 == 0) ? 1.0f : 0.0f;
-}
-static void multiply(float* out, const float* a, const float* b) {
-  float r[16];
-  int c, i, k;
-  for (c = 0; c < 4; ++c)
-    for (i = 0; i < 4; ++i) {
-      float s = 0.0f;
-      for (k = 0; k < 4; ++k) s += a[k * 4 + i] * b[c * 4 + k];
-      r[c * 4 + i] = s;
-    }
-  memcpy(out, r, sizeof r);
-}
-static void translate(float* m, float x, float y, float z) {
-  float t[16];
-  identity(t);
-  t[12] = x, t[13] = y, t[14] = z;
-  multiply(m, m, t);
-}
-static void scale(float* m, float s) {
-  float t[16];
-  identity(t);
-  t[0] = t[5] = t[10] = s;
-  multiply(m, m, t);
-}
-static void rotate(float* m, float deg, float x, float y, float z) {
-  const float a = deg * 3.14159265f / 180.0f, c = cosf(a), s = sinf(a), l = sqrtf(x * x + y * y + z * z);
-  float r[16];
-  x /= l, y /= l, z /= l;
-  identity(r);
-  r[0] = c + x * x * (1 - c), r[1] = y * x * (1 - c) + z * s, r[2] = z * x * (1 - c) - y * s;
-  r[4] = x * y * (1 - c) - z * s, r[5] = c + y * y * (1 - c), r[6] = z * y * (1 - c) + x * s;
-  r[8] = x * z * (1 - c) + y * s, r[9] = y * z * (1 - c) - x * s, r[10] = c + z * z * (1 - c);
-  multiply(m, m, r);
-}
-static void perspective(float* m, float fovy_deg, float aspect, float n, float f) {
-  const float t = 1.0f / tanf(fovy_deg * 3.14159265f / 360.0f);
-  memset(m, 0, 16 * sizeof(float));
-  m[0] = t / aspect, m[5] = t, m[10] = (f + n) / (n - f), m[11] = -1.0f, m[14] = 2.0f * f * n / (n - f);
-}
-static void ortho(float* m, float l, float r, float b, float t, float n, float f) {
-  identity(m);
-  m[0] = 2.0f / (r - l), m[5] = 2.0f / (t - b), m[10] = -2.0f / (f - n);
-  m[12] = -(r + l) / (r - l), m[13] = -(t + b) / (t - b), m[14] = -(f + n) / (f - n);
-}
-static void look_at(float* m, const float* eye, const float* center, const float* up) {
-  float f[3], s[3], u[3], l;
-  int i;
-  for (i = 0; i < 3; ++i) f[i] = center[i] - eye[i];
-  l = sqrtf(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-  for (i = 0; i < 3; ++i) f[i] /= l;
-  s[0] = f[1] * up[2] - f[2] * up[1], s[1] = f[2] * up[0] - f[0] * up[2], s[2] = f[0] * up[1] - f[1] * up[0];
-  l = sqrtf(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-  for (i = 0; i < 3; ++i) s[i] /= l;
-  u[0] = s[1] * f[2] - s[2] * f[1], u[1] = s[2] * f[0] - s[0] * f[2], u[2] = s[0] * f[1] - s[1] * f[0];
-  identity(m);
-  for (i = 0; i < 3; ++i) m[i * 4 + 0] = s[i], m[i * 4 + 1] = u[i], m[i * 4 + 2] = -f[i];
-  m[12] = -(s[0] * eye[0] + s[1] * eye[1] + s[2] * eye[2]);
-  m[13] = -(u[0] * eye[0] + u[1] * eye[1] + u[2] * eye[2]);
-  m[14] = f[0] * eye[0] + f[1] * eye[1] + f[2] * eye[2];
-}
-
 static void framebuffer_size_callback(GLFWwindow* window, int width, int height) {
   (void)window;
   glViewport(0, 0, width, height);
@@ -211,28 +115,28 @@ static void framebuffer_size_callback(GLFWwindow* window, int width, int height)
 static void render_scene(GLuint prog, GLuint floor_vao, GLuint cube_vao, int cull_cubes) {
   const GLint loc = glGetUniformLocation(prog, "model");
   float model[16];
-  identity(model);
+  mat_identity(model);
   glUniformMatrix4fv(loc, 1, GL_FALSE, model);
   glBindVertexArray(floor_vao);
   glDrawArrays(GL_TRIANGLES, 0, 6);
   if (cull_cubes) glEnable(GL_CULL_FACE);
   glBindVertexArray(cube_vao);
-  identity(model);
-  translate(model, 0.03f, 1.5f, 0.02f);
-  rotate(model, 17.0f, 0.0f, 1.0f, 0.0f);
-  scale(model, 0.5f);
+  mat_identity(model);
+  mat_mul_translate(model, 0.03f, 1.5f, 0.02f);
+  mat_mul_rotate(model, 17.0f, 0.0f, 1.0f, 0.0f);
+  mat_mul_scale(model, 0.5f, 0.5f, 0.5f);
   glUniformMatrix4fv(loc, 1, GL_FALSE, model);
   glDrawArrays(GL_TRIANGLES, 0, 36);
-  identity(model);
-  translate(model, 2.0f, 0.0f, 1.0f);
-  rotate(model, -23.0f, 0.0f, 1.0f, 0.0f);
-  scale(model, 0.5f);
+  mat_identity(model);
+  mat_mul_translate(model, 2.0f, 0.0f, 1.0f);
+  mat_mul_rotate(model, -23.0f, 0.0f, 1.0f, 0.0f);
+  mat_mul_scale(model, 0.5f, 0.5f, 0.5f);
   glUniformMatrix4fv(loc, 1, GL_FALSE, model);
   glDrawArrays(GL_TRIANGLES, 0, 36);
-  identity(model);
-  translate(model, -1.0f, 0.0f, 2.0f);
-  rotate(model, 60.0f, 1.0f, 0.0f, 1.0f);
-  scale(model, 0.25f);
+  mat_identity(model);
+  mat_mul_translate(model, -1.0f, 0.0f, 2.0f);
+  mat_mul_rotate(model, 60.0f, 1.0f, 0.0f, 1.0f);
+  mat_mul_scale(model, 0.25f, 0.25f, 0.25f);
   glUniformMatrix4fv(loc, 1, GL_FALSE, model);
   glDrawArrays(GL_TRIANGLES, 0, 36);
   if (cull_cubes) glDisable(GL_CULL_FACE);
@@ -277,8 +181,8 @@ int main(void) {
     return -1;
   }
   glEnable(GL_DEPTH_TEST);
-  depth_prog = program(depth_vs, depth_fs);
-  scene_prog = program(scene_vs, scene_fs);
+  depth_prog = link_program(depth_vs, depth_fs);
+  scene_prog = link_program(scene_vs, scene_fs);
 
   /* A cube from -1 to 1 with outward normals and one texture copy per face. */
   for (f = 0; f < 6; ++f)
@@ -358,11 +262,11 @@ int main(void) {
   glUniform1i(glGetUniformLocation(scene_prog, "shadowMap"), 1);
 
   /* The light's orthographic frustum and view; the camera. */
-  ortho(light_projection, -10.0f, 10.0f, -10.0f, 10.0f, 1.0f, 7.5f);
-  look_at(light_view, light_pos, (const float[3]){0.0f, 0.0f, 0.0f}, up);
-  multiply(light_space, light_projection, light_view);
-  perspective(projection, 45.0f, (float)W / (float)H, 0.1f, 100.0f);
-  look_at(view, eye, center, up);
+  mat_ortho(light_projection, -10.0f, 10.0f, -10.0f, 10.0f, 1.0f, 7.5f);
+  mat_lookat(light_view, light_pos[0], light_pos[1], light_pos[2], 0.0f, 0.0f, 0.0f, up[0], up[1], up[2]);
+  mat_mul(light_space, light_projection, light_view);
+  mat_perspective(projection, 45.0f, (float)W / (float)H, 0.1f, 100.0f);
+  mat_lookat(view, eye[0], eye[1], eye[2], center[0], center[1], center[2], up[0], up[1], up[2]);
   glCullFace(GL_FRONT);
 
   while (!glfwWindowShouldClose(window)) {

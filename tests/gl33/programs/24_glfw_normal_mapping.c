@@ -12,6 +12,7 @@
 #include "loader.h"
 // clang-format off (the order matters)
 #include <GLFW/glfw3.h>
+#include "util.h"
 // clang-format on
 
 #include <math.h>
@@ -84,65 +85,6 @@ static const char* fs =
     "  FragColor = vec4(ambient + diffuse + specular, 1.0);\n"
     "}\n";
 
-static GLuint compile(GLenum type, const char* src) {
-  GLuint s = glCreateShader(type);
-  GLint ok = 0;
-  glShaderSource(s, 1, &src, NULL);
-  glCompileShader(s);
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetShaderInfoLog(s, sizeof log, NULL, log);
-    fprintf(stderr, "ERROR::SHADER::COMPILATION_FAILED\n%s\n", log);
-    exit(1);
-  }
-  return s;
-}
-
-/* Column-major 4x4 helpers (the glm calls the chapter uses). */
-static void identity(float* m) {
-  int i;
-  for (i = 0; i < 16; ++i) m[i] = (i % 5 == 0) ? 1.0f : 0.0f;
-}
-static void multiply(float* out, const float* a, const float* b) {
-  float r[16];
-  int c, i, k;
-  for (c = 0; c < 4; ++c)
-    for (i = 0; i < 4; ++i) {
-      float s = 0.0f;
-      for (k = 0; k < 4; ++k) s += a[k * 4 + i] * b[c * 4 + k];
-      r[c * 4 + i] = s;
-    }
-  memcpy(out, r, sizeof r);
-}
-static void translate(float* m, float x, float y, float z) {
-  float t[16];
-  identity(t);
-  t[12] = x, t[13] = y, t[14] = z;
-  multiply(m, m, t);
-}
-static void scale3(float* m, float x, float y, float z) {
-  float t[16];
-  identity(t);
-  t[0] = x, t[5] = y, t[10] = z;
-  multiply(m, m, t);
-}
-static void rotate(float* m, float deg, float x, float y, float z) {
-  const float a = deg * 3.14159265f / 180.0f, c = cosf(a), s = sinf(a), l = sqrtf(x * x + y * y + z * z);
-  float r[16];
-  x /= l, y /= l, z /= l;
-  identity(r);
-  r[0] = c + x * x * (1 - c), r[1] = y * x * (1 - c) + z * s, r[2] = z * x * (1 - c) - y * s;
-  r[4] = x * y * (1 - c) - z * s, r[5] = c + y * y * (1 - c), r[6] = z * y * (1 - c) + x * s;
-  r[8] = x * z * (1 - c) + y * s, r[9] = y * z * (1 - c) - x * s, r[10] = c + z * z * (1 - c);
-  multiply(m, m, r);
-}
-static void perspective(float* m, float fovy_deg, float aspect, float n, float f) {
-  const float t = 1.0f / tanf(fovy_deg * 3.14159265f / 360.0f);
-  memset(m, 0, 16 * sizeof(float));
-  m[0] = t / aspect, m[5] = t, m[10] = (f + n) / (n - f), m[11] = -1.0f, m[14] = 2.0f * f * n / (n - f);
-}
-
 static void framebuffer_size_callback(GLFWwindow* window, int width, int height) {
   (void)window;
   glViewport(0, 0, width, height);
@@ -205,8 +147,7 @@ int main(void) {
   float quads[3][6 * 14];
   static unsigned char normal_texels[TEX * TEX * 3], diffuse_texels[TEX * TEX * 3];
   GLFWwindow* window;
-  GLuint vao[3], vbo[3], tex[2], prog, v, f;
-  GLint ok = 0;
+  GLuint vao[3], vbo[3], tex[2], prog;
   float projection[16], view[16];
   const float light_pos[3] = {0.6f, 0.9f, 1.3f}, view_pos[3] = {0.03f, 0.02f, 3.4f};
   int i, x, y;
@@ -230,16 +171,7 @@ int main(void) {
   }
   glEnable(GL_DEPTH_TEST);
 
-  prog = glCreateProgram();
-  v = compile(GL_VERTEX_SHADER, vs);
-  f = compile(GL_FRAGMENT_SHADER, fs);
-  glAttachShader(prog, v);
-  glAttachShader(prog, f);
-  glLinkProgram(prog);
-  glGetProgramiv(prog, GL_LINK_STATUS, &ok);
-  if (!ok) return 1;
-  glDeleteShader(v);
-  glDeleteShader(f);
+  prog = link_program(vs, fs);
 
   glGenVertexArrays(3, vao);
   glGenBuffers(3, vbo);
@@ -292,9 +224,9 @@ int main(void) {
   glUseProgram(prog);
   glUniform1i(glGetUniformLocation(prog, "diffuseMap"), 0);
   glUniform1i(glGetUniformLocation(prog, "normalMap"), 1);
-  perspective(projection, 45.0f, (float)W / (float)H, 0.1f, 100.0f);
-  identity(view);
-  translate(view, -view_pos[0], -view_pos[1], -view_pos[2]);
+  mat_perspective(projection, 45.0f, (float)W / (float)H, 0.1f, 100.0f);
+  mat_identity(view);
+  mat_mul_translate(view, -view_pos[0], -view_pos[1], -view_pos[2]);
 
   while (!glfwWindowShouldClose(window)) {
     if (glfwGetKey(window, GLFW_KEY_ESCAPE) == GLFW_PRESS) glfwSetWindowShouldClose(window, 1);
@@ -311,17 +243,17 @@ int main(void) {
     glBindTexture(GL_TEXTURE_2D, tex[1]);
     for (i = 0; i < 3; ++i) {
       float model[16];
-      identity(model);
+      mat_identity(model);
       if (i == 0) {
         /* the chapter's quad, turned (a fixed time) about normalize(1, 0, 1) */
-        translate(model, 0.01f, 0.13f, 0.0f);
-        rotate(model, -26.0f, 1.0f, 0.0f, 1.0f);
-        scale3(model, 0.78f, 0.78f, 0.78f);
+        mat_mul_translate(model, 0.01f, 0.13f, 0.0f);
+        mat_mul_rotate(model, -26.0f, 1.0f, 0.0f, 1.0f);
+        mat_mul_scale(model, 0.78f, 0.78f, 0.78f);
       } else {
-        translate(model, i == 1 ? -1.47f : 1.44f, -0.47f, -0.9f);
-        rotate(model, i == 1 ? 38.0f : -41.0f, 0.0f, 1.0f, 0.0f);
-        rotate(model, -12.0f, 1.0f, 0.0f, 0.0f);
-        scale3(model, 0.63f, 0.47f, 1.0f);
+        mat_mul_translate(model, i == 1 ? -1.47f : 1.44f, -0.47f, -0.9f);
+        mat_mul_rotate(model, i == 1 ? 38.0f : -41.0f, 0.0f, 1.0f, 0.0f);
+        mat_mul_rotate(model, -12.0f, 1.0f, 0.0f, 0.0f);
+        mat_mul_scale(model, 0.63f, 0.47f, 1.0f);
       }
       glUniformMatrix4fv(glGetUniformLocation(prog, "model"), 1, GL_FALSE, model);
       glBindVertexArray(vao[i]);

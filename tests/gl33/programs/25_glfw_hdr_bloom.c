@@ -12,6 +12,7 @@
 #include "loader.h"
 // clang-format off (the order matters)
 #include <GLFW/glfw3.h>
+#include "util.h"
 // clang-format on
 
 #include <math.h>
@@ -143,75 +144,6 @@ static const char* final_fs =
     "  FragColor = vec4(result, 1.0);\n"
     "}\n";
 
-static GLuint compile(GLenum type, const char* src) {
-  GLuint s = glCreateShader(type);
-  GLint ok = 0;
-  glShaderSource(s, 1, &src, NULL);
-  glCompileShader(s);
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetShaderInfoLog(s, sizeof log, NULL, log);
-    fprintf(stderr, "ERROR::SHADER::COMPILATION_FAILED\n%s\n", log);
-    exit(1);
-  }
-  return s;
-}
-static GLuint program(const char* v, const char* f) {
-  GLuint p = glCreateProgram(), vs = compile(GL_VERTEX_SHADER, v), fs = compile(GL_FRAGMENT_SHADER, f);
-  GLint ok = 0;
-  glAttachShader(p, vs);
-  glAttachShader(p, fs);
-  glLinkProgram(p);
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) exit(1);
-  return p;
-}
-
-/* Column-major 4x4 helpers (the glm calls the chapter uses). */
-static void identity(float* m) {
-  int i;
-  for (i = 0; i < 16; ++i) m[i] = (i % 5 == 0) ? 1.0f : 0.0f;
-}
-static void multiply(float* out, const float* a, const float* b) {
-  float r[16];
-  int c, i, k;
-  for (c = 0; c < 4; ++c)
-    for (i = 0; i < 4; ++i) {
-      float s = 0.0f;
-      for (k = 0; k < 4; ++k) s += a[k * 4 + i] * b[c * 4 + k];
-      r[c * 4 + i] = s;
-    }
-  memcpy(out, r, sizeof r);
-}
-static void translate(float* m, float x, float y, float z) {
-  float t[16];
-  identity(t);
-  t[12] = x, t[13] = y, t[14] = z;
-  multiply(m, m, t);
-}
-static void scale3(float* m, float x, float y, float z) {
-  float t[16];
-  identity(t);
-  t[0] = x, t[5] = y, t[10] = z;
-  multiply(m, m, t);
-}
-static void rotate(float* m, float deg, float x, float y, float z) {
-  const float a = deg * 3.14159265f / 180.0f, c = cosf(a), s = sinf(a), l = sqrtf(x * x + y * y + z * z);
-  float r[16];
-  x /= l, y /= l, z /= l;
-  identity(r);
-  r[0] = c + x * x * (1 - c), r[1] = y * x * (1 - c) + z * s, r[2] = z * x * (1 - c) - y * s;
-  r[4] = x * y * (1 - c) - z * s, r[5] = c + y * y * (1 - c), r[6] = z * y * (1 - c) + x * s;
-  r[8] = x * z * (1 - c) + y * s, r[9] = y * z * (1 - c) - x * s, r[10] = c + z * z * (1 - c);
-  multiply(m, m, r);
-}
-static void perspective(float* m, float fovy_deg, float aspect, float n, float f) {
-  const float t = 1.0f / tanf(fovy_deg * 3.14159265f / 360.0f);
-  memset(m, 0, 16 * sizeof(float));
-  m[0] = t / aspect, m[5] = t, m[10] = (f + n) / (n - f), m[11] = -1.0f, m[14] = 2.0f * f * n / (n - f);
-}
-
 static void framebuffer_size_callback(GLFWwindow* window, int width, int height) {
   (void)window;
   glViewport(0, 0, width, height);
@@ -275,10 +207,10 @@ int main(void) {
     return -1;
   }
   glEnable(GL_DEPTH_TEST);
-  shader = program(scene_vs, bloom_fs);
-  shader_light = program(scene_vs, light_box_fs);
-  shader_blur = program(quad_vs, blur_fs);
-  shader_final = program(quad_vs, final_fs);
+  shader = link_program(scene_vs, bloom_fs);
+  shader_light = link_program(scene_vs, light_box_fs);
+  shader_blur = link_program(quad_vs, blur_fs);
+  shader_final = link_program(quad_vs, final_fs);
 
   /* A cube from -1 to 1 (position, normal, UV), and the screen quad as a triangle strip. */
   for (f = 0; f < 6; ++f)
@@ -366,10 +298,10 @@ int main(void) {
   glUseProgram(shader_final);
   glUniform1i(glGetUniformLocation(shader_final, "scene"), 0);
   glUniform1i(glGetUniformLocation(shader_final, "bloomBlur"), 1);
-  perspective(projection, 45.0f, (float)W / (float)H, 0.1f, 100.0f);
-  identity(view);
-  rotate(view, 15.0f, 1.0f, 0.0f, 0.0f);
-  translate(view, -view_pos[0], -view_pos[1], -view_pos[2]);
+  mat_perspective(projection, 45.0f, (float)W / (float)H, 0.1f, 100.0f);
+  mat_identity(view);
+  mat_mul_rotate(view, 15.0f, 1.0f, 0.0f, 0.0f);
+  mat_mul_translate(view, -view_pos[0], -view_pos[1], -view_pos[2]);
 
   while (!glfwWindowShouldClose(window)) {
     int horizontal = 1, first_iteration = 1;
@@ -396,10 +328,10 @@ int main(void) {
     glUniform3fv(glGetUniformLocation(shader, "viewPos"), 1, view_pos);
     glBindVertexArray(vaos[0]);
     for (i = 0; i < 7; ++i) {
-      identity(model);
-      translate(model, cubes[i][0], cubes[i][1], cubes[i][2]);
-      if (cubes[i][3] != 0.0f) rotate(model, cubes[i][3], 1.0f, 0.0f, 1.0f);
-      scale3(model, cubes[i][4], cubes[i][5], cubes[i][4]);
+      mat_identity(model);
+      mat_mul_translate(model, cubes[i][0], cubes[i][1], cubes[i][2]);
+      if (cubes[i][3] != 0.0f) mat_mul_rotate(model, cubes[i][3], 1.0f, 0.0f, 1.0f);
+      mat_mul_scale(model, cubes[i][4], cubes[i][5], cubes[i][4]);
       glUniformMatrix4fv(glGetUniformLocation(shader, "model"), 1, GL_FALSE, model);
       glDrawArrays(GL_TRIANGLES, 0, 36);
     }
@@ -408,9 +340,9 @@ int main(void) {
     glUniformMatrix4fv(glGetUniformLocation(shader_light, "projection"), 1, GL_FALSE, projection);
     glUniformMatrix4fv(glGetUniformLocation(shader_light, "view"), 1, GL_FALSE, view);
     for (i = 0; i < 4; ++i) {
-      identity(model);
-      translate(model, light_positions[i][0], light_positions[i][1], light_positions[i][2]);
-      scale3(model, 0.25f, 0.25f, 0.25f);
+      mat_identity(model);
+      mat_mul_translate(model, light_positions[i][0], light_positions[i][1], light_positions[i][2]);
+      mat_mul_scale(model, 0.25f, 0.25f, 0.25f);
       glUniformMatrix4fv(glGetUniformLocation(shader_light, "model"), 1, GL_FALSE, model);
       glUniform3fv(glGetUniformLocation(shader_light, "lightColor"), 1, light_colors[i]);
       glDrawArrays(GL_TRIANGLES, 0, 36);

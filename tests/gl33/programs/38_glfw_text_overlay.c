@@ -14,6 +14,7 @@
 #include "loader.h"
 // clang-format off (the order matters)
 #include <GLFW/glfw3.h>
+#include "util.h"
 // clang-format on
 
 #include <math.h>
@@ -145,45 +146,6 @@ static const struct {
 #define SOLID_X 120
 #define SOLID_Y 56
 
-static GLuint compile(GLenum type, const char* src) {
-  GLuint s = glCreateShader(type);
-  GLint ok = 0;
-  glShaderSource(s, 1, &src, NULL);
-  glCompileShader(s);
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetShaderInfoLog(s, sizeof log, NULL, log);
-    fprintf(stderr, "%s\n", log);
-    exit(1);
-  }
-  return s;
-}
-static GLuint program(const char* v, const char* f) {
-  GLuint p = glCreateProgram();
-  GLint ok = 0;
-  glAttachShader(p, compile(GL_VERTEX_SHADER, v));
-  glAttachShader(p, compile(GL_FRAGMENT_SHADER, f));
-  glLinkProgram(p);
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    fprintf(stderr, "link failed\n");
-    exit(1);
-  }
-  return p;
-}
-
-static void perspective(float* m, float fovy, float aspect, float n, float f) {
-  const float t = 1.0f / (float)tan(fovy * 3.14159265358979 / 360.0);
-  memset(m, 0, 16 * sizeof(float));
-  m[0] = t / aspect, m[5] = t, m[10] = (f + n) / (n - f), m[11] = -1.0f, m[14] = 2.0f * f * n / (n - f);
-}
-/* glm::ortho(left, right, bottom, top) with near -1, far 1. */
-static void ortho(float* m, float l, float r, float b, float t) {
-  memset(m, 0, 16 * sizeof(float));
-  m[0] = 2.0f / (r - l), m[5] = 2.0f / (t - b), m[10] = -1.0f, m[15] = 1.0f;
-  m[12] = -(r + l) / (r - l), m[13] = -(t + b) / (t - b);
-}
 /* translate(x, y, z) * rotate(deg about y) * rotate(tilt about x) * scale(s) */
 static void model_matrix(float* m, float x, float y, float z, float deg, float tilt, float s) {
   const float a = deg * 3.14159265f / 180.0f, b = tilt * 3.14159265f / 180.0f;
@@ -272,8 +234,8 @@ int main(void) {
   glfwSetFramebufferSizeCallback(window, framebuffer_size_callback);
   if (!load_gl(glfwGetProcAddress)) return 1;
 
-  scene_prog = program(scene_vs, scene_fs);
-  text_prog = program(text_vs, text_fs);
+  scene_prog = link_program(scene_vs, scene_fs);
+  text_prog = link_program(text_vs, text_fs);
 
   /* The cube: two triangles a face, counter-clockwise seen from outside. */
   for (f = 0; f < 6; ++f) {
@@ -327,11 +289,11 @@ int main(void) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_B, GL_ONE);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_A, GL_RED);
 
-  perspective(proj, 45.0f, (float)W / (float)H, 0.1f, 100.0f);
+  mat_perspective(proj, 45.0f, (float)W / (float)H, 0.1f, 100.0f);
   memset(view, 0, sizeof view);
   view[0] = view[5] = view[10] = view[15] = 1.0f;
   view[12] = -view_pos[0], view[13] = -view_pos[1], view[14] = -view_pos[2];
-  ortho(hud, 0.0f, (float)W, (float)H, 0.0f); /* pixel coordinates, y down */
+  mat_ortho(hud, 0.0f, (float)W, (float)H, 0.0f, -1.0f, 1.0f); /* pixel coordinates, y down */
 
   while (!glfwWindowShouldClose(window)) {
     if (glfwGetKey(window, GLFW_KEY_ESCAPE) == GLFW_PRESS) glfwSetWindowShouldClose(window, 1);
