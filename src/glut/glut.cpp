@@ -272,7 +272,22 @@ void GLAPIENTRY glutInitContextVersion(int major, int minor) {
 }
 void GLAPIENTRY glutInitContextFlags(int) {}  // debug and forward-compatible contexts behave alike here
 void GLAPIENTRY glutInitContextProfile(int profile) { state().context_profile = profile; }
-GLUTproc GLAPIENTRY glutGetProcAddress(const char* name) { return gl::proc_address(name); }
+// GLUT's own entry points first, as freeglut's glutGetProcAddress has them, then GL's.
+GLUTproc GLAPIENTRY glutGetProcAddress(const char* name) {
+  if (!name) return nullptr;
+  struct Proc {
+    const char* name;
+    GLUTproc fn;
+  };
+  static const Proc kProcs[] = {
+#define X(n) {#n, reinterpret_cast<GLUTproc>(&n)},
+#include "glut_procs.inc"
+#undef X
+  };
+  for (const Proc& p : kProcs)
+    if (std::strcmp(p.name, name) == 0) return p.fn;
+  return gl::proc_address(name);
+}
 
 int GLAPIENTRY glutCreateWindow(const char* title) {
   if (!need_init("glutCreateWindow")) return 0;

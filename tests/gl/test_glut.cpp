@@ -165,3 +165,19 @@ TEST(GlutHeadless, WindowQueriesAndDisplay) {
 }
 
 }  // namespace
+
+namespace {
+
+// glutGetProcAddress gives GLUT's own entry points (as freeglut's does) and GL's.
+TEST(GlutProcs, GlutAndGlEntryPoints) {
+  EXPECT_EQ(glutGetProcAddress("glutSolidTeapot"), reinterpret_cast<GLUTproc>(&glutSolidTeapot));
+  EXPECT_EQ(glutGetProcAddress("glutInitContextVersion"),
+            reinterpret_cast<GLUTproc>(&glutInitContextVersion));
+  EXPECT_EQ(glutGetProcAddress("glutGetProcAddress"), reinterpret_cast<GLUTproc>(&glutGetProcAddress));
+  EXPECT_NE(glutGetProcAddress("glGenBuffers"), nullptr);
+  EXPECT_NE(glutGetProcAddress("glClampColor"), nullptr);
+  EXPECT_EQ(glutGetProcAddress("glutNoSuchThing"), nullptr);
+  EXPECT_EQ(glutGetProcAddress(nullptr), nullptr);
+}
+
+}  // namespace
