@@ -131,7 +131,7 @@ TESSEL_AVX512 __m512 quad_rho2(__m512 u, __m512 v, float w, float h) {
 template <int N>
 TESSEL_AVX512_ENTRY bool trilinear(const gpu::Texture2D& tex, const gpu::SamplerState& st,
                                    TexLanes* const* tl) {
-  __m512 u[N], v[N], l[N];
+  __m512 u[N], v[N], l[N], d[N];
   const __m512 zero = _mm512_setzero_ps();
   const bool clamp_lod = st.lod_bias != 0.0f || st.min_lod > -75.0f || st.max_lod < 64.0f;
   const __m512 top = _mm512_set1_ps(float(tex.levels() - 1));
@@ -159,19 +159,18 @@ TESSEL_AVX512_ENTRY bool trilinear(const gpu::Texture2D& tex, const gpu::Sampler
       return false;
     l[n] = x;
   }
-  const int level = _mm_cvtsi128_si32(_mm512_castsi512_si128(_mm512_cvttps_epi32(floor16(l[0]))));
+  for (int n = 0; n < N; ++n) d[n] = floor16(l[n]);  // each quad's lower level
+  const int level = _mm_cvtsi128_si32(_mm512_castsi512_si128(_mm512_cvttps_epi32(d[0])));
   for (int n = 0; n < N; ++n)
-    if (_mm512_cmpeq_epi32_mask(_mm512_cvttps_epi32(floor16(l[n])), _mm512_set1_epi32(level)) != 0xFFFF)
-      return false;
+    if (_mm512_cmpeq_epi32_mask(_mm512_cvttps_epi32(d[n]), _mm512_set1_epi32(level)) != 0xFFFF) return false;
   const gpu::Level &a = tex.level(level), &b = tex.level(level + 1);
   const LevelView L0{a.data.data(), a.width, a.height}, L1{b.data.data(), b.width, b.height};
   const __m512 lim = _mm512_set1_ps(65536.0f), neg = _mm512_set1_ps(-65536.0f),
                k = _mm512_set1_ps(1.0f / 255.0f);
   const __m512i low = _mm512_set1_epi32(0xFFFF);
   for (int n = 0; n < N; ++n) {
-    const __m512 d = floor16(l[n]);
     const __m512i w =
-        weight_pair(_mm512_cvtps_epi32(_mm512_mul_ps(_mm512_sub_ps(l[n], d), _mm512_set1_ps(256.0f))));
+        weight_pair(_mm512_cvtps_epi32(_mm512_mul_ps(_mm512_sub_ps(l[n], d[n]), _mm512_set1_ps(256.0f))));
     // sane8_fixed: NaN becomes -65536 (vmaxps returns its second operand then).
     const __m512 s = _mm512_min_ps(_mm512_max_ps(u[n], neg), lim);
     const __m512 t = _mm512_min_ps(_mm512_max_ps(v[n], neg), lim);

@@ -90,43 +90,6 @@ static void framebuffer_size_callback(GLFWwindow* window, int width, int height)
   glViewport(0, 0, width, height);
 }
 
-/* The chapter's renderQuad(): two triangles of a 2x2 quad in z = 0 facing +z, each with the
- * tangent and bitangent solved from its edges and UV deltas. `uv` gives the four corners'
- * UVs (top-left, bottom-left, bottom-right, top-right). */
-static void build_quad(float* out, const float uv[4][2]) {
-  static const float pos[4][3] = {
-      {-1.0f, 1.0f, 0.0f}, {-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {1.0f, 1.0f, 0.0f}};
-  static const int tri[2][3] = {{0, 1, 2}, {0, 2, 3}};
-  int t, k, i;
-  for (t = 0; t < 2; ++t) {
-    const float* p1 = pos[tri[t][0]];
-    const float* p2 = pos[tri[t][1]];
-    const float* p3 = pos[tri[t][2]];
-    const float* uv1 = uv[tri[t][0]];
-    const float* uv2 = uv[tri[t][1]];
-    const float* uv3 = uv[tri[t][2]];
-    float edge1[3], edge2[3], tangent[3], bitangent[3];
-    const float du1 = uv2[0] - uv1[0], dv1 = uv2[1] - uv1[1], du2 = uv3[0] - uv1[0], dv2 = uv3[1] - uv1[1];
-    const float f = 1.0f / (du1 * dv2 - du2 * dv1);
-    for (i = 0; i < 3; ++i) {
-      edge1[i] = p2[i] - p1[i];
-      edge2[i] = p3[i] - p1[i];
-    }
-    for (i = 0; i < 3; ++i) {
-      tangent[i] = f * (dv2 * edge1[i] - dv1 * edge2[i]);
-      bitangent[i] = f * (-du2 * edge1[i] + du1 * edge2[i]);
-    }
-    for (k = 0; k < 3; ++k) {
-      float* o = out + (t * 3 + k) * 14;
-      const int v = tri[t][k];
-      o[0] = pos[v][0], o[1] = pos[v][1], o[2] = pos[v][2];
-      o[3] = 0.0f, o[4] = 0.0f, o[5] = 1.0f;
-      o[6] = uv[v][0], o[7] = uv[v][1];
-      for (i = 0; i < 3; ++i) o[8 + i] = tangent[i], o[11 + i] = bitangent[i];
-    }
-  }
-}
-
 /* Height of the brick relief at texel (x, y), periodic in both directions: bevelled bricks
  * (32x16 texels, a running bond) in 2-texel mortar, with a gentle bumpy surface. */
 static float height(int x, int y) {
@@ -176,7 +139,7 @@ int main(void) {
   glGenVertexArrays(3, vao);
   glGenBuffers(3, vbo);
   for (i = 0; i < 3; ++i) {
-    build_quad(quads[i], uv_sets[i]);
+    mat_tangent_quad(quads[i], uv_sets[i]);
     glBindVertexArray(vao[i]);
     glBindBuffer(GL_ARRAY_BUFFER, vbo[i]);
     glBufferData(GL_ARRAY_BUFFER, sizeof quads[i], quads[i], GL_STATIC_DRAW);
