@@ -93,17 +93,35 @@ void read_vec(const ArrayPointer& a, GLint i, bool normalized, float* out) {
   for (int k = 0; k < a.size; ++k) out[k] = read(p + k * cb, a.type, normalized);
 }
 
+// Every array of the fixed-function vertex (GL 2.1 §2.8; the texture coordinate array of
+// each set, GL 1.3 §2.7, the secondary colour and fog coordinate arrays of GL 1.4).
+std::vector<ArrayPointer*> vertex_arrays(Context& c) {
+  std::vector<ArrayPointer*> all = {&c.c.vertex, &c.c.normal,    &c.c.color,
+                                    &c.c.edge,   &c.c.secondary, &c.c.fog};
+  for (ArrayPointer& t : c.c.tex) all.push_back(&t);
+  return all;
+}
+
 // The current attributes updated from the enabled arrays at element i (glArrayElement's
-// effect, GL 2.1 §2.8), then the vertex record when the vertex array is enabled.
-bool fetch(Context& c, GLint i, FFVertex* v) {
+// effect, GL 2.1 §2.8), then the vertex record (and, given `x`, its extra attributes) when the
+// vertex array is enabled.
+bool fetch(Context& c, GLint i, FFVertex* v, FFExtra* x = nullptr) {
   const ClientState& cs = c.c;
   CurrentState& cur = c.s.current;
   if (cs.edge.enabled && cs.edge.pointer && readable(cs.edge, 1, i)) cur.edge = *element(cs.edge, 1, i) != 0;
-  if (cs.tex.enabled && cs.tex.pointer && readable(cs.tex, cs.tex.size, i)) {
+  for (size_t u = 0; u < cs.tex.size(); ++u) {
+    const ArrayPointer& a = cs.tex[u];
+    if (!(a.enabled && a.pointer && readable(a, a.size, i))) continue;
     float t[4] = {0, 0, 0, 1};
-    read_vec(cs.tex, i, false, t);
-    cur.tex = glm::vec4(t[0], t[1], t[2], t[3]);
+    read_vec(a, i, false, t);
+    cur.tex[u] = glm::vec4(t[0], t[1], t[2], t[3]);
   }
+  if (cs.secondary.enabled && cs.secondary.pointer && readable(cs.secondary, cs.secondary.size, i)) {
+    float col[4] = {0, 0, 0, 1};
+    read_vec(cs.secondary, i, true, col);
+    cur.secondary = glm::vec4(col[0], col[1], col[2], 1.0f);
+  }
+  if (cs.fog.enabled && cs.fog.pointer && readable(cs.fog, 1, i)) read_vec(cs.fog, i, false, &cur.fog_coord);
   if (cs.color.enabled && cs.color.pointer && readable(cs.color, cs.color.size, i)) {
     float col[4] = {0, 0, 0, 1};
     read_vec(cs.color, i, true, col);
@@ -120,8 +138,9 @@ bool fetch(Context& c, GLint i, FFVertex* v) {
   std::memcpy(v->pos, p, sizeof p);
   std::memcpy(v->normal, &cur.normal[0], sizeof v->normal);
   std::memcpy(v->color, &cur.color[0], sizeof v->color);
-  std::memcpy(v->tex, &cur.tex[0], sizeof v->tex);
+  std::memcpy(v->tex, &cur.tex[0][0], sizeof v->tex);
   v->edge = cur.edge ? 1.0f : 0.0f;
+  if (x) current_extra(cur, *x);
   return true;
 }
 
@@ -133,7 +152,9 @@ bool valid_mode(GLenum mode) { return mode <= GL_POLYGON; }
 class BufferArrays {
  public:
   explicit BufferArrays(Context& c) {
-    for (ArrayPointer* a : {&c.c.vertex, &c.c.normal, &c.c.color, &c.c.tex, &c.c.edge, &c.c.index}) {
+    std::vector<ArrayPointer*> all = vertex_arrays(c);
+    all.push_back(&c.c.index);
+    for (ArrayPointer* a : all) {
       if (!a->buffer || !a->enabled) continue;
       if (a->buffer->mapped) ok_ = false;
       saved_.push_back({a, a->pointer});
@@ -184,7 +205,7 @@ std::vector<uint8_t> array_key(const Context& c, GLuint lo, GLuint hi) {
   };
   add(&lo, sizeof lo);
   add(&hi, sizeof hi);
-  for (const ArrayPointer* a : {&c.c.vertex, &c.c.normal, &c.c.color, &c.c.tex, &c.c.edge}) {
+  for (const ArrayPointer* a : {&c.c.vertex, &c.c.normal, &c.c.color, &c.c.tex[0], &c.c.edge}) {
     const uint8_t on = a->enabled && a->pointer;
     add(&on, 1);
     if (!on) continue;
@@ -196,7 +217,7 @@ std::vector<uint8_t> array_key(const Context& c, GLuint lo, GLuint hi) {
   const CurrentState& cur = c.s.current;
   add(&cur.color, sizeof cur.color);
   add(&cur.normal, sizeof cur.normal);
-  add(&cur.tex, sizeof cur.tex);
+  add(&cur.tex[0], sizeof cur.tex[0]);
   const uint8_t edge = cur.edge;
   add(&edge, 1);
   return k;
@@ -205,7 +226,7 @@ std::vector<uint8_t> array_key(const Context& c, GLuint lo, GLuint hi) {
 // The bytes of elements lo..hi of every enabled array, in order.
 template <class Fn>
 void for_each_source(const Context& c, GLuint lo, GLuint hi, Fn&& fn) {
-  for (const ArrayPointer* a : {&c.c.vertex, &c.c.normal, &c.c.color, &c.c.tex, &c.c.edge}) {
+  for (const ArrayPointer* a : {&c.c.vertex, &c.c.normal, &c.c.color, &c.c.tex[0], &c.c.edge}) {
     if (!a->enabled || !a->pointer) continue;
     const int n = a == &c.c.edge ? 1 : a == &c.c.normal ? 3 : a->size;
     const size_t elem = size_t(n) * size_t(component_bytes(a->type));
@@ -252,7 +273,9 @@ ArrayPointer* client_array(Context& c, GLenum cap) {
     case GL_VERTEX_ARRAY: return &c.c.vertex;
     case GL_NORMAL_ARRAY: return &c.c.normal;
     case GL_COLOR_ARRAY: return &c.c.color;
-    case GL_TEXTURE_COORD_ARRAY: return &c.c.tex;
+    case GL_TEXTURE_COORD_ARRAY: return &c.c.active_tex();
+    case GL_SECONDARY_COLOR_ARRAY: return &c.c.secondary;
+    case GL_FOG_COORD_ARRAY: return &c.c.fog;
     case GL_EDGE_FLAG_ARRAY: return &c.c.edge;
     case GL_INDEX_ARRAY: return &c.c.index;
     default: return nullptr;
@@ -260,22 +283,28 @@ ArrayPointer* client_array(Context& c, GLenum cap) {
 }
 
 // Reads elements into vertex records; the current attributes end as the last element left them.
-std::vector<FFVertex> gather(Context& c, const std::vector<GLuint>& ids) {
-  std::vector<FFVertex> out;
+FFVertices gather(Context& c, const std::vector<GLuint>& ids) {
+  FFVertices out;
   out.reserve(ids.size());
   FFVertex v;
+  if (!c.extras_live()) {
+    for (GLuint i : ids)
+      if (fetch(c, GLint(i), &v)) out.push(v);
+    return out;
+  }
+  FFExtra x;
   for (GLuint i : ids)
-    if (fetch(c, GLint(i), &v)) out.push_back(v);
+    if (fetch(c, GLint(i), &v, &x)) out.push(v, x);
   return out;
 }
 
-void draw_gathered(Context& c, GLenum mode, std::vector<FFVertex>&& verts) {
+void draw_gathered(Context& c, GLenum mode, FFVertices&& verts) {
   GL_OUTSIDE_BEGIN();
   c.emit_mode(mode, std::move(verts));
 }
 
 // Indexed triangles, lines or points keep their sharing: vertices are read once each.
-void draw_indexed(Context& c, PrimClass cls, std::vector<FFVertex>&& verts, std::vector<uint32_t>&& idx) {
+void draw_indexed(Context& c, PrimClass cls, FFVertices&& verts, std::vector<uint32_t>&& idx) {
   GL_OUTSIDE_BEGIN();
   c.emit(cls, std::move(verts), std::move(idx));
 }
@@ -291,8 +320,8 @@ void draw_arrays(Context& c, GLenum mode, GLint first, GLsizei count) {
   if (!c.c.vertex.enabled || !c.c.vertex.pointer || count == 0) return;
   std::vector<GLuint> ids(static_cast<size_t>(count));
   for (GLsizei i = 0; i < count; ++i) ids[size_t(i)] = GLuint(first + i);
-  std::vector<FFVertex> verts = gather(c, ids);
-  GL_LISTED(draw_gathered(c, mode, std::vector<FFVertex>(verts)));
+  FFVertices verts = gather(c, ids);
+  GL_LISTED(draw_gathered(c, mode, FFVertices(verts)));
   draw_gathered(c, mode, std::move(verts));
 }
 
@@ -308,7 +337,10 @@ void array_element(Context& c, GLint i) {
     c.s.current.color = cur.color;
     c.s.current.normal = cur.normal;
     c.s.current.tex = cur.tex;
+    c.s.current.secondary = cur.secondary;
+    c.s.current.fog_coord = cur.fog_coord;
     c.s.current.edge = cur.edge;
+    if (c.extras_live()) c.extras_touched = true;
     if (has_vertex) vertex(c, v.pos[0], v.pos[1], v.pos[2], v.pos[3]);
   };
   if (c.compiling_list != 0) {
@@ -342,7 +374,18 @@ void GLAPIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const GL
 }
 void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
   GL_COMPAT_CONTEXT();
-  set_pointer(c, c.c.tex, size, type, stride, ptr, {1, 2, 3, 4}, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+  set_pointer(c, c.c.active_tex(), size, type, stride, ptr, {1, 2, 3, 4},
+              {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+}
+void GLAPIENTRY glSecondaryColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
+  GL_COMPAT_CONTEXT();
+  set_pointer(
+      c, c.c.secondary, size, type, stride, ptr, {3},
+      {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE});
+}
+void GLAPIENTRY glFogCoordPointer(GLenum type, GLsizei stride, const GLvoid* ptr) {
+  GL_COMPAT_CONTEXT();
+  set_pointer(c, c.c.fog, 1, type, stride, ptr, {1}, {GL_FLOAT, GL_DOUBLE});
 }
 void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid* ptr) {
   GL_COMPAT_CONTEXT();
@@ -359,6 +402,8 @@ void GLAPIENTRY glEnableClientState(GLenum cap) {
   ArrayPointer* a = client_array(c, cap);
   if (!a) return c.error(GL_INVALID_ENUM);
   a->enabled = true;
+  c.extras_touched |= a != &c.c.vertex && a != &c.c.normal && a != &c.c.color && a != &c.c.tex[0] &&
+                      a != &c.c.edge && a != &c.c.index;
 }
 void GLAPIENTRY glDisableClientState(GLenum cap) {
   GL_COMPAT_CONTEXT();
@@ -375,7 +420,9 @@ void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid** out) {
     case GL_VERTEX_ARRAY_POINTER: *out = const_cast<void*>(c.c.vertex.pointer); break;
     case GL_NORMAL_ARRAY_POINTER: *out = const_cast<void*>(c.c.normal.pointer); break;
     case GL_COLOR_ARRAY_POINTER: *out = const_cast<void*>(c.c.color.pointer); break;
-    case GL_TEXTURE_COORD_ARRAY_POINTER: *out = const_cast<void*>(c.c.tex.pointer); break;
+    case GL_TEXTURE_COORD_ARRAY_POINTER: *out = const_cast<void*>(c.c.active_tex().pointer); break;
+    case GL_SECONDARY_COLOR_ARRAY_POINTER: *out = const_cast<void*>(c.c.secondary.pointer); break;
+    case GL_FOG_COORD_ARRAY_POINTER: *out = const_cast<void*>(c.c.fog.pointer); break;
     case GL_EDGE_FLAG_ARRAY_POINTER: *out = const_cast<void*>(c.c.edge.pointer); break;
     case GL_INDEX_ARRAY_POINTER: *out = const_cast<void*>(c.c.index.pointer); break;
     default: c.error(GL_INVALID_ENUM); break;
@@ -430,7 +477,7 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
       const size_t per = mode == GL_TRIANGLES ? 3 : mode == GL_LINES ? 2 : 1;
       std::vector<GLuint> range(size_t(hi - lo) + 1);
       for (size_t k = 0; k < range.size(); ++k) range[k] = lo + GLuint(k);
-      if (mode == GL_TRIANGLES && c.compiling_list == 0 && c.render_mode() == GL_RENDER) {
+      if (mode == GL_TRIANGLES && c.compiling_list == 0 && c.render_mode() == GL_RENDER && !c.extras_live()) {
         // The same arrays drawn again (a mesh drawn many times with other matrices or
         // materials): the converted vertices are reused while the bytes they came from and
         // the current values baked into them are unchanged.
@@ -438,12 +485,12 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
         std::vector<uint8_t> key = array_key(c, lo, hi);
         const bool hit = cache.vertices && cache.key == key && same_source(c, lo, hi, cache.source);
         if (!hit) {
-          std::vector<FFVertex> verts = gather(c, range);
+          FFVertices verts = gather(c, range);
           if (verts.size() == range.size()) {
             cache.key = std::move(key);
             cache.source = source_bytes(c, lo, hi);
             cache.vertices =
-                std::make_shared<const tessel::gpu::Buffer>(verts.data(), verts.size() * sizeof(FFVertex));
+                std::make_shared<const tessel::gpu::Buffer>(verts.v.data(), verts.size() * sizeof(FFVertex));
           } else {
             cache.vertices.reset();
           }
@@ -458,7 +505,7 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
         }
       }
       // Attributes as the indexed elements leave them: the last index read is the last index.
-      std::vector<FFVertex> verts = gather(c, range);
+      FFVertices verts = gather(c, range);
       if (verts.size() == range.size()) {
         FFVertex last;
         fetch(c, GLint(ids.back()), &last);
@@ -467,14 +514,14 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
         const PrimClass cls = mode == GL_TRIANGLES ? PrimClass::Triangles
                               : mode == GL_LINES   ? PrimClass::Lines
                                                    : PrimClass::Points;
-        GL_LISTED(draw_indexed(c, cls, std::vector<FFVertex>(verts), std::vector<uint32_t>(idx)));
+        GL_LISTED(draw_indexed(c, cls, FFVertices(verts), std::vector<uint32_t>(idx)));
         draw_indexed(c, cls, std::move(verts), std::move(idx));
         return;
       }
     }
   }
-  std::vector<FFVertex> verts = gather(c, ids);
-  GL_LISTED(draw_gathered(c, mode, std::vector<FFVertex>(verts)));
+  FFVertices verts = gather(c, ids);
+  GL_LISTED(draw_gathered(c, mode, FFVertices(verts)));
   draw_gathered(c, mode, std::move(verts));
 }
 
@@ -527,9 +574,9 @@ void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid*
   const auto* base = static_cast<const uint8_t*>(pointer);
   c.c.edge.enabled = false;
   c.c.index.enabled = false;
-  c.c.tex.enabled = r->et;
+  c.c.active_tex().enabled = r->et;
   // With a buffer bound, `pointer` is an offset into it (GL 1.5 §2.9).
-  if (r->et) c.c.tex = {true, r->st, GL_FLOAT, st, base, c.array_buffer};
+  if (r->et) c.c.active_tex() = {true, r->st, GL_FLOAT, st, base, c.array_buffer};
   c.c.color.enabled = r->ec;
   if (r->ec) c.c.color = {true, r->sc, r->tc, st, base + r->pc, c.array_buffer};
   c.c.normal.enabled = r->en;

@@ -1,7 +1,7 @@
 // GL 1.3-1.4 and 3.3 calls that restate others (GL 3.3 compatibility profile): the transposed
-// matrix loads (§2.12.1), glWindowPos (§2.13), glMultiTexCoord for the texture coordinate sets
-// Tessel has (GL_MAX_TEXTURE_COORDS is 1: GL_TEXTURE0 only, other units are GL_INVALID_ENUM),
-// and the packed generic attribute values glVertexAttribP* (§2.7).
+// matrix loads (§2.12.1), glWindowPos (§2.13), glMultiTexCoord for the eight texture coordinate
+// sets (GL_MAX_TEXTURE_COORDS), the secondary colour and fog coordinate of GL 1.4 (§2.7), and
+// the packed generic attribute values glVertexAttribP* (§2.7).
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -38,9 +38,29 @@ void window_pos(Context& c, float x, float y, float z) {
 }
 
 void multi_tex(Context& c, GLenum unit, float s, float t, float r, float q) {
-  if (unit != GL_TEXTURE0) return c.error(GL_INVALID_ENUM);
-  c.s.current.tex = glm::vec4(s, t, r, q);
+  if (unit < GL_TEXTURE0 || unit >= GLenum(GL_TEXTURE0 + kMaxTexCoords)) return c.error(GL_INVALID_ENUM);
+  const size_t i = unit - GL_TEXTURE0;
+  c.s.current.tex[i] = glm::vec4(s, t, r, q);
+  if (i > 0) c.extras_touched = true;
 }
+
+void secondary_color(Context& c, float r, float g, float b) {
+  c.s.current.secondary = glm::vec4(r, g, b, 1.0f);
+  c.extras_touched = true;
+}
+
+void fog_coord(Context& c, float f) {
+  c.s.current.fog_coord = f;
+  c.extras_touched = true;
+}
+
+// Integer colour components map to [-1, 1] or [0, 1] (GL 2.1 Table 2.9).
+constexpr float ub(GLubyte v) { return float(v) / 255.0f; }
+constexpr float us(GLushort v) { return float(v) / 65535.0f; }
+constexpr float ui(GLuint v) { return float(double(v) / 4294967295.0); }
+constexpr float sb(GLbyte v) { return (2.0f * float(v) + 1.0f) / 255.0f; }
+constexpr float ss(GLshort v) { return (2.0f * float(v) + 1.0f) / 65535.0f; }
+constexpr float si(GLint v) { return float((2.0 * double(v) + 1.0) / 4294967295.0); }
 
 void attrib_p(Context& c, GLuint index, GLenum type, bool normalized, int n, GLuint value) {
   if (index >= GLuint(kMaxVertexAttribs)) return c.error(GL_INVALID_VALUE);
@@ -70,7 +90,40 @@ using namespace tessel::gl;
   GL_LISTED(multi_tex(c, mu_, ms_, mt_, mr_, mq_));                           \
   multi_tex(c, mu_, ms_, mt_, mr_, mq_)
 
+#define SECONDARY(r, g, b)                                    \
+  GL_COMPAT_CONTEXT();                                        \
+  const float sr_ = float(r), sg_ = float(g), sb_ = float(b); \
+  GL_LISTED(secondary_color(c, sr_, sg_, sb_));               \
+  secondary_color(c, sr_, sg_, sb_)
+
+#define FOG_COORD(f)           \
+  GL_COMPAT_CONTEXT();         \
+  const float f_ = float(f);   \
+  GL_LISTED(fog_coord(c, f_)); \
+  fog_coord(c, f_)
+
 extern "C" {
+
+void GLAPIENTRY glSecondaryColor3b(GLbyte r, GLbyte g, GLbyte b) { SECONDARY(sb(r), sb(g), sb(b)); }
+void GLAPIENTRY glSecondaryColor3bv(const GLbyte* v) { SECONDARY(sb(v[0]), sb(v[1]), sb(v[2])); }
+void GLAPIENTRY glSecondaryColor3s(GLshort r, GLshort g, GLshort b) { SECONDARY(ss(r), ss(g), ss(b)); }
+void GLAPIENTRY glSecondaryColor3sv(const GLshort* v) { SECONDARY(ss(v[0]), ss(v[1]), ss(v[2])); }
+void GLAPIENTRY glSecondaryColor3i(GLint r, GLint g, GLint b) { SECONDARY(si(r), si(g), si(b)); }
+void GLAPIENTRY glSecondaryColor3iv(const GLint* v) { SECONDARY(si(v[0]), si(v[1]), si(v[2])); }
+void GLAPIENTRY glSecondaryColor3ub(GLubyte r, GLubyte g, GLubyte b) { SECONDARY(ub(r), ub(g), ub(b)); }
+void GLAPIENTRY glSecondaryColor3ubv(const GLubyte* v) { SECONDARY(ub(v[0]), ub(v[1]), ub(v[2])); }
+void GLAPIENTRY glSecondaryColor3us(GLushort r, GLushort g, GLushort b) { SECONDARY(us(r), us(g), us(b)); }
+void GLAPIENTRY glSecondaryColor3usv(const GLushort* v) { SECONDARY(us(v[0]), us(v[1]), us(v[2])); }
+void GLAPIENTRY glSecondaryColor3ui(GLuint r, GLuint g, GLuint b) { SECONDARY(ui(r), ui(g), ui(b)); }
+void GLAPIENTRY glSecondaryColor3uiv(const GLuint* v) { SECONDARY(ui(v[0]), ui(v[1]), ui(v[2])); }
+void GLAPIENTRY glSecondaryColor3f(GLfloat r, GLfloat g, GLfloat b) { SECONDARY(r, g, b); }
+void GLAPIENTRY glSecondaryColor3fv(const GLfloat* v) { SECONDARY(v[0], v[1], v[2]); }
+void GLAPIENTRY glSecondaryColor3d(GLdouble r, GLdouble g, GLdouble b) { SECONDARY(r, g, b); }
+void GLAPIENTRY glSecondaryColor3dv(const GLdouble* v) { SECONDARY(v[0], v[1], v[2]); }
+void GLAPIENTRY glFogCoordf(GLfloat f) { FOG_COORD(f); }
+void GLAPIENTRY glFogCoordfv(const GLfloat* f) { FOG_COORD(f[0]); }
+void GLAPIENTRY glFogCoordd(GLdouble f) { FOG_COORD(f); }
+void GLAPIENTRY glFogCoorddv(const GLdouble* f) { FOG_COORD(f[0]); }
 
 void GLAPIENTRY glLoadTransposeMatrixf(const GLfloat* m) {
   GL_COMPAT_CONTEXT();

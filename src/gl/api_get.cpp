@@ -111,7 +111,7 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_MAX_TEXTURE_IMAGE_UNITS:
     case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS: return n(kMaxStageTextureUnits), true;
     case GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS: return n(kMaxTextureUnits), true;
-    case GL_MAX_TEXTURE_COORDS: return n(1), true;
+    case GL_MAX_TEXTURE_COORDS: return n(kMaxTexCoords), true;
     case GL_MAX_UNIFORM_BUFFER_BINDINGS: return n(kMaxUniformBufferBindings), true;
     case GL_MAX_VERTEX_UNIFORM_BLOCKS:
     case GL_MAX_FRAGMENT_UNIFORM_BLOCKS: return n(12), true;
@@ -158,13 +158,18 @@ bool query(Context& c, GLenum pname, Values& out) {
       out.kind = Kind::Color;
       put(out, {s.current.normal.x, s.current.normal.y, s.current.normal.z});
       return true;
-    case GL_CURRENT_TEXTURE_COORDS: put4(out, s.current.tex); return true;
+    case GL_CURRENT_TEXTURE_COORDS: put4(out, s.current.tex[size_t(c.tex_set())]); return true;
+    case GL_CURRENT_SECONDARY_COLOR:
+      out.kind = Kind::Color;
+      put4(out, s.current.secondary);
+      return true;
+    case GL_CURRENT_FOG_COORD: put(out, {s.current.fog_coord}); return true;
     case GL_CURRENT_RASTER_POSITION: put4(out, s.current.raster_pos); return true;
     case GL_CURRENT_RASTER_COLOR:
       out.kind = Kind::Color;
       put4(out, s.current.raster_color);
       return true;
-    case GL_CURRENT_RASTER_TEXTURE_COORDS: put4(out, s.current.raster_tex); return true;
+    case GL_CURRENT_RASTER_TEXTURE_COORDS: put4(out, s.current.raster_tex[size_t(c.tex_set())]); return true;
     case GL_CURRENT_RASTER_DISTANCE: put(out, {s.current.raster_distance}); return true;
     case GL_CURRENT_RASTER_POSITION_VALID: b(s.current.raster_valid); return true;
     case GL_EDGE_FLAG: b(s.current.edge); return true;
@@ -172,17 +177,19 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_MATRIX_MODE: e(s.transform.matrix_mode); return true;
     case GL_MODELVIEW_MATRIX: put_mat(out, c.matrices[0].back()); return true;
     case GL_PROJECTION_MATRIX: put_mat(out, c.matrices[1].back()); return true;
-    case GL_TEXTURE_MATRIX: put_mat(out, c.matrices[2].back()); return true;
+    case GL_TEXTURE_MATRIX: put_mat(out, c.texture_matrix(c.tex_set())); return true;
     // GL 1.3 §6.1.2: the same matrices, row by row.
     case GL_TRANSPOSE_MODELVIEW_MATRIX: put_mat(out, glm::transpose(c.matrices[0].back())); return true;
     case GL_TRANSPOSE_PROJECTION_MATRIX: put_mat(out, glm::transpose(c.matrices[1].back())); return true;
-    case GL_TRANSPOSE_TEXTURE_MATRIX: put_mat(out, glm::transpose(c.matrices[2].back())); return true;
+    case GL_TRANSPOSE_TEXTURE_MATRIX:
+      put_mat(out, glm::transpose(c.texture_matrix(c.tex_set())));
+      return true;
     // No compressed internal format is accepted (GL_COMPRESSED_* ask for none in particular).
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS: put(out, {0.0}); return true;
     case GL_COMPRESSED_TEXTURE_FORMATS: return true;
     case GL_MODELVIEW_STACK_DEPTH: put(out, {double(c.matrices[0].size())}); return true;
     case GL_PROJECTION_STACK_DEPTH: put(out, {double(c.matrices[1].size())}); return true;
-    case GL_TEXTURE_STACK_DEPTH: put(out, {double(c.matrices[2].size())}); return true;
+    case GL_TEXTURE_STACK_DEPTH: put(out, {double(c.matrices[size_t(2 + c.tex_set())].size())}); return true;
     case GL_VIEWPORT:
       put(out,
           {double(s.viewport.x), double(s.viewport.y), double(s.viewport.width), double(s.viewport.height)});
@@ -200,6 +207,9 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_FOG_START: put(out, {s.fog.start}); return true;
     case GL_FOG_END: put(out, {s.fog.end}); return true;
     case GL_FOG_MODE: e(s.fog.mode); return true;
+    case GL_FOG_COORD_SRC: e(s.fog.coord_src); return true;
+    case GL_COLOR_SUM: b(s.fog.color_sum); return true;
+    case GL_POINT_SPRITE: b(s.point.sprite); return true;
     case GL_FOG_INDEX: put(out, {0.0}); return true;
     case GL_SHADE_MODEL: e(s.light.shade_model); return true;
     case GL_LIGHTING: b(s.light.lighting); return true;
@@ -212,7 +222,9 @@ bool query(Context& c, GLenum pname, Values& out) {
       return true;
     case GL_LIGHT_MODEL_LOCAL_VIEWER: b(s.light.local_viewer); return true;
     case GL_LIGHT_MODEL_TWO_SIDE: b(s.light.two_side); return true;
-    case GL_LIGHT_MODEL_COLOR_CONTROL: e(GL_SINGLE_COLOR); return true;
+    case GL_LIGHT_MODEL_COLOR_CONTROL:
+      e(s.light.separate_specular ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR);
+      return true;
     // Rasterization.
     case GL_POINT_SIZE: put(out, {s.point.size}); return true;
     case GL_POINT_SIZE_MIN: put(out, {s.point.size_min}); return true;
@@ -242,8 +254,10 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_POLYGON_OFFSET_POINT: b(s.polygon.offset_point); return true;
     case GL_POLYGON_STIPPLE: b(s.polygon.stipple); return true;
     // Texturing.
+    case GL_TEXTURE_1D: b(s.unit().enabled_1d); return true;
     case GL_TEXTURE_2D: b(s.unit().enabled_2d); return true;
-    case GL_TEXTURE_1D: b(false); return true;
+    case GL_TEXTURE_3D: b(s.unit().enabled_3d); return true;
+    case GL_TEXTURE_CUBE_MAP: b(s.unit().enabled_cube); return true;
     case GL_TEXTURE_GEN_S: b(s.unit().gen_enabled[0]); return true;
     case GL_TEXTURE_GEN_T: b(s.unit().gen_enabled[1]); return true;
     case GL_TEXTURE_GEN_R: b(s.unit().gen_enabled[2]); return true;
@@ -387,10 +401,17 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_COLOR_ARRAY_SIZE: put(out, {double(c.c.color.size)}); return true;
     case GL_COLOR_ARRAY_TYPE: e(c.c.color.type); return true;
     case GL_COLOR_ARRAY_STRIDE: put(out, {double(c.c.color.stride)}); return true;
-    case GL_TEXTURE_COORD_ARRAY: b(c.c.tex.enabled); return true;
-    case GL_TEXTURE_COORD_ARRAY_SIZE: put(out, {double(c.c.tex.size)}); return true;
-    case GL_TEXTURE_COORD_ARRAY_TYPE: e(c.c.tex.type); return true;
-    case GL_TEXTURE_COORD_ARRAY_STRIDE: put(out, {double(c.c.tex.stride)}); return true;
+    case GL_TEXTURE_COORD_ARRAY: b(c.c.active_tex().enabled); return true;
+    case GL_TEXTURE_COORD_ARRAY_SIZE: put(out, {double(c.c.active_tex().size)}); return true;
+    case GL_TEXTURE_COORD_ARRAY_TYPE: e(c.c.active_tex().type); return true;
+    case GL_TEXTURE_COORD_ARRAY_STRIDE: put(out, {double(c.c.active_tex().stride)}); return true;
+    case GL_SECONDARY_COLOR_ARRAY: b(c.c.secondary.enabled); return true;
+    case GL_SECONDARY_COLOR_ARRAY_SIZE: put(out, {double(c.c.secondary.size)}); return true;
+    case GL_SECONDARY_COLOR_ARRAY_TYPE: e(c.c.secondary.type); return true;
+    case GL_SECONDARY_COLOR_ARRAY_STRIDE: put(out, {double(c.c.secondary.stride)}); return true;
+    case GL_FOG_COORD_ARRAY: b(c.c.fog.enabled); return true;
+    case GL_FOG_COORD_ARRAY_TYPE: e(c.c.fog.type); return true;
+    case GL_FOG_COORD_ARRAY_STRIDE: put(out, {double(c.c.fog.stride)}); return true;
     case GL_EDGE_FLAG_ARRAY: b(c.c.edge.enabled); return true;
     case GL_EDGE_FLAG_ARRAY_STRIDE: put(out, {double(c.c.edge.stride)}); return true;
     case GL_INDEX_ARRAY: b(c.c.index.enabled); return true;
@@ -404,7 +425,7 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: put(out, {double(kClientAttribDepth)}); return true;
     case GL_MAX_LIST_NESTING: put(out, {double(kMaxListNesting)}); return true;
     case GL_MAX_TEXTURE_SIZE: put(out, {double(kMaxTextureSize)}); return true;
-    case GL_MAX_TEXTURE_UNITS: put(out, {1.0}); return true;
+    case GL_MAX_TEXTURE_UNITS: put(out, {double(kMaxTexCoords)}); return true;
     case GL_MAX_VIEWPORT_DIMS:
       put(out, {double(gpu::kMaxViewportSize), double(gpu::kMaxViewportSize)});
       return true;

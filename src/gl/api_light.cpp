@@ -94,7 +94,8 @@ void light_model(Context& c, GLenum pname, Vec4Arg p) {
     case GL_LIGHT_MODEL_TWO_SIDE: c.s.light.two_side = p[0] != 0.0f; break;
     case GL_LIGHT_MODEL_COLOR_CONTROL:
       if (p[0] != float(GL_SINGLE_COLOR) && p[0] != float(GL_SEPARATE_SPECULAR_COLOR))
-        c.error(GL_INVALID_ENUM);
+        return c.error(GL_INVALID_ENUM);
+      c.s.light.separate_specular = p[0] == float(GL_SEPARATE_SPECULAR_COLOR);
       break;
     default: c.error(GL_INVALID_ENUM); break;
   }
@@ -169,6 +170,13 @@ void fog(Context& c, GLenum pname, Vec4Arg p) {
       c.touch();
       f.start = p[0];
       break;
+    case GL_FOG_COORD_SRC: {
+      const GLenum m = GLenum(p[0]);
+      if (m != GL_FOG_COORD && m != GL_FRAGMENT_DEPTH) return c.error(GL_INVALID_ENUM);
+      c.touch();
+      f.coord_src = m;
+      break;
+    }
     case GL_FOG_END:
       c.touch();
       f.end = p[0];

@@ -32,6 +32,8 @@ void matrix_mode(Context& c, GLenum mode) {
     c.error(GL_INVALID_ENUM);
     return;
   }
+  // A texture unit without a coordinate set has no texture matrix (Mesa: GL_INVALID_OPERATION).
+  if (mode == GL_TEXTURE && c.s.active_unit >= GLuint(kMaxTexCoords)) return c.error(GL_INVALID_OPERATION);
   c.s.transform.matrix_mode = mode;
 }
 

@@ -47,7 +47,12 @@ bool* capability(Context& c, GLenum cap) {
     case GL_POINT_SMOOTH: return &s.point.smooth;
     case GL_NORMALIZE: return &s.transform.normalize;
     case GL_RESCALE_NORMAL: return &s.transform.rescale_normal;
+    case GL_TEXTURE_1D: return &s.unit().enabled_1d;
     case GL_TEXTURE_2D: return &s.unit().enabled_2d;
+    case GL_TEXTURE_3D: return &s.unit().enabled_3d;
+    case GL_TEXTURE_CUBE_MAP: return &s.unit().enabled_cube;
+    case GL_COLOR_SUM: return &s.fog.color_sum;
+    case GL_POINT_SPRITE: return &s.point.sprite;
     case GL_TEXTURE_GEN_S: return &s.unit().gen_enabled[0];
     case GL_TEXTURE_GEN_T: return &s.unit().gen_enabled[1];
     case GL_TEXTURE_GEN_R: return &s.unit().gen_enabled[2];
@@ -56,8 +61,8 @@ bool* capability(Context& c, GLenum cap) {
   }
 }
 
-// Capabilities that are accepted and kept but change nothing Tessel draws (1D textures,
-// colour-index logic op, multisampling, seamless cube maps, sRGB writes to a linear window).
+// Capabilities that are accepted and kept but change nothing Tessel draws (colour-index
+// logic op, multisampling, seamless cube maps, sRGB writes to a linear window).
 // (The sample-coverage capabilities act only on multisample buffers, which Tessel's
 // framebuffers do not have: GL 3.3 §4.1.3.)
 bool* inert_capability(GLenum cap) {
@@ -67,7 +72,6 @@ bool* inert_capability(GLenum cap) {
     case GL_SAMPLE_ALPHA_TO_ONE: return &inert[6];
     case GL_SAMPLE_COVERAGE: return &inert[7];
     case GL_SAMPLE_MASK: return &inert[8];
-    case GL_TEXTURE_1D: return &inert[0];
     case GL_INDEX_LOGIC_OP: return &inert[1];
     case GL_MULTISAMPLE: return &inert[2];
     // Cube maps are always sampled across faces (as llvmpipe does); the window is not sRGB.
@@ -491,6 +495,8 @@ void copy_enables(ServerState& to, const ServerState& from) {
   to.depth.test = from.depth.test;
   to.color.dither = from.color.dither;
   to.fog.enabled = from.fog.enabled;
+  to.fog.color_sum = from.fog.color_sum;
+  to.point.sprite = from.point.sprite;
   to.light.enabled = from.light.enabled;
   to.light.lighting = from.light.lighting;
   to.line.smooth = from.line.smooth;
@@ -507,7 +513,10 @@ void copy_enables(ServerState& to, const ServerState& from) {
   to.scissor.test = from.scissor.test;
   to.stencil.test = from.stencil.test;
   for (size_t i = 0; i < to.units.size(); ++i) {
+    to.units[i].enabled_1d = from.units[i].enabled_1d;
     to.units[i].enabled_2d = from.units[i].enabled_2d;
+    to.units[i].enabled_3d = from.units[i].enabled_3d;
+    to.units[i].enabled_cube = from.units[i].enabled_cube;
     to.units[i].gen_enabled = from.units[i].gen_enabled;
   }
   to.transform.clip_enabled = from.transform.clip_enabled;
@@ -632,7 +641,9 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap) {
       case GL_VERTEX_ARRAY: return c.c.vertex.enabled;
       case GL_NORMAL_ARRAY: return c.c.normal.enabled;
       case GL_COLOR_ARRAY: return c.c.color.enabled;
-      case GL_TEXTURE_COORD_ARRAY: return c.c.tex.enabled;
+      case GL_TEXTURE_COORD_ARRAY: return c.c.active_tex().enabled;
+      case GL_SECONDARY_COLOR_ARRAY: return c.c.secondary.enabled;
+      case GL_FOG_COORD_ARRAY: return c.c.fog.enabled;
       case GL_EDGE_FLAG_ARRAY: return c.c.edge.enabled;
       case GL_INDEX_ARRAY: return c.c.index.enabled;
       default: c.error(GL_INVALID_ENUM); return GL_FALSE;
@@ -982,8 +993,11 @@ void GLAPIENTRY glPopClientAttrib(void) {
     c.c.normal = top.state.normal;
     c.c.color = top.state.color;
     c.c.tex = top.state.tex;
+    c.c.secondary = top.state.secondary;
+    c.c.fog = top.state.fog;
     c.c.edge = top.state.edge;
     c.c.index = top.state.index;
+    c.c.client_active_unit = top.state.client_active_unit;  // GL 2.1 Table 6.8
   }
 }
 

@@ -15,6 +15,7 @@ void begin(Context& c, GLenum mode) {
   c.in_begin = true;
   c.begin_mode = mode;
   c.prim.clear();
+  c.extras_touched = c.extras_live();
 }
 
 void vertex(Context& c, float x, float y, float z, float w) {
@@ -33,7 +34,7 @@ void end(Context& c) {
 }
 void set_color(Context& c, float r, float g, float b, float a) { c.s.current.color = glm::vec4(r, g, b, a); }
 void set_normal(Context& c, float x, float y, float z) { c.s.current.normal = glm::vec3(x, y, z); }
-void set_tex(Context& c, float s, float t, float r, float q) { c.s.current.tex = glm::vec4(s, t, r, q); }
+void set_tex(Context& c, float s, float t, float r, float q) { c.s.current.tex[0] = glm::vec4(s, t, r, q); }
 
 // Integer colour components map to [-1, 1] or [0, 1] (GL 2.1 Table 2.9).
 constexpr float ub(GLubyte v) { return float(v) / 255.0f; }

@@ -55,6 +55,8 @@ gpu::PolygonMode polygon_mode_of(GLenum m) {
                          : gpu::PolygonMode::Fill;
 }
 
+}  // namespace
+
 // The base format the texture environment sees (GL 3.3 compatibility Table 3.25: RED and
 // RG act as RGB; depth textures as their GL_DEPTH_TEXTURE_MODE says).
 BaseFormat ff_base_format(const TextureObject& t) {
@@ -73,6 +75,8 @@ BaseFormat ff_base_format(const TextureObject& t) {
     default: return BaseFormat::RGB;
   }
 }
+
+namespace {
 
 constexpr size_t kTransientFlushBytes = size_t(256) << 20;
 }  // namespace
@@ -104,9 +108,7 @@ FFPostVertex lerp_post(const FFPostVertex& a, const FFPostVertex& b, float t) {
 
 Context::Context(int width, int height, bool double_buffer, bool depth, bool stencil)
     : double_buffer_(double_buffer), has_depth_(depth || stencil), has_stencil_(stencil) {
-  matrices[0].assign(1, glm::mat4(1.0f));
-  matrices[1].assign(1, glm::mat4(1.0f));
-  matrices[2].assign(1, glm::mat4(1.0f));
+  for (auto& m : matrices) m.assign(1, glm::mat4(1.0f));
   for (int i = 0; i < kTexTargetCount; ++i) default_textures[size_t(i)] = make_texture(0, TexTarget(i));
   s.color.draw_buffer = double_buffer ? GL_BACK : GL_FRONT;
   s.pixel.read_buffer = double_buffer ? GL_BACK : GL_FRONT;
@@ -421,15 +423,33 @@ void Context::vertex(float x, float y, float z, float w) {
   v.pos[3] = w;
   std::memcpy(v.normal, &s.current.normal[0], sizeof v.normal);
   std::memcpy(v.color, &s.current.color[0], sizeof v.color);
-  std::memcpy(v.tex, &s.current.tex[0], sizeof v.tex);
+  std::memcpy(v.tex, &s.current.tex[0][0], sizeof v.tex);
   v.edge = s.current.edge ? 1.0f : 0.0f;
-  prim.push_back(v);
+  if (!extras_touched) return prim.push(v);
+  FFExtra e;
+  current_extra(s.current, e);
+  prim.push(v, e);
+}
+
+void current_extra(const CurrentState& cur, FFExtra& e) {
+  for (int i = 1; i < kMaxTexCoords; ++i) std::memcpy(e.tex[i - 1], &cur.tex[size_t(i)][0], sizeof e.tex[0]);
+  std::memcpy(e.secondary, &cur.secondary[0], sizeof e.secondary);
+  e.fog_coord = cur.fog_coord;
+  e.pad_[0] = e.pad_[1] = e.pad_[2] = 0.0f;
+}
+
+bool Context::extras_live() const {
+  const CurrentState& cur = s.current;
+  for (int i = 1; i < kMaxTexCoords; ++i)
+    if (cur.tex[size_t(i)] != glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) || c.tex[size_t(i)].enabled) return true;
+  return cur.secondary != glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) || cur.fog_coord != 0.0f || c.secondary.enabled ||
+         c.fog.enabled;
 }
 
 void Context::end() {
   in_begin = false;
-  std::vector<FFVertex> verts;
-  verts.swap(prim);
+  FFVertices verts;
+  std::swap(verts, prim);
   emit_mode(begin_mode, std::move(verts));
 }
 
@@ -437,7 +457,7 @@ void Context::end() {
 // Table 2.9: each triangle lists its provoking vertex last (the gpu layer's convention, GL's
 // for triangles). Quads, quad strips and polygons are cut the way Mesa cuts them, so that
 // smooth colours across the inner diagonals agree with it (measured: tests/gl).
-void Context::emit_mode(GLenum mode, std::vector<FFVertex>&& v) {
+void Context::emit_mode(GLenum mode, FFVertices&& v) {
   const uint32_t n = uint32_t(v.size());
   if (mode != GL_QUADS) close_quad_run();
   std::vector<uint32_t> idx;
@@ -457,7 +477,7 @@ void Context::emit_mode(GLenum mode, std::vector<FFVertex>&& v) {
     case GL_LINES:
       cls = PrimClass::Lines;
       for (uint32_t i = 0; i + 1 < n; i += 2) idx.insert(idx.end(), {i, i + 1});
-      for (FFVertex& x : v) x.edge = 1.0f;  // each segment restarts the stipple
+      for (FFVertex& x : v.v) x.edge = 1.0f;  // each segment restarts the stipple
       break;
     case GL_LINE_STRIP:
     case GL_LINE_LOOP:
@@ -489,23 +509,25 @@ void Context::emit_mode(GLenum mode, std::vector<FFVertex>&& v) {
     case GL_POLYGON: {
       // Decomposed polygons need their own vertex copies so that each triangle carries the
       // edge flags of its own edges.
-      std::vector<FFVertex> out;
-      auto put = [&](const FFVertex& a, bool edge) {
-        FFVertex x = a;
-        x.edge = edge && a.edge != 0.0f ? 1.0f : 0.0f;
-        out.push_back(x);
+      FFVertices out;
+      auto put = [&](uint32_t i, bool edge) {
+        FFVertex x = v[i];
+        x.edge = edge && x.edge != 0.0f ? 1.0f : 0.0f;
+        out.push_from(v, i, x);
       };
       if (mode == GL_QUADS) {
         const uint32_t whole = n - n % 4;
         if (list_depth > 0) {
           // Quads replayed from a display list: Mesa's lists always cut along v1-v3.
           close_quad_run();
-          split_quads(v.data(), whole, true, out, idx);
+          split_quads(v, whole, true, out, idx);
         } else {
           // Immediate quads join the run of quads that Mesa would draw together; how the
           // run is cut is known only when it ends (close_quad_run).
           for (uint32_t i = 0; i < whole; ++i) quad_run_clipped_ |= outside_view_volume(v[i]);
-          quad_run_.insert(quad_run_.end(), v.begin(), v.begin() + whole);
+          v.v.resize(whole);
+          if (v.wide()) v.x.resize(whole);
+          quad_run_.append(v);
           return;
         }
       } else if (mode == GL_QUAD_STRIP) {
@@ -514,12 +536,12 @@ void Context::emit_mode(GLenum mode, std::vector<FFVertex>&& v) {
           const uint32_t base = uint32_t(out.size());
           // (v2, v0, v3) and (v0, v1, v3): v3 last in both. Boundary edges v0-v1, v1-v3,
           // v3-v2, v2-v0.
-          put(v[i + 2], true);   // v2 -> v0
-          put(v[i], false);      // v0 -> v3 inner
-          put(v[i + 3], true);   // v3 -> v2
-          put(v[i], true);       // v0 -> v1
-          put(v[i + 1], true);   // v1 -> v3
-          put(v[i + 3], false);  // v3 -> v0 inner
+          put(i + 2, true);   // v2 -> v0
+          put(i, false);      // v0 -> v3 inner
+          put(i + 3, true);   // v3 -> v2
+          put(i, true);       // v0 -> v1
+          put(i + 1, true);   // v1 -> v3
+          put(i + 3, false);  // v3 -> v0 inner
           tri(base, base + 1, base + 2);
           tri(base + 3, base + 4, base + 5);
         }
@@ -528,9 +550,9 @@ void Context::emit_mode(GLenum mode, std::vector<FFVertex>&& v) {
         // last triangle; v0 -> v_i only for the first.
         for (uint32_t i = 1; i + 1 < n; ++i) {
           const uint32_t base = uint32_t(out.size());
-          put(v[i], true);
-          put(v[i + 1], i + 2 == n);
-          put(v[0], i == 1);
+          put(i, true);
+          put(i + 1, i + 2 == n);
+          put(0, i == 1);
           tri(base, base + 1, base + 2);
         }
       }
@@ -550,36 +572,38 @@ void Context::emit_mode(GLenum mode, std::vector<FFVertex>&& v) {
 // lists. The provoking vertex is v3: with the v0-v2 cut the first triangle lacks it, so
 // with flat shading that triangle's last vertex takes v3's colour and normal (its position
 // and texture coordinates stay v2's). Edge flags mark the cut as an inner edge.
-void Context::split_quads(const FFVertex* v, uint32_t n, bool along_v1v3, std::vector<FFVertex>& out,
+void Context::split_quads(const FFVertices& v, uint32_t n, bool along_v1v3, FFVertices& out,
                           std::vector<uint32_t>& idx) const {
   const bool flat = s.light.shade_model == GL_FLAT;
-  auto put = [&](const FFVertex& a, bool edge) {
+  auto put = [&](uint32_t i, const FFVertex& a, bool edge) {
     FFVertex x = a;
     x.edge = edge && a.edge != 0.0f ? 1.0f : 0.0f;
     idx.push_back(uint32_t(out.size()));
-    out.push_back(x);
+    out.push_from(v, i, x);
   };
   for (uint32_t i = 0; i + 3 < n; i += 4) {
     const FFVertex &a = v[i], &b = v[i + 1], &c = v[i + 2], &d = v[i + 3];
     if (along_v1v3) {
-      put(a, true);   // a -> b
-      put(b, false);  // b -> d inner
-      put(d, true);   // d -> a
-      put(b, true);   // b -> c
-      put(c, true);   // c -> d
-      put(d, false);  // d -> b inner
+      put(i, a, true);       // a -> b
+      put(i + 1, b, false);  // b -> d inner
+      put(i + 3, d, true);   // d -> a
+      put(i + 1, b, true);   // b -> c
+      put(i + 2, c, true);   // c -> d
+      put(i + 3, d, false);  // d -> b inner
     } else {
       FFVertex c_first = c;
       if (flat) {
         std::memcpy(c_first.normal, d.normal, sizeof c_first.normal);
         std::memcpy(c_first.color, d.color, sizeof c_first.color);
       }
-      put(a, true);         // a -> b
-      put(b, true);         // b -> c
-      put(c_first, false);  // c -> a inner
-      put(a, false);        // a -> c inner
-      put(c, true);         // c -> d
-      put(d, true);         // d -> a
+      put(i, a, true);             // a -> b
+      put(i + 1, b, true);         // b -> c
+      put(i + 2, c_first, false);  // c -> a inner
+      if (flat && v.wide())        // the secondary colour is flat shaded too
+        std::memcpy(out.x.back().secondary, v.x[i + 3].secondary, sizeof out.x.back().secondary);
+      put(i, a, false);     // a -> c inner
+      put(i + 2, c, true);  // c -> d
+      put(i + 3, d, true);  // d -> a
     }
   }
 }
@@ -598,17 +622,17 @@ bool Context::outside_view_volume(const FFVertex& v) const {
 
 void Context::close_quad_run() {
   if (quad_run_.empty()) return;
-  std::vector<FFVertex> run;
-  run.swap(quad_run_);
+  FFVertices run;
+  std::swap(run, quad_run_);
   const bool clipped = quad_run_clipped_;
   quad_run_clipped_ = false;
-  std::vector<FFVertex> out;
+  FFVertices out;
   std::vector<uint32_t> idx;
-  split_quads(run.data(), uint32_t(run.size()), clipped, out, idx);
+  split_quads(run, uint32_t(run.size()), clipped, out, idx);
   emit(PrimClass::Triangles, std::move(out), std::move(idx));
 }
 
-void Context::emit(PrimClass cls, std::vector<FFVertex>&& verts, std::vector<uint32_t>&& indices) {
+void Context::emit(PrimClass cls, FFVertices&& verts, std::vector<uint32_t>&& indices) {
   if (indices.empty() || compiling_only()) return;
   close_quad_run();  // earlier quads go first
   if (render_mode_ != GL_RENDER) {
@@ -626,7 +650,7 @@ void Context::emit(PrimClass cls, std::vector<FFVertex>&& verts, std::vector<uin
     batch_.indices = std::move(indices);
   } else {
     const uint32_t base = uint32_t(batch_.verts.size());
-    batch_.verts.insert(batch_.verts.end(), verts.begin(), verts.end());
+    batch_.verts.append(verts);
     for (uint32_t i : indices) batch_.indices.push_back(base + i);
   }
   if (batch_.verts.size() > (1u << 20)) send_batch();
@@ -657,10 +681,9 @@ void Context::texture_deleted(const TextureObject& t) {
 }
 
 TextureObject* Context::texture_for_draw() {
-  if (!s.units[0].enabled_2d) return nullptr;
-  TextureObject& t = bound_texture(TexTarget::T2D, 0);
-  if (!update_gpu_texture(*this, t) || !t.tex2d) return nullptr;
-  return texture_complete(t, sampler_params(0, t)) ? &t : nullptr;
+  TexTarget target = TexTarget::T2D;
+  TextureObject* t = ff_texture(0, target);
+  return t && target == TexTarget::T2D ? t : nullptr;
 }
 
 const SamplerParams& Context::sampler_params(int unit, const TextureObject& t) const {
@@ -717,7 +740,7 @@ void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
       default: u.env = TexEnv::Modulate; break;
     }
     u.env_color = s.units[0].env_color;
-    const glm::mat4& tm = matrices[2].back();
+    const glm::mat4& tm = texture_matrix(0);
     u.texture_matrix = tm;
     u.identity_texture_matrix = tm == glm::mat4(1.0f);
     for (int i = 0; i < 4; ++i) {
@@ -865,7 +888,7 @@ void Context::send_batch_unchecked() {
   if (!bind_draw_target()) return;
   if (b.cls == PrimClass::Lines && s.line.stipple) return send_stippled_lines(b.verts, b.indices);
   std::unique_ptr<gpu::Buffer> own;
-  if (!b.shared) own = std::make_unique<gpu::Buffer>(b.verts.data(), b.verts.size() * sizeof(FFVertex));
+  if (!b.shared) own = std::make_unique<gpu::Buffer>(b.verts.v.data(), b.verts.size() * sizeof(FFVertex));
   const gpu::Buffer& vbuf = b.shared ? *b.shared : *own;
   auto ib = std::make_unique<gpu::Buffer>(b.indices.data(), b.indices.size() * sizeof(uint32_t));
   if (executable) {
@@ -879,7 +902,7 @@ void Context::send_batch_unchecked() {
     call.index_type = gpu::IndexType::U32;
     gpu::RenderState rs = render_state(false);
     rs.edge_flag_varying = -1;
-    draw_program_batch(vbuf, call, rs);
+    draw_program_batch(executable_run(), vbuf, b.verts.x, call, rs);
   } else {
     draw_fixed_function(b, vbuf, *ib);
   }
@@ -896,6 +919,8 @@ void Context::send_batch_unchecked() {
 }
 
 void Context::draw_fixed_function(const Batch& b, const gpu::Buffer& vbuf, const gpu::Buffer& ib) {
+  FFProgramKey key;
+  if (ff_program_key(b.cls, key)) return draw_ff_program(key, b, vbuf, ib);
   gpu::VertexLayout layout;
   constexpr uint32_t stride = sizeof(FFVertex);
   layout.attrib(0, vbuf, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, pos));
@@ -958,7 +983,7 @@ FFPostVertex Context::post_vertex(const FFVertex& v, const FFUniforms& u, bool t
 // and the pieces where the pattern is on are drawn as pre-transformed lines. The counter
 // steps once per pixel along the major axis and carries over between the segments of a
 // strip; the pieces' ends are interpolated linearly in window space.
-void Context::send_stippled_lines(const std::vector<FFVertex>& verts, const std::vector<uint32_t>& indices) {
+void Context::send_stippled_lines(const FFVertices& verts, const std::vector<uint32_t>& indices) {
   TextureObject* tex = texture_for_draw();
   FFUniforms u;
   build_uniforms(u, tex);

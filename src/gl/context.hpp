@@ -18,6 +18,7 @@
 #include <memory>
 #include <new>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -43,12 +44,23 @@ inline constexpr int kMaxTextureUnits = 48;
 inline constexpr int kMaxStageTextureUnits = 16;
 
 // GL_CURRENT_BIT and what glBegin/glEnd reads.
+// The texture coordinates of every set, (0, 0, 0, 1) each.
+inline std::array<glm::vec4, kMaxTexCoords> initial_tex_coords() {
+  std::array<glm::vec4, kMaxTexCoords> t;
+  t.fill(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  return t;
+}
+
 struct CurrentState {
-  glm::vec4 color{1.0f}, tex{0.0f, 0.0f, 0.0f, 1.0f};
+  glm::vec4 color{1.0f};
+  std::array<glm::vec4, kMaxTexCoords> tex = initial_tex_coords();  // glMultiTexCoord, per set
+  glm::vec4 secondary{0.0f, 0.0f, 0.0f, 1.0f};                      // glSecondaryColor (GL 1.4)
+  float fog_coord = 0.0f;                                           // glFogCoord (GL 1.4)
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
   bool edge = true;
   glm::vec4 raster_pos{0.0f, 0.0f, 0.0f, 1.0f};  // window coordinates
-  glm::vec4 raster_color{1.0f}, raster_tex{0.0f, 0.0f, 0.0f, 1.0f};
+  glm::vec4 raster_color{1.0f};
+  std::array<glm::vec4, kMaxTexCoords> raster_tex = initial_tex_coords();
   float raster_distance = 0.0f;
   bool raster_valid = true;
 };
@@ -60,6 +72,7 @@ struct LightState {
   std::array<FFMaterial, 2> material{};
   glm::vec4 model_ambient{0.2f, 0.2f, 0.2f, 1.0f};
   bool local_viewer = false, two_side = false;
+  bool separate_specular = false;  // GL_LIGHT_MODEL_COLOR_CONTROL (GL 1.2 §2.13.1)
   bool lighting = false;
   bool color_material = false;
   GLenum color_material_face = GL_FRONT_AND_BACK, color_material_mode = GL_AMBIENT_AND_DIFFUSE;
@@ -72,6 +85,8 @@ struct FogState {
   GLenum mode = GL_EXP;
   float density = 1.0f, start = 0.0f, end = 1.0f;
   glm::vec4 color{0.0f};
+  GLenum coord_src = GL_FRAGMENT_DEPTH;  // GL_FOG_COORD_SRC (GL 1.4 §3.10)
+  bool color_sum = false;                // GL_COLOR_SUM (GL 1.4 §3.9)
 };
 
 struct ColorBufferState {
@@ -143,6 +158,7 @@ struct PointState {
   float size_min = 0.0f, size_max = 255.0f, fade_threshold = 1.0f;
   float attenuation[3] = {1.0f, 0.0f, 0.0f};
   bool sprite_lower_left = false;
+  bool sprite = false;  // GL_POINT_SPRITE (compatibility): units with GL_COORD_REPLACE use gl_PointCoord
 };
 
 struct ScissorState {
@@ -165,7 +181,9 @@ struct TransformState {
 };
 
 struct TextureUnitState {
-  bool enabled_2d = false;
+  // glEnable(GL_TEXTURE_1D/2D/3D/CUBE_MAP): the fixed-function target of the unit is the
+  // highest of those enabled, cube map first (GL 2.1 §3.8.16).
+  bool enabled_1d = false, enabled_2d = false, enabled_3d = false, enabled_cube = false;
   // The texture bound to each target (null: the target's default texture, name 0), and the
   // sampler object bound to the unit (null: none, the texture's own parameters).
   std::array<TextureRef, kTexTargetCount> bound{};
@@ -178,6 +196,16 @@ struct TextureUnitState {
                                         glm::vec4(0.0f)};
   std::array<glm::vec4, 4> eye_plane{glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0.0f),
                                      glm::vec4(0.0f)};
+  // GL_COMBINE (GL 1.3 §3.8.13 Tables 3.24 and 3.25, GL 1.4's crossbar sources GL_TEXTUREi):
+  // the functions, the three sources and operands of each, and the scales.
+  GLenum combine_rgb = GL_MODULATE, combine_alpha = GL_MODULATE;
+  std::array<GLenum, 3> src_rgb{GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT};
+  std::array<GLenum, 3> src_alpha{GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT};
+  std::array<GLenum, 3> op_rgb{GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA};
+  std::array<GLenum, 3> op_alpha{GL_SRC_ALPHA, GL_SRC_ALPHA, GL_SRC_ALPHA};
+  float rgb_scale = 1.0f, alpha_scale = 1.0f;
+  float lod_bias = 0.0f;       // GL_TEXTURE_FILTER_CONTROL's GL_TEXTURE_LOD_BIAS (GL 1.4 §3.8.8)
+  bool coord_replace = false;  // GL_POINT_SPRITE's GL_COORD_REPLACE (GL 2.0 §3.3.1)
 };
 
 struct HintState {
@@ -214,11 +242,15 @@ struct EvalState {
 // The fixed-function state a GLSL 1.10-1.50 program reads through its gl_ uniforms, as last
 // written to a program (draw_glsl.cpp): written again only when it changed.
 struct CompatSnapshot {
-  glm::mat4 modelview{1.0f}, projection{1.0f}, texture{1.0f};
+  glm::mat4 modelview{1.0f}, projection{1.0f};
+  std::array<glm::mat4, kMaxTexCoords> texture{};
+  std::array<glm::vec4, kMaxTexCoords> env_color{};
+  std::array<std::array<glm::vec4, 4>, kMaxTexCoords> eye_plane{}, object_plane{};  // S, T, R, Q
   LightState light;
   glm::vec4 fog_color{0.0f};
   std::array<float, 3> fog{};  // density, start, end
   float point_size = 1.0f;
+  std::array<float, 6> point{};  // size min, max, fade threshold, the three attenuations
   std::array<float, 2> depth_range{};
   std::array<glm::vec4, kMaxClipPlanes> clip_planes{};
   bool operator==(const CompatSnapshot&) const = default;
@@ -289,11 +321,109 @@ struct ArrayPointer {
   size_t limit = SIZE_MAX;        // bytes readable from `pointer` (set while a draw reads a buffer)
 };
 
+inline ArrayPointer sized_array(GLint size) {
+  ArrayPointer a;
+  a.size = size;
+  return a;
+}
+
 struct ClientState {
   PixelStore pack, unpack;
-  ArrayPointer vertex, normal, color, tex, edge, index;
-  GLuint client_active_unit = 0;  // glClientActiveTexture (coordinate arrays of unit 0 are drawn)
+  ArrayPointer vertex, normal, color, edge, index;
+  std::array<ArrayPointer, kMaxTexCoords> tex;  // one texture coordinate array per set
+  ArrayPointer secondary = sized_array(3), fog = sized_array(1);
+  GLuint client_active_unit = 0;  // glClientActiveTexture: the set glTexCoordPointer names
+  ArrayPointer& active_tex() { return tex[client_active_unit]; }
+  const ArrayPointer& active_tex() const { return tex[client_active_unit]; }
 };
+
+// Vertex records as the fixed-function paths build them: FFVertex each and, once any vertex
+// has attributes beyond FFVertex's (a texture coordinate set other than 0, a secondary colour
+// or a fog coordinate), the FFExtra of each in a parallel array; `x` is empty until then.
+struct FFVertices {
+  std::vector<FFVertex> v;
+  std::vector<FFExtra> x;
+  size_t size() const { return v.size(); }
+  bool empty() const { return v.empty(); }
+  bool wide() const { return !x.empty(); }
+  void clear() {
+    v.clear();
+    x.clear();
+  }
+  void reserve(size_t n) { v.reserve(n); }
+  FFVertex& operator[](size_t i) { return v[i]; }
+  const FFVertex& operator[](size_t i) const { return v[i]; }
+  // The extra attributes of vertex i (the defaults when the records carry none).
+  FFExtra extra(size_t i) const { return wide() ? x[i] : FFExtra::defaults(); }
+  void widen() {
+    if (!wide() && !v.empty()) x.assign(v.size(), FFExtra::defaults());
+  }
+  void push(const FFVertex& a) {
+    v.push_back(a);
+    if (wide()) x.push_back(FFExtra::defaults());
+  }
+  void push(const FFVertex& a, const FFExtra& e) {
+    if (!wide()) {
+      x.assign(v.size(), FFExtra::defaults());
+      x.reserve(v.capacity());
+    }
+    v.push_back(a);
+    x.push_back(e);
+  }
+  // Appends vertex i of `from` with the record `a` (vertex i's own, or an edited copy).
+  void push_from(const FFVertices& from, size_t i, const FFVertex& a) {
+    if (from.wide())
+      push(a, from.x[i]);
+    else
+      push(a);
+  }
+  void append(const FFVertices& o) {
+    if (o.wide() || wide()) {
+      widen();
+      if (v.empty()) x.clear();
+      const size_t n = v.size();
+      v.insert(v.end(), o.v.begin(), o.v.end());
+      if (o.wide())
+        x.insert(x.end(), o.x.begin(), o.x.end());
+      else
+        x.resize(n + o.v.size(), FFExtra::defaults());
+      return;
+    }
+    v.insert(v.end(), o.v.begin(), o.v.end());
+  }
+};
+
+// The fixed-function state that decides the code of a generated fixed-function program
+// (ff_program.cpp); its bytes are the program's key (no padding: every byte is a field).
+struct FFProgramKey {
+  struct Unit {
+    uint8_t target = 0;  // 0: the unit does not texture; 1D, 2D, 3D, cube map
+    uint8_t shadow = 0;  // a depth texture compared (GL_TEXTURE_COMPARE_MODE)
+    uint8_t base = 0;    // BaseFormat
+    uint8_t unused = 0;
+    uint16_t env = 0;               // GL_TEXTURE_ENV_MODE
+    std::array<uint16_t, 4> gen{};  // GL_TEXTURE_GEN_MODE of S, T, R, Q when enabled, else 0
+    // GL_COMBINE's functions, sources and operands (zero unless env is GL_COMBINE).
+    uint16_t combine_rgb = 0, combine_alpha = 0;
+    std::array<uint16_t, 3> src_rgb{}, src_alpha{}, op_rgb{}, op_alpha{};
+    uint8_t rgb_scale = 0, alpha_scale = 0;
+    uint8_t bias = 0;           // a texture LOD bias is given (the uniform ff_biasN)
+    uint8_t coord_replace = 0;  // points take gl_PointCoord as (s, t)
+  };
+  std::array<Unit, kMaxTexCoords> units{};
+  uint16_t fog_mode = 0, alpha_func = 0;  // alpha_func 0: no alpha test
+  uint8_t lighting = 0, two_side = 0, local_viewer = 0, separate_specular = 0, lights = 0;
+  uint8_t normalize = 0, rescale = 0, flat = 0, fog = 0, fog_coord = 0, color_sum = 0, stipple = 0;
+  std::array<uint8_t, 2> track{};  // kTrack* bits of the front and back materials
+  std::string bytes() const;
+};
+static_assert(std::has_unique_object_representations_v<FFProgramKey>);
+BaseFormat ff_base_format(const TextureObject& t);
+std::string ff_vertex_source(const FFProgramKey& k);
+std::string ff_fragment_source(const FFProgramKey& k);
+
+// The current values of the attributes an FFExtra holds.
+void current_extra(const CurrentState& cur, FFExtra& e);
 
 struct PushedAttrib {
   GLbitfield mask;
@@ -349,10 +479,20 @@ class Context {
   ClientState c;
   std::vector<PushedAttrib> attrib_stack;
   std::vector<PushedClient> client_stack;
-  std::array<std::vector<glm::mat4>, 3> matrices;  // modelview, projection, texture; back() is current
+  // The matrix stacks: modelview, projection, then the texture matrix of each coordinate set;
+  // back() is current.
+  std::array<std::vector<glm::mat4>, 2 + kMaxTexCoords> matrices;
+  // The stack glMatrixMode selects: the texture stack of the active unit (of the last unit
+  // below GL_MAX_TEXTURE_COORDS that was active, as in Mesa, when the active unit has none).
   int matrix_index() const {
-    return s.transform.matrix_mode == GL_MODELVIEW ? 0 : s.transform.matrix_mode == GL_PROJECTION ? 1 : 2;
+    return s.transform.matrix_mode == GL_MODELVIEW    ? 0
+           : s.transform.matrix_mode == GL_PROJECTION ? 1
+                                                      : 2 + tex_set();
   }
+  int texture_stack = 0;  // the last active unit below GL_MAX_TEXTURE_COORDS
+  // The coordinate set of the active unit (GL_CURRENT_TEXTURE_COORDS, the texture matrix).
+  int tex_set() const { return s.active_unit < GLuint(kMaxTexCoords) ? int(s.active_unit) : texture_stack; }
+  const glm::mat4& texture_matrix(int set) const { return matrices[size_t(2 + set)].back(); }
   glm::mat4& top() { return matrices[size_t(matrix_index())].back(); }
   const glm::mat4& modelview() const { return matrices[0].back(); }
   const glm::mat4& projection() const { return matrices[1].back(); }
@@ -435,7 +575,12 @@ class Context {
   // Immediate mode.
   bool in_begin = false;
   GLenum begin_mode = GL_POINTS;
-  std::vector<FFVertex> prim;  // vertices since glBegin
+  FFVertices prim;  // vertices since glBegin
+  // Whether vertices may need FFExtra records: set by every call that gives a texture
+  // coordinate set other than 0, a secondary colour or a fog coordinate, or enables their
+  // arrays; reset at glBegin when all those are back to their defaults.
+  bool extras_touched = false;
+  bool extras_live() const;
   void vertex(float x, float y, float z, float w);
   void end();
 
@@ -445,12 +590,12 @@ class Context {
     if (!batch_.indices.empty()) send_batch();
   }
   // Draws vertices as independent primitives of one class (indices into `verts`).
-  void emit(PrimClass cls, std::vector<FFVertex>&& verts, std::vector<uint32_t>&& indices);
+  void emit(PrimClass cls, FFVertices&& verts, std::vector<uint32_t>&& indices);
   // Independent triangles whose vertices are already a gpu buffer of FFVertex records (vertex
   // arrays converted once and reused, api_arrays.cpp). Only for GL_RENDER; not merged.
   void emit_shared(std::shared_ptr<const gpu::Buffer> vertices, std::vector<uint32_t>&& indices);
   // Converts vertices given in glBegin order for `mode` into independent primitives.
-  void emit_mode(GLenum mode, std::vector<FFVertex>&& verts);
+  void emit_mode(GLenum mode, FFVertices&& verts);
 
   // Clears the draw buffer(s) as glClear with the current masks, scissor and values.
   void clear(GLbitfield mask);
@@ -531,17 +676,26 @@ class Context {
   std::shared_ptr<glsl::Program> executable;
   // Draws with the executable (draw_glsl.cpp): the immediate-mode and fixed-function array
   // batches, and the generic attribute arrays of the bound vertex array object.
-  void draw_program_batch(const gpu::Buffer& vertices, const gpu::DrawCall& call, gpu::RenderState rs);
-  void draw_generic(const GenericDraw& d);
-  void bind_current_values(gpu::VertexLayout& layout, std::vector<std::unique_ptr<gpu::Buffer>>& keep);
-  void run_program(const gpu::VertexLayout& layout, const gpu::DrawCall& call, gpu::RenderState rs);
-  void feed_compat_state();
+  // `extra`: the FFExtra of each vertex, or empty when every vertex has the defaults.
   struct CompatCache {
     const glsl::Program* program = nullptr;
     CompatSnapshot state;
   };
   std::unordered_map<GLuint, CompatCache> compat_cache;  // by program name
-  bool texture_units_for_draw(std::vector<glsl::TextureBinding>& units);
+  // The program a batch or draw runs: the executable, or fixed function's generated program.
+  struct ProgramRun {
+    glsl::Program& program;
+    CompatCache& cache;
+  };
+  ProgramRun executable_run() { return {*executable, compat_cache[current_program]}; }
+  void draw_program_batch(ProgramRun run, const gpu::Buffer& vertices, const std::vector<FFExtra>& extra,
+                          const gpu::DrawCall& call, gpu::RenderState rs);
+  void draw_generic(const GenericDraw& d);
+  void bind_current_values(gpu::VertexLayout& layout, std::vector<std::unique_ptr<gpu::Buffer>>& keep);
+  void run_program(ProgramRun run, const gpu::VertexLayout& layout, const gpu::DrawCall& call,
+                   gpu::RenderState rs);
+  void feed_compat_state(ProgramRun run);
+  bool texture_units_for_draw(const glsl::Program& program, std::vector<glsl::TextureBinding>& units);
   std::vector<glsl::BufferBinding> uniform_buffers_for_draw() const;
   // Keeps a buffer a queued draw reads until the work has run.
   void keep_until_finished(std::unique_ptr<gpu::Buffer> b);
@@ -557,13 +711,23 @@ class Context {
  private:
   struct Batch {
     PrimClass cls = PrimClass::Triangles;
-    std::vector<FFVertex> verts;
+    FFVertices verts;
     std::vector<uint32_t> indices;
     std::shared_ptr<const gpu::Buffer> shared;  // when set: the vertices, instead of `verts`
   };
   void send_batch();
   void send_batch_unchecked();
   void draw_fixed_function(const Batch& b, const gpu::Buffer& vertices, const gpu::Buffer& indices);
+  // Fixed function beyond the C++ shader, as a generated GLSL program (ff_program.cpp).
+  TextureObject* ff_texture(int unit, TexTarget& target);
+  bool ff_program_key(PrimClass cls, FFProgramKey& key);
+  void draw_ff_program(const FFProgramKey& key, const Batch& b, const gpu::Buffer& vertices,
+                       const gpu::Buffer& indices);
+  struct FFProgram {
+    std::shared_ptr<glsl::Program> program;
+    CompatCache cache;
+  };
+  std::unordered_map<std::string, FFProgram> ff_programs_;
   // The gpu layer reports what it cannot do by exceptions; a GL program sees them as
   // GL_OUT_OF_MEMORY (no memory) or GL_INVALID_OPERATION (anything else), never as a crash.
   template <class Fn>
@@ -576,16 +740,15 @@ class Context {
       error(GL_INVALID_OPERATION);
     }
   }
-  void send_stippled_lines(const std::vector<FFVertex>& verts, const std::vector<uint32_t>& indices);
+  void send_stippled_lines(const FFVertices& verts, const std::vector<uint32_t>& indices);
   FFPostVertex post_vertex(const FFVertex& v, const FFUniforms& u, bool textured) const;
-  void feedback_primitives(PrimClass cls, const std::vector<FFVertex>& verts,
-                           const std::vector<uint32_t>& idx);
+  void feedback_primitives(PrimClass cls, const FFVertices& verts, const std::vector<uint32_t>& idx);
   void feedback_value(float v);
   void close_quad_run();
-  void split_quads(const FFVertex* v, uint32_t n, bool along_v1v3, std::vector<FFVertex>& out,
+  void split_quads(const FFVertices& v, uint32_t n, bool along_v1v3, FFVertices& out,
                    std::vector<uint32_t>& idx) const;
   bool outside_view_volume(const FFVertex& v) const;
-  void select_primitives(PrimClass cls, const std::vector<FFVertex>& verts, const std::vector<uint32_t>& idx);
+  void select_primitives(PrimClass cls, const FFVertices& verts, const std::vector<uint32_t>& idx);
   void build_uniforms(FFUniforms& u, TextureObject* tex) const;
   void release_transient();
 
@@ -597,7 +760,7 @@ class Context {
   GLenum fb_target_ = 0;  // which colour buffer fb_ draws to
   std::unique_ptr<gpu::Context> gpu_;
   Batch batch_;
-  std::vector<FFVertex> quad_run_;  // immediate-mode quads not yet cut (see split_quads)
+  FFVertices quad_run_;  // immediate-mode quads not yet cut (see split_quads)
   bool quad_run_clipped_ = false;
   // Buffers and textures referenced by queued draws: kept until the work has run.
   std::vector<std::unique_ptr<gpu::Buffer>> transient_buffers_;

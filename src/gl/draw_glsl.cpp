@@ -391,11 +391,12 @@ void Context::draw_generic(const GenericDraw& d) {
   bind_current_values(layout, keep);
   gpu::RenderState rs = render_state(false);
   rs.primitive_restart = restart;
-  run_program(layout, call, rs);
+  run_program(executable_run(), layout, call, rs);
   for (auto& b : keep) keep_until_finished(std::move(b));
 }
 
-void Context::draw_program_batch(const gpu::Buffer& vbuf, const gpu::DrawCall& call, gpu::RenderState rs) {
+void Context::draw_program_batch(ProgramRun run, const gpu::Buffer& vbuf, const std::vector<FFExtra>& extra,
+                                 const gpu::DrawCall& call, gpu::RenderState rs) {
   gpu::VertexLayout layout;
   constexpr uint32_t stride = sizeof(FFVertex);
   layout.attrib(glsl::kLocationVertex, vbuf, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, pos));
@@ -404,20 +405,40 @@ void Context::draw_program_batch(const gpu::Buffer& vbuf, const gpu::DrawCall& c
   layout.attrib(glsl::kLocationMultiTexCoord0, vbuf, 4, gpu::AttribType::F32, stride,
                 offsetof(FFVertex, tex));
   std::vector<std::unique_ptr<gpu::Buffer>> keep;
+  // The other coordinate sets, the secondary colour and the fog coordinate: each vertex's, or
+  // the defaults (one record for every vertex) when the batch has none.
+  static const FFExtra kDefaults = FFExtra::defaults();
+  if (extra.empty())
+    keep.push_back(std::make_unique<gpu::Buffer>(&kDefaults, sizeof kDefaults));
+  else
+    keep.push_back(std::make_unique<gpu::Buffer>(extra.data(), extra.size() * sizeof(FFExtra)));
+  const gpu::Buffer& xb = *keep.back();
+  constexpr uint32_t xstride = sizeof(FFExtra);
+  const uint32_t divisor = extra.empty() ? 0xFFFFFFFFu : 0u;  // the one record for every vertex
+  for (int i = 1; i < kMaxTexCoords; ++i)
+    layout.attrib(glsl::kLocationMultiTexCoord0 + i, xb, 4, gpu::AttribType::F32, xstride,
+                  uint32_t(offsetof(FFExtra, tex) + size_t(i - 1) * sizeof(FFExtra::tex[0])), false, divisor);
+  layout.attrib(glsl::kLocationSecondaryColor, xb, 4, gpu::AttribType::F32, xstride,
+                uint32_t(offsetof(FFExtra, secondary)), false, divisor);
+  layout.attrib(glsl::kLocationFogCoord, xb, 1, gpu::AttribType::F32, xstride,
+                uint32_t(offsetof(FFExtra, fog_coord)), false, divisor);
   bind_current_values(layout, keep);
-  run_program(layout, call, rs);
+  run_program(run, layout, call, rs);
   for (auto& b : keep) keep_until_finished(std::move(b));
 }
 
-void Context::run_program(const gpu::VertexLayout& layout, const gpu::DrawCall& call, gpu::RenderState rs) {
+void Context::run_program(ProgramRun run, const gpu::VertexLayout& layout, const gpu::DrawCall& call,
+                          gpu::RenderState rs) {
   if (!bind_draw_target()) return;
-  feed_compat_state();
-  rs.program_point_size = program_point_size;
+  feed_compat_state(run);
+  // GL_PROGRAM_POINT_SIZE is for the application's programs; fixed function's generated ones
+  // keep glPointSize's size.
+  rs.program_point_size = program_point_size && &run.program == executable.get();
   rs.depth_clamp = depth_clamp;
   std::vector<glsl::TextureBinding> units;
-  if (!texture_units_for_draw(units)) return error(GL_INVALID_OPERATION);
+  if (!texture_units_for_draw(run.program, units)) return error(GL_INVALID_OPERATION);
   const std::vector<glsl::BufferBinding> ubos = uniform_buffers_for_draw();
-  guarded([&] { executable->draw(*gpu_, layout, rs, call, units, ubos); });
+  guarded([&] { run.program.draw(*gpu_, layout, rs, call, units, ubos); });
 }
 
 namespace {
@@ -464,18 +485,16 @@ bool sampler_target(uint32_t type, TexTarget& t) {
 // The units the current program's samplers read, each with the texture of the sampler's
 // target. Two sampler types on one unit make the draw GL_INVALID_OPERATION (GL 3.3 §2.11.7);
 // an incomplete texture samples as (0, 0, 0, 1) (§3.8.14). Returns false on the error.
-bool Context::texture_units_for_draw(std::vector<glsl::TextureBinding>& units) {
+bool Context::texture_units_for_draw(const glsl::Program& program, std::vector<glsl::TextureBinding>& units) {
   units.assign(kMaxTextureUnits, glsl::TextureBinding{});
-  if (!executable) return true;
   std::array<int8_t, kMaxTextureUnits> want;
   want.fill(-1);
-  for (const glsl::Variable& v : executable->uniforms()) {
+  for (const glsl::Variable& v : program.uniforms()) {
     TexTarget target;
     if (!sampler_target(v.type, target)) continue;
     for (int e = 0; e < v.size; ++e) {
       uint32_t unit = 0;
-      if (!executable->get_uniform_words(v.location + e, &unit) || unit >= uint32_t(kMaxTextureUnits))
-        continue;
+      if (!program.get_uniform_words(v.location + e, &unit) || unit >= uint32_t(kMaxTextureUnits)) continue;
       if (want[unit] >= 0 && want[unit] != int8_t(target)) return false;
       want[unit] = int8_t(target);
     }
@@ -516,24 +535,32 @@ std::vector<glsl::BufferBinding> Context::uniform_buffers_for_draw() const {
 
 // The compatibility state GLSL 1.10-1.50 programs read (GLSL 1.20 §7.5): written to the
 // program's gl_ uniforms when it changed since the last draw with that program.
-void Context::feed_compat_state() {
-  if (core_profile || !executable) return;
+void Context::feed_compat_state(ProgramRun run) {
+  if (core_profile) return;
   CompatSnapshot now;
   now.modelview = modelview();
   now.projection = projection();
-  now.texture = matrices[2].back();
+  for (int i = 0; i < kMaxTexCoords; ++i) now.texture[size_t(i)] = texture_matrix(i);
   now.light = s.light;
   now.fog_color = s.fog.color;
   now.fog = {s.fog.density, s.fog.start, s.fog.end};
   now.point_size = s.point.size;
+  now.point = {s.point.size_min,       s.point.size_max,       s.point.fade_threshold,
+               s.point.attenuation[0], s.point.attenuation[1], s.point.attenuation[2]};
+  for (int i = 0; i < kMaxTexCoords; ++i) {
+    const TextureUnitState& u = s.units[size_t(i)];
+    now.env_color[size_t(i)] = u.env_color;
+    now.eye_plane[size_t(i)] = u.eye_plane;
+    now.object_plane[size_t(i)] = u.object_plane;
+  }
   now.depth_range = {float(s.viewport.near_), float(s.viewport.far_)};
   for (int i = 0; i < kMaxClipPlanes; ++i)
     now.clip_planes[size_t(i)] = glm::vec4(s.transform.clip_plane[size_t(i)]);
-  CompatCache& cache = compat_cache[current_program];
-  if (cache.program == executable.get() && cache.state == now) return;
-  cache.program = executable.get();
+  CompatCache& cache = run.cache;
+  if (cache.program == &run.program && cache.state == now) return;
+  cache.program = &run.program;
   cache.state = now;
-  glsl::Program& g = *executable;
+  glsl::Program& g = run.program;
   auto put = [&](const std::string& name, const float* v, int n) {
     const int loc = g.uniform_location(name);
     if (loc >= 0) g.set_uniform(loc, v, n);
@@ -541,7 +568,24 @@ void Context::feed_compat_state() {
   auto put4 = [&](const std::string& name, const glm::vec4& v) { put(name, &v[0], 4); };
   auto put1 = [&](const std::string& name, float v) { put(name, &v, 1); };
   g.set_compat_matrices(now.modelview, now.projection);
-  put("gl_TextureMatrix[0]", &now.texture[0][0], 16);
+  // GLSL 1.20 §7.5: each coordinate set's texture matrix and its derived forms, texture
+  // environment colour and coordinate generation planes.
+  for (int i = 0; i < kMaxTexCoords; ++i) {
+    const std::string n{'[', char('0' + i), ']'};
+    const glm::mat4& t = now.texture[size_t(i)];
+    const glm::mat4 inv = glm::inverse(t);
+    const glm::mat4 tr = glm::transpose(t), it = glm::transpose(inv);
+    put(std::string("gl_TextureMatrix").append(n), &t[0][0], 16);
+    put(std::string("gl_TextureMatrixInverse").append(n), &inv[0][0], 16);
+    put(std::string("gl_TextureMatrixTranspose").append(n), &tr[0][0], 16);
+    put(std::string("gl_TextureMatrixInverseTranspose").append(n), &it[0][0], 16);
+    put4(std::string("gl_TextureEnvColor").append(n), now.env_color[size_t(i)]);
+    for (int k = 0; k < 4; ++k) {
+      const char st = "STRQ"[k];
+      put4(std::string("gl_EyePlane").append(1, st).append(n), now.eye_plane[size_t(i)][size_t(k)]);
+      put4(std::string("gl_ObjectPlane").append(1, st).append(n), now.object_plane[size_t(i)][size_t(k)]);
+    }
+  }
   const LightState& L = now.light;
   for (int i = 0; i < kMaxLights; ++i) {
     const FFLight& l = L.light[size_t(i)];
@@ -586,6 +630,12 @@ void Context::feed_compat_state() {
   put1("gl_DepthRange.far", now.depth_range[1]);
   put1("gl_DepthRange.diff", now.depth_range[1] - now.depth_range[0]);
   put1("gl_Point.size", now.point_size);
+  put1("gl_Point.sizeMin", now.point[0]);
+  put1("gl_Point.sizeMax", now.point[1]);
+  put1("gl_Point.fadeThresholdSize", now.point[2]);
+  put1("gl_Point.distanceConstantAttenuation", now.point[3]);
+  put1("gl_Point.distanceLinearAttenuation", now.point[4]);
+  put1("gl_Point.distanceQuadraticAttenuation", now.point[5]);
   put4("gl_Fog.color", now.fog_color);
   put1("gl_Fog.density", now.fog[0]);
   put1("gl_Fog.start", now.fog[1]);

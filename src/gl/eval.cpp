@@ -115,19 +115,19 @@ void emit_evaluated(Context& c, const double* vertex, int vk, const double* colo
                     const double* tex, int tk) {
   if (!c.in_begin || !vertex) return;
   CurrentState& cur = c.s.current;
-  const glm::vec4 old_color = cur.color, old_tex = cur.tex;
+  const glm::vec4 old_color = cur.color, old_tex = cur.tex[0];
   const glm::vec3 old_normal = cur.normal;
   if (color) cur.color = glm::vec4(float(color[0]), float(color[1]), float(color[2]), float(color[3]));
   if (normal) cur.normal = glm::vec3(float(normal[0]), float(normal[1]), float(normal[2]));
   if (tex) {
     glm::vec4 t(0.0f, 0.0f, 0.0f, 1.0f);
     for (int i = 0; i < tk; ++i) t[i] = float(tex[i]);
-    cur.tex = t;
+    cur.tex[0] = t;  // evaluators give the coordinates of set 0, as Mesa's do
   }
   c.vertex(float(vertex[0]), float(vertex[1]), float(vertex[2]), vk == 4 ? float(vertex[3]) : 1.0f);
   cur.color = old_color;
   cur.normal = old_normal;
-  cur.tex = old_tex;
+  cur.tex[0] = old_tex;
 }
 
 // The highest-numbered enabled texture-coordinate map (§5.1: only one is used).

@@ -31,8 +31,7 @@ void Context::pass_through(float token) {
   feedback_value(token);
 }
 
-void Context::feedback_primitives(PrimClass cls, const std::vector<FFVertex>& verts,
-                                  const std::vector<uint32_t>& idx) {
+void Context::feedback_primitives(PrimClass cls, const FFVertices& verts, const std::vector<uint32_t>& idx) {
   TextureObject* tex = texture_for_draw();
   FFUniforms u;
   build_uniforms(u, tex);

@@ -32,6 +32,28 @@ struct FFVertex {
 };
 static_assert(sizeof(FFVertex) == 16 * sizeof(float));
 
+// The texture coordinate sets (GL_MAX_TEXTURE_COORDS) and fixed-function texture units
+// (GL_MAX_TEXTURE_UNITS) of the compatibility context, as Mesa has them.
+inline constexpr int kMaxTexCoords = 8;
+
+// The attributes of a vertex beyond FFVertex's, carried only by draws that have them (GL 1.3
+// multitexture §2.7, GL 1.4 secondary colour and fog coordinate): the texture coordinates of
+// sets 1 to 7, the secondary colour and the fog coordinate.
+struct FFExtra {
+  float tex[kMaxTexCoords - 1][4];
+  float secondary[4];
+  float fog_coord;
+  float pad_[3];
+  // The values of a vertex given none of these: GL 2.1 Table 6.5's initial current values.
+  static FFExtra defaults() {
+    FFExtra e{};
+    for (auto& t : e.tex) t[3] = 1.0f;
+    e.secondary[3] = 1.0f;
+    return e;
+  }
+};
+static_assert(sizeof(FFExtra) == 36 * sizeof(float));
+
 enum class TexEnv : uint8_t { Modulate, Replace, Decal, Blend, Add };
 // The base internal format of a GL 1.x texture (what the environment tables distinguish).
 enum class BaseFormat : uint8_t { Alpha, Luminance, LuminanceAlpha, Intensity, RGB, RGBA };

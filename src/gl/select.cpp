@@ -86,8 +86,7 @@ void Context::select_hit(float z) {
 
 // The primitives of one emission, tested instead of drawn: culled as they would be, clipped
 // against the view volume and the user planes; what is left is a hit at its window depths.
-void Context::select_primitives(PrimClass cls, const std::vector<FFVertex>& verts,
-                                const std::vector<uint32_t>& idx) {
+void Context::select_primitives(PrimClass cls, const FFVertices& verts, const std::vector<uint32_t>& idx) {
   const glm::mat4& mv = modelview();
   const glm::mat4 mvp = projection() * mv;
   const size_t per = cls == PrimClass::Points ? 1 : cls == PrimClass::Lines ? 2 : 3;

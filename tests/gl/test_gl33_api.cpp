@@ -443,8 +443,6 @@ TEST_F(GL33CoreTest, ErrorsOfDrawsBuffersBindingsQueriesSyncsAndFramebuffers) {
   EXPECT_GL(glUseProgram(999), GL_INVALID_VALUE);
 }
 
-#undef EXPECT_GL
-
 TEST_F(GL33Test, CompatibilityKeepsTheRemovedCalls) {
   glMatrixMode(GL_PROJECTION);
   EXPECT_EQ(get_int(GL_MATRIX_MODE), GL_PROJECTION);
@@ -706,6 +704,286 @@ TEST_F(GL33Test, CompatibilityProgramDrawsImmediateMode) {
   EXPECT_EQ(px[2], 255);
 }
 
+// GL 1.3 multitexture and GL 1.4 vertex attributes in a compatibility context: eight texture
+// coordinate sets, each with its current value, client array and texture matrix stack, and
+// the secondary colour and fog coordinate, all reaching GLSL 1.20's built-ins.
+TEST_F(GL33Test, TextureCoordinateSetsSecondaryColourAndFogCoordReachGlsl) {
+  EXPECT_EQ(get_int(GL_MAX_TEXTURE_COORDS), 8);
+  EXPECT_EQ(get_int(GL_MAX_TEXTURE_UNITS), 8);
+  glMultiTexCoord4f(GL_TEXTURE3, 0.1f, 0.2f, 0.3f, 0.4f);
+  EXPECT_GL(glMultiTexCoord2f(GL_TEXTURE8, 9.0f, 9.0f), GL_INVALID_ENUM);
+  EXPECT_GL(glClientActiveTexture(GL_TEXTURE8), GL_INVALID_ENUM);
+  GLfloat v[4] = {};
+  glGetFloatv(GL_CURRENT_TEXTURE_COORDS, v);
+  EXPECT_EQ(v[0], 0.0f);  // set 0 untouched
+  glActiveTexture(GL_TEXTURE3);
+  glGetFloatv(GL_CURRENT_TEXTURE_COORDS, v);
+  EXPECT_EQ(v[1], 0.2f);
+  EXPECT_EQ(v[3], 0.4f);
+  // One texture matrix stack per set.
+  glMatrixMode(GL_TEXTURE);
+  glPushMatrix();
+  glTranslatef(3.0f, 0.0f, 0.0f);
+  EXPECT_EQ(get_int(GL_TEXTURE_STACK_DEPTH), 2);
+  GLfloat m[16];
+  glGetFloatv(GL_TEXTURE_MATRIX, m);
+  EXPECT_EQ(m[12], 3.0f);
+  glActiveTexture(GL_TEXTURE0);
+  EXPECT_EQ(get_int(GL_TEXTURE_STACK_DEPTH), 1);
+  glGetFloatv(GL_TEXTURE_MATRIX, m);
+  EXPECT_EQ(m[12], 0.0f);
+  // A unit past GL_MAX_TEXTURE_COORDS has no matrix (Mesa: GL_INVALID_OPERATION).
+  glActiveTexture(GL_TEXTURE12);
+  EXPECT_GL(glMatrixMode(GL_TEXTURE), GL_INVALID_OPERATION);
+  glActiveTexture(GL_TEXTURE3);
+  glPopMatrix();
+  glLoadIdentity();
+  glActiveTexture(GL_TEXTURE0);
+  glSecondaryColor3ub(0, 191, 0);
+  glGetFloatv(GL_CURRENT_SECONDARY_COLOR, v);
+  EXPECT_FLOAT_EQ(v[1], 191.0f / 255.0f);
+  EXPECT_EQ(v[3], 1.0f);
+  glFogCoordf(0.25f);
+  glGetFloatv(GL_CURRENT_FOG_COORD, v);
+  EXPECT_EQ(v[0], 0.25f);
+  ASSERT_EQ(err(), GLenum(GL_NO_ERROR));
+
+  GLuint p = program(
+      "#version 120\nvarying float f;\n"
+      "void main() {\n"
+      "  gl_TexCoord[1] = gl_TextureMatrix[1] * gl_MultiTexCoord1;\n"
+      "  gl_TexCoord[5] = gl_MultiTexCoord5;\n"
+      "  gl_FrontSecondaryColor = gl_SecondaryColor;\n"
+      "  f = gl_FogCoord;\n"
+      "  gl_Position = ftransform();\n"
+      "}\n",
+      "#version 120\nvarying float f;\n"
+      "void main() {\n"
+      "  gl_FragColor = vec4(gl_TexCoord[1].x, gl_TexCoord[5].y, gl_SecondaryColor.g, f);\n"
+      "}\n");
+  glUseProgram(p);
+  ASSERT_EQ(err(), GLenum(GL_NO_ERROR));
+  auto quad = [] {
+    glBegin(GL_QUADS);
+    glVertex2f(-1, -1);
+    glVertex2f(1, -1);
+    glVertex2f(1, 1);
+    glVertex2f(-1, 1);
+    glEnd();
+  };
+  // Immediate mode: set 1 through its texture matrix, set 5 as given.
+  glActiveTexture(GL_TEXTURE1);
+  glMatrixMode(GL_TEXTURE);
+  glTranslatef(0.25f, 0.0f, 0.0f);
+  glActiveTexture(GL_TEXTURE0);
+  glMatrixMode(GL_MODELVIEW);
+  glMultiTexCoord2f(GL_TEXTURE1, 0.25f, 0.0f);
+  glMultiTexCoord2f(GL_TEXTURE5, 0.0f, 0.75f);
+  glSecondaryColor3f(0.0f, 0.5f, 0.0f);
+  glFogCoordf(1.0f);
+  quad();
+  auto px = centre();
+  EXPECT_NEAR(px[0], 128, 1);  // 0.25 + 0.25
+  EXPECT_NEAR(px[1], 191, 1);
+  EXPECT_NEAR(px[2], 128, 1);
+  EXPECT_EQ(px[3], 255);
+
+  // The defaults again: (0, 0, 0, 1) and a fog coordinate of 0 (set 1's matrix still adds 0.25).
+  glMultiTexCoord4f(GL_TEXTURE1, 0, 0, 0, 1);
+  glMultiTexCoord4f(GL_TEXTURE5, 0, 0, 0, 1);
+  glSecondaryColor3f(0, 0, 0);
+  glFogCoordf(0);
+  quad();
+  px = centre();
+  EXPECT_NEAR(px[0], 64, 1);
+  EXPECT_EQ(px[1], 0);
+  EXPECT_EQ(px[2], 0);
+  EXPECT_EQ(px[3], 0);
+
+  // Client arrays of two sets (chosen with glClientActiveTexture), the secondary colour and
+  // fog coordinate arrays, through glDrawArrays.
+  const GLfloat pos[8] = {-1, -1, 1, -1, 1, 1, -1, 1};
+  const GLfloat set1[8] = {0.5f, 0, 0.5f, 0, 0.5f, 0, 0.5f, 0};
+  const GLfloat set5[8] = {0, 0.25f, 0, 0.25f, 0, 0.25f, 0, 0.25f};
+  const GLubyte sec[12] = {0, 255, 0, 0, 255, 0, 0, 255, 0, 0, 255, 0};
+  const GLfloat fog[4] = {0.5f, 0.5f, 0.5f, 0.5f};
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(2, GL_FLOAT, 0, pos);
+  glClientActiveTexture(GL_TEXTURE1);
+  glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+  glTexCoordPointer(2, GL_FLOAT, 0, set1);
+  glClientActiveTexture(GL_TEXTURE5);
+  glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+  glTexCoordPointer(2, GL_FLOAT, 0, set5);
+  EXPECT_EQ(get_int(GL_CLIENT_ACTIVE_TEXTURE), GL_TEXTURE5);
+  glClientActiveTexture(GL_TEXTURE0);
+  EXPECT_FALSE(glIsEnabled(GL_TEXTURE_COORD_ARRAY));
+  glEnableClientState(GL_SECONDARY_COLOR_ARRAY);
+  glSecondaryColorPointer(3, GL_UNSIGNED_BYTE, 0, sec);
+  glEnableClientState(GL_FOG_COORD_ARRAY);
+  glFogCoordPointer(GL_FLOAT, 0, fog);
+  EXPECT_GL(glSecondaryColorPointer(2, GL_FLOAT, 0, sec), GL_INVALID_VALUE);
+  EXPECT_GL(glFogCoordPointer(GL_INT, 0, fog), GL_INVALID_ENUM);
+  glDrawArrays(GL_QUADS, 0, 4);
+  px = centre();
+  EXPECT_NEAR(px[0], 191, 1);  // 0.5 + 0.25
+  EXPECT_NEAR(px[1], 64, 1);
+  EXPECT_EQ(px[2], 255);
+  EXPECT_NEAR(px[3], 128, 1);
+  glDisableClientState(GL_SECONDARY_COLOR_ARRAY);
+  glDisableClientState(GL_FOG_COORD_ARRAY);
+  glClientActiveTexture(GL_TEXTURE1);
+  glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+  glClientActiveTexture(GL_TEXTURE5);
+  glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+
+  // A display list keeps the coordinate sets it was given.
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glMultiTexCoord2f(GL_TEXTURE1, 0.0f, 0.0f);
+  glMultiTexCoord2f(GL_TEXTURE5, 0.0f, 1.0f);
+  glSecondaryColor3f(0.0f, 0.25f, 0.0f);
+  glFogCoordf(0.75f);
+  quad();
+  glEndList();
+  glMultiTexCoord2f(GL_TEXTURE5, 0.0f, 0.0f);
+  glCallList(list);
+  px = centre();
+  EXPECT_NEAR(px[0], 64, 1);
+  EXPECT_EQ(px[1], 255);
+  EXPECT_NEAR(px[2], 64, 1);
+  EXPECT_NEAR(px[3], 191, 1);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+}
+
+// The GL 1.3-2.0 fixed-function texture state: targets enabled per unit, the combine
+// environment, the unit LOD bias, point sprite coordinates, the colour sum and fog coordinate
+// switches, with the errors GL 2.1 §3.8.13, §2.12.4 and §3.10 name; each error changes nothing.
+TEST_F(GL33Test, FixedFunctionTextureStateAndErrors) {
+  glActiveTexture(GL_TEXTURE2);
+  glEnable(GL_TEXTURE_CUBE_MAP);
+  glEnable(GL_TEXTURE_3D);
+  glEnable(GL_TEXTURE_1D);
+  EXPECT_TRUE(glIsEnabled(GL_TEXTURE_CUBE_MAP));
+  EXPECT_TRUE(glIsEnabled(GL_TEXTURE_3D));
+  EXPECT_TRUE(glIsEnabled(GL_TEXTURE_1D));
+  EXPECT_FALSE(glIsEnabled(GL_TEXTURE_2D));
+  glActiveTexture(GL_TEXTURE0);
+  EXPECT_FALSE(glIsEnabled(GL_TEXTURE_CUBE_MAP));  // per unit
+  glPushAttrib(GL_ENABLE_BIT);
+  glEnable(GL_COLOR_SUM);
+  glEnable(GL_POINT_SPRITE);
+  EXPECT_TRUE(glIsEnabled(GL_COLOR_SUM));
+  glPopAttrib();
+  EXPECT_FALSE(glIsEnabled(GL_COLOR_SUM));
+  EXPECT_FALSE(glIsEnabled(GL_POINT_SPRITE));
+
+  // Coordinate generation: the cube map modes are not for Q.
+  glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);
+  EXPECT_GL(glTexGeni(GL_Q, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP), GL_INVALID_ENUM);
+  EXPECT_GL(glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP), GL_INVALID_ENUM);
+  GLint v = 0;
+  glGetTexGeniv(GL_R, GL_TEXTURE_GEN_MODE, &v);
+  EXPECT_EQ(v, GL_REFLECTION_MAP);
+
+  // GL_COMBINE: the initial values (GL 2.1 Table 6.21), then sets and their errors.
+  GLint e = 0;
+  glGetTexEnviv(GL_TEXTURE_ENV, GL_SRC2_RGB, &e);
+  EXPECT_EQ(e, GL_CONSTANT);
+  glGetTexEnviv(GL_TEXTURE_ENV, GL_OPERAND2_RGB, &e);
+  EXPECT_EQ(e, GL_SRC_ALPHA);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_DOT3_RGBA);
+  glTexEnvi(GL_TEXTURE_ENV, GL_SRC1_ALPHA, GL_TEXTURE5);
+  glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND1_RGB, GL_ONE_MINUS_SRC_ALPHA);
+  glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, 4.0f);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  EXPECT_GL(glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_DOT3_RGB), GL_INVALID_ENUM);
+  EXPECT_GL(glTexEnvi(GL_TEXTURE_ENV, GL_SRC0_RGB, GL_TEXTURE8), GL_INVALID_ENUM);
+  EXPECT_GL(glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA, GL_SRC_COLOR), GL_INVALID_ENUM);
+  EXPECT_GL(glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, 3.0f), GL_INVALID_VALUE);
+  EXPECT_GL(glTexEnvf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, 0.5f), GL_INVALID_VALUE);
+  EXPECT_GL(glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_SUBTRACT), GL_INVALID_ENUM);
+  glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &e);
+  EXPECT_EQ(e, GL_COMBINE);
+  glGetTexEnviv(GL_TEXTURE_ENV, GL_COMBINE_RGB, &e);
+  EXPECT_EQ(e, GL_DOT3_RGBA);
+  glGetTexEnviv(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, &e);
+  EXPECT_EQ(e, GL_MODULATE);
+  glGetTexEnviv(GL_TEXTURE_ENV, GL_SRC1_ALPHA, &e);
+  EXPECT_EQ(e, GL_TEXTURE5);
+  glGetTexEnviv(GL_TEXTURE_ENV, GL_SRC0_RGB, &e);
+  EXPECT_EQ(e, GL_TEXTURE);
+  glGetTexEnviv(GL_TEXTURE_ENV, GL_OPERAND1_RGB, &e);
+  EXPECT_EQ(e, GL_ONE_MINUS_SRC_ALPHA);
+  GLfloat f = 0.0f;
+  glGetTexEnvfv(GL_TEXTURE_ENV, GL_RGB_SCALE, &f);
+  EXPECT_EQ(f, 4.0f);
+  glGetTexEnvfv(GL_TEXTURE_ENV, GL_ALPHA_SCALE, &f);
+  EXPECT_EQ(f, 1.0f);
+
+  // The unit LOD bias and point sprite coordinates.
+  glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, -1.25f);
+  glGetTexEnvfv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, &f);
+  EXPECT_EQ(f, -1.25f);
+  EXPECT_GL(glTexEnvi(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_ENV_MODE, GL_ADD), GL_INVALID_ENUM);
+  glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE);
+  glGetTexEnviv(GL_POINT_SPRITE, GL_COORD_REPLACE, &e);
+  EXPECT_EQ(e, GL_TRUE);
+  EXPECT_GL(glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, 7), GL_INVALID_VALUE);
+
+  // The secondary colour and fog coordinate switches.
+  glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+  EXPECT_EQ(get_int(GL_LIGHT_MODEL_COLOR_CONTROL), GL_SEPARATE_SPECULAR_COLOR);
+  EXPECT_GL(glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_FOG), GL_INVALID_ENUM);
+  EXPECT_EQ(get_int(GL_LIGHT_MODEL_COLOR_CONTROL), GL_SEPARATE_SPECULAR_COLOR);
+  glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD);
+  EXPECT_EQ(get_int(GL_FOG_COORD_SRC), GL_FOG_COORD);
+  EXPECT_GL(glFogi(GL_FOG_COORD_SRC, GL_LINEAR), GL_INVALID_ENUM);
+  EXPECT_EQ(get_int(GL_FOG_COORD_SRC), GL_FOG_COORD);
+}
+
+// A combine environment draws what GL 1.3 Table 3.25 computes: two units, ADD_SIGNED of unit
+// 0's texel and the constant colour scaled by 2, then SUBTRACT of unit 1's texel.
+TEST_F(GL33Test, CombineEnvironmentComputesTable325) {
+  glMatrixMode(GL_PROJECTION);
+  glOrtho(-1, 1, -1, 1, -1, 1);
+  const GLubyte texel0[4] = {153, 51, 204, 255}, texel1[4] = {51, 51, 0, 255};  // 0.6 0.2 0.8; 0.2 0.2 0
+  GLuint t[2];
+  glGenTextures(2, t);
+  const GLubyte* texels[2] = {texel0, texel1};
+  for (int u = 0; u < 2; ++u) {
+    glActiveTexture(GL_TEXTURE0 + GLenum(u));
+    glBindTexture(GL_TEXTURE_2D, t[u]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels[u]);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+  }
+  const GLfloat constant[4] = {0.25f, 0.5f, 0.0f, 1.0f};
+  glActiveTexture(GL_TEXTURE0);
+  glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, constant);
+  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_ADD_SIGNED);
+  glTexEnvi(GL_TEXTURE_ENV, GL_SRC1_RGB, GL_CONSTANT);
+  glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, 2.0f);
+  glActiveTexture(GL_TEXTURE1);
+  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_SUBTRACT);
+  glTexEnvi(GL_TEXTURE_ENV, GL_SRC0_RGB, GL_PREVIOUS);
+  glTexEnvi(GL_TEXTURE_ENV, GL_SRC1_RGB, GL_TEXTURE);
+  glBegin(GL_QUADS);
+  glVertex2f(-1, -1);
+  glVertex2f(1, -1);
+  glVertex2f(1, 1);
+  glVertex2f(-1, 1);
+  glEnd();
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  // Unit 0: 2 * (t0 + k - 0.5) = (0.7, 0.4, 0.6); unit 1: minus t1 = (0.5, 0.2, 0.6).
+  const auto px = centre();
+  EXPECT_NEAR(px[0], 128, 1);
+  EXPECT_NEAR(px[1], 51, 1);
+  EXPECT_NEAR(px[2], 153, 1);
+}
+
 // Random calls of the 3.3 families with random arguments: never a crash or a sanitizer report.
 // A core context, where every pointer argument is an offset into a buffer object: in a
 // compatibility context a bad client pointer is the program's own fault, in any GL.
@@ -840,7 +1118,7 @@ TEST_F(GL33Test, RestatedCallsAndSeparateStencil) {
   glGetFloatv(GL_CURRENT_TEXTURE_COORDS, tc);
   EXPECT_EQ(tc[0], 0.25f);
   EXPECT_EQ(tc[3], 1.0f);
-  glMultiTexCoord2f(GL_TEXTURE1, 1.0f, 1.0f);  // GL_MAX_TEXTURE_COORDS is 1
+  glMultiTexCoord2f(GL_TEXTURE8, 1.0f, 1.0f);  // GL_MAX_TEXTURE_COORDS is 8
   EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
 
   // x = 1023 (1.0), y = 0, z = 512 (~0.5), w = 3 (1.0), unsigned normalized.
