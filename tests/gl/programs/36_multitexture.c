@@ -13,8 +13,7 @@
  * Bottom right: GL_NORMAL_MAP coordinates on a torus, unit 0 the cube map, unit 1 the 1D
  * gradient from GL_EYE_LINEAR coordinates (GL_MODULATE).
  * Nearest filtering for the cube map (its face edges), linear without mipmaps elsewhere. */
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/glext.h>
+#define GL_GLEXT_PROTOTYPES 1 /* GL/gl.h then declares the GL 1.4 calls of GL/glext.h */
 #include <GL/glut.h>
 
 enum { T_CHECK, T_LIGHT, T_GRAD, T_CUBE, T_VOL, T_RGBA, T_COUNT };
