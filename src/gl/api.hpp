@@ -108,6 +108,11 @@ GLuint fresh_name(const Map& used, GLuint& next) {
   return next++;
 }
 
+// An enum given as a number (glTexParameterf, glFogf, glTexEnvf ...): values that are not a
+// GLenum (negative, too large, NaN) become one no switch accepts, without the undefined
+// float-to-unsigned conversion.
+inline GLenum enum_arg(double v) { return v >= 0.0 && v <= 4294967295.0 ? GLenum(v) : GLenum(0xFFFFFFFFu); }
+
 inline bool is_finite4(float a, float b, float c, float d) {
   return std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && std::isfinite(d);
 }

@@ -365,6 +365,9 @@ void GLAPIENTRY glBindBufferRange(GLenum target, GLuint index, GLuint name, GLin
                                   GLsizeiptr size) {
   GL_CONTEXT();
   GL_OUTSIDE_BEGIN();
+  // Transform feedback has no binding points in Tessel (GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS
+  // is 0: it has no transform feedback), so every index is out of range (GL 3.3 §2.16).
+  if (target == GL_TRANSFORM_FEEDBACK_BUFFER) return c.error(GL_INVALID_VALUE);
   if (target != GL_UNIFORM_BUFFER) return c.error(GL_INVALID_ENUM);
   if (index >= GLuint(kMaxUniformBufferBindings)) return c.error(GL_INVALID_VALUE);
   if (name != 0 && (size <= 0 || offset < 0 || offset % 16 != 0)) return c.error(GL_INVALID_VALUE);

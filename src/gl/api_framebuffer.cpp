@@ -72,7 +72,10 @@ void attach_texture(Context& c, GLenum target, GLenum attachment, GLenum textarg
   Attachment n;
   if (texture != 0) {
     auto it = c.textures.find(texture);
-    if (it == c.textures.end() || !it->second) return c.error(GL_INVALID_OPERATION);
+    // Not a texture object: glFramebufferTexture names it GL_INVALID_VALUE (GL 3.3 §4.4.2), the
+    // target-specific calls GL_INVALID_OPERATION.
+    if (it == c.textures.end() || !it->second)
+      return c.error(dims == 0 ? GL_INVALID_VALUE : GL_INVALID_OPERATION);
     const TextureRef& t = it->second;
     n.type = GL_TEXTURE;
     n.texture = t;
@@ -97,12 +100,15 @@ void attach_texture(Context& c, GLenum target, GLenum attachment, GLenum textarg
         break;
       case 3:
         if (textarget != GL_TEXTURE_3D || t->target != TexTarget::T3D) return c.error(GL_INVALID_OPERATION);
+        if (layer < 0 || layer >= kMax3DTextureSize) return c.error(GL_INVALID_VALUE);
         break;
       case 4:  // glFramebufferTextureLayer
         if (t->target != TexTarget::T3D && t->target != TexTarget::T1DArray &&
             t->target != TexTarget::T2DArray)
           return c.error(GL_INVALID_OPERATION);
-        if (layer < 0) return c.error(GL_INVALID_VALUE);
+        // §4.4.2: the layer below MAX_3D_TEXTURE_SIZE or MAX_ARRAY_TEXTURE_LAYERS.
+        if (layer < 0 || layer >= (t->target == TexTarget::T3D ? kMax3DTextureSize : kMaxArrayTextureLayers))
+          return c.error(GL_INVALID_VALUE);
         break;
       case 0:  // glFramebufferTexture: layered for 3D, array and cube textures
         if (t->target == TexTarget::Buffer) return c.error(GL_INVALID_OPERATION);
@@ -295,6 +301,16 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
     return c.error(GL_INVALID_OPERATION);
   if (!c.read_framebuffer_complete() || !c.draw_framebuffer_complete())
     return c.error(GL_INVALID_FRAMEBUFFER_OPERATION);
+  // §4.3.2: a multisample read framebuffer is resolved only into a rectangle of its own size,
+  // and into a multisample draw framebuffer only of the same sample count.
+  const int read_samples = c.read_fbo ? c.read_fbo->samples() : 0;
+  const int draw_samples = c.draw_fbo ? c.draw_fbo->samples() : 0;
+  if (read_samples > 0) {
+    const bool same_size =
+        std::abs(sx1 - sx0) == std::abs(dx1 - dx0) && std::abs(sy1 - sy0) == std::abs(dy1 - dy0);
+    if (!same_size || (draw_samples > 0 && draw_samples != read_samples))
+      return c.error(GL_INVALID_OPERATION);
+  }
   c.touch();
   if (!c.bind_draw_target()) return;
   c.finish();

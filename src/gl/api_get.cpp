@@ -123,7 +123,28 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_MAX_VARYING_COMPONENTS:  // == GL_MAX_VARYING_FLOATS
     case GL_MAX_VERTEX_OUTPUT_COMPONENTS:
     case GL_MAX_FRAGMENT_INPUT_COMPONENTS: return n(64), true;
-    case GL_MAX_DUAL_SOURCE_DRAW_BUFFERS: return n(0), true;
+    // What Tessel does not have reports none: dual-source blending, transform feedback,
+    // geometry shaders, multisample textures and sample masks (docs/gl-coverage.md).
+    case GL_MAX_DUAL_SOURCE_DRAW_BUFFERS:
+    case GL_MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS:
+    case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS:
+    case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS:
+    case GL_MAX_GEOMETRY_OUTPUT_VERTICES:
+    case GL_MAX_COLOR_TEXTURE_SAMPLES:
+    case GL_MAX_DEPTH_TEXTURE_SAMPLES:
+    case GL_MAX_SAMPLE_MASK_WORDS:
+    case GL_TRANSFORM_FEEDBACK_BUFFER_BINDING:
+    case GL_TEXTURE_BINDING_2D_MULTISAMPLE:
+    case GL_TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY:
+    case GL_MAX_SERVER_WAIT_TIMEOUT: return n(0), true;  // glWaitSync returns at once
+    case GL_MAX_INTEGER_SAMPLES: return n(kMaxSamples), true;
+    // Multisample renderbuffers are stored (and drawn) single-sampled; GL_SAMPLES says what
+    // the framebuffer was given (GL 3.3 §4.4.2), as blits and reads check it.
+    case GL_SAMPLE_BUFFERS: return n(c.draw_fbo && c.draw_fbo->samples() > 0 ? 1 : 0), true;
+    case GL_SAMPLES: return n(c.draw_fbo ? c.draw_fbo->samples() : 0), true;
+    case GL_SAMPLE_COVERAGE_VALUE: return n(1.0), true;
+    case GL_SAMPLE_COVERAGE_INVERT: return b(false), true;
+    case GL_PROVOKING_VERTEX: return n(GL_LAST_VERTEX_CONVENTION), true;
     case GL_MIN_PROGRAM_TEXEL_OFFSET: return n(-8), true;
     case GL_MAX_PROGRAM_TEXEL_OFFSET: return n(7), true;
     case GL_MAX_CLIP_DISTANCES: return n(kMaxClipPlanes), true;
@@ -292,12 +313,10 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_DEPTH_TEST: b(s.depth.test); return true;
     case GL_DEPTH_FUNC: e(s.depth.func); return true;
     case GL_BLEND: b(s.color.blend[0]); return true;
-    case GL_BLEND_SRC:  // == GL_BLEND_SRC_RGB
-      e(s.color.blend_src);
-      return true;
-    case GL_BLEND_DST:  // == GL_BLEND_DST_RGB
-      e(s.color.blend_dst);
-      return true;
+    case GL_BLEND_SRC:
+    case GL_BLEND_SRC_RGB: e(s.color.blend_src); return true;
+    case GL_BLEND_DST:
+    case GL_BLEND_DST_RGB: e(s.color.blend_dst); return true;
     case GL_BLEND_SRC_ALPHA: e(s.color.blend_src_alpha); return true;
     case GL_BLEND_DST_ALPHA: e(s.color.blend_dst_alpha); return true;
     case GL_BLEND_EQUATION_RGB:  // == GL_BLEND_EQUATION
@@ -469,6 +488,31 @@ void get(GLenum pname, T* out, auto convert) {
   for (size_t i = 0; i < v.v.size(); ++i) out[i] = convert(v.v[i], v.kind);
 }
 
+// Indexed state (GL 3.3 §6.1.1): the uniform buffer binding points. False, with the error
+// recorded and nothing written, for a name that is not indexed state or an index past it.
+bool indexed_value(Context& c, GLenum pname, GLuint index, GLint64& out) {
+  // The transform feedback binding points: none (see glBindBufferRange).
+  if (pname == GL_TRANSFORM_FEEDBACK_BUFFER_BINDING || pname == GL_TRANSFORM_FEEDBACK_BUFFER_START ||
+      pname == GL_TRANSFORM_FEEDBACK_BUFFER_SIZE) {
+    c.error(GL_INVALID_VALUE);
+    return false;
+  }
+  if (pname != GL_UNIFORM_BUFFER_BINDING && pname != GL_UNIFORM_BUFFER_START &&
+      pname != GL_UNIFORM_BUFFER_SIZE) {
+    c.error(GL_INVALID_ENUM);
+    return false;
+  }
+  if (index >= GLuint(kMaxUniformBufferBindings)) {
+    c.error(GL_INVALID_VALUE);
+    return false;
+  }
+  const Context::IndexedBuffer& ib = c.uniform_bindings[index];
+  out = pname == GL_UNIFORM_BUFFER_BINDING ? GLint64(ib.buffer ? ib.buffer->name : 0)
+        : pname == GL_UNIFORM_BUFFER_START ? GLint64(ib.offset)
+                                           : GLint64(ib.size);
+  return true;
+}
+
 }  // namespace
 }  // namespace tessel::gl
 
@@ -492,29 +536,22 @@ void GLAPIENTRY glGetInteger64v(GLenum pname, GLint64* out) {
     return GLint64(std::llround(x));
   });
 }
-// Indexed state (GL 3.3 §6.1.1): the uniform buffer binding points.
 void GLAPIENTRY glGetInteger64i_v(GLenum pname, GLuint index, GLint64* out) {
   GL_CONTEXT();
   GL_OUTSIDE_BEGIN();
-  if (pname != GL_UNIFORM_BUFFER_BINDING && pname != GL_UNIFORM_BUFFER_START &&
-      pname != GL_UNIFORM_BUFFER_SIZE)
-    return c.error(GL_INVALID_ENUM);
-  if (index >= GLuint(kMaxUniformBufferBindings)) return c.error(GL_INVALID_VALUE);
-  const Context::IndexedBuffer& ib = c.uniform_bindings[index];
-  if (!out) return;
-  *out = pname == GL_UNIFORM_BUFFER_BINDING ? GLint64(ib.buffer ? ib.buffer->name : 0)
-         : pname == GL_UNIFORM_BUFFER_START ? GLint64(ib.offset)
-                                            : GLint64(ib.size);
+  GLint64 v = 0;
+  if (indexed_value(c, pname, index, v) && out) *out = v;
 }
 void GLAPIENTRY glGetIntegeri_v(GLenum pname, GLuint index, GLint* out) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
   GLint64 v = 0;
-  glGetInteger64i_v(pname, index, &v);
-  if (out && current() && v == GLint64(GLint(v))) *out = GLint(v);
+  if (indexed_value(c, pname, index, v) && out) *out = GLint(v);
 }
 void GLAPIENTRY glGetBooleani_v(GLenum pname, GLuint index, GLboolean* out) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
   if (pname == GL_COLOR_WRITEMASK || pname == GL_BLEND) {
-    GL_CONTEXT();
-    GL_OUTSIDE_BEGIN();
     if (index >= GLuint(kMaxDrawBuffers)) return c.error(GL_INVALID_VALUE);
     if (!out) return;
     if (pname == GL_BLEND) {
@@ -525,8 +562,7 @@ void GLAPIENTRY glGetBooleani_v(GLenum pname, GLuint index, GLboolean* out) {
     return;
   }
   GLint64 v = 0;
-  glGetInteger64i_v(pname, index, &v);
-  if (out) *out = v != 0;
+  if (indexed_value(c, pname, index, v) && out) *out = v != 0;
 }
 void GLAPIENTRY glGetFloatv(GLenum pname, GLfloat* out) {
   get(pname, out, [](double x, Kind) { return GLfloat(x); });

@@ -155,7 +155,7 @@ void fog(Context& c, GLenum pname, Vec4Arg p) {
   FogState& f = c.s.fog;
   switch (pname) {
     case GL_FOG_MODE: {
-      const GLenum m = GLenum(p[0]);
+      const GLenum m = enum_arg(p[0]);
       if (m != GL_LINEAR && m != GL_EXP && m != GL_EXP2) return c.error(GL_INVALID_ENUM);
       c.touch();
       f.mode = m;
@@ -171,7 +171,7 @@ void fog(Context& c, GLenum pname, Vec4Arg p) {
       f.start = p[0];
       break;
     case GL_FOG_COORD_SRC: {
-      const GLenum m = GLenum(p[0]);
+      const GLenum m = enum_arg(p[0]);
       if (m != GL_FOG_COORD && m != GL_FRAGMENT_DEPTH) return c.error(GL_INVALID_ENUM);
       c.touch();
       f.coord_src = m;

@@ -303,9 +303,10 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum form
   GL_CONTEXT();
   GL_OUTSIDE_BEGIN();
   if (w < 0 || h < 0) return c.error(GL_INVALID_VALUE);
-  if (const GLenum e = check_format_type(format, type); e != GL_NO_ERROR) return c.error(e);
+  if (const GLenum e = check_format_type(format, type, c.core_profile); e != GL_NO_ERROR) return c.error(e);
   if (format == GL_COLOR_INDEX || type == GL_BITMAP) return c.error(GL_INVALID_ENUM);
   if (!c.read_framebuffer_complete()) return c.error(GL_INVALID_FRAMEBUFFER_OPERATION);
+  if (c.read_fbo && c.read_fbo->samples() > 0) return c.error(GL_INVALID_OPERATION);  // §4.3.1
   const bool depth_stencil = format == GL_DEPTH_STENCIL;
   const bool depth = format == GL_DEPTH_COMPONENT || depth_stencil, stencil = format == GL_STENCIL_INDEX;
   const tessel::gpu::Attachment a = depth || stencil ? c.read_depth() : c.read_color();
@@ -321,6 +322,8 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum form
     const size_t need =
         offset + L.offset + L.row_stride * size_t(std::max(h, 1) - 1) + L.pixel_stride * size_t(w);
     if (b.mapped || need > b.data.size() || need < offset) return c.error(GL_INVALID_OPERATION);
+    // §4.3.1: the offset a multiple of the type's size.
+    if (offset % size_t(std::max(1, type_bytes(type))) != 0) return c.error(GL_INVALID_OPERATION);
     dst = b.data.writable() + offset;
   }
   if (w == 0 || h == 0 || !dst) return;

@@ -121,6 +121,8 @@ void GLAPIENTRY glBeginQuery(GLenum target, GLuint id) {
   }
   QueryObject& q = *it->second;
   if (q.target != target) return c.error(GL_INVALID_OPERATION);
+  // §2.14: the query conditional rendering is using cannot begin again.
+  if (c.conditional_query.get() == &q) return c.error(GL_INVALID_OPERATION);
   for (const QueryObject* a : c.active_queries)
     if (a == &q) return c.error(GL_INVALID_OPERATION);
   const tessel::gpu::Stats s = settled(c);
@@ -205,6 +207,9 @@ void GLAPIENTRY glBeginConditionalRender(GLuint id, GLenum mode) {
       mode != GL_QUERY_BY_REGION_NO_WAIT)
     return c.error(GL_INVALID_ENUM);
   if (c.conditional_query) return c.error(GL_INVALID_OPERATION);
+  // GL 3.3 §2.15: a name that is not a query object (never made by glBeginQuery) is
+  // GL_INVALID_VALUE; a query of another kind, or still active, GL_INVALID_OPERATION.
+  if (id == 0 || !c.queries.count(id) || !c.queries[id]) return c.error(GL_INVALID_VALUE);
   QueryObject* q = query_of(c, id);
   if (!q || (q->target != GL_SAMPLES_PASSED && q->target != GL_ANY_SAMPLES_PASSED))
     return c.error(GL_INVALID_OPERATION);

@@ -35,7 +35,7 @@ bool valid_swizzle(GLenum s) {
 // GL_INVALID_INDEX when the name is not a sampler parameter. `rect`: a rectangle texture
 // (no mipmap filters, no repeat, §3.8.5).
 GLenum set_sampling(SamplerParams& p, GLenum pname, const Param& a, bool core, bool rect) {
-  const GLenum e = GLenum(a.v[0]);
+  const GLenum e = enum_arg(a.v[0]);
   switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
       if (e != GL_NEAREST && e != GL_LINEAR && e != GL_NEAREST_MIPMAP_NEAREST &&
@@ -124,7 +124,7 @@ void tex_parameter(Context& c, GLenum target, GLenum pname, Param a) {
     t->sampler = p;
     return;
   }
-  const GLenum v = GLenum(a.v[0]);
+  const GLenum v = enum_arg(a.v[0]);
   switch (pname) {
     case GL_TEXTURE_BASE_LEVEL:
     case GL_TEXTURE_MAX_LEVEL: {
@@ -147,9 +147,9 @@ void tex_parameter(Context& c, GLenum target, GLenum pname, Param a) {
       return;
     case GL_TEXTURE_SWIZZLE_RGBA:
       for (int k = 0; k < 4; ++k)
-        if (!valid_swizzle(GLenum(a.v[size_t(k)]))) return c.error(GL_INVALID_ENUM);
+        if (!valid_swizzle(enum_arg(a.v[size_t(k)]))) return c.error(GL_INVALID_ENUM);
       c.touch();
-      for (int k = 0; k < 4; ++k) t->swizzle[size_t(k)] = GLenum(a.v[size_t(k)]);
+      for (int k = 0; k < 4; ++k) t->swizzle[size_t(k)] = enum_arg(a.v[size_t(k)]);
       return;
     case GL_DEPTH_TEXTURE_MODE:
       if (c.core_profile) return c.error(GL_INVALID_ENUM);
@@ -328,7 +328,9 @@ bool get_level_parameter(Context& c, GLenum target, GLint level, GLenum pname, d
     c.error(GL_INVALID_ENUM);
     return false;
   }
-  if (level < 0 || level >= kMaxTextureLevels) {
+  // §6.1.3: rectangle and buffer textures have level 0 only.
+  if (level < 0 || level >= kMaxTextureLevels ||
+      ((tt == TexTarget::Rect || tt == TexTarget::Buffer) && level != 0)) {
     c.error(GL_INVALID_VALUE);
     return false;
   }

@@ -352,8 +352,9 @@ void stencil_mask(Context& c, GLenum face, GLuint m) {
 
 void clear(Context& c, GLbitfield mask) {
   GL_OUTSIDE_BEGIN();
-  if (mask &
-      ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT))
+  // The accumulation buffer is not a core-profile bit (GL 3.3 core §4.2.3).
+  const GLbitfield accum = c.core_profile ? 0 : GLbitfield(GL_ACCUM_BUFFER_BIT);
+  if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | accum))
     return c.error(GL_INVALID_VALUE);
   c.clear(mask);
   if (mask & GL_ACCUM_BUFFER_BIT) clear_accum_buffer(c);

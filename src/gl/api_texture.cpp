@@ -124,15 +124,17 @@ BlockLayout block_layout(const PixelStore& ps, GLsizei w, GLsizei h, GLsizei d, 
 
 // The memory of a transfer: the client's pointer, or the pixel unpack/pack buffer's bytes at
 // the offset `pixels` (GL 3.3 §3.7.1, §4.3.2). Null with `err` set when that buffer is mapped or
-// too small; null without an error when there is nothing to read or write.
-std::byte* transfer_memory(const BufferRef& pbo, void* pixels, size_t bytes, GLenum& err) {
+// too small, or the offset is not a multiple of the size of `type` (§3.7.2, §4.3.1); null
+// without an error when there is nothing to read or write.
+std::byte* transfer_memory(const BufferRef& pbo, void* pixels, size_t bytes, GLenum type, GLenum& err) {
   err = GL_NO_ERROR;
   if (!pbo) return static_cast<std::byte*>(pixels);
-  if (pbo->mapped) {
+  const size_t offset = reinterpret_cast<size_t>(pixels);
+  const size_t unit = size_t(std::max(1, type_bytes(type)));
+  if (pbo->mapped || offset % unit != 0) {
     err = GL_INVALID_OPERATION;
     return nullptr;
   }
-  const size_t offset = reinterpret_cast<size_t>(pixels);
   if (offset + bytes > pbo->data.size() || offset + bytes < offset) {
     err = GL_INVALID_OPERATION;
     return nullptr;
@@ -146,7 +148,8 @@ ImageRef unpack(Context& c, GLsizei w, GLsizei h, GLsizei d, bool three_d, GLenu
   if (w <= 0 || h <= 0 || d <= 0) return nullptr;
   const PixelStore& ps = c.c.unpack;
   const BlockLayout b = block_layout(ps, w, h, d, three_d, format, type);
-  const std::byte* base = transfer_memory(c.pixel_unpack_buffer, const_cast<void*>(pixels), b.bytes, err);
+  const std::byte* base =
+      transfer_memory(c.pixel_unpack_buffer, const_cast<void*>(pixels), b.bytes, type, err);
   if (!base) return nullptr;
   auto data = std::make_shared<ImageData>();
   data->px.reserve(size_t(w) * size_t(h) * size_t(d));
@@ -255,7 +258,7 @@ void tex_sub_image(Context& c, const ImageTarget& it, GLint level, GLint x, GLin
 // The entry points' common part: the checks that come before the pixels are read.
 bool image_checks(Context& c, const ImageTarget& it, GLint level, GLint internal, GLsizei w, GLsizei h,
                   GLsizei d, GLint border, GLenum format, GLenum type, TexFormat& fmt) {
-  const GLenum ft = check_format_type(format, type);
+  const GLenum ft = check_format_type(format, type, c.core_profile);
   if (ft != GL_NO_ERROR) {
     c.error(ft);
     return false;
@@ -309,7 +312,7 @@ void tex_sub_image_entry(GLenum target, int dims, GLint level, GLint x, GLint y,
   if (!c.compiling_only() && c.in_begin) return c.error(GL_INVALID_OPERATION);
   ImageTarget it;
   if (!image_target(target, dims, it) || it.proxy) return c.error(GL_INVALID_ENUM);
-  const GLenum ft = check_format_type(format, type);
+  const GLenum ft = check_format_type(format, type, c.core_profile);
   if (ft != GL_NO_ERROR) return c.error(ft);
   // The region is checked against the texture before the client's pixels are read: a region
   // larger than the image reads nothing.
@@ -348,10 +351,13 @@ void copy_tex_image(Context& c, const ImageTarget& it, GLint level, GLint intern
                     GLsizei w, GLsizei h, GLint border) {
   GL_OUTSIDE_BEGIN();
   TexFormat fmt;
-  if (!tex_format_of(internal, c.core_profile, fmt)) return c.error(GL_INVALID_VALUE);
+  if (!tex_format_of(internal, c.core_profile, fmt)) return c.error(GL_INVALID_ENUM);
   const GLenum e = check_sizes(it, level, w, h, 1, border);
   if (e != GL_NO_ERROR) return c.error(e);
   if (!c.read_framebuffer_complete()) return c.error(GL_INVALID_FRAMEBUFFER_OPERATION);
+  // §3.8.4: integer images copy only from integer colour buffers, which Tessel's framebuffers
+  // never are; nor is a multisample read framebuffer copied (§4.3.1).
+  if (fmt.integer() || (c.read_fbo && c.read_fbo->samples() > 0)) return c.error(GL_INVALID_OPERATION);
   if (!(fmt.is_depth() ? c.read_depth() : c.read_color()).texture) return c.error(GL_INVALID_OPERATION);
   auto data = std::make_shared<ImageData>();
   try {
@@ -371,6 +377,7 @@ void copy_tex_sub_image(Context& c, const ImageTarget& it, GLint level, GLint xo
     return c.error(e);
   const TextureImage& img = c.bound_texture(it.target).image(it.face, level);
   if (!c.read_framebuffer_complete()) return c.error(GL_INVALID_FRAMEBUFFER_OPERATION);
+  if (img.fmt.integer() || (c.read_fbo && c.read_fbo->samples() > 0)) return c.error(GL_INVALID_OPERATION);
   const bool depth = img.fmt.is_depth();
   if (!(depth ? c.read_depth() : c.read_color()).texture) return c.error(GL_INVALID_OPERATION);
   auto data = std::make_shared<ImageData>();
@@ -540,9 +547,10 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
   ImageTarget it;
   const bool ok = image_target(target, 1, it) || image_target(target, 2, it) || image_target(target, 3, it);
   if (!ok || it.proxy) return c.error(GL_INVALID_ENUM);
-  const GLenum ft = check_format_type(format, type);
+  const GLenum ft = check_format_type(format, type, c.core_profile);
   if (ft != GL_NO_ERROR) return c.error(ft);
   if (level < 0 || level >= kMaxTextureLevels) return c.error(GL_INVALID_VALUE);
+  if (it.target == TexTarget::Rect && level != 0) return c.error(GL_INVALID_VALUE);  // §6.1.4
   TextureObject& t = c.bound_texture(it.target);
   const TextureImage& img = t.image(it.face, level);
   if (!img.defined()) return;
@@ -553,7 +561,7 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
   const int rows = three_d ? img.height : img.height * img.depth, images = three_d ? img.depth : 1;
   const BlockLayout b = block_layout(c.c.pack, img.width, rows, images, three_d, format, type);
   GLenum err = GL_NO_ERROR;
-  std::byte* dst = transfer_memory(c.pixel_pack_buffer, pixels, b.bytes, err);
+  std::byte* dst = transfer_memory(c.pixel_pack_buffer, pixels, b.bytes, type, err);
   if (err != GL_NO_ERROR) return c.error(err);
   if (!dst) return;
   pull_rendered(c, t);

@@ -49,7 +49,7 @@ void tex_env(Context& c, GLenum target, GLenum pname, Vec4Arg p) {
   }
   if (target != GL_TEXTURE_ENV) return c.error(GL_INVALID_ENUM);
   TextureUnitState& u = c.s.unit();
-  const GLenum e = GLenum(p[0]);
+  const GLenum e = enum_arg(p[0]);
   if (pname >= GL_SRC0_RGB && pname <= GL_SRC2_RGB) {
     if (!combine_source(e)) return c.error(GL_INVALID_ENUM);
     c.touch();
@@ -77,7 +77,7 @@ void tex_env(Context& c, GLenum target, GLenum pname, Vec4Arg p) {
   }
   switch (pname) {
     case GL_TEXTURE_ENV_MODE: {
-      const GLenum m = GLenum(p[0]);
+      const GLenum m = enum_arg(p[0]);
       if (m != GL_MODULATE && m != GL_REPLACE && m != GL_DECAL && m != GL_BLEND && m != GL_ADD &&
           m != GL_COMBINE)
         return c.error(GL_INVALID_ENUM);
@@ -111,7 +111,7 @@ void tex_gen(Context& c, GLenum coord, GLenum pname, Vec4Arg p) {
   const size_t i = coord - GL_S;
   switch (pname) {
     case GL_TEXTURE_GEN_MODE: {
-      const GLenum m = GLenum(p[0]);
+      const GLenum m = enum_arg(p[0]);
       if (m != GL_OBJECT_LINEAR && m != GL_EYE_LINEAR && m != GL_SPHERE_MAP && m != GL_REFLECTION_MAP &&
           m != GL_NORMAL_MAP)
         return c.error(GL_INVALID_ENUM);

@@ -4,6 +4,8 @@
 
 #include <GL/glext.h>
 
+#include <algorithm>
+
 namespace tessel::gl {
 
 bool Attachment::image(TexFormat& fmt, int& width, int& height) const {
@@ -36,6 +38,17 @@ Attachment* FramebufferObject::point(GLenum attachment) {
   if (attachment == GL_DEPTH_ATTACHMENT) return &depth;
   if (attachment == GL_STENCIL_ATTACHMENT) return &stencil;
   return nullptr;
+}
+
+int FramebufferObject::samples() const {
+  int n = 0;
+  auto take = [&](const Attachment& a) {
+    if (a.type == GL_RENDERBUFFER && a.renderbuffer) n = std::max(n, a.renderbuffer->samples);
+  };
+  for (const Attachment& a : color) take(a);
+  take(depth);
+  take(stencil);
+  return n;
 }
 
 GLenum FramebufferObject::status() const {

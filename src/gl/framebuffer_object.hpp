@@ -50,6 +50,8 @@ struct FramebufferObject {
   Attachment* point(GLenum attachment);  // null for a name that is not an attachment point
   // GL_FRAMEBUFFER_COMPLETE or the status glCheckFramebufferStatus gives (§4.4.4.2).
   GLenum status() const;
+  // GL_SAMPLES of the framebuffer: its renderbuffers' sample count (0: single-sampled).
+  int samples() const;
 };
 using FramebufferRef = std::shared_ptr<FramebufferObject>;
 

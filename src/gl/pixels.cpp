@@ -185,6 +185,13 @@ GLenum check_format_type(GLenum format, GLenum type) {
 
 bool valid_format_type(GLenum format, GLenum type) { return check_format_type(format, type) == GL_NO_ERROR; }
 
+GLenum check_format_type(GLenum format, GLenum type, bool core) {
+  if (core && (format == GL_ALPHA || format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA ||
+               format == GL_COLOR_INDEX || type == GL_BITMAP))
+    return GL_INVALID_ENUM;
+  return check_format_type(format, type);
+}
+
 PixelLayout pixel_layout(const PixelStore& ps, int width, GLenum format, GLenum type) {
   PixelLayout L;
   const size_t n = is_packed_type(type) ? 1 : size_t(format_components(format));

@@ -30,6 +30,10 @@ bool is_packed_type(GLenum type);
 // DEPTH_STENCIL with a type that is not packed; GL_INVALID_OPERATION for a packed type whose
 // components do not match the format, and for an integer format with a float type.
 GLenum check_format_type(GLenum format, GLenum type);
+// The same for a context of `core` profile: GL 3.3 core Table 3.3 has no GL_ALPHA,
+// GL_LUMINANCE, GL_LUMINANCE_ALPHA or GL_COLOR_INDEX (Appendix E.2.2), which are
+// GL_INVALID_ENUM there (Mesa 22 accepts them; the specification is followed).
+GLenum check_format_type(GLenum format, GLenum type, bool core);
 bool valid_format_type(GLenum format, GLenum type);
 
 // Bytes between the starts of two rows of a w-pixel-wide image, and the start of the image

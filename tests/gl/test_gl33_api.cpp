@@ -943,6 +943,105 @@ TEST_F(GL33Test, FixedFunctionTextureStateAndErrors) {
   EXPECT_EQ(get_int(GL_FOG_COORD_SRC), GL_FOG_COORD);
 }
 
+// Random fixed-function states beyond the C++ shader: every one the generated GLSL program
+// covers must compile and draw without an error (a program that failed to compile would make
+// the draw GL_INVALID_OPERATION), whatever the units, targets, environments, coordinate
+// generation, lighting, fog and alpha test.
+TEST_F(GL33Test, RandomFixedFunctionStatesCompileAndDraw) {
+  std::mt19937 rng(1234);
+  auto pick = [&](std::initializer_list<GLenum> v) { return *(v.begin() + rng() % v.size()); };
+  GLuint tex[4];
+  glGenTextures(4, tex);
+  const GLubyte texel[4 * 4 * 4 * 4] = {200, 100, 50, 255};
+  glBindTexture(GL_TEXTURE_1D, tex[0]);
+  glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glBindTexture(GL_TEXTURE_2D, tex[1]);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE_ALPHA, 4, 4, 0, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE, texel);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glBindTexture(GL_TEXTURE_3D, tex[2]);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGB, 4, 4, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, texel);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, tex[3]);
+  for (int f = 0; f < 6; ++f)
+    glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(f), 0, GL_ALPHA, 4, 4, 0, GL_ALPHA, GL_UNSIGNED_BYTE,
+                 texel);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  ASSERT_EQ(err(), GLenum(GL_NO_ERROR));
+  const GLenum caps[4] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP};
+  for (int round = 0; round < 60; ++round) {
+    for (GLenum unit = 0; unit < 4; ++unit) {
+      glActiveTexture(GL_TEXTURE0 + unit);
+      for (int k = 0; k < 4; ++k) {
+        glBindTexture(caps[k], tex[k]);
+        if (rng() % 3 == 0)
+          glEnable(caps[k]);
+        else
+          glDisable(caps[k]);
+      }
+      glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE,
+                GLint(pick({GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND, GL_ADD, GL_COMBINE, GL_COMBINE})));
+      glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB,
+                GLint(pick({GL_REPLACE, GL_MODULATE, GL_ADD, GL_ADD_SIGNED, GL_INTERPOLATE, GL_SUBTRACT,
+                            GL_DOT3_RGB, GL_DOT3_RGBA})));
+      glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA,
+                GLint(pick({GL_REPLACE, GL_MODULATE, GL_ADD, GL_ADD_SIGNED, GL_INTERPOLATE, GL_SUBTRACT})));
+      for (GLenum i = 0; i < 3; ++i) {
+        const GLenum src = pick(
+            {GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR, GL_PREVIOUS, GL_TEXTURE0, GL_TEXTURE3, GL_TEXTURE7});
+        glTexEnvi(GL_TEXTURE_ENV, GL_SRC0_RGB + i, GLint(src));
+        glTexEnvi(GL_TEXTURE_ENV, GL_SRC0_ALPHA + i, GLint(src));
+        glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_RGB + i,
+                  GLint(pick({GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA})));
+        glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA + i, GLint(pick({GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA})));
+      }
+      glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, float(1 << (rng() % 3)));
+      glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, rng() % 2 ? 0.0f : 0.5f);
+      glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, GLint(rng() % 2));
+      const GLenum coords[3] = {GL_S, GL_T, GL_R};
+      for (int cc = 0; cc < 3; ++cc) {
+        glTexGeni(coords[cc], GL_TEXTURE_GEN_MODE,
+                  GLint(pick({GL_OBJECT_LINEAR, GL_EYE_LINEAR, GL_REFLECTION_MAP, GL_NORMAL_MAP,
+                              cc < 2 ? GLenum(GL_SPHERE_MAP) : GLenum(GL_EYE_LINEAR)})));
+        if (rng() % 2)
+          glEnable(GL_TEXTURE_GEN_S + GLenum(cc));
+        else
+          glDisable(GL_TEXTURE_GEN_S + GLenum(cc));
+      }
+    }
+    glActiveTexture(GL_TEXTURE0);
+    for (GLenum cap :
+         {GLenum(GL_LIGHTING), GLenum(GL_LIGHT0), GLenum(GL_LIGHT3), GLenum(GL_COLOR_MATERIAL),
+          GLenum(GL_FOG), GLenum(GL_COLOR_SUM), GLenum(GL_ALPHA_TEST), GLenum(GL_POLYGON_STIPPLE),
+          GLenum(GL_NORMALIZE), GLenum(GL_RESCALE_NORMAL), GLenum(GL_POINT_SPRITE)}) {
+      if (rng() % 2)
+        glEnable(cap);
+      else
+        glDisable(cap);
+    }
+    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GLint(pick({GL_SINGLE_COLOR, GL_SEPARATE_SPECULAR_COLOR})));
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GLint(rng() % 2));
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GLint(rng() % 2));
+    glColorMaterial(GL_FRONT_AND_BACK, pick({GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION}));
+    glFogi(GL_FOG_MODE, GLint(pick({GL_LINEAR, GL_EXP, GL_EXP2})));
+    glFogi(GL_FOG_COORD_SRC, GLint(pick({GL_FOG_COORD, GL_FRAGMENT_DEPTH})));
+    glAlphaFunc(pick({GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL}), 0.5f);
+    glShadeModel(pick({GL_FLAT, GL_SMOOTH}));
+    glBegin(pick({GL_TRIANGLES, GL_QUADS, GL_POINTS, GL_LINES}));
+    for (int v = 0; v < 4; ++v) {
+      glMultiTexCoord4f(GL_TEXTURE0 + GLenum(v), 0.2f * float(v), 0.5f, 0.3f, 1.0f);
+      glSecondaryColor3f(0.1f * float(v), 0.2f, 0.3f);
+      glFogCoordf(0.25f * float(v));
+      glNormal3f(0.0f, 0.0f, 1.0f);
+      glVertex2f(v % 3 ? 0.9f : -0.9f, v / 2 ? 0.9f : -0.9f);
+    }
+    glEnd();
+    ASSERT_EQ(err(), GLenum(GL_NO_ERROR)) << "round " << round;
+  }
+  glFinish();
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+}
+
 // A combine environment draws what GL 1.3 Table 3.25 computes: two units, ADD_SIGNED of unit
 // 0's texel and the constant colour scaled by 2, then SUBTRACT of unit 1's texel.
 TEST_F(GL33Test, CombineEnvironmentComputesTable325) {
