@@ -62,6 +62,17 @@ constexpr float sb(GLbyte v) { return (2.0f * float(v) + 1.0f) / 255.0f; }
 constexpr float ss(GLshort v) { return (2.0f * float(v) + 1.0f) / 65535.0f; }
 constexpr float si(GLint v) { return float((2.0 * double(v) + 1.0) / 4294967295.0); }
 
+// The packed fixed-function attributes (GL 3.3 compatibility §2.7, ARB_vertex_type_2_10_10_10_rev):
+// the four components of `value`, or false (GL_INVALID_ENUM recorded) for another type.
+bool unpack_p(Context& c, GLenum type, bool normalized, GLuint value, float* out) {
+  if (type != GL_INT_2_10_10_10_REV && type != GL_UNSIGNED_INT_2_10_10_10_REV) {
+    c.error(GL_INVALID_ENUM);
+    return false;
+  }
+  unpack_2_10_10_10(value, type == GL_INT_2_10_10_10_REV, normalized, out);
+  return true;
+}
+
 void attrib_p(Context& c, GLuint index, GLenum type, bool normalized, int n, GLuint value) {
   if (index >= GLuint(kMaxVertexAttribs)) return c.error(GL_INVALID_VALUE);
   if (type != GL_INT_2_10_10_10_REV && type != GL_UNSIGNED_INT_2_10_10_10_REV)
@@ -102,7 +113,86 @@ using namespace tessel::gl;
   GL_LISTED(fog_coord(c, f_)); \
   fog_coord(c, f_)
 
+// Each packed form unpacks and calls the unpacked entry point (which records itself in a
+// display list being compiled): positions and texture coordinates as integers, normals and
+// colours normalized.
+#define PACKED(normalized, value, call) \
+  GL_COMPAT_CONTEXT();                  \
+  float p_[4];                          \
+  if (unpack_p(c, type, normalized, value, p_)) call
+
 extern "C" {
+
+void GLAPIENTRY glVertexP2ui(GLenum type, GLuint v) { PACKED(false, v, glVertex2f(p_[0], p_[1])); }
+void GLAPIENTRY glVertexP2uiv(GLenum type, const GLuint* v) { PACKED(false, *v, glVertex2f(p_[0], p_[1])); }
+void GLAPIENTRY glVertexP3ui(GLenum type, GLuint v) { PACKED(false, v, glVertex3f(p_[0], p_[1], p_[2])); }
+void GLAPIENTRY glVertexP3uiv(GLenum type, const GLuint* v) {
+  PACKED(false, *v, glVertex3f(p_[0], p_[1], p_[2]));
+}
+void GLAPIENTRY glVertexP4ui(GLenum type, GLuint v) {
+  PACKED(false, v, glVertex4f(p_[0], p_[1], p_[2], p_[3]));
+}
+void GLAPIENTRY glVertexP4uiv(GLenum type, const GLuint* v) {
+  PACKED(false, *v, glVertex4f(p_[0], p_[1], p_[2], p_[3]));
+}
+void GLAPIENTRY glTexCoordP1ui(GLenum type, GLuint v) { PACKED(false, v, glTexCoord1f(p_[0])); }
+void GLAPIENTRY glTexCoordP1uiv(GLenum type, const GLuint* v) { PACKED(false, *v, glTexCoord1f(p_[0])); }
+void GLAPIENTRY glTexCoordP2ui(GLenum type, GLuint v) { PACKED(false, v, glTexCoord2f(p_[0], p_[1])); }
+void GLAPIENTRY glTexCoordP2uiv(GLenum type, const GLuint* v) {
+  PACKED(false, *v, glTexCoord2f(p_[0], p_[1]));
+}
+void GLAPIENTRY glTexCoordP3ui(GLenum type, GLuint v) { PACKED(false, v, glTexCoord3f(p_[0], p_[1], p_[2])); }
+void GLAPIENTRY glTexCoordP3uiv(GLenum type, const GLuint* v) {
+  PACKED(false, *v, glTexCoord3f(p_[0], p_[1], p_[2]));
+}
+void GLAPIENTRY glTexCoordP4ui(GLenum type, GLuint v) {
+  PACKED(false, v, glTexCoord4f(p_[0], p_[1], p_[2], p_[3]));
+}
+void GLAPIENTRY glTexCoordP4uiv(GLenum type, const GLuint* v) {
+  PACKED(false, *v, glTexCoord4f(p_[0], p_[1], p_[2], p_[3]));
+}
+void GLAPIENTRY glMultiTexCoordP1ui(GLenum unit, GLenum type, GLuint v) {
+  PACKED(false, v, glMultiTexCoord1f(unit, p_[0]));
+}
+void GLAPIENTRY glMultiTexCoordP1uiv(GLenum unit, GLenum type, const GLuint* v) {
+  PACKED(false, *v, glMultiTexCoord1f(unit, p_[0]));
+}
+void GLAPIENTRY glMultiTexCoordP2ui(GLenum unit, GLenum type, GLuint v) {
+  PACKED(false, v, glMultiTexCoord2f(unit, p_[0], p_[1]));
+}
+void GLAPIENTRY glMultiTexCoordP2uiv(GLenum unit, GLenum type, const GLuint* v) {
+  PACKED(false, *v, glMultiTexCoord2f(unit, p_[0], p_[1]));
+}
+void GLAPIENTRY glMultiTexCoordP3ui(GLenum unit, GLenum type, GLuint v) {
+  PACKED(false, v, glMultiTexCoord3f(unit, p_[0], p_[1], p_[2]));
+}
+void GLAPIENTRY glMultiTexCoordP3uiv(GLenum unit, GLenum type, const GLuint* v) {
+  PACKED(false, *v, glMultiTexCoord3f(unit, p_[0], p_[1], p_[2]));
+}
+void GLAPIENTRY glMultiTexCoordP4ui(GLenum unit, GLenum type, GLuint v) {
+  PACKED(false, v, glMultiTexCoord4f(unit, p_[0], p_[1], p_[2], p_[3]));
+}
+void GLAPIENTRY glMultiTexCoordP4uiv(GLenum unit, GLenum type, const GLuint* v) {
+  PACKED(false, *v, glMultiTexCoord4f(unit, p_[0], p_[1], p_[2], p_[3]));
+}
+void GLAPIENTRY glNormalP3ui(GLenum type, GLuint v) { PACKED(true, v, glNormal3f(p_[0], p_[1], p_[2])); }
+void GLAPIENTRY glNormalP3uiv(GLenum type, const GLuint* v) {
+  PACKED(true, *v, glNormal3f(p_[0], p_[1], p_[2]));
+}
+void GLAPIENTRY glColorP3ui(GLenum type, GLuint v) { PACKED(true, v, glColor3f(p_[0], p_[1], p_[2])); }
+void GLAPIENTRY glColorP3uiv(GLenum type, const GLuint* v) {
+  PACKED(true, *v, glColor3f(p_[0], p_[1], p_[2]));
+}
+void GLAPIENTRY glColorP4ui(GLenum type, GLuint v) { PACKED(true, v, glColor4f(p_[0], p_[1], p_[2], p_[3])); }
+void GLAPIENTRY glColorP4uiv(GLenum type, const GLuint* v) {
+  PACKED(true, *v, glColor4f(p_[0], p_[1], p_[2], p_[3]));
+}
+void GLAPIENTRY glSecondaryColorP3ui(GLenum type, GLuint v) {
+  PACKED(true, v, glSecondaryColor3f(p_[0], p_[1], p_[2]));
+}
+void GLAPIENTRY glSecondaryColorP3uiv(GLenum type, const GLuint* v) {
+  PACKED(true, *v, glSecondaryColor3f(p_[0], p_[1], p_[2]));
+}
 
 void GLAPIENTRY glSecondaryColor3b(GLbyte r, GLbyte g, GLbyte b) { SECONDARY(sb(r), sb(g), sb(b)); }
 void GLAPIENTRY glSecondaryColor3bv(const GLbyte* v) { SECONDARY(sb(v[0]), sb(v[1]), sb(v[2])); }

@@ -1042,6 +1042,37 @@ TEST_F(GL33Test, RandomFixedFunctionStatesCompileAndDraw) {
   EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
 }
 
+// The packed fixed-function attributes (GL 3.3 compatibility §2.7): colours and normals
+// normalized, positions and texture coordinates as integers; another type is GL_INVALID_ENUM
+// and changes nothing.
+TEST_F(GL33Test, PackedFixedFunctionAttributes) {
+  // x = 1023, y = 0, z = 512, w = 3 (unsigned); as signed: x = -1, z = -512, w = -1.
+  const GLuint packed = 1023u | (0u << 10) | (512u << 20) | (3u << 30);
+  glColorP4ui(GL_UNSIGNED_INT_2_10_10_10_REV, packed);
+  GLfloat v[4] = {};
+  glGetFloatv(GL_CURRENT_COLOR, v);
+  EXPECT_FLOAT_EQ(v[0], 1.0f);
+  EXPECT_FLOAT_EQ(v[2], 512.0f / 1023.0f);
+  EXPECT_FLOAT_EQ(v[3], 1.0f);
+  glMultiTexCoordP4ui(GL_TEXTURE2, GL_INT_2_10_10_10_REV, packed);
+  glActiveTexture(GL_TEXTURE2);
+  glGetFloatv(GL_CURRENT_TEXTURE_COORDS, v);
+  EXPECT_EQ(v[0], -1.0f);
+  EXPECT_EQ(v[2], -512.0f);
+  EXPECT_EQ(v[3], -1.0f);
+  glActiveTexture(GL_TEXTURE0);
+  glNormalP3ui(GL_INT_2_10_10_10_REV, 511u);  // x = 511: 1.0 signed normalized
+  glGetFloatv(GL_CURRENT_NORMAL, v);
+  EXPECT_FLOAT_EQ(v[0], 1.0f);
+  EXPECT_EQ(v[1], 0.0f);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  EXPECT_GL(glColorP3ui(GL_UNSIGNED_INT, packed), GL_INVALID_ENUM);
+  EXPECT_GL(glTexCoordP2ui(GL_FLOAT, packed), GL_INVALID_ENUM);
+  glGetFloatv(GL_CURRENT_COLOR, v);
+  EXPECT_FLOAT_EQ(v[0], 1.0f);
+  EXPECT_FLOAT_EQ(v[3], 1.0f);
+}
+
 // A combine environment draws what GL 1.3 Table 3.25 computes: two units, ADD_SIGNED of unit
 // 0's texel and the constant colour scaled by 2, then SUBTRACT of unit 1's texel.
 TEST_F(GL33Test, CombineEnvironmentComputesTable325) {
