@@ -4,8 +4,10 @@
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -142,8 +144,8 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     // the framebuffer was given (GL 3.3 §4.4.2), as blits and reads check it.
     case GL_SAMPLE_BUFFERS: return n(c.draw_fbo && c.draw_fbo->samples() > 0 ? 1 : 0), true;
     case GL_SAMPLES: return n(c.draw_fbo ? c.draw_fbo->samples() : 0), true;
-    case GL_SAMPLE_COVERAGE_VALUE: return n(1.0), true;
-    case GL_SAMPLE_COVERAGE_INVERT: return b(false), true;
+    case GL_SAMPLE_COVERAGE_VALUE: return n(c.s.color.coverage_value), true;
+    case GL_SAMPLE_COVERAGE_INVERT: return b(c.s.color.coverage_invert), true;
     case GL_PROVOKING_VERTEX: return n(GL_LAST_VERTEX_CONVENTION), true;
     case GL_MIN_PROGRAM_TEXEL_OFFSET: return n(-8), true;
     case GL_MAX_PROGRAM_TEXEL_OFFSET: return n(7), true;
@@ -478,10 +480,18 @@ bool query(Context& c, GLenum pname, Values& out) {
   }
 }
 
+// The state a core context does not have (GL 3.2 Appendix E.2.2), by value.
+constexpr GLenum kCoreRemoved[] = {
+#include "core_removed_enums.inc"
+};
+
 template <class T>
 void get(GLenum pname, T* out, auto convert) {
   GL_CONTEXT();
   GL_OUTSIDE_BEGIN();
+  // Mesa 22 still answers these in a core context; GL 3.3 core makes them GL_INVALID_ENUM.
+  if (c.core_profile && std::binary_search(std::begin(kCoreRemoved), std::end(kCoreRemoved), pname))
+    return c.error(GL_INVALID_ENUM);
   Values v;
   if (!query(c, pname, v)) return c.error(GL_INVALID_ENUM);
   if (!out) return;

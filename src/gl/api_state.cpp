@@ -4,6 +4,7 @@
 #include <GL/gl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "api.hpp"
@@ -813,6 +814,16 @@ void GLAPIENTRY glClearAccum(GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
 }
 void GLAPIENTRY glClearIndex(GLfloat) { GL_REMOVED_IN_CORE(); }
 void GLAPIENTRY glClear(GLbitfield mask) { SIMPLE(clear, mask); }
+void GLAPIENTRY glSampleCoverage(GLfloat value, GLboolean invert) {
+  GL_CONTEXT();
+  auto set = [value, invert](Context& c) {
+    GL_OUTSIDE_BEGIN();
+    c.s.color.coverage_value = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
+    c.s.color.coverage_invert = invert != GL_FALSE;
+  };
+  GL_LISTED(set(c));
+  set(c);
+}
 void GLAPIENTRY glHint(GLenum target, GLenum mode) { SIMPLE(hint, target, mode); }
 void GLAPIENTRY glDrawBuffer(GLenum b) { SIMPLE(draw_buffer, b); }
 void GLAPIENTRY glReadBuffer(GLenum b) { SIMPLE(read_buffer, b); }

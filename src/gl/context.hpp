@@ -102,6 +102,10 @@ struct ColorBufferState {
   glm::vec4 blend_color{0.0f};
   bool dither = true, logic_op = false;
   GLenum logic_op_mode = GL_COPY;
+  // glSampleCoverage (GL 3.3 §4.1.3): kept and queried; it acts on multisample buffers only,
+  // which Tessel's framebuffers do not have (they render one sample).
+  float coverage_value = 1.0f;
+  bool coverage_invert = false;
   glm::vec4 clear_color{0.0f};
   std::array<std::array<bool, 4>, kMaxDrawBuffers> color_mask = [] {
     std::array<std::array<bool, 4>, kMaxDrawBuffers> m;

@@ -179,15 +179,14 @@ TEST_F(GL33CoreTest, CoreBindsOnlyGeneratedNames) {
 // Mesa's core contexts answer; the capabilities, hints and polygon faces the core profile
 // dropped are GL_INVALID_ENUM. The same calls work in a compatibility context.
 TEST_F(GL33CoreTest, RemovedCallsAreInvalidOperationsAndChangeNothing) {
-  GLint mode = get_int(GL_MATRIX_MODE);
+  // (The state is read from the context: a core context's glGet of it is GL_INVALID_ENUM.)
+  const GLenum mode = ctx.s.transform.matrix_mode;
   glMatrixMode(GL_PROJECTION);
   EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
-  EXPECT_EQ(get_int(GL_MATRIX_MODE), mode);
-  float colour[4] = {};
+  EXPECT_EQ(ctx.s.transform.matrix_mode, mode);
   glColor4f(0.25f, 0.5f, 0.75f, 1.0f);
   EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
-  glGetFloatv(GL_CURRENT_COLOR, colour);
-  EXPECT_EQ(colour[0], 1.0f);
+  EXPECT_EQ(ctx.s.current.color[0], 1.0f);
   glBegin(GL_TRIANGLES);
   EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
   glVertex3f(0, 0, 0);
@@ -218,7 +217,10 @@ TEST_F(GL33CoreTest, RemovedCallsAreInvalidOperationsAndChangeNothing) {
   EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
   glShadeModel(GL_FLAT);
   EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
-  EXPECT_EQ(get_int(GL_SHADE_MODEL), GL_SMOOTH);
+  EXPECT_EQ(ctx.s.light.shade_model, GLenum(GL_SMOOTH));
+  int shade = 0;
+  glGetIntegerv(GL_SHADE_MODEL, &shade);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
 
   // Capabilities the core profile dropped, and the kept ones.
   for (GLenum cap : {GL_LIGHTING, GL_LIGHT0, GL_TEXTURE_2D, GL_FOG, GL_ALPHA_TEST, GL_COLOR_MATERIAL,
@@ -1045,6 +1047,21 @@ TEST_F(GL33Test, RandomFixedFunctionStatesCompileAndDraw) {
 // The packed fixed-function attributes (GL 3.3 compatibility §2.7): colours and normals
 // normalized, positions and texture coordinates as integers; another type is GL_INVALID_ENUM
 // and changes nothing.
+// glSampleCoverage is state of every GL 3.3 context (its value clamped to [0, 1]).
+TEST_F(GL33CoreTest, SampleCoverageIsKeptAndQueried) {
+  glSampleCoverage(1.5f, GL_TRUE);
+  GLfloat v = 0.0f;
+  glGetFloatv(GL_SAMPLE_COVERAGE_VALUE, &v);
+  EXPECT_EQ(v, 1.0f);
+  GLboolean inv = GL_FALSE;
+  glGetBooleanv(GL_SAMPLE_COVERAGE_INVERT, &inv);
+  EXPECT_EQ(inv, GL_TRUE);
+  glSampleCoverage(0.25f, GL_FALSE);
+  glGetFloatv(GL_SAMPLE_COVERAGE_VALUE, &v);
+  EXPECT_EQ(v, 0.25f);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+}
+
 TEST_F(GL33Test, PackedFixedFunctionAttributes) {
   // x = 1023, y = 0, z = 512, w = 3 (unsigned); as signed: x = -1, z = -512, w = -1.
   const GLuint packed = 1023u | (0u << 10) | (512u << 20) | (3u << 30);

@@ -1461,8 +1461,8 @@ TEST_F(GL33ErrorsTest, RasterizationStateErrorsChangeNothing) {
 // What GL 3.3 requires and Tessel does not have yet. Disabled, so that ctest stays green and the
 // list stays in the code: run with --gtest_also_run_disabled_tests to see where it stands.
 // Each is a whole feature (issue 15's notes): integer colour buffers, the remaining buffer
-// texture formats, multisample textures, transform feedback, dual-source blending, sample
-// masks, and the compatibility-only state that core-profile glGet should reject.
+// texture formats, multisample textures, transform feedback, dual-source blending and sample
+// masks.
 TEST_F(GL33ErrorsTest, DISABLED_IntegerColorBuffers) {
   GLubyte out[64];
   const GLuint integer = framebuffer(renderbuffer(GL_RGBA8UI));
@@ -1525,8 +1525,9 @@ TEST_F(GL33ErrorsTest, DISABLED_MinimumsOfWhatTesselLacks) {
   glDeleteTextures(1, &t);
 }
 
-TEST_F(GL33ErrorsTest, DISABLED_CoreGetsRejectCompatibilityState) {
-  // Appendix E.2.2: state the core profile removed is GL_INVALID_ENUM (Mesa answers).
+TEST_F(GL33ErrorsTest, CoreGetsRejectCompatibilityState) {
+  // Appendix E.2.2: state the core profile removed is GL_INVALID_ENUM (Mesa answers);
+  // GL_MAX_VARYING_FLOATS went, but GL_MAX_VARYING_COMPONENTS of the same value stays.
   GLint v = -7;
   GLfloat fv[4] = {-7, -7, -7, -7};
   EXPECT_GL_ERR(glGetIntegerv(GL_MAX_LIGHTS, &v), GL_INVALID_ENUM);
@@ -1534,6 +1535,8 @@ TEST_F(GL33ErrorsTest, DISABLED_CoreGetsRejectCompatibilityState) {
   EXPECT_GL_ERR(glGetIntegerv(GL_MATRIX_MODE, &v), GL_INVALID_ENUM);
   EXPECT_EQ(v, -7);
   EXPECT_EQ(fv[0], -7.0f);
+  EXPECT_GL_ERR(glGetIntegerv(GL_MAX_VARYING_COMPONENTS, &v), GL_NO_ERROR);
+  EXPECT_GL_ERR(glGetIntegerv(GL_TEXTURE_BINDING_2D, &v), GL_NO_ERROR);
 }
 
 #undef EXPECT_GL_ERR
