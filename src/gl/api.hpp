@@ -113,6 +113,17 @@ GLuint fresh_name(const Map& used, GLuint& next) {
 // float-to-unsigned conversion.
 inline GLenum enum_arg(double v) { return v >= 0.0 && v <= 4294967295.0 ? GLenum(v) : GLenum(0xFFFFFFFFu); }
 
+// Integer colour components as glColor* and glSecondaryColor* take them: to [-1, 1] or [0, 1]
+// (GL 2.1 Table 2.9).
+namespace colour_arg {
+constexpr float ub(GLubyte v) { return float(v) / 255.0f; }
+constexpr float us(GLushort v) { return float(v) / 65535.0f; }
+constexpr float ui(GLuint v) { return float(double(v) / 4294967295.0); }
+constexpr float sb(GLbyte v) { return (2.0f * float(v) + 1.0f) / 255.0f; }
+constexpr float ss(GLshort v) { return (2.0f * float(v) + 1.0f) / 65535.0f; }
+constexpr float si(GLint v) { return float((2.0 * double(v) + 1.0) / 4294967295.0); }
+}  // namespace colour_arg
+
 inline bool is_finite4(float a, float b, float c, float d) {
   return std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && std::isfinite(d);
 }

@@ -54,13 +54,7 @@ void fog_coord(Context& c, float f) {
   c.extras_touched = true;
 }
 
-// Integer colour components map to [-1, 1] or [0, 1] (GL 2.1 Table 2.9).
-constexpr float ub(GLubyte v) { return float(v) / 255.0f; }
-constexpr float us(GLushort v) { return float(v) / 65535.0f; }
-constexpr float ui(GLuint v) { return float(double(v) / 4294967295.0); }
-constexpr float sb(GLbyte v) { return (2.0f * float(v) + 1.0f) / 255.0f; }
-constexpr float ss(GLshort v) { return (2.0f * float(v) + 1.0f) / 65535.0f; }
-constexpr float si(GLint v) { return float((2.0 * double(v) + 1.0) / 4294967295.0); }
+using namespace colour_arg;
 
 // The packed fixed-function attributes (GL 3.3 compatibility §2.7, ARB_vertex_type_2_10_10_10_rev):
 // the four components of `value`, or false (GL_INVALID_ENUM recorded) for another type.

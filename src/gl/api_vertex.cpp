@@ -36,13 +36,7 @@ void set_color(Context& c, float r, float g, float b, float a) { c.s.current.col
 void set_normal(Context& c, float x, float y, float z) { c.s.current.normal = glm::vec3(x, y, z); }
 void set_tex(Context& c, float s, float t, float r, float q) { c.s.current.tex[0] = glm::vec4(s, t, r, q); }
 
-// Integer colour components map to [-1, 1] or [0, 1] (GL 2.1 Table 2.9).
-constexpr float ub(GLubyte v) { return float(v) / 255.0f; }
-constexpr float us(GLushort v) { return float(v) / 65535.0f; }
-constexpr float ui(GLuint v) { return float(double(v) / 4294967295.0); }
-constexpr float sb(GLbyte v) { return (2.0f * float(v) + 1.0f) / 255.0f; }
-constexpr float ss(GLshort v) { return (2.0f * float(v) + 1.0f) / 65535.0f; }
-constexpr float si(GLint v) { return float((2.0 * double(v) + 1.0) / 4294967295.0); }
+using namespace colour_arg;
 }  // namespace
 
 void raster_pos(Context& c, float x, float y, float z, float w) {

@@ -57,6 +57,29 @@ gpu::PolygonMode polygon_mode_of(GLenum m) {
 
 }  // namespace
 
+std::array<uint8_t, 2> color_material_track(const LightState& L) {
+  std::array<uint8_t, 2> track{};
+  if (!L.color_material) return track;
+  uint8_t bits = 0;
+  switch (L.color_material_mode) {
+    case GL_AMBIENT: bits = kTrackAmbient; break;
+    case GL_DIFFUSE: bits = kTrackDiffuse; break;
+    case GL_SPECULAR: bits = kTrackSpecular; break;
+    case GL_EMISSION: bits = kTrackEmission; break;
+    default: bits = kTrackAmbient | kTrackDiffuse; break;
+  }
+  if (L.color_material_face != GL_BACK) track[0] = bits;
+  if (L.color_material_face != GL_FRONT) track[1] = bits;
+  return track;
+}
+
+float rescale_factor(const glm::mat4& modelview) {
+  // GL 2.1 §2.11.3: f = 1 / sqrt(m31^2 + m32^2 + m33^2) of the inverse model-view matrix.
+  const glm::mat3 inv = glm::inverse(glm::mat3(modelview));
+  const float l = std::sqrt(inv[0][2] * inv[0][2] + inv[1][2] * inv[1][2] + inv[2][2] * inv[2][2]);
+  return l > 0.0f ? 1.0f / l : 1.0f;
+}
+
 // The base format the texture environment sees (GL 3.3 compatibility Table 3.25: RED and
 // RG act as RGB; depth textures as their GL_DEPTH_TEXTURE_MODE says).
 BaseFormat ff_base_format(const TextureObject& t) {
@@ -698,12 +721,7 @@ void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
   const glm::mat3 inv = glm::inverse(glm::mat3(mv));
   u.normal_matrix = glm::transpose(inv);
   u.normalize = s.transform.normalize;
-  u.rescale = 1.0f;
-  if (s.transform.rescale_normal && !s.transform.normalize) {
-    // GL 2.1 §2.11.3: f = 1 / sqrt(m31^2 + m32^2 + m33^2) of the inverse model-view matrix.
-    const float l = std::sqrt(inv[0][2] * inv[0][2] + inv[1][2] * inv[1][2] + inv[2][2] * inv[2][2]);
-    u.rescale = l > 0.0f ? 1.0f / l : 1.0f;
-  }
+  u.rescale = s.transform.rescale_normal && !s.transform.normalize ? rescale_factor(mv) : 1.0f;
   const LightState& L = s.light;
   u.lighting = L.lighting;
   if (u.lighting) {
@@ -714,19 +732,7 @@ void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
     u.light_count = 0;
     for (int i = 0; i < kMaxLights; ++i)
       if (L.enabled[size_t(i)]) u.lights[size_t(u.light_count++)] = L.light[size_t(i)];
-    u.track = {0, 0};
-    if (L.color_material) {
-      uint8_t bits = 0;
-      switch (L.color_material_mode) {
-        case GL_AMBIENT: bits = kTrackAmbient; break;
-        case GL_DIFFUSE: bits = kTrackDiffuse; break;
-        case GL_SPECULAR: bits = kTrackSpecular; break;
-        case GL_EMISSION: bits = kTrackEmission; break;
-        default: bits = kTrackAmbient | kTrackDiffuse; break;
-      }
-      if (L.color_material_face != GL_BACK) u.track[0] = bits;
-      if (L.color_material_face != GL_FRONT) u.track[1] = bits;
-    }
+    u.track = color_material_track(L);
   }
   if (tex) {
     u.sampler.texture = tex->tex2d.get();

@@ -423,6 +423,10 @@ struct FFProgramKey {
 };
 static_assert(std::has_unique_object_representations_v<FFProgramKey>);
 BaseFormat ff_base_format(const TextureObject& t);
+// The kTrack* bits of the front and back materials (glColorMaterial; none when it is off).
+std::array<uint8_t, 2> color_material_track(const LightState& L);
+// GL_RESCALE_NORMAL's factor for a model-view matrix (GL 2.1 §2.11.3).
+float rescale_factor(const glm::mat4& modelview);
 std::string ff_vertex_source(const FFProgramKey& k);
 std::string ff_fragment_source(const FFProgramKey& k);
 

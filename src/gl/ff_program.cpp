@@ -445,18 +445,7 @@ bool Context::ff_program_key(PrimClass cls, FFProgramKey& k) {
     k.separate_specular = L.separate_specular;
     for (int i = 0; i < kMaxLights; ++i)
       if (L.enabled[size_t(i)]) k.lights = uint8_t(k.lights | (1u << i));
-    if (L.color_material) {
-      uint8_t bits = 0;
-      switch (L.color_material_mode) {
-        case GL_AMBIENT: bits = kTrackAmbient; break;
-        case GL_DIFFUSE: bits = kTrackDiffuse; break;
-        case GL_SPECULAR: bits = kTrackSpecular; break;
-        case GL_EMISSION: bits = kTrackEmission; break;
-        default: bits = kTrackAmbient | kTrackDiffuse; break;
-      }
-      if (L.color_material_face != GL_BACK) k.track[0] = bits;
-      if (L.color_material_face != GL_FRONT) k.track[1] = bits;
-    }
+    k.track = color_material_track(L);
     needed |= L.separate_specular;
   }
   k.normalize = s.transform.normalize;
@@ -498,9 +487,7 @@ void Context::draw_ff_program(const FFProgramKey& k, const Batch& b, const gpu::
     p.set_uniform(p.uniform_location("ff_bias" + std::to_string(u)), &bias, 1);
   }
   if (k.rescale) {
-    const glm::mat3 inv = glm::inverse(glm::mat3(modelview()));
-    const float l = std::sqrt(inv[0][2] * inv[0][2] + inv[1][2] * inv[1][2] + inv[2][2] * inv[2][2]);
-    const float f = l > 0.0f ? 1.0f / l : 1.0f;  // GL 2.1 §2.11.3
+    const float f = rescale_factor(modelview());
     p.set_uniform(p.uniform_location("ff_rescale"), &f, 1);
   }
   if (k.alpha_func) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../../src/gl/context.hpp"
+#include "gl33_test_util.hpp"
 
 namespace {
 
@@ -32,25 +33,8 @@ struct GL33CoreTest : GL33Test {
 
 GLenum err() { return glGetError(); }
 
-GLint get_int(GLenum name) {
-  GLint v[4] = {};
-  glGetIntegerv(name, v);
-  return v[0];
-}
-
-GLuint program(const char* vs, const char* fs) {
-  GLuint p = glCreateProgram();
-  for (auto [type, src] :
-       {std::pair{GLenum(GL_VERTEX_SHADER), vs}, std::pair{GLenum(GL_FRAGMENT_SHADER), fs}}) {
-    GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &src, nullptr);
-    glCompileShader(s);
-    glAttachShader(p, s);
-    glDeleteShader(s);
-  }
-  glLinkProgram(p);
-  return p;
-}
+using gl33test::get_int;
+using gl33test::program;
 
 const char* kVs =
     "#version 330\nlayout(location = 0) in vec2 pos;\nuniform vec2 offset;\n"

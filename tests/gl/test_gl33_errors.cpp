@@ -19,6 +19,7 @@
 #include <string>
 
 #include "../../src/gl/context.hpp"
+#include "gl33_test_util.hpp"
 
 namespace {
 
@@ -41,12 +42,6 @@ namespace {
     EXPECT_TRUE(got_ == GLenum(e1) || got_ == GLenum(e2)) << #call << " gave 0x" << std::hex << got_; \
   } while (0)
 
-GLint get_int(GLenum name) {
-  GLint v[4] = {};
-  glGetIntegerv(name, v);
-  return v[0];
-}
-
 GLuint renderbuffer(GLenum format, GLsizei samples = 0) {
   GLuint r = 0;
   glGenRenderbuffers(1, &r);
@@ -66,19 +61,8 @@ GLuint framebuffer(GLuint color, GLuint depth = 0, GLenum depth_attachment = GL_
   return f;
 }
 
-GLuint program(const char* vs, const char* fs) {
-  GLuint p = glCreateProgram();
-  for (auto [type, src] :
-       {std::pair{GLenum(GL_VERTEX_SHADER), vs}, std::pair{GLenum(GL_FRAGMENT_SHADER), fs}}) {
-    GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &src, nullptr);
-    glCompileShader(s);
-    glAttachShader(p, s);
-    glDeleteShader(s);
-  }
-  glLinkProgram(p);
-  return p;
-}
+using gl33test::get_int;
+using gl33test::program;
 
 const char* kVs =
     "#version 330 core\n"
