@@ -926,7 +926,8 @@ void Context::send_batch_unchecked() {
 
 void Context::draw_fixed_function(const Batch& b, const gpu::Buffer& vbuf, const gpu::Buffer& ib) {
   FFProgramKey key;
-  if (ff_program_key(b.cls, key)) return draw_ff_program(key, b, vbuf, ib);
+  TextureObject* tex = nullptr;  // the key's look at unit 0 is the C++ shader's texture
+  if (ff_program_key(b.cls, key, tex)) return draw_ff_program(key, b, vbuf, ib);
   gpu::VertexLayout layout;
   constexpr uint32_t stride = sizeof(FFVertex);
   layout.attrib(0, vbuf, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, pos));
@@ -934,7 +935,6 @@ void Context::draw_fixed_function(const Batch& b, const gpu::Buffer& vbuf, const
   layout.attrib(2, vbuf, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, color));
   layout.attrib(3, vbuf, 4, gpu::AttribType::F32, stride, offsetof(FFVertex, tex));
   layout.attrib(4, vbuf, 1, gpu::AttribType::F32, stride, offsetof(FFVertex, edge));
-  TextureObject* tex = texture_for_draw();
   auto u = std::make_unique<FFUniforms>();
   build_uniforms(*u, tex);
   gpu::RenderState rs = render_state(false);

@@ -728,7 +728,8 @@ class Context {
   void draw_fixed_function(const Batch& b, const gpu::Buffer& vertices, const gpu::Buffer& indices);
   // Fixed function beyond the C++ shader, as a generated GLSL program (ff_program.cpp).
   TextureObject* ff_texture(int unit, TexTarget& target);
-  bool ff_program_key(PrimClass cls, FFProgramKey& key);
+  // False when the C++ shader can draw the state; `unit0` is then unit 0's 2D texture, if any.
+  bool ff_program_key(PrimClass cls, FFProgramKey& key, TextureObject*& unit0);
   void draw_ff_program(const FFProgramKey& key, const Batch& b, const gpu::Buffer& vertices,
                        const gpu::Buffer& indices);
   struct FFProgram {

@@ -397,13 +397,15 @@ TextureObject* Context::ff_texture(int unit, TexTarget& target) {
 
 // The key of the generated program for this state, and whether the draw needs it (the C++
 // shader draws everything else).
-bool Context::ff_program_key(PrimClass cls, FFProgramKey& k) {
+bool Context::ff_program_key(PrimClass cls, FFProgramKey& k, TextureObject*& unit0) {
   k = FFProgramKey{};
+  unit0 = nullptr;
   bool needed = false;
   for (int u = 0; u < kMaxTexCoords; ++u) {
     TexTarget target = TexTarget::T2D;
     TextureObject* tex = ff_texture(u, target);
     if (!tex) continue;
+    if (u == 0) unit0 = tex;
     FFProgramKey::Unit& ku = k.units[size_t(u)];
     const TextureUnitState& us = s.units[size_t(u)];
     ku.target = target == TexTarget::T1D    ? kTex1D

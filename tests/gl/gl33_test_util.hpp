@@ -31,4 +31,14 @@ inline GLuint program(const char* vs, const char* fs) {
   return p;
 }
 
+// A quad over the whole of a [-1, 1] view volume, in immediate mode (compatibility contexts).
+inline void window_quad() {
+  glBegin(GL_QUADS);
+  glVertex2f(-1, -1);
+  glVertex2f(1, -1);
+  glVertex2f(1, 1);
+  glVertex2f(-1, 1);
+  glEnd();
+}
+
 }  // namespace gl33test

@@ -35,6 +35,7 @@ GLenum err() { return glGetError(); }
 
 using gl33test::get_int;
 using gl33test::program;
+using gl33test::window_quad;
 
 const char* kVs =
     "#version 330\nlayout(location = 0) in vec2 pos;\nuniform vec2 offset;\n"
@@ -677,12 +678,7 @@ TEST_F(GL33Test, CompatibilityProgramDrawsImmediateMode) {
   glMatrixMode(GL_PROJECTION);
   glOrtho(-1, 1, -1, 1, -1, 1);
   glColor4f(1.0f, 0.0f, 0.5f, 1.0f);
-  glBegin(GL_QUADS);
-  glVertex2f(-1, -1);
-  glVertex2f(1, -1);
-  glVertex2f(1, 1);
-  glVertex2f(-1, 1);
-  glEnd();
+  window_quad();
   EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
   const auto px = centre();
   EXPECT_EQ(px[0], 128);
@@ -749,14 +745,6 @@ TEST_F(GL33Test, TextureCoordinateSetsSecondaryColourAndFogCoordReachGlsl) {
       "}\n");
   glUseProgram(p);
   ASSERT_EQ(err(), GLenum(GL_NO_ERROR));
-  auto quad = [] {
-    glBegin(GL_QUADS);
-    glVertex2f(-1, -1);
-    glVertex2f(1, -1);
-    glVertex2f(1, 1);
-    glVertex2f(-1, 1);
-    glEnd();
-  };
   // Immediate mode: set 1 through its texture matrix, set 5 as given.
   glActiveTexture(GL_TEXTURE1);
   glMatrixMode(GL_TEXTURE);
@@ -767,7 +755,7 @@ TEST_F(GL33Test, TextureCoordinateSetsSecondaryColourAndFogCoordReachGlsl) {
   glMultiTexCoord2f(GL_TEXTURE5, 0.0f, 0.75f);
   glSecondaryColor3f(0.0f, 0.5f, 0.0f);
   glFogCoordf(1.0f);
-  quad();
+  window_quad();
   auto px = centre();
   EXPECT_NEAR(px[0], 128, 1);  // 0.25 + 0.25
   EXPECT_NEAR(px[1], 191, 1);
@@ -779,7 +767,7 @@ TEST_F(GL33Test, TextureCoordinateSetsSecondaryColourAndFogCoordReachGlsl) {
   glMultiTexCoord4f(GL_TEXTURE5, 0, 0, 0, 1);
   glSecondaryColor3f(0, 0, 0);
   glFogCoordf(0);
-  quad();
+  window_quad();
   px = centre();
   EXPECT_NEAR(px[0], 64, 1);
   EXPECT_EQ(px[1], 0);
@@ -830,7 +818,7 @@ TEST_F(GL33Test, TextureCoordinateSetsSecondaryColourAndFogCoordReachGlsl) {
   glMultiTexCoord2f(GL_TEXTURE5, 0.0f, 1.0f);
   glSecondaryColor3f(0.0f, 0.25f, 0.0f);
   glFogCoordf(0.75f);
-  quad();
+  window_quad();
   glEndList();
   glMultiTexCoord2f(GL_TEXTURE5, 0.0f, 0.0f);
   glCallList(list);
@@ -1101,12 +1089,7 @@ TEST_F(GL33Test, CombineEnvironmentComputesTable325) {
   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_SUBTRACT);
   glTexEnvi(GL_TEXTURE_ENV, GL_SRC0_RGB, GL_PREVIOUS);
   glTexEnvi(GL_TEXTURE_ENV, GL_SRC1_RGB, GL_TEXTURE);
-  glBegin(GL_QUADS);
-  glVertex2f(-1, -1);
-  glVertex2f(1, -1);
-  glVertex2f(1, 1);
-  glVertex2f(-1, 1);
-  glEnd();
+  window_quad();
   EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
   // Unit 0: 2 * (t0 + k - 0.5) = (0.7, 0.4, 0.6); unit 1: minus t1 = (0.5, 0.2, 0.6).
   const auto px = centre();
