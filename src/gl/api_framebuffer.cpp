@@ -6,6 +6,7 @@
 #include <GL/glext.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "api.hpp"
@@ -242,8 +243,12 @@ void draw_buffers(Context& c, GLsizei n, const std::array<GLenum, kMaxDrawBuffer
 
 // Clears one draw buffer, or the depth/stencil buffer, as glClear would with the masks and
 // the scissor (§4.2.3).
-void clear_buffer(Context& c, GLenum buffer, GLint drawbuffer, const glm::vec4& color, float depth,
-                  int stencil, bool integer) {
+// The kind of value glClearBuffer{f,i,ui}v gives: a colour of floats or of integers (their bits
+// in `color`).
+enum class ClearKind { Float, Int, Uint };
+
+void clear_buffer(Context& c, GLenum buffer, GLint drawbuffer, glm::vec4 color, float depth, int stencil,
+                  ClearKind kind) {
   GL_OUTSIDE_BEGIN();
   switch (buffer) {
     case GL_COLOR:
@@ -263,14 +268,17 @@ void clear_buffer(Context& c, GLenum buffer, GLint drawbuffer, const glm::vec4& 
   gpu::ClearValues cv;
   cv.clear_color = cv.clear_depth = cv.clear_stencil = false;
   if (buffer == GL_COLOR) {
-    const gpu::Texture2D* t = fb.color[size_t(drawbuffer)].texture;
-    if (!t) return;
-    (void)integer;
+    if (!fb.color[size_t(drawbuffer)].texture) return;
+    // Integers into a buffer that is not integer (undefined, §4.2.3): their values as floats.
+    if (kind != ClearKind::Float && !target.integer[size_t(drawbuffer)].integer())
+      for (int k = 0; k < 4; ++k) {
+        const uint32_t bits = std::bit_cast<uint32_t>(color[k]);
+        color[k] = kind == ClearKind::Int ? float(int32_t(bits)) : float(bits);
+      }
     cv.clear_color = true;
     cv.color_attachments = uint8_t(1u << drawbuffer);
     cv.per_attachment = true;
-    cv.attachment_colors[size_t(drawbuffer)] =
-        gpu::is_unorm8_format(t->format()) ? glm::clamp(color, 0.0f, 1.0f) : color;
+    cv.attachment_colors[size_t(drawbuffer)] = c.clear_color_for(target, drawbuffer, color);
   } else {
     cv.clear_depth = target.depth && (buffer == GL_DEPTH || buffer == GL_DEPTH_STENCIL);
     cv.depth = std::clamp(depth, 0.0f, 1.0f);
@@ -318,20 +326,28 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
   struct Pass {
     gpu::Attachment src, dst;
     bool depth;
-    uint8_t channels;  // the colour channels written: the draw buffer's mask and format
+    uint8_t channels;           // the colour channels written: the draw buffer's mask and format
+    gpu::IntegerRange integer;  // an integer draw buffer's range
   };
   std::vector<Pass> passes;
   if (mask & GL_COLOR_BUFFER_BIT) {
     const gpu::Attachment src = c.read_color();
     const Context::TargetInfo target = c.target_info();
     if (src.texture) {
+      const gpu::IntegerRange src_int = c.read_color_integer();
       for (int i = 0; i < kMaxDrawBuffers; ++i) {
         const gpu::Attachment& d = fb.color[size_t(i)];
         if (!d.texture) continue;
-        // Float and fixed-point may mix; depth formats never reach here.
+        // Float and fixed-point may mix; integer buffers blit only into integer buffers of the
+        // same signedness (as Mesa checks), and never with GL_LINEAR (§4.3.2).
+        const gpu::IntegerRange dst_int = target.integer[size_t(i)];
+        if (src_int.integer() != dst_int.integer() ||
+            (src_int.integer() && src_int.is_signed != dst_int.is_signed))
+          return c.error(GL_INVALID_OPERATION);
+        if (src_int.integer() && filter == GL_LINEAR) return c.error(GL_INVALID_OPERATION);
         const std::array<bool, 4>& cm = c.s.color.color_mask[size_t(i)];
         const uint8_t m = uint8_t((cm[0] ? 1 : 0) | (cm[1] ? 2 : 0) | (cm[2] ? 4 : 0) | (cm[3] ? 8 : 0));
-        passes.push_back({src, d, false, uint8_t(m & target.channels[size_t(i)])});
+        passes.push_back({src, d, false, uint8_t(m & target.channels[size_t(i)]), dst_int});
       }
     }
   }
@@ -344,7 +360,7 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
       const bool src_float = src.texture->format() == gpu::Format::Depth32F;
       const bool dst_float = dst.texture->format() == gpu::Format::Depth32F;
       if (src_float != dst_float) return c.error(GL_INVALID_OPERATION);
-      passes.push_back({src, dst, true, 0});
+      passes.push_back({src, dst, true, 0, {}});
     }
   }
   if (sx0 == sx1 || sy0 == sy1 || dx0 == dx1 || dy0 == dy1) return;
@@ -388,7 +404,11 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
           if (!(mask & GL_STENCIL_BUFFER_BIT)) out.y = old.y;
         } else {
           for (int k = 0; k < 4; ++k)
-            if (!(p.channels & (1u << k))) out[k] = old[k];
+            if (!(p.channels & (1u << k)))
+              out[k] = old[k];
+            else if (p.integer.integer())
+              out[k] = std::bit_cast<float>(gpu::clamp_integer_bits(std::bit_cast<uint32_t>(out[k]),
+                                                                    p.integer.bits[k], p.integer.is_signed));
         }
         dt.store(p.dst.level, x, y, out);
       }
@@ -695,31 +715,32 @@ void GLAPIENTRY glClearBufferfv(GLenum buffer, GLint drawbuffer, const GLfloat* 
   if (buffer == GL_STENCIL || buffer == GL_DEPTH_STENCIL) return c.error(GL_INVALID_ENUM);
   const glm::vec4 col =
       buffer == GL_COLOR ? glm::vec4(value[0], value[1], value[2], value[3]) : glm::vec4(0.0f);
-  clear_buffer(c, buffer, drawbuffer, col, value[0], 0, false);
+  clear_buffer(c, buffer, drawbuffer, col, value[0], 0, ClearKind::Float);
 }
 void GLAPIENTRY glClearBufferiv(GLenum buffer, GLint drawbuffer, const GLint* value) {
   GL_CONTEXT();
   if (!value) return;
   if (incomplete_for_clear(c)) return;
   if (buffer == GL_DEPTH || buffer == GL_DEPTH_STENCIL) return c.error(GL_INVALID_ENUM);
-  const glm::vec4 col = buffer == GL_COLOR
-                            ? glm::vec4(float(value[0]), float(value[1]), float(value[2]), float(value[3]))
-                            : glm::vec4(0.0f);
-  clear_buffer(c, buffer, drawbuffer, col, 0.0f, value[0], true);
+  glm::vec4 col(0.0f);
+  if (buffer == GL_COLOR)
+    for (int k = 0; k < 4; ++k) col[k] = std::bit_cast<float>(value[k]);
+  clear_buffer(c, buffer, drawbuffer, col, 0.0f, value[0], ClearKind::Int);
 }
 void GLAPIENTRY glClearBufferuiv(GLenum buffer, GLint drawbuffer, const GLuint* value) {
   GL_CONTEXT();
   if (!value) return;
   if (incomplete_for_clear(c)) return;
   if (buffer != GL_COLOR) return c.error(GL_INVALID_ENUM);
-  clear_buffer(c, buffer, drawbuffer,
-               glm::vec4(float(value[0]), float(value[1]), float(value[2]), float(value[3])), 0.0f, 0, true);
+  glm::vec4 col;
+  for (int k = 0; k < 4; ++k) col[k] = std::bit_cast<float>(value[k]);
+  clear_buffer(c, buffer, drawbuffer, col, 0.0f, 0, ClearKind::Uint);
 }
 void GLAPIENTRY glClearBufferfi(GLenum buffer, GLint drawbuffer, GLfloat depth, GLint stencil) {
   GL_CONTEXT();
   if (buffer != GL_DEPTH_STENCIL) return c.error(GL_INVALID_ENUM);  // (checked first here, as by Mesa)
   if (incomplete_for_clear(c)) return;
-  clear_buffer(c, buffer, drawbuffer, glm::vec4(0.0f), depth, stencil, false);
+  clear_buffer(c, buffer, drawbuffer, glm::vec4(0.0f), depth, stencil, ClearKind::Float);
 }
 
 void GLAPIENTRY glBlitFramebuffer(GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLint dy0, GLint dx1,

@@ -311,8 +311,11 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum form
   const bool depth = format == GL_DEPTH_COMPONENT || depth_stencil, stencil = format == GL_STENCIL_INDEX;
   const tessel::gpu::Attachment a = depth || stencil ? c.read_depth() : c.read_color();
   if (!a.texture) return c.error(GL_INVALID_OPERATION);
-  // Integer formats read integer colour buffers only, which Tessel's framebuffers do not have.
-  if (is_integer_format(format)) return c.error(GL_INVALID_OPERATION);
+  // §4.3.1: integer formats read integer colour buffers, the others the rest.
+  const tessel::gpu::IntegerRange integer =
+      depth || stencil ? tessel::gpu::IntegerRange{} : c.read_color_integer();
+  if (!depth && !stencil && is_integer_format(format) != integer.integer())
+    return c.error(GL_INVALID_OPERATION);
   if ((stencil || depth_stencil) && !c.read_has_stencil()) return c.error(GL_INVALID_OPERATION);
   void* dst = pixels;
   if (c.pixel_pack_buffer) {
@@ -338,6 +341,11 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum form
       if (stencil) v.x = v.y;
       px[size_t(j) * size_t(w) + size_t(i)] = v;
     }
+  if (integer.integer()) {
+    // Integer values skip the pixel transfer operations and clamping (§4.3.2).
+    match_integer_sign(px, integer.is_signed, type);
+    return pack_pixels(c.c.pack, w, h, format, type, px, dst);
+  }
   if (!depth && !stencil) transfer(c.s.pixel, px);
   const bool fixed_point = src->format() == tessel::gpu::Format::RGBA8 ||
                            src->format() == tessel::gpu::Format::R8 ||

@@ -345,7 +345,7 @@ bool get_level_parameter(Context& c, GLenum target, GLint level, GLenum pname, d
   if (tt == TexTarget::Buffer) {
     if (t->buffer && level == 0) {
       img.fmt = t->buffer_format;
-      img.width = int(t->buffer->data.size() / gpu::format_info(t->buffer_format.storage).bytes);
+      img.width = int(t->buffer->data.size() / size_t(t->buffer_texel.bytes()));
       img.height = img.depth = 1;
     }
   } else {

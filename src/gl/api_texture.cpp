@@ -355,9 +355,11 @@ void copy_tex_image(Context& c, const ImageTarget& it, GLint level, GLint intern
   const GLenum e = check_sizes(it, level, w, h, 1, border);
   if (e != GL_NO_ERROR) return c.error(e);
   if (!c.read_framebuffer_complete()) return c.error(GL_INVALID_FRAMEBUFFER_OPERATION);
-  // §3.8.4: integer images copy only from integer colour buffers, which Tessel's framebuffers
-  // never are; nor is a multisample read framebuffer copied (§4.3.1).
-  if (fmt.integer() || (c.read_fbo && c.read_fbo->samples() > 0)) return c.error(GL_INVALID_OPERATION);
+  // §3.8.4: an integer image copies only from an integer colour buffer and a non-integer one
+  // only from a non-integer buffer; a multisample read framebuffer is not copied (§4.3.1).
+  if (!fmt.is_depth() && fmt.integer() != c.read_color_integer().integer())
+    return c.error(GL_INVALID_OPERATION);
+  if (c.read_fbo && c.read_fbo->samples() > 0) return c.error(GL_INVALID_OPERATION);
   if (!(fmt.is_depth() ? c.read_depth() : c.read_color()).texture) return c.error(GL_INVALID_OPERATION);
   auto data = std::make_shared<ImageData>();
   try {
@@ -377,8 +379,9 @@ void copy_tex_sub_image(Context& c, const ImageTarget& it, GLint level, GLint xo
     return c.error(e);
   const TextureImage& img = c.bound_texture(it.target).image(it.face, level);
   if (!c.read_framebuffer_complete()) return c.error(GL_INVALID_FRAMEBUFFER_OPERATION);
-  if (img.fmt.integer() || (c.read_fbo && c.read_fbo->samples() > 0)) return c.error(GL_INVALID_OPERATION);
   const bool depth = img.fmt.is_depth();
+  if (!depth && img.fmt.integer() != c.read_color_integer().integer()) return c.error(GL_INVALID_OPERATION);
+  if (c.read_fbo && c.read_fbo->samples() > 0) return c.error(GL_INVALID_OPERATION);
   if (!(depth ? c.read_depth() : c.read_color()).texture) return c.error(GL_INVALID_OPERATION);
   auto data = std::make_shared<ImageData>();
   try {
@@ -405,6 +408,37 @@ void bind_texture(Context& c, GLenum target, GLuint name) {
   if (r->target != t) return c.error(GL_INVALID_OPERATION);  // §3.8.1: bound before to another target
   c.touch();
   c.s.unit().bound[size_t(t)] = r;
+}
+
+// GL 3.3 §3.8.7, Table 3.15: the formats a buffer texture reads - one, two or four
+// components of 8- or 16-bit unsigned normalized, 16- or 32-bit float, or 8-, 16- or 32-bit
+// signed or unsigned integers - and their layout in the buffer's bytes.
+bool buffer_texel_of(const TexFormat& f, gpu::BufferTexel& out) {
+  using C = gpu::BufferComponent;
+  const int channels = f.base == TexBase::Red    ? 1
+                       : f.base == TexBase::RG   ? 2
+                       : f.base == TexBase::RGBA ? 4
+                                                 : 0;
+  if (channels == 0 || (channels >= 2 && f.g != f.r) || (channels == 4 && (f.b != f.r || f.a != f.r)))
+    return false;
+  const int bits = f.r;
+  const int size = bits == 8 ? 0 : bits == 16 ? 1 : bits == 32 ? 2 : -1;
+  if (size < 0) return false;
+  switch (f.kind) {
+    case TexKind::Unorm:
+      if (bits == 32) return false;
+      out.component = bits == 8 ? C::Unorm8 : C::Unorm16;
+      break;
+    case TexKind::Float:
+      if (bits == 8 || f.shared_exponent) return false;
+      out.component = bits == 16 ? C::Float16 : C::Float32;
+      break;
+    case TexKind::Int: out.component = C(int(C::Int8) + size); break;
+    case TexKind::Uint: out.component = C(int(C::Uint8) + size); break;
+    default: return false;
+  }
+  out.channels = uint8_t(channels);
+  return true;
 }
 
 }  // namespace
@@ -571,6 +605,7 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
     const std::byte* src = img.data.data() + size_t(k) * px.size() * bpp;
     for (size_t i = 0; i < px.size(); ++i)
       px[i] = from_storage(img.fmt, tessel::gpu::detail::decode_texel(img.fmt.storage, src + i * bpp));
+    if (img.fmt.integer()) match_integer_sign(px, img.fmt.kind == TexKind::Int, type);
     pack_pixels(c.c.pack, img.width, rows, format, type, px, dst + (b.first + size_t(k)) * b.image_stride);
   }
 }
@@ -581,8 +616,8 @@ void GLAPIENTRY glTexBuffer(GLenum target, GLenum internal, GLuint buffer) {
   GL_OUTSIDE_BEGIN();
   if (target != GL_TEXTURE_BUFFER) return c.error(GL_INVALID_ENUM);
   TexFormat fmt;
-  if (!tex_format_of(GLint(internal), true, fmt) || fmt.is_depth() || fmt.base == TexBase::RGB ||
-      fmt.kind == TexKind::Snorm || fmt.kind == TexKind::Srgb)
+  tessel::gpu::BufferTexel texel;
+  if (!tex_format_of(GLint(internal), true, fmt) || !buffer_texel_of(fmt, texel))
     return c.error(GL_INVALID_ENUM);
   BufferRef ref;
   if (buffer != 0) {
@@ -590,19 +625,11 @@ void GLAPIENTRY glTexBuffer(GLenum target, GLenum internal, GLuint buffer) {
     if (it == c.buffers.end() || !it->second) return c.error(GL_INVALID_OPERATION);
     ref = it->second;
   }
-  // The gpu layer reads the buffer's bytes as they are: the formats it has a texel layout for.
-  const tessel::gpu::Format f = internal == GL_RGBA8     ? tessel::gpu::Format::RGBA8
-                                : internal == GL_R8      ? tessel::gpu::Format::R8
-                                : internal == GL_RG8     ? tessel::gpu::Format::RG8
-                                : internal == GL_RGBA16F ? tessel::gpu::Format::RGBA16F
-                                : internal == GL_RGBA32F ? tessel::gpu::Format::RGBA32F
-                                                         : tessel::gpu::Format::Depth24;
-  if (f == tessel::gpu::Format::Depth24) return c.error(GL_INVALID_ENUM);
-  fmt.storage = f;
   TextureObject& t = c.bound_texture(TexTarget::Buffer);
   c.touch();
   t.buffer = ref;
   t.buffer_format = fmt;
+  t.buffer_texel = texel;
   t.dirty = true;
 }
 

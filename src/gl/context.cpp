@@ -3,6 +3,7 @@
 #include "context.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -265,8 +266,10 @@ Context::TargetInfo Context::target_info() const {
   for (int i = 0; i < kMaxDrawBuffers; ++i) {
     const GLenum db = f.draw_buffers[size_t(i)];
     if (db >= GL_COLOR_ATTACHMENT0 && db < GL_COLOR_ATTACHMENT0 + kMaxColorAttachments &&
-        f.color[db - GL_COLOR_ATTACHMENT0].image(fmt, w, h))
+        f.color[db - GL_COLOR_ATTACHMENT0].image(fmt, w, h)) {
       t.channels[size_t(i)] = fmt.channel_mask();
+      t.integer[size_t(i)] = fmt.integer_range();
+    }
   }
   t.depth = f.depth.image(fmt, w, h) && fmt.is_depth();
   t.stencil = f.stencil.image(fmt, w, h) && fmt.has_stencil();
@@ -310,7 +313,7 @@ GLenum Context::framebuffer_status(FramebufferObject& f) {
     if (!a) return true;
     TexFormat fmt;
     int w, h;
-    if (!a.image(fmt, w, h) || fmt.integer()) return false;
+    if (!a.image(fmt, w, h)) return false;
     return gpu_image(a, g);
   };
   for (const Attachment& a : f.color)
@@ -333,6 +336,17 @@ gpu::Attachment Context::read_color() {
   if (f.read_buffer >= GL_COLOR_ATTACHMENT0 && f.read_buffer < GL_COLOR_ATTACHMENT0 + kMaxColorAttachments)
     gpu_image(f.color[f.read_buffer - GL_COLOR_ATTACHMENT0], g);
   return g;
+}
+
+gpu::IntegerRange Context::read_color_integer() const {
+  if (!read_fbo) return {};
+  const FramebufferObject& f = *read_fbo;
+  TexFormat fmt;
+  int w, h;
+  if (f.read_buffer < GL_COLOR_ATTACHMENT0 || f.read_buffer >= GL_COLOR_ATTACHMENT0 + kMaxColorAttachments ||
+      !f.color[f.read_buffer - GL_COLOR_ATTACHMENT0].image(fmt, w, h))
+    return {};
+  return fmt.integer_range();
 }
 
 gpu::Attachment Context::read_depth() {
@@ -845,7 +859,8 @@ gpu::RenderState Context::render_state(bool for_clear) const {
   for (int i = 0; i < kMaxDrawBuffers; ++i) {
     gpu::BlendTarget& b = r.blend[size_t(i)];
     const std::array<bool, 4>& m = s.color.color_mask[size_t(i)];
-    b.enabled = !for_clear && s.color.blend[size_t(i)];
+    b.integer = target.integer[size_t(i)];
+    b.enabled = !for_clear && s.color.blend[size_t(i)] && !b.integer.integer();
     b.eq_rgb = equation(s.color.blend_eq);
     b.eq_alpha = equation(s.color.blend_eq_alpha);
     b.src_rgb = blend_of(s.color.blend_src);
@@ -1114,6 +1129,21 @@ void Context::send_stippled_lines(const FFVertices& verts, const std::vector<uin
   transient_buffers_.push_back(std::move(vb));
 }
 
+glm::vec4 Context::clear_color_for(const TargetInfo& target, int i, glm::vec4 color) const {
+  const gpu::Texture2D* t = fb_.color[size_t(i)].texture;
+  // Unsigned normalized buffers take the colour clamped to [0, 1], float ones as it is.
+  if (!t) return color;
+  if (gpu::is_unorm8_format(t->format())) return glm::clamp(color, 0.0f, 1.0f);
+  // Integer buffers take the value's bits clamped to their range: glClear's float colour as
+  // llvmpipe takes it (GL leaves it undefined), glClearBuffer{i,ui}v's integers as given.
+  const gpu::IntegerRange r = target.integer[size_t(i)];
+  if (r.integer())
+    for (int k = 0; k < 4; ++k)
+      color[k] = std::bit_cast<float>(
+          gpu::clamp_integer_bits(std::bit_cast<uint32_t>(color[k]), r.bits[k], r.is_signed));
+  return color;
+}
+
 void Context::clear(GLbitfield mask) {
   touch();
   if (!bind_draw_target()) return;
@@ -1127,14 +1157,11 @@ void Context::clear(GLbitfield mask) {
   cv.stencil = uint8_t(s.stencil.clear & 0xFF);
   gpu::RenderState rs = render_state(true);
   rs.depth_write = s.depth.mask;
-  // Unsigned normalized buffers take the clear colour clamped to [0, 1]; float ones as it is.
   bool any_color = false;
   for (int i = 0; i < kMaxDrawBuffers; ++i) {
-    const gpu::Texture2D* t = fb_.color[size_t(i)].texture;
-    if (!t) continue;
+    if (!fb_.color[size_t(i)].texture) continue;
     any_color = true;
-    cv.attachment_colors[size_t(i)] =
-        gpu::is_unorm8_format(t->format()) ? glm::clamp(cv.color, 0.0f, 1.0f) : cv.color;
+    cv.attachment_colors[size_t(i)] = clear_color_for(target, i, cv.color);
   }
   cv.per_attachment = true;
   if (!any_color) cv.clear_color = false;

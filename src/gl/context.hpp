@@ -539,8 +539,8 @@ class Context {
   FramebufferRef draw_fbo, read_fbo;
   RenderbufferRef bound_renderbuffer;
   // glCheckFramebufferStatus of a framebuffer object: §4.4.4's rules, then what the gpu layer
-  // cannot render to (GL_FRAMEBUFFER_UNSUPPORTED: 3D and array layers, integer colour
-  // formats, a level outside the texture's level chain, separate depth and stencil images).
+  // cannot render to (GL_FRAMEBUFFER_UNSUPPORTED: 3D and array layers, a level outside the texture's level
+  // chain, separate depth and stencil images).
   GLenum framebuffer_status(FramebufferObject& f);
   bool draw_framebuffer_complete() {
     return draw_fbo ? framebuffer_status(*draw_fbo) == GL_FRAMEBUFFER_COMPLETE : has_default_framebuffer;
@@ -553,13 +553,16 @@ class Context {
   // What pixel reads (glReadPixels, glCopyTex*, glBlitFramebuffer) read: the read
   // framebuffer's read buffer and its depth (or depth-stencil) image.
   gpu::Attachment read_color();
+  // The integer range of the read buffer's format (not integer for the default framebuffer).
+  gpu::IntegerRange read_color_integer() const;
   gpu::Attachment read_depth();
   bool read_has_stencil();
-  // What draws write: whether the draw framebuffer has depth and stencil, and the channels
-  // each draw buffer's format stores (0 where there is no image).
+  // What draws write: whether the draw framebuffer has depth and stencil, the channels each
+  // draw buffer's format stores (0 where there is no image), and which are integer formats.
   struct TargetInfo {
     bool depth = false, stencil = false;
     std::array<uint8_t, kMaxDrawBuffers> channels{};
+    std::array<gpu::IntegerRange, kMaxDrawBuffers> integer{};
   };
   TargetInfo target_info() const;
   // An object's name is deleted: detached from the bound framebuffers, unbound (§4.4.2.3).
@@ -607,6 +610,9 @@ class Context {
 
   // Clears the draw buffer(s) as glClear with the current masks, scissor and values.
   void clear(GLbitfield mask);
+  // The value draw buffer i of `target` is cleared to, for a clear colour given as floats or
+  // (glClearBuffer{i,ui}v) as integer bits.
+  glm::vec4 clear_color_for(const TargetInfo& target, int i, glm::vec4 color) const;
 
   // Raster-position/pixel rectangles (glBitmap, glDrawPixels): RGBA8 pixels (rows bottom-up)
   // drawn as fragments at window position (x, y), colour replaced by `color` when

@@ -674,6 +674,16 @@ void pack_pixels(const PixelStore& ps, int w, int h, GLenum format, GLenum type,
   }
 }
 
+void match_integer_sign(std::vector<glm::vec4>& px, bool source_signed, GLenum type) {
+  const bool type_signed = type == GL_BYTE || type == GL_SHORT || type == GL_INT;
+  if (source_signed == type_signed) return;
+  for (glm::vec4& v : px)
+    for (int k = 0; k < 4; ++k) {
+      const uint32_t bits = std::bit_cast<uint32_t>(v[k]);
+      if (bits > 0x7FFFFFFFu) v[k] = std::bit_cast<float>(source_signed ? 0u : 0x7FFFFFFFu);
+    }
+}
+
 bool base_format_of(GLint f, BaseFormat& base) {
   switch (f) {
     case 1:

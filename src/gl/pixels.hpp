@@ -59,6 +59,11 @@ void unpack_bitmap(const PixelStore& ps, int w, int h, const void* data, std::ve
 // type's (or the packed field's) range; DEPTH_STENCIL writes depth from .x, stencil from .y.
 void pack_pixels(const PixelStore& ps, int w, int h, GLenum format, GLenum type,
                  const std::vector<glm::vec4>& in, void* data);
+// Integer texels (their bits: int32 when `source_signed`, else uint32) prepared for
+// pack_pixels with `type`, which reads the bits as signed for the signed types: a value the
+// type's signedness cannot hold becomes the nearest one it can (negative values 0 for the
+// unsigned types, values above INT32_MAX that for the signed ones), so it clamps right.
+void match_integer_sign(std::vector<glm::vec4>& px, bool source_signed, GLenum type);
 
 // The base internal format of a glTexImage internal format; false when it is not one.
 bool base_format_of(GLint internal_format, BaseFormat& base);

@@ -197,6 +197,15 @@ GLenum TexFormat::component_type() const {
   return GL_NONE;
 }
 
+gpu::IntegerRange TexFormat::integer_range() const {
+  gpu::IntegerRange out;
+  if (!integer()) return out;
+  const uint8_t sizes[4] = {r, g, b, a};
+  for (int k = 0; k < 4; ++k) out.bits[k] = sizes[k] ? sizes[k] : 32;  // (absent: never written)
+  out.is_signed = kind == TexKind::Int;
+  return out;
+}
+
 uint8_t TexFormat::channel_mask() const {
   switch (base) {
     case TexBase::Red: return 0x1;

@@ -63,6 +63,8 @@ struct TexFormat {
   // The colour-channel write mask (bit 0 red .. bit 3 alpha) of the channels the format
   // stores: rendering must not change the others (alpha of RGB formats reads 1).
   uint8_t channel_mask() const;
+  // The bits of each component of an integer format (not integer for the others).
+  gpu::IntegerRange integer_range() const;
 };
 
 // The format of a glTexImage / glRenderbufferStorage internal format; false when GL does not

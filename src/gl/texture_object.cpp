@@ -153,7 +153,7 @@ bool update_gpu_texture(Context& c, TextureObject& t) {
     // The view follows the buffer's store; remade when the binding changed (dirty).
     if (t.dirty || !t.tbuf) {
       try {
-        t.tbuf = std::make_unique<gpu::TextureBuffer>(t.buffer_format.storage, t.buffer->data);
+        t.tbuf = std::make_unique<gpu::TextureBuffer>(t.buffer_texel, t.buffer->data);
       } catch (const std::exception&) {
         t.tbuf.reset();
       }

@@ -72,9 +72,11 @@ struct TextureObject {
   GLenum depth_mode = GL_LUMINANCE;  // GL_DEPTH_TEXTURE_MODE (compatibility contexts)
   float priority = 1.0f;
   bool generate_mipmap = false;
-  // GL_TEXTURE_BUFFER (glTexBuffer): the buffer and the texel format it is read as.
+  // GL_TEXTURE_BUFFER (glTexBuffer): the buffer, the texel format it is read as, and that
+  // format's layout in the buffer's bytes.
   BufferRef buffer;
   TexFormat buffer_format;
+  gpu::BufferTexel buffer_texel;
 
   // The gpu texture (one of them, by target) and how many levels from base_level it has.
   std::unique_ptr<gpu::Texture2D> tex2d;  // 1D, 2D, rectangle

@@ -5,6 +5,7 @@
 // (run for derivatives) never write. Depth is compared in the buffer's own precision: 24-bit
 // buffers compare round(z * (2^24 - 1)).
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -277,7 +278,13 @@ void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsi
       const int l = __builtin_ctz(m);
       const int x = gx + kLaneDx[l], y = gy + kLaneDy[l];
       glm::vec4 s(c.x[l], c.y[l], c.z[l], c.w[l]);
-      if (b.enabled) s = blend(b, s, load_color(ct, x, y), d.state.blend_color, unorm);
+      if (b.integer.integer()) {
+        for (int k = 0; k < 4; ++k)
+          s[k] = std::bit_cast<float>(
+              clamp_integer_bits(std::bit_cast<uint32_t>(s[k]), b.integer.bits[k], b.integer.is_signed));
+      } else if (b.enabled) {
+        s = blend(b, s, load_color(ct, x, y), d.state.blend_color, unorm);
+      }
       store_color(ct, x, y, s, b.write_mask);
     }
   }

@@ -1447,7 +1447,7 @@ TEST_F(GL33ErrorsTest, RasterizationStateErrorsChangeNothing) {
 // Each is a whole feature (issue 15's notes): integer colour buffers, the remaining buffer
 // texture formats, multisample textures, transform feedback, dual-source blending and sample
 // masks.
-TEST_F(GL33ErrorsTest, DISABLED_IntegerColorBuffers) {
+TEST_F(GL33ErrorsTest, IntegerColorBuffers) {
   GLubyte out[64];
   const GLuint integer = framebuffer(renderbuffer(GL_RGBA8UI));
   // RGBA8UI is a required renderbuffer format (§4.4.2): the framebuffer is complete.
@@ -1473,7 +1473,7 @@ TEST_F(GL33ErrorsTest, DISABLED_IntegerColorBuffers) {
   glDeleteFramebuffers(1, &integer);
 }
 
-TEST_F(GL33ErrorsTest, DISABLED_EveryBufferTextureFormat) {
+TEST_F(GL33ErrorsTest, EveryBufferTextureFormat) {
   GLuint t, b;
   glGenTextures(1, &t);
   glGenBuffers(1, &b);

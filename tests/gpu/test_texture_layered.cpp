@@ -3,6 +3,7 @@
 // against Mesa llvmpipe are in tests/glsl/test_glsl_textures.cpp.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -225,6 +226,43 @@ TEST(TextureBuffer, FetchesInRangeAndZeroOutside) {
   b.assign(texels.data(), texels.size() * 4);
   EXPECT_EQ(whole.size(), 8);
   EXPECT_EQ(range.size(), 3);
+}
+
+// Every layout of GL 3.3 Table 3.15, read from the same bytes: unorm, half and float as values,
+// integers as their sign- or zero-extended 32 bits; missing components 0, alpha 1 (integer 1).
+TEST(TextureBuffer, EveryLayoutReadsItsBytes) {
+  const uint8_t bytes[16] = {0xFF, 0x80, 0x00, 0x3C, 0x01, 0x00, 0x00, 0xC0,
+                             0x7F, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80, 0x3F};
+  Buffer b(bytes, sizeof bytes);
+  using C = BufferComponent;
+  // Integer texels compared as bits (some are NaN patterns as floats).
+  auto bits = [](glm::vec4 v) {
+    return glm::uvec4(std::bit_cast<uint32_t>(v.x), std::bit_cast<uint32_t>(v.y),
+                      std::bit_cast<uint32_t>(v.z), std::bit_cast<uint32_t>(v.w));
+  };
+  auto fetch = [&](C c, int channels, int i) {
+    return TextureBuffer(BufferTexel{c, uint8_t(channels)}, b).fetch(i);
+  };
+  EXPECT_EQ(fetch(C::Unorm8, 1, 0), glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+  EXPECT_EQ(fetch(C::Unorm8, 2, 0), glm::vec4(1.0f, 128.0f / 255.0f, 0.0f, 1.0f));
+  EXPECT_EQ(fetch(C::Unorm16, 1, 0), glm::vec4(float(0x80FF) * (1.0f / 65535.0f), 0.0f, 0.0f, 1.0f));
+  EXPECT_EQ(fetch(C::Float16, 2, 0).y, 1.0f);   // 0x3C00
+  EXPECT_EQ(fetch(C::Float16, 4, 0).w, -2.0f);  // 0xC000
+  EXPECT_EQ(fetch(C::Float32, 1, 3), glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+  EXPECT_EQ(bits(fetch(C::Int8, 4, 0)), glm::uvec4(0xFFFFFFFFu, 0xFFFFFF80u, 0, 0x3C));
+  EXPECT_EQ(bits(fetch(C::Uint8, 1, 1)), glm::uvec4(0x80, 0u, 0u, 1u));
+  EXPECT_EQ(bits(fetch(C::Int16, 2, 1)), glm::uvec4(0x0001, 0xFFFFC000u, 0u, 1u));
+  EXPECT_EQ(bits(fetch(C::Uint16, 1, 3)), glm::uvec4(0xC000, 0u, 0u, 1u));
+  EXPECT_EQ(bits(fetch(C::Int16, 1, 3)), glm::uvec4(0xFFFFC000u, 0u, 0u, 1u));
+  EXPECT_EQ(bits(fetch(C::Int32, 2, 1)), glm::uvec4(0x7F, 0x3F800000u, 0u, 1u));
+  EXPECT_EQ(bits(fetch(C::Uint32, 4, 0)).x, 0x3C0080FFu);
+  // Sizes follow the texel size; a layout GL does not have is an error naming it.
+  EXPECT_EQ(TextureBuffer(BufferTexel{C::Uint16, 2}, b).size(), 4);
+  EXPECT_EQ(TextureBuffer(BufferTexel{C::Float32, 4}, b).size(), 1);
+  EXPECT_EQ((BufferTexel{C::Uint16, 2}).name(), "RG16UI");
+  EXPECT_EQ((BufferTexel{C::Float16, 4}).name(), "RGBA16F");
+  EXPECT_TRUE(mentions(error_of([&] { TextureBuffer(BufferTexel{C::Int8, 3}, b); }), "3 channels"));
+  EXPECT_TRUE(mentions(error_of([&] { TextureBuffer(BufferTexel{C::Int32, 2}, b, 4); }), "RG32I"));
 }
 
 }  // namespace

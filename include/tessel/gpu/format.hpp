@@ -53,6 +53,28 @@ constexpr bool is_unorm8_format(Format f) {
   return f == Format::RGBA8 || f == Format::R8 || f == Format::RG8;
 }
 
+// The components of an integer colour format. Integer texels are kept in a float format's
+// slots as their 32 bits (an int32 or a uint32), so an RGBA32F image can hold any integer
+// format; this says which values each component can hold.
+struct IntegerRange {
+  uint8_t bits[4] = {0, 0, 0, 0};  // per component, 1..32; 0: not an integer format
+  bool is_signed = false;
+  constexpr bool integer() const { return bits[0] != 0; }
+};
+
+// A component's integer bits (an int32 when signed, else a uint32) clamped to `bits` bits, as
+// llvmpipe stores integer colours (GL leaves values out of range undefined).
+constexpr uint32_t clamp_integer_bits(uint32_t v, int bits, bool is_signed) {
+  if (bits <= 0 || bits >= 32) return v;
+  if (!is_signed) {
+    const uint32_t hi = (1u << bits) - 1u;
+    return v < hi ? v : hi;
+  }
+  const int32_t sv = static_cast<int32_t>(v), hi = static_cast<int32_t>((1u << (bits - 1)) - 1u);
+  const int32_t lo = -hi - 1;
+  return static_cast<uint32_t>(sv < lo ? lo : sv > hi ? hi : sv);
+}
+
 // IEEE half <-> float, exact for every half; float -> half rounds to nearest even.
 uint16_t float_to_half(float f);
 float half_to_float(uint16_t h);

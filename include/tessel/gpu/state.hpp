@@ -57,6 +57,10 @@ struct StencilFace {
 
 struct BlendTarget {
   bool enabled = false;
+  // An integer colour attachment (format.hpp): the fragment shader's output carries each
+  // component's 32 bits, stored clamped to this range and never blended (GL 4.6 §17.3.6.1:
+  // blending applies to fixed- and floating-point buffers only).
+  IntegerRange integer{};
   BlendEquation eq_rgb = BlendEquation::Add, eq_alpha = BlendEquation::Add;
   BlendFactor src_rgb = BlendFactor::One, dst_rgb = BlendFactor::Zero;
   BlendFactor src_alpha = BlendFactor::One, dst_alpha = BlendFactor::Zero;

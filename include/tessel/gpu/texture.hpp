@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -210,17 +211,47 @@ class Texture2DArray : public Resource {
   std::vector<Level3D> levels_;
 };
 
-// A buffer texture (GL_TEXTURE_BUFFER, glTexBuffer / glTexBufferRange): texels of `format`
+// The texel layouts a buffer texture reads (GL 3.3 §3.8.7, Table 3.15): 1, 2 or 4
+// components of one type, tightly packed. Integer components come back as their 32 bits
+// (an int32 or a uint32) in the float slots, as integer textures keep them; components the
+// layout lacks read 0, and alpha 1 (an integer 1 for integer layouts).
+enum class BufferComponent : uint8_t {
+  Unorm8,
+  Unorm16,
+  Float16,
+  Float32,
+  Int8,
+  Int16,
+  Int32,
+  Uint8,
+  Uint16,
+  Uint32
+};
+struct BufferTexel {
+  BufferComponent component = BufferComponent::Unorm8;
+  uint8_t channels = 4;  // 1, 2 or 4
+  int component_bytes() const;
+  int bytes() const { return component_bytes() * channels; }
+  bool integer() const { return component >= BufferComponent::Int8; }
+  std::string name() const;  // as GL names the format: "RGBA8", "R16F", "RG32UI"
+};
+// The layout of a colour format (RGBA8, R8, RG8, RGBA16F, RGBA32F); throws Error for depth.
+BufferTexel buffer_texel(Format format);
+
+// A buffer texture (GL_TEXTURE_BUFFER, glTexBuffer / glTexBufferRange): texels of one layout
 // read straight from a Buffer, which must outlive the view. Not filtered, no levels: shaders
 // read it with texelFetch (samplerBuffer). With size kWholeBuffer the view follows the
 // buffer's size as it changes; a range is read only as far as the buffer still reaches.
 class TextureBuffer {
  public:
   static constexpr size_t kWholeBuffer = ~size_t(0);
-  // Throws Error for a depth format, an offset not a multiple of the texel size, a range
-  // past the buffer's end, or more than kMaxTextureBufferTexels texels.
-  TextureBuffer(Format format, const Buffer& buffer, size_t offset = 0, size_t size = kWholeBuffer);
-  Format format() const { return format_; }
+  // Throws Error for a depth format or a layout of other than 1, 2 or 4 channels, an offset
+  // not a multiple of the texel size, a range past the buffer's end, or more than
+  // kMaxTextureBufferTexels texels.
+  TextureBuffer(BufferTexel texel, const Buffer& buffer, size_t offset = 0, size_t size = kWholeBuffer);
+  TextureBuffer(Format format, const Buffer& buffer, size_t offset = 0, size_t size = kWholeBuffer)
+      : TextureBuffer(buffer_texel(format), buffer, offset, size) {}
+  const BufferTexel& texel() const { return texel_; }
   const Buffer& buffer() const { return *buffer_; }
   size_t offset() const { return offset_; }
   // The texels readable now (textureSize): whole texels of the range that the buffer holds,
@@ -231,7 +262,7 @@ class TextureBuffer {
   glm::vec4 fetch(int i) const;
 
  private:
-  Format format_;
+  BufferTexel texel_;
   const Buffer* buffer_;
   size_t offset_, size_;
 };
