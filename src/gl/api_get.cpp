@@ -146,7 +146,12 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_SAMPLES: return n(c.draw_fbo ? c.draw_fbo->samples() : 0), true;
     case GL_SAMPLE_COVERAGE_VALUE: return n(c.s.color.coverage_value), true;
     case GL_SAMPLE_COVERAGE_INVERT: return b(c.s.color.coverage_invert), true;
-    case GL_PROVOKING_VERTEX: return n(GL_LAST_VERTEX_CONVENTION), true;
+    case GL_PROVOKING_VERTEX: return n(double(c.s.light.provoking_vertex)), true;
+    // Quads keep their last vertex in both conventions, as in Mesa (which, as a core
+    // context has no quads, knows the query only in compatibility contexts).
+    case GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION:
+      if (c.core_profile) return false;
+      return b(false), true;
     case GL_MIN_PROGRAM_TEXEL_OFFSET: return n(-8), true;
     case GL_MAX_PROGRAM_TEXEL_OFFSET: return n(7), true;
     case GL_MAX_CLIP_DISTANCES: return n(kMaxClipPlanes), true;

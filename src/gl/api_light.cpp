@@ -280,6 +280,20 @@ void GLAPIENTRY glMaterialiv(GLenum face, GLenum pname, const GLint* v) {
 void GLAPIENTRY glColorMaterial(GLenum face, GLenum mode) { LIGHT_CALL(color_material, face, mode); }
 void GLAPIENTRY glShadeModel(GLenum mode) { LIGHT_CALL(shade_model, mode); }
 
+// GL 3.3 §2.18: which vertex of a primitive flat-shaded values come from.
+void GLAPIENTRY glProvokingVertex(GLenum mode) {
+  GL_CONTEXT();
+  auto set = [mode](Context& c) {
+    GL_OUTSIDE_BEGIN();
+    if (mode != GL_FIRST_VERTEX_CONVENTION && mode != GL_LAST_VERTEX_CONVENTION)
+      return c.error(GL_INVALID_ENUM);
+    c.touch();
+    c.s.light.provoking_vertex = mode;
+  };
+  GL_LISTED(set(c));
+  set(c);
+}
+
 void GLAPIENTRY glFogf(GLenum pname, GLfloat v) {
   GL_REMOVED_IN_CORE();
   const Vec4Arg a{v, 0, 0, 0};

@@ -386,6 +386,7 @@ const std::vector<const char*>& extensions(const Context&) {
       "GL_ARB_half_float_vertex",
       "GL_ARB_instanced_arrays",
       "GL_ARB_map_buffer_range",
+      "GL_ARB_provoking_vertex",
       "GL_ARB_shader_objects",
       "GL_ARB_shading_language_100",
       "GL_ARB_uniform_buffer_object",
@@ -491,11 +492,15 @@ void Context::end() {
 }
 
 // Independent primitives in the order and with the provoking vertex of GL 2.1 §2.6.1 and
-// Table 2.9: each triangle lists its provoking vertex last (the gpu layer's convention, GL's
-// for triangles). Quads, quad strips and polygons are cut the way Mesa cuts them, so that
-// smooth colours across the inner diagonals agree with it (measured: tests/gl).
+// Table 2.9: each triangle lists its provoking vertex last, or first with
+// glProvokingVertex(GL_FIRST_VERTEX_CONVENTION) (GL 3.3 Table 2.12; the gpu layer's
+// provoking_first takes element 0 of a list's primitive). Quads and quad strips keep their
+// last vertex and polygons their first in both conventions, as Mesa does
+// (GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION is false). They are cut the way Mesa cuts
+// them, so that smooth colours across the inner diagonals agree with it (measured: tests/gl).
 void Context::emit_mode(GLenum mode, FFVertices&& v) {
   const uint32_t n = uint32_t(v.size());
+  const bool first = s.light.provoking_vertex == GL_FIRST_VERTEX_CONVENTION;
   if (mode != GL_QUADS) close_quad_run();
   std::vector<uint32_t> idx;
   PrimClass cls = PrimClass::Triangles;
@@ -534,12 +539,19 @@ void Context::emit_mode(GLenum mode, FFVertices&& v) {
       for (uint32_t i = 0; i + 2 < n; ++i) {
         if (i % 2 == 0)
           tri(i, i + 1, i + 2);
+        else if (first)
+          tri(i, i + 2, i + 1);  // vertex i provokes: first, the winding kept
         else
           tri(i + 1, i, i + 2);
       }
       break;
     case GL_TRIANGLE_FAN:
-      for (uint32_t i = 1; i + 1 < n; ++i) tri(0, i, i + 1);
+      for (uint32_t i = 1; i + 1 < n; ++i) {
+        if (first)
+          tri(i, i + 1, 0);
+        else
+          tri(0, i, i + 1);
+      }
       break;
     case GL_QUADS:
     case GL_QUAD_STRIP:
@@ -594,12 +606,25 @@ void Context::emit_mode(GLenum mode, FFVertices&& v) {
         }
       }
       v = std::move(out);
+      provoking_vertex_first(idx);
       break;
     }
     default: return;
   }
   if (idx.empty()) return;
   emit(cls, std::move(v), std::move(idx));
+}
+
+// Triangles listed with their provoking vertex last, rotated to list it first: (a, b, c)
+// becomes (c, a, b), which keeps the winding and each vertex's edge flag on its own edge.
+void Context::provoking_vertex_first(std::vector<uint32_t>& idx) const {
+  if (s.light.provoking_vertex != GL_FIRST_VERTEX_CONVENTION) return;
+  for (size_t i = 0; i + 2 < idx.size(); i += 3) {
+    const uint32_t c = idx[i + 2];
+    idx[i + 2] = idx[i + 1];
+    idx[i + 1] = idx[i];
+    idx[i] = c;
+  }
 }
 
 // Mesa cuts a quad (v0, v1, v2, v3) in one of two ways, measured on 22.3 (tests/gl): along
@@ -666,6 +691,7 @@ void Context::close_quad_run() {
   FFVertices out;
   std::vector<uint32_t> idx;
   split_quads(run, uint32_t(run.size()), clipped, out, idx);
+  provoking_vertex_first(idx);
   emit(PrimClass::Triangles, std::move(out), std::move(idx));
 }
 
@@ -872,6 +898,9 @@ gpu::RenderState Context::render_state(bool for_clear) const {
                            target.channels[size_t(i)]);
   }
   r.blend_color = s.color.blend_color;
+  r.logic_op_enabled = !for_clear && s.color.logic_op;
+  r.logic_op = gpu::LogicOp(s.color.logic_op_mode - GL_CLEAR);
+  r.provoking_first = s.light.provoking_vertex == GL_FIRST_VERTEX_CONVENTION;
   return r;
 }
 

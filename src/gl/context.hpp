@@ -77,6 +77,8 @@ struct LightState {
   bool color_material = false;
   GLenum color_material_face = GL_FRONT_AND_BACK, color_material_mode = GL_AMBIENT_AND_DIFFUSE;
   GLenum shade_model = GL_SMOOTH;
+  // glProvokingVertex (GL 3.2 compatibility Table 6.11 keeps it with the lighting state).
+  GLenum provoking_vertex = GL_LAST_VERTEX_CONVENTION;
   bool operator==(const LightState&) const = default;
 };
 
@@ -607,6 +609,9 @@ class Context {
   void emit_shared(std::shared_ptr<const gpu::Buffer> vertices, std::vector<uint32_t>&& indices);
   // Converts vertices given in glBegin order for `mode` into independent primitives.
   void emit_mode(GLenum mode, FFVertices&& verts);
+  // With the first-vertex convention, rotates triangles that list their provoking vertex
+  // last so that they list it first (quads and polygons keep theirs in both conventions).
+  void provoking_vertex_first(std::vector<uint32_t>& idx) const;
 
   // Clears the draw buffer(s) as glClear with the current masks, scissor and values.
   void clear(GLbitfield mask);

@@ -183,9 +183,11 @@ uint32_t read_index(const uint8_t* p, gpu::IndexType t, size_t i) {
 // GL_QUADS, GL_QUAD_STRIP and GL_POLYGON as independent triangles over vertex numbers
 // `ids` (restart entries split the sequence). Each triangle ends with the vertex flat shading
 // takes (GL 3.3 compatibility Table 2.15: a quad's fourth vertex, a strip quad's vertex
-// 2i + 3, a polygon's first), split along the diagonal Mesa uses.
+// 2i + 3, a polygon's first), split along the diagonal Mesa uses; with provoking_first
+// (glProvokingVertex(GL_FIRST_VERTEX_CONVENTION), under which Mesa keeps those vertices) each
+// triangle begins with it instead, the winding kept.
 std::vector<uint32_t> triangulate(GLenum mode, const std::vector<uint32_t>& ids, bool restart,
-                                  uint32_t restart_id) {
+                                  uint32_t restart_id, bool provoking_first) {
   std::vector<uint32_t> out;
   size_t start = 0;
   auto run = [&](size_t b, size_t e) {
@@ -207,6 +209,13 @@ std::vector<uint32_t> triangulate(GLenum mode, const std::vector<uint32_t>& ids,
       start = i + 1;
     }
   }
+  if (provoking_first)
+    for (size_t i = 0; i + 2 < out.size(); i += 3) {
+      const uint32_t last = out[i + 2];
+      out[i + 2] = out[i + 1];
+      out[i + 1] = out[i];
+      out[i] = last;
+    }
   return out;
 }
 
@@ -378,7 +387,9 @@ void Context::draw_generic(const GenericDraw& d) {
       const uint32_t v = read_index(index_bytes, d.index_type, i);
       ids[i] = restart && v == restart_id ? 0xFFFFFFFFu : v;
     }
-    if (d.decompose) ids = triangulate(d.mode, ids, restart, 0xFFFFFFFFu);
+    if (d.decompose)
+      ids = triangulate(d.mode, ids, restart, 0xFFFFFFFFu,
+                        s.light.provoking_vertex == GL_FIRST_VERTEX_CONVENTION);
     if (ids.empty()) return;
     keep.push_back(std::make_unique<gpu::Buffer>(ids.data(), ids.size() * sizeof(uint32_t)));
     call.first = 0;

@@ -122,6 +122,56 @@ glm::vec4 blend(const BlendTarget& b, glm::vec4 s, glm::vec4 d, glm::vec4 k, boo
   return {rgb, a};
 }
 
+// GL 3.3 §4.1.11, Table 4.3.
+inline uint32_t logic_op(LogicOp op, uint32_t s, uint32_t d) {
+  switch (op) {
+    case LogicOp::Clear: return 0;
+    case LogicOp::And: return s & d;
+    case LogicOp::AndReverse: return s & ~d;
+    case LogicOp::Copy: return s;
+    case LogicOp::AndInverted: return ~s & d;
+    case LogicOp::Noop: return d;
+    case LogicOp::Xor: return s ^ d;
+    case LogicOp::Or: return s | d;
+    case LogicOp::Nor: return ~(s | d);
+    case LogicOp::Equiv: return ~(s ^ d);
+    case LogicOp::Invert: return ~d;
+    case LogicOp::OrReverse: return s | ~d;
+    case LogicOp::CopyInverted: return ~s;
+    case LogicOp::OrInverted: return ~s | d;
+    case LogicOp::Nand: return ~(s & d);
+    case LogicOp::Set: return ~0u;
+  }
+  return s;
+}
+
+// The logical operation on one pixel: unsigned normalized values as their 8-bit integers
+// (the fragment's rounded as it would be stored), integer values as the format's bits (the
+// fragment's clamped to the format first, the result kept to the component's width and
+// sign-extended, as llvmpipe operates on the stored width). Float targets take s.
+glm::vec4 apply_logic_op(LogicOp op, const BlendTarget& b, bool unorm, glm::vec4 s, const glm::vec4& d) {
+  if (b.integer.integer()) {
+    for (int k = 0; k < 4; ++k) {
+      const int bits = b.integer.bits[k];
+      const uint32_t sv = clamp_integer_bits(std::bit_cast<uint32_t>(s[k]), bits, b.integer.is_signed);
+      uint32_t r = logic_op(op, sv, std::bit_cast<uint32_t>(d[k]));
+      if (bits > 0 && bits < 32) {
+        r &= (1u << bits) - 1u;
+        if (b.integer.is_signed && (r >> (bits - 1)) & 1u) r |= ~((1u << bits) - 1u);
+      }
+      s[k] = std::bit_cast<float>(r);
+    }
+    return s;
+  }
+  if (!unorm) return s;
+  for (int k = 0; k < 4; ++k) {
+    const float c = s[k] > 0.0f ? (s[k] < 1.0f ? s[k] : 1.0f) : 0.0f;  // NaN -> 0
+    const uint32_t sv = uint32_t(std::lrint(c * 255.0f)), dv = uint32_t(std::lrint(d[k] * 255.0f));
+    s[k] = float(logic_op(op, sv, dv) & 0xFFu) * (1.0f / 255.0f);
+  }
+  return s;
+}
+
 // Non-temporal stores (RASTER_NOTES: the target's lines are written whole, and reading them
 // first only to overwrite them doubles the memory traffic of a frame's last writes).
 bool streamable(const void* p, size_t stride, size_t bytes) {
@@ -273,12 +323,15 @@ void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsi
     const BlendTarget& b = d.state.blend[i];
     if (b.write_mask == 0) continue;
     const bool unorm = is_unorm8_format(ct.format);
+    const bool logic = d.state.logic_op_enabled;
     const Vec4<Float8>& c = colors[i];
     for (unsigned m = mask; m; m &= m - 1) {
       const int l = __builtin_ctz(m);
       const int x = gx + kLaneDx[l], y = gy + kLaneDy[l];
       glm::vec4 s(c.x[l], c.y[l], c.z[l], c.w[l]);
-      if (b.integer.integer()) {
+      if (logic) {
+        s = apply_logic_op(d.state.logic_op, b, unorm, s, load_color(ct, x, y));
+      } else if (b.integer.integer()) {
         for (int k = 0; k < 4; ++k)
           s[k] = std::bit_cast<float>(
               clamp_integer_bits(std::bit_cast<uint32_t>(s[k]), b.integer.bits[k], b.integer.is_signed));

@@ -147,9 +147,22 @@ inline void prim_elements(Topology t, uint32_t p, uint32_t n, uint32_t* e) {
   }
 }
 
+// Which of prim_elements' elements of primitive p is its provoking vertex (GL 3.3 Table
+// 2.12): the last one, or with the first-vertex convention the first in GL's numbering,
+// which for an odd strip triangle (listed with its first two swapped) and for a fan's
+// triangle (whose vertex 0 is shared) is element 1.
+inline int provoking_element(Topology t, uint32_t p, bool first) {
+  if (!first) return prim_size(t) - 1;
+  if (t == Topology::TriangleFan) return 1;
+  if (t == Topology::TriangleStrip) return int(p & 1);
+  return 0;
+}
+
 // Expands a strip/fan/loop/list with primitive restart into an independent list (t becomes
-// the list topology).
-std::vector<uint32_t> expand_restart(Topology& t, const std::vector<uint32_t>& idx, uint32_t restart);
+// the list topology). Each primitive keeps its winding and its provoking vertex where
+// provoking_element finds it in the list (with provoking_first, triangles are rotated).
+std::vector<uint32_t> expand_restart(Topology& t, const std::vector<uint32_t>& idx, uint32_t restart,
+                                     bool provoking_first);
 
 }  // namespace detail
 

@@ -131,15 +131,21 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
   const WinVert* const win = w.win.data();
   const float* const vars = w.vars.data();
   const bool offset_fill = d.state.offset_fill;
+  const bool provoking_first = d.state.provoking_first;
+  const int list_provoking = provoking_first ? 0 : ps - 1;  // of a point, line or triangle list
+  const bool is_list =
+      d.topology == Topology::Points || d.topology == Topology::Lines || d.topology == Topology::Triangles;
   uint64_t culled_count = 0;
   w.counters.primitives_in += nprims;
   for (uint32_t p = 0; p < nprims; ++p) {
     const uint32_t prim_id = ch.begin + p;
     const uint32_t* s = slots + size_t(p) * ps;
+    const uint32_t provoking =
+        s[is_list ? list_provoking : provoking_element(d.topology, prim_id, provoking_first)];
     if (filled_triangles && (codes[s[0]] | codes[s[1]] | codes[s[2]]) == 0) {
       // The common case: a filled triangle inside every plane, set up here without a call.
       bool culled = false;
-      Prim* pr = setup_triangle_inline(d, sc, win[s[0]], win[s[1]], win[s[2]], vars + size_t(s[2]) * K,
+      Prim* pr = setup_triangle_inline(d, sc, win[s[0]], win[s[1]], win[s[2]], vars + size_t(provoking) * K,
                                        prim_id, Facing::FromArea, offset_fill, w.arena, w.counters, &culled);
       culled_count += culled;
       if (pr) bin(w, chunk_index, &d, pr);
@@ -160,7 +166,7 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
       const glm::vec4 &p0 = w.pos[s[0]], &p1 = w.pos[s[1]];
       const unsigned c0 = w.codes[s[0]], c1 = w.codes[s[1]];
       if (c0 & c1) continue;
-      const float* flat_src = var_of(s[1]);
+      const float* flat_src = var_of(provoking);
       WinVert a, b;
       if ((c0 | c1) == 0) {
         a = w.win[s[0]];
@@ -187,7 +193,7 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     }
 
     // Triangles.
-    const float* flat_src = var_of(s[2]);
+    const float* flat_src = var_of(provoking);
     const unsigned c0 = w.codes[s[0]], c1 = w.codes[s[1]], c2 = w.codes[s[2]];
     if (c0 & c1 & c2) continue;
     WinVert wv[24];

@@ -13,8 +13,8 @@ namespace tessel::gpu {
 using namespace detail;
 
 // Expands a strip/fan/loop/list with primitive restart into an independent list.
-std::vector<uint32_t> detail::expand_restart(Topology& t, const std::vector<uint32_t>& idx,
-                                             uint32_t restart) {
+std::vector<uint32_t> detail::expand_restart(Topology& t, const std::vector<uint32_t>& idx, uint32_t restart,
+                                             bool provoking_first) {
   std::vector<uint32_t> out;
   const Topology in = t;
   size_t start = 0;
@@ -24,7 +24,10 @@ std::vector<uint32_t> detail::expand_restart(Topology& t, const std::vector<uint
     uint32_t e[3];
     for (uint32_t p = 0; p < np; ++p) {
       prim_elements(in, p, n, e);
-      for (int k = 0; k < prim_size(in); ++k) out.push_back(idx[a + e[k]]);
+      const int size = prim_size(in);
+      // A rotation keeps the winding and brings the provoking vertex where the list has it.
+      const int shift = size == 3 && provoking_first ? provoking_element(in, p, true) : 0;
+      for (int k = 0; k < size; ++k) out.push_back(idx[a + e[(k + shift) % size]]);
     }
   };
   for (size_t i = 0; i <= idx.size(); ++i) {
@@ -159,7 +162,7 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
       std::memcpy(&v, src + size_t(i) * isz, isz);
       raw[i] = v;
     }
-    if (state.primitive_restart) raw = expand_restart(d->topology, raw, restart);
+    if (state.primitive_restart) raw = expand_restart(d->topology, raw, restart, state.provoking_first);
     if (!raw.empty()) d->indices.resize(raw.size());
     for (size_t i = 0; i < raw.size(); ++i) {
       const int64_t id = int64_t(raw[i]) + call.base_vertex;
@@ -235,7 +238,8 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   d->fast_depth = d->target.depth && d->state.depth_test && !(d->state.stencil_test && d->target.has_stencil);
   d->fast_color = d->target.color_count == 1 && d->target.color[0].data &&
                   d->target.color[0].format == Format::RGBA8 && !d->state.blend[0].enabled &&
-                  d->state.blend[0].write_mask == 0xF && d->program->outputs >= 1;
+                  !d->state.logic_op_enabled && d->state.blend[0].write_mask == 0xF &&
+                  d->program->outputs >= 1;
 
   frame_->pending_prims += uint64_t(d->prim_count) * d->instance_count;
   frame_->commands.push_back({false, uint32_t(frame_->draws.size())});

@@ -243,6 +243,46 @@ TEST(Blend, UnormTargetsClampAndRound) {
   EXPECT_EQ(p.a, 1.0f);
 }
 
+// GL 3.3 §4.1.11: each of the sixteen operations on the 8-bit values of the fragment and the
+// buffer, with blending (on) ignored.
+TEST(LogicOp, EveryOperationOnUnormBytes) {
+  const uint32_t d[4] = {0x5A, 0xF0, 0x0F, 0xFF}, sv[4] = {0x33, 0xCC, 0xFF, 0x00};
+  auto expected = [](int op, uint32_t s, uint32_t d) -> uint32_t {
+    switch (op) {
+      case 0: return 0;
+      case 1: return s & d;
+      case 2: return s & ~d;
+      case 3: return s;
+      case 4: return ~s & d;
+      case 5: return d;
+      case 6: return s ^ d;
+      case 7: return s | d;
+      case 8: return ~(s | d);
+      case 9: return ~(s ^ d);
+      case 10: return ~d;
+      case 11: return s | ~d;
+      case 12: return ~s;
+      case 13: return ~s | d;
+      case 14: return ~(s & d);
+      default: return ~0u;
+    }
+  };
+  for (int op = 0; op < 16; ++op) {
+    Fixture fx;
+    fx.ctx.clear({.color = glm::vec4(float(d[0]), float(d[1]), float(d[2]), float(d[3])) / 255.0f});
+    RenderState st;
+    st.logic_op_enabled = true;
+    st.logic_op = LogicOp(op);
+    st.blend[0].enabled = true;
+    st.blend[0].dst_rgb = BlendFactor::One;
+    fx.draw(quad(0, glm::vec4(float(sv[0]), float(sv[1]), float(sv[2]), float(sv[3])) / 255.0f), st);
+    const glm::vec4 p = fx.pixel();
+    for (int k = 0; k < 4; ++k)
+      EXPECT_EQ(int(std::lrint(p[k] * 255.0f)), int(expected(op, sv[k], d[k]) & 0xFFu))
+          << "operation " << op << " component " << k;
+  }
+}
+
 TEST(WriteMask, ColourChannelsAndScissor) {
   Fixture fx;
   fx.ctx.clear({.color = {0, 0, 0, 0}});

@@ -23,6 +23,26 @@ enum class IndexType : uint8_t { U8, U16, U32 };
 
 enum class StencilOp : uint8_t { Keep, Zero, Replace, Incr, IncrWrap, Decr, DecrWrap, Invert };
 enum class BlendEquation : uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
+// The sixteen logical operations of GL 3.3 §4.1.11 (Table 4.3), in GL's order: s is the
+// fragment's value, d the buffer's.
+enum class LogicOp : uint8_t {
+  Clear,         // 0
+  And,           // s & d
+  AndReverse,    // s & ~d
+  Copy,          // s
+  AndInverted,   // ~s & d
+  Noop,          // d
+  Xor,           // s ^ d
+  Or,            // s | d
+  Nor,           // ~(s | d)
+  Equiv,         // ~(s ^ d)
+  Invert,        // ~d
+  OrReverse,     // s | ~d
+  CopyInverted,  // ~s
+  OrInverted,    // ~s | d
+  Nand,          // ~(s & d)
+  Set,           // all ones
+};
 enum class BlendFactor : uint8_t {
   Zero,
   One,
@@ -113,6 +133,16 @@ struct RenderState {
 
   std::array<BlendTarget, kMaxColorAttachments> blend{};
   glm::vec4 blend_color{0.0f};
+  // GL_COLOR_LOGIC_OP (GL 3.3 §4.1.11): when enabled, blending is off for every target and
+  // unsigned normalized targets store logic_op of the fragment's and the buffer's 8-bit
+  // values, integer targets of their integer bits (at the format's width); float targets
+  // store the fragment's value.
+  bool logic_op_enabled = false;
+  LogicOp logic_op = LogicOp::Copy;
+
+  // glProvokingVertex (GL 3.3 §2.18, Table 2.12): flat varyings come from each primitive's
+  // first vertex in GL's numbering instead of its last (for a fan's triangles, the second).
+  bool provoking_first = false;
 
   bool primitive_restart = false;  // index 0xFF / 0xFFFF / 0xFFFFFFFF restarts (fixed index)
 };
