@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "api.hpp"
+#include "compressed.hpp"
 
 namespace tessel::gl {
 
@@ -377,8 +378,14 @@ bool get_level_parameter(Context& c, GLenum target, GLint level, GLenum pname, d
     case GL_TEXTURE_BLUE_TYPE: out = type(f.b); return true;
     case GL_TEXTURE_ALPHA_TYPE: out = type(f.a); return true;
     case GL_TEXTURE_DEPTH_TYPE: out = type(f.depth); return true;
-    case GL_TEXTURE_COMPRESSED: out = 0; return true;
-    case GL_TEXTURE_COMPRESSED_IMAGE_SIZE: c.error(GL_INVALID_OPERATION); return false;
+    case GL_TEXTURE_COMPRESSED: out = d && f.rgtc() ? 1 : 0; return true;
+    case GL_TEXTURE_COMPRESSED_IMAGE_SIZE:
+      if (d && f.rgtc()) {
+        out = double(compressed_bytes(f, img.width, img.height, img.depth));
+        return true;
+      }
+      c.error(GL_INVALID_OPERATION);
+      return false;
     case GL_TEXTURE_BUFFER_DATA_STORE_BINDING: out = t->buffer ? t->buffer->name : 0; return true;
     default: break;
   }

@@ -1,6 +1,7 @@
 // Texture objects and images (GL 3.3 compatibility §3.8.1-§3.8.7, §3.8.16-§3.8.17, §6.1.4):
 // glGenTextures, glBindTexture, glTexImage1D/2D/3D, glTexSubImage*, glCopyTexImage*,
-// glCopyTexSubImage*, glTexBuffer, glGenerateMipmap and glGetTexImage, for every target.
+// glCopyTexSubImage*, glTexBuffer, glGenerateMipmap and glGetTexImage, for every target, and
+// the compressed images of §3.8.3 (glCompressedTex*Image*, glGetCompressedTexImage).
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -8,8 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 
 #include "api.hpp"
+#include "compressed.hpp"
 #include "pixels.hpp"
 
 namespace tessel::gl {
@@ -213,6 +216,7 @@ void tex_image(Context& c, const ImageTarget& it, GLint level, const TexFormat& 
   }
   img.width = w, img.height = h, img.depth = d;
   img.fmt = fmt;
+  img.blocks.clear();
   if (data) {
     store_block(img, 0, 0, 0, w, h, d, *data);
   } else if (!fmt.is_depth()) {
@@ -221,6 +225,7 @@ void tex_image(Context& c, const ImageTarget& it, GLint level, const TexFormat& 
     const size_t bpp = gpu::format_info(fmt.storage).bytes;
     for (size_t i = 0; i < bytes; i += bpp) gpu::detail::encode_texel(fmt.storage, img.data.data() + i, zero);
   }
+  compress_region(img, 0, 0, 0, w, h, d);  // a compressed format samples as its blocks
   if (t.generate_mipmap && level == t.effective_base()) generate_mipmaps(c, t);  // GL 1.4 §3.8.8
 }
 
@@ -235,6 +240,10 @@ GLenum sub_image_error(Context& c, const ImageTarget& it, GLint level, GLint x, 
   if (x < 0 || y < 0 || z < 0 || w < 0 || h < 0 || d < 0 || int64_t(x) + w > img.width ||
       int64_t(y) + h > img.height || int64_t(z) + d > img.depth)
     return GL_INVALID_VALUE;
+  // §3.8.3: a region of an RGTC image starts on a 4x4 block and spans whole blocks or reaches
+  // the image's edge.
+  if (img.fmt.rgtc() && (x % 4 || y % 4 || (w % 4 && x + w != img.width) || (h % 4 && y + h != img.height)))
+    return GL_INVALID_OPERATION;
   return GL_NO_ERROR;
 }
 
@@ -252,7 +261,20 @@ void tex_sub_image(Context& c, const ImageTarget& it, GLint level, GLint x, GLin
   pull_rendered(c, t);
   texture_changed(c, t);
   store_block(img, x, y, z, w, h, d, *data);
+  compress_region(img, x, y, z, w, h, d);
   if (t.generate_mipmap && level == t.effective_base()) generate_mipmaps(c, t);
+}
+
+// §3.8.3: RGTC images are 2D - of 2D textures, cube map faces and 2D array layers. For the
+// other targets (1D, rectangles, 3D) Mesa 22 gives GL_INVALID_ENUM.
+GLenum compressed_target_error(const TexFormat& fmt, const ImageTarget& it) {
+  if (!fmt.rgtc()) return GL_NO_ERROR;
+  switch (it.target) {
+    case TexTarget::T2D:
+    case TexTarget::Cube:
+    case TexTarget::T2DArray: return GL_NO_ERROR;
+    default: return GL_INVALID_ENUM;
+  }
 }
 
 // The entry points' common part: the checks that come before the pixels are read.
@@ -265,6 +287,10 @@ bool image_checks(Context& c, const ImageTarget& it, GLint level, GLint internal
   }
   if (!tex_format_of(internal, c.core_profile, fmt)) {
     c.error(GL_INVALID_VALUE);
+    return false;
+  }
+  if (const GLenum ce = compressed_target_error(fmt, it); ce != GL_NO_ERROR) {
+    c.error(ce);
     return false;
   }
   const GLenum e = check_sizes(it, level, w, h, d, border);
@@ -329,6 +355,100 @@ void tex_sub_image_entry(GLenum target, int dims, GLint level, GLint x, GLint y,
   tex_sub_image(c, it, level, x, y, z, w, h, d, format, data);
 }
 
+// --- compressed images (§3.8.3) ------------------------------------------------------------
+
+using Blocks = std::shared_ptr<const std::vector<uint8_t>>;
+
+// The client's compressed bytes, or the pixel unpack buffer's; null with `err` set as for
+// pixels (a mapped or too small buffer).
+Blocks read_blocks(Context& c, const void* data, GLsizei size, GLenum& err) {
+  err = GL_NO_ERROR;
+  if (size <= 0) return nullptr;
+  const std::byte* src =
+      transfer_memory(c.pixel_unpack_buffer, const_cast<void*>(data), size_t(size), GL_UNSIGNED_BYTE, err);
+  if (!src) return nullptr;
+  const auto* p = reinterpret_cast<const uint8_t*>(src);
+  return std::make_shared<const std::vector<uint8_t>>(p, p + size);
+}
+
+void compressed_tex_image(Context& c, const ImageTarget& it, GLint level, const TexFormat& fmt, GLsizei w,
+                          GLsizei h, GLsizei d, const Blocks& blocks) {
+  GL_OUTSIDE_BEGIN();
+  tex_image(c, it, level, fmt, w, h, d, nullptr);
+  if (it.proxy || !blocks) return;
+  TextureObject& t = target_object(c, it);
+  TextureImage& img = t.image(it.face, level);
+  if (!img.defined() || img.fmt.internal != fmt.internal) return;  // it did not fit
+  store_compressed(img, 0, 0, 0, w, h, d, blocks->data());
+  if (t.generate_mipmap && level == t.effective_base()) generate_mipmaps(c, t);
+}
+
+void compressed_image_entry(GLenum target, int dims, GLint level, GLenum internal, GLsizei w, GLsizei h,
+                            GLsizei d, GLint border, GLsizei size, const void* data) {
+  GL_CONTEXT();
+  if (!c.compiling_only() && c.in_begin) return c.error(GL_INVALID_OPERATION);
+  ImageTarget it;
+  if (!image_target(target, dims, it)) return c.error(GL_INVALID_ENUM);
+  // Only a specific compressed format: the generic ones (GL_COMPRESSED_RED, ...) are for
+  // glTexImage to choose a format (§3.8.3).
+  TexFormat fmt;
+  if (!tex_format_of(GLint(internal), c.core_profile, fmt) || !fmt.rgtc()) return c.error(GL_INVALID_ENUM);
+  if (const GLenum ce = compressed_target_error(fmt, it); ce != GL_NO_ERROR) return c.error(ce);
+  if (const GLenum e = check_sizes(it, level, w, h, d, border); e != GL_NO_ERROR) return c.error(e);
+  if (size < 0 || size_t(size) != compressed_bytes(fmt, w, h, d)) return c.error(GL_INVALID_VALUE);
+  if (!it.proxy &&
+      uint64_t(w) * uint64_t(h) * uint64_t(d) * gpu::format_info(fmt.storage).bytes > gpu::kMaxTextureBytes)
+    return c.error(GL_OUT_OF_MEMORY);
+  GLenum err = GL_NO_ERROR;
+  Blocks blocks;
+  try {
+    if (!it.proxy) blocks = read_blocks(c, data, size, err);
+  } catch (const std::bad_alloc&) {
+    return c.error(GL_OUT_OF_MEMORY);
+  }
+  if (err != GL_NO_ERROR) return c.error(err);
+  if (!it.proxy) GL_LISTED(compressed_tex_image(c, it, level, fmt, w, h, d, blocks));
+  compressed_tex_image(c, it, level, fmt, w, h, d, blocks);
+}
+
+void compressed_tex_sub_image(Context& c, const ImageTarget& it, GLint level, GLint x, GLint y, GLint z,
+                              GLsizei w, GLsizei h, GLsizei d, GLenum format, const Blocks& blocks) {
+  GL_OUTSIDE_BEGIN();
+  if (const GLenum e = sub_image_error(c, it, level, x, y, z, w, h, d); e != GL_NO_ERROR) return c.error(e);
+  TextureObject& t = c.bound_texture(it.target);
+  TextureImage& img = t.image(it.face, level);
+  if (img.fmt.internal != format) return c.error(GL_INVALID_OPERATION);
+  if (!blocks || w == 0 || h == 0 || d == 0) return;
+  pull_rendered(c, t);
+  texture_changed(c, t);
+  store_compressed(img, x, y, z, w, h, d, blocks->data());
+  if (t.generate_mipmap && level == t.effective_base()) generate_mipmaps(c, t);
+}
+
+void compressed_sub_image_entry(GLenum target, int dims, GLint level, GLint x, GLint y, GLint z, GLsizei w,
+                                GLsizei h, GLsizei d, GLenum format, GLsizei size, const void* data) {
+  GL_CONTEXT();
+  if (!c.compiling_only() && c.in_begin) return c.error(GL_INVALID_OPERATION);
+  ImageTarget it;
+  if (!image_target(target, dims, it) || it.proxy) return c.error(GL_INVALID_ENUM);
+  TexFormat fmt;
+  if (!tex_format_of(GLint(format), c.core_profile, fmt) || !fmt.rgtc()) return c.error(GL_INVALID_ENUM);
+  if (const GLenum e = sub_image_error(c, it, level, x, y, z, w, h, d); e != GL_NO_ERROR) return c.error(e);
+  const TextureImage& img = c.bound_texture(it.target).image(it.face, level);
+  if (img.fmt.internal != format) return c.error(GL_INVALID_OPERATION);
+  if (size < 0 || size_t(size) != compressed_bytes(fmt, w, h, d)) return c.error(GL_INVALID_VALUE);
+  GLenum err = GL_NO_ERROR;
+  Blocks blocks;
+  try {
+    blocks = read_blocks(c, data, size, err);
+  } catch (const std::bad_alloc&) {
+    return c.error(GL_OUT_OF_MEMORY);
+  }
+  if (err != GL_NO_ERROR) return c.error(err);
+  GL_LISTED(compressed_tex_sub_image(c, it, level, x, y, z, w, h, d, format, blocks));
+  compressed_tex_sub_image(c, it, level, x, y, z, w, h, d, format, blocks);
+}
+
 // Pixels of the read buffer as floats, rows bottom-up (for glCopyTex*); outside the buffer
 // (0, 0, 0, 0). Depth when `depth`.
 std::vector<glm::vec4> read_block(Context& c, GLint x, GLint y, GLsizei w, GLsizei h, bool depth) {
@@ -352,6 +472,7 @@ void copy_tex_image(Context& c, const ImageTarget& it, GLint level, GLint intern
   GL_OUTSIDE_BEGIN();
   TexFormat fmt;
   if (!tex_format_of(internal, c.core_profile, fmt)) return c.error(GL_INVALID_ENUM);
+  if (const GLenum ce = compressed_target_error(fmt, it); ce != GL_NO_ERROR) return c.error(ce);
   const GLenum e = check_sizes(it, level, w, h, 1, border);
   if (e != GL_NO_ERROR) return c.error(e);
   if (!c.read_framebuffer_complete()) return c.error(GL_INVALID_FRAMEBUFFER_OPERATION);
@@ -415,6 +536,13 @@ void bind_texture(Context& c, GLenum target, GLuint name) {
 // signed or unsigned integers - and their layout in the buffer's bytes.
 bool buffer_texel_of(const TexFormat& f, gpu::BufferTexel& out) {
   using C = gpu::BufferComponent;
+  // Sized formats only: not GL_RGBA, GL_COMPRESSED_RED or an RGTC format of the same layout.
+  static constexpr GLenum kTable[] = {
+      GL_R8,     GL_R16,     GL_R16F,    GL_R32F,    GL_R8I,      GL_R16I,    GL_R32I,    GL_R8UI,
+      GL_R16UI,  GL_R32UI,   GL_RG8,     GL_RG16,    GL_RG16F,    GL_RG32F,   GL_RG8I,    GL_RG16I,
+      GL_RG32I,  GL_RG8UI,   GL_RG16UI,  GL_RG32UI,  GL_RGBA8,    GL_RGBA16,  GL_RGBA16F, GL_RGBA32F,
+      GL_RGBA8I, GL_RGBA16I, GL_RGBA32I, GL_RGBA8UI, GL_RGBA16UI, GL_RGBA32UI};
+  if (std::find(std::begin(kTable), std::end(kTable), f.internal) == std::end(kTable)) return false;
   const int channels = f.base == TexBase::Red    ? 1
                        : f.base == TexBase::RG   ? 2
                        : f.base == TexBase::RGBA ? 4
@@ -608,6 +736,48 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
     if (img.fmt.integer()) match_integer_sign(px, img.fmt.kind == TexKind::Int, type);
     pack_pixels(c.c.pack, img.width, rows, format, type, px, dst + (b.first + size_t(k)) * b.image_stride);
   }
+}
+
+void GLAPIENTRY glCompressedTexImage1D(GLenum target, GLint level, GLenum internal, GLsizei w, GLint border,
+                                       GLsizei size, const GLvoid* data) {
+  compressed_image_entry(target, 1, level, internal, w, 1, 1, border, size, data);
+}
+void GLAPIENTRY glCompressedTexImage2D(GLenum target, GLint level, GLenum internal, GLsizei w, GLsizei h,
+                                       GLint border, GLsizei size, const GLvoid* data) {
+  compressed_image_entry(target, 2, level, internal, w, h, 1, border, size, data);
+}
+void GLAPIENTRY glCompressedTexImage3D(GLenum target, GLint level, GLenum internal, GLsizei w, GLsizei h,
+                                       GLsizei d, GLint border, GLsizei size, const GLvoid* data) {
+  compressed_image_entry(target, 3, level, internal, w, h, d, border, size, data);
+}
+void GLAPIENTRY glCompressedTexSubImage1D(GLenum target, GLint level, GLint x, GLsizei w, GLenum format,
+                                          GLsizei size, const GLvoid* data) {
+  compressed_sub_image_entry(target, 1, level, x, 0, 0, w, 1, 1, format, size, data);
+}
+void GLAPIENTRY glCompressedTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h,
+                                          GLenum format, GLsizei size, const GLvoid* data) {
+  compressed_sub_image_entry(target, 2, level, x, y, 0, w, h, 1, format, size, data);
+}
+void GLAPIENTRY glCompressedTexSubImage3D(GLenum target, GLint level, GLint x, GLint y, GLint z, GLsizei w,
+                                          GLsizei h, GLsizei d, GLenum format, GLsizei size,
+                                          const GLvoid* data) {
+  compressed_sub_image_entry(target, 3, level, x, y, z, w, h, d, format, size, data);
+}
+
+// §6.1.4: the blocks of a compressed image, as glCompressedTexImage takes them.
+void GLAPIENTRY glGetCompressedTexImage(GLenum target, GLint level, GLvoid* pixels) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  ImageTarget it;
+  const bool ok = image_target(target, 1, it) || image_target(target, 2, it) || image_target(target, 3, it);
+  if (!ok || it.proxy) return c.error(GL_INVALID_ENUM);
+  if (level < 0 || level >= kMaxTextureLevels) return c.error(GL_INVALID_VALUE);
+  const TextureImage& img = c.bound_texture(it.target).image(it.face, level);
+  if (!img.defined() || !img.fmt.rgtc()) return c.error(GL_INVALID_OPERATION);
+  GLenum err = GL_NO_ERROR;
+  std::byte* dst = transfer_memory(c.pixel_pack_buffer, pixels, img.blocks.size(), GL_UNSIGNED_BYTE, err);
+  if (err != GL_NO_ERROR) return c.error(err);
+  if (dst) std::memcpy(dst, img.blocks.data(), img.blocks.size());
 }
 
 // GL 3.3 §3.8.7: a buffer texture reads a buffer object's store as an array of texels.

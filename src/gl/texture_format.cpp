@@ -103,6 +103,11 @@ constexpr Row kFormats[] = {
     {GL_SRGB8, B::RGB, K::Srgb, F::RGBA16F, 8, 8, 8, 0, 0, 0, 0, 0, false},
     {GL_SRGB_ALPHA, B::RGBA, K::Srgb, F::RGBA16F, 8, 8, 8, 8, 0, 0, 0, 0, false},
     {GL_SRGB8_ALPHA8, B::RGBA, K::Srgb, F::RGBA16F, 8, 8, 8, 8, 0, 0, 0, 0, false},
+    // RGTC (GL 3.3 Table 3.14): blocks kept beside their decoded texels (compressed.hpp)
+    {GL_COMPRESSED_RED_RGTC1, B::Red, K::Unorm, F::R8, 8, 0, 0, 0, 0, 0, 0, 0, false},
+    {GL_COMPRESSED_SIGNED_RED_RGTC1, B::Red, K::Snorm, F::RGBA32F, 8, 0, 0, 0, 0, 0, 0, 0, false},
+    {GL_COMPRESSED_RG_RGTC2, B::RG, K::Unorm, F::RG8, 8, 8, 0, 0, 0, 0, 0, 0, false},
+    {GL_COMPRESSED_SIGNED_RG_RGTC2, B::RG, K::Snorm, F::RGBA32F, 8, 8, 0, 0, 0, 0, 0, 0, false},
     {GL_COMPRESSED_SRGB, B::RGB, K::Srgb, F::RGBA16F, 8, 8, 8, 0, 0, 0, 0, 0, false},
     {GL_COMPRESSED_SRGB_ALPHA, B::RGBA, K::Srgb, F::RGBA16F, 8, 8, 8, 8, 0, 0, 0, 0, false},
     // float
@@ -180,7 +185,7 @@ float quantize_int(float v, TexKind kind, int bits) {
 }  // namespace
 
 bool TexFormat::color_renderable() const {
-  if (is_depth() || shared_exponent || kind == TexKind::Snorm) return false;
+  if (is_depth() || shared_exponent || kind == TexKind::Snorm || rgtc()) return false;
   return base == TexBase::Red || base == TexBase::RG || base == TexBase::RGB || base == TexBase::RGBA;
 }
 

@@ -51,6 +51,10 @@ struct TexFormat {
   bool shared_exponent = false;  // RGB9_E5
 
   bool integer() const { return kind == TexKind::Int || kind == TexKind::Uint; }
+  // One of the four RGTC formats: stored compressed as well (compressed.hpp).
+  bool rgtc() const {
+    return internal >= GL_COMPRESSED_RED_RGTC1 && internal <= GL_COMPRESSED_SIGNED_RG_RGTC2;
+  }
   bool is_depth() const { return base == TexBase::Depth || base == TexBase::DepthStencil; }
   bool has_stencil() const { return base == TexBase::DepthStencil; }
   bool color() const { return !is_depth(); }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "compressed.hpp"
 #include "context.hpp"
 
 namespace tessel::gl {
@@ -366,6 +367,8 @@ void generate_mipmaps(Context& c, TextureObject& t) {
           }
         }
       }
+      dst.blocks.clear();
+      compress_region(dst, 0, 0, 0, dst.width, dst.height, dst.depth);  // RGTC levels are compressed too
     }
   }
 }

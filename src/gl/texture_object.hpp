@@ -59,6 +59,8 @@ struct TextureImage {
   int width = 0, height = 0, depth = 0;
   TexFormat fmt;
   std::vector<std::byte> data;
+  // A compressed format's blocks (compressed.hpp), of which `data` holds the decoded texels.
+  std::vector<uint8_t> blocks;
   bool defined() const { return width > 0; }
 };
 

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "../../src/gl/context.hpp"
 #include "gl33_test_util.hpp"
@@ -1496,6 +1497,95 @@ TEST_F(GL33ErrorsTest, EveryBufferTextureFormat) {
   EXPECT_EQ(rejected, "") << "table 3.15 formats glTexBuffer rejects";
   glDeleteTextures(1, &t);
   glDeleteBuffers(1, &b);
+}
+
+// §3.8.3: RGTC images - sizes, targets, block alignment, formats - and their blocks read back
+// as given.
+TEST_F(GL33ErrorsTest, CompressedTextureErrors) {
+  GLuint t;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  std::vector<GLubyte> blocks(8 * 4 * 4), back(blocks.size(), 0);
+  for (size_t i = 0; i < blocks.size(); ++i) blocks[i] = GLubyte(i * 37 + 11);
+  EXPECT_GL_ERR(
+      glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RED_RGTC1, 16, 16, 0, 127, blocks.data()),
+      GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RED, 16, 16, 0, 128, blocks.data()),
+                GL_INVALID_ENUM);
+  EXPECT_GL_ERR(
+      glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RED_RGTC1, 16, 16, 1, 128, blocks.data()),
+      GL_INVALID_VALUE);
+  EXPECT_GL_ERR(
+      glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RED_RGTC1, 16, 16, 0, 128, blocks.data()),
+      GL_NO_ERROR);
+  GLint compressed = 0, size = 0, internal = 0;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED, &compressed);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED_IMAGE_SIZE, &size);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &internal);
+  EXPECT_EQ(compressed, GL_TRUE);
+  EXPECT_EQ(size, 128);
+  EXPECT_EQ(internal, GL_COMPRESSED_RED_RGTC1);
+  EXPECT_GL_ERR(glGetCompressedTexImage(GL_TEXTURE_2D, 0, back.data()), GL_NO_ERROR);
+  EXPECT_EQ(back, blocks) << "the blocks come back as given";
+  // Sub-images start on a block and end on one or at the edge; the format is the image's.
+  EXPECT_GL_ERR(
+      glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 2, 0, 4, 4, GL_COMPRESSED_RED_RGTC1, 8, blocks.data()),
+      GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(
+      glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 4, 4, 4, 4, GL_COMPRESSED_RG_RGTC2, 16, blocks.data()),
+      GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(
+      glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 4, 4, 4, 4, GL_COMPRESSED_RED_RGTC1, 16, blocks.data()),
+      GL_INVALID_VALUE);
+  EXPECT_GL_ERR(
+      glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 4, 4, 4, 4, GL_COMPRESSED_RED_RGTC1, 8, blocks.data()),
+      GL_NO_ERROR);
+  EXPECT_GL_ERR(glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 0, 4, 4, GL_RED, GL_UNSIGNED_BYTE, blocks.data()),
+                GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glTexSubImage2D(GL_TEXTURE_2D, 0, 12, 12, 4, 4, GL_RED, GL_UNSIGNED_BYTE, blocks.data()),
+                GL_NO_ERROR);
+  // RGTC is for 2D images: not 3D textures, not 1D or rectangles (GL_INVALID_ENUM, as Mesa);
+  // no colour rendering.
+  GLuint t3;
+  glGenTextures(1, &t3);
+  glBindTexture(GL_TEXTURE_3D, t3);
+  EXPECT_GL_ERR(
+      glCompressedTexImage3D(GL_TEXTURE_3D, 0, GL_COMPRESSED_RED_RGTC1, 4, 4, 4, 0, 32, blocks.data()),
+      GL_INVALID_ENUM);
+  EXPECT_GL_ERR(glTexImage2D(GL_TEXTURE_RECTANGLE, 0, GL_COMPRESSED_RED_RGTC1, 4, 4, 0, GL_RED,
+                             GL_UNSIGNED_BYTE, nullptr),
+                GL_INVALID_ENUM);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, t, 0);
+  GLenum draw[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, draw);
+  EXPECT_NE(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
+  glDrawBuffers(1, draw);
+  // An uncompressed image has no blocks to read.
+  GLuint u;
+  glGenTextures(1, &u);
+  glBindTexture(GL_TEXTURE_2D, u);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_GL_ERR(glGetCompressedTexImage(GL_TEXTURE_2D, 0, back.data()), GL_INVALID_OPERATION);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  const GLuint all[3] = {t, t3, u};
+  glDeleteTextures(3, all);
+}
+
+// glProvokingVertex takes the two conventions only; glLogicOp the sixteen operations.
+TEST_F(GL33ErrorsTest, ProvokingVertexAndLogicOpErrors) {
+  EXPECT_GL_ERR(glProvokingVertex(GL_FIRST_VERTEX_CONVENTION), GL_NO_ERROR);
+  EXPECT_GL_ERR(glProvokingVertex(GL_TRIANGLES), GL_INVALID_ENUM);
+  GLint v = 0;
+  glGetIntegerv(GL_PROVOKING_VERTEX, &v);
+  EXPECT_EQ(v, GL_FIRST_VERTEX_CONVENTION);
+  glProvokingVertex(GL_LAST_VERTEX_CONVENTION);
+  // A core context has no quads: Mesa knows no quads-follow query there either.
+  EXPECT_GL_ERR(glGetIntegerv(GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION, &v), GL_INVALID_ENUM);
+  EXPECT_GL_ERR(glLogicOp(GL_XOR), GL_NO_ERROR);
+  EXPECT_GL_ERR(glLogicOp(GL_SET + 1), GL_INVALID_ENUM);
+  glLogicOp(GL_COPY);
 }
 
 TEST_F(GL33ErrorsTest, DISABLED_MinimumsOfWhatTesselLacks) {
