@@ -98,7 +98,6 @@ static GLuint buffer_of(const void* data, size_t size) {
 }
 
 int main(int argc, char** argv) {
-  static const float quad[8] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
   static const char* names[12] = {"r16",     "rg8",    "rgba16",   "rgba8i", "rg16i", "r32i",
                                   "rgba8ui", "rg16ui", "rgba32ui", "r32f",   "rg32f", "rgba16f"};
   static const GLenum formats[12] = {GL_R16,     GL_RG8,    GL_RGBA16,   GL_RGBA8I, GL_RG16I, GL_R32I,
@@ -106,7 +105,7 @@ int main(int argc, char** argv) {
   static unsigned char bytes[BYTES];
   static float floats[BYTES / 4];
   static unsigned short halves[BYTES / 2];
-  GLuint buffers[3], tex[12], vbo;
+  GLuint buffers[3], tex[12];
   unsigned int h = 2166136261u;
   int i;
   open_window(&argc, argv, 3, 3, GLUT_CORE_PROFILE, "buffer texture formats");
@@ -135,13 +134,7 @@ int main(int argc, char** argv) {
   glBufferData(GL_TEXTURE_BUFFER, sizeof bytes, bytes, GL_DYNAMIC_DRAW);
   glBufferSubData(GL_TEXTURE_BUFFER, 0, 64, bytes + 1000);
 
-  glGenVertexArrays(1, &vao);
-  glBindVertexArray(vao);
-  glGenBuffers(1, &vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, (void*)0);
-  glEnableVertexAttribArray(0);
+  vao = window_strip();
   check_gl("setup");
   glutDisplayFunc(display);
   glutMainLoop();

@@ -116,10 +116,8 @@ static GLuint texture2d(void) {
 
 int main(int argc, char** argv) {
   static const char* names[7] = {"red", "sred", "rg", "srg", "small", "encoded", "copies"};
-  static const float quad[8] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
   static unsigned char blocks[S * S * 2], patch[16 * 16 * 2], texels[S * S * 4], back[S * S * 2];
   GLint compressed = 0, size = 0;
-  GLuint vbo;
   size_t n;
   int i, x, y;
   open_window(&argc, argv, 3, 3, GLUT_CORE_PROFILE, "rgtc textures");
@@ -174,13 +172,7 @@ int main(int argc, char** argv) {
 
   glUseProgram(prog);
   for (i = 0; i < 7; ++i) glUniform1i(glGetUniformLocation(prog, names[i]), i);
-  glGenVertexArrays(1, &vao);
-  glBindVertexArray(vao);
-  glGenBuffers(1, &vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, (void*)0);
-  glEnableVertexAttribArray(0);
+  vao = window_strip();
   check_gl("setup");
   glutDisplayFunc(display);
   glutMainLoop();

@@ -1,8 +1,8 @@
 /*
  * Helpers the GL 3.3 acceptance programs share whatever window system they use (GLUT, GLFW):
  * shaders compiled from strings with their info logs printed, a program linked from two, a GL
- * error check, a few matrices (column-major, as glUniformMatrix4fv takes them with transpose
- * GL_FALSE) and a UV sphere.
+ * error check, a window-filling quad, a few matrices (column-major, as glUniformMatrix4fv
+ * takes them with transpose GL_FALSE) and a UV sphere.
  *
  * It declares no GL itself: include a GL header first (GLEW's GL/glew.h, as common.h does, or
  * loader.h), then this one.
@@ -47,6 +47,21 @@ static inline GLuint link_program(const char* vs, const char* fs) {
   glDeleteShader(v);
   glDeleteShader(f);
   return p;
+}
+
+/* A vertex array of the window-filling quad at attribute 0 (vec2 positions -1..1), drawn
+ * with glDrawArrays(GL_TRIANGLE_STRIP, 0, 4); left bound. */
+static inline GLuint window_strip(void) {
+  static const float quad[8] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
+  GLuint vao, vbo;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glGenBuffers(1, &vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, (void*)0);
+  glEnableVertexAttribArray(0);
+  return vao;
 }
 
 static inline void check_gl(const char* where) {
