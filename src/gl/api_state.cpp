@@ -26,6 +26,7 @@ bool* capability(Context& c, GLenum cap) {
     case GL_PROGRAM_POINT_SIZE: return &c.program_point_size;
     case GL_PRIMITIVE_RESTART: return &c.primitive_restart;
     case GL_DEPTH_CLAMP: return &c.depth_clamp;
+    case GL_TEXTURE_CUBE_MAP_SEAMLESS: return &c.cube_map_seamless;
     case GL_AUTO_NORMAL: return &s.eval.auto_normal;
     case GL_LIGHTING: return &s.light.lighting;
     case GL_COLOR_MATERIAL: return &s.light.color_material;
@@ -63,7 +64,7 @@ bool* capability(Context& c, GLenum cap) {
 }
 
 // Capabilities that are accepted and kept but change nothing Tessel draws (colour-index
-// logic op, multisampling, seamless cube maps, sRGB writes to a linear window).
+// logic op, multisampling, sRGB writes to a linear window).
 // (The sample-coverage capabilities act only on multisample buffers, which Tessel's
 // framebuffers do not have: GL 3.3 §4.1.3.)
 bool* inert_capability(GLenum cap) {
@@ -75,8 +76,7 @@ bool* inert_capability(GLenum cap) {
     case GL_SAMPLE_MASK: return &inert[8];
     case GL_INDEX_LOGIC_OP: return &inert[1];
     case GL_MULTISAMPLE: return &inert[2];
-    // Cube maps are always sampled across faces (as llvmpipe does); the window is not sRGB.
-    case GL_TEXTURE_CUBE_MAP_SEAMLESS: return &inert[3];
+    // The window is not sRGB.
     case GL_FRAMEBUFFER_SRGB: return &inert[4];
     default: return nullptr;
   }

@@ -685,6 +685,7 @@ class Context {
   GLuint primitive_restart_index = 0;
   bool primitive_restart = false;
   bool program_point_size = false, depth_clamp = false;
+  bool cube_map_seamless = false;  // GL_TEXTURE_CUBE_MAP_SEAMLESS (GL 3.3 §3.8.8)
   // Shader and program objects share one name space (GL 3.3 §2.11.1).
   std::unordered_map<GLuint, ShaderObject> shaders;
   std::unordered_map<GLuint, ProgramObject> programs;

@@ -519,6 +519,7 @@ bool Context::texture_units_for_draw(const glsl::Program& program, std::vector<g
     if (!texture_complete(t, p)) continue;
     glsl::TextureBinding& b = units[size_t(i)];
     b.sampler = sampler_state_of(p, t);
+    b.sampler.seamless = cube_map_seamless;
     b.swizzle = swizzle_of(t, core_profile);
     switch (target) {
       case TexTarget::T1D:

@@ -587,6 +587,41 @@ inline void face_st(int face, float x, float y, float z, float& s, float& t) {
   t = (a.tc / a.ma + 1.0f) * 0.5f;
 }
 
+// Texel (i, j) of a cube face's level where i or j may be one step outside the face (a linear
+// lookup at its edge; GL 3.3 §3.8.8 with TEXTURE_CUBE_MAP_SEAMLESS): the texel of the face the
+// texel's centre direction falls on. Outside in both, the corner: the average of the three
+// texels that meet there, as llvmpipe takes it.
+glm::vec4 seamless_texel(const TextureCube& cube, int level, int face, int i, int j) {
+  const int n = cube.face(face).width(level);
+  const bool out_i = i < 0 || i >= n, out_j = j < 0 || j >= n;
+  if (!out_i && !out_j) return cube.face(face).fetch(level, i, j);
+  if (out_i && out_j) {
+    const int ci = std::clamp(i, 0, n - 1), cj = std::clamp(j, 0, n - 1);
+    return (cube.face(face).fetch(level, ci, cj) + seamless_texel(cube, level, face, i, cj) +
+            seamless_texel(cube, level, face, ci, j)) *
+           (1.0f / 3.0f);
+  }
+  // The texel centre's face coordinates, past the edge on one axis, and its direction
+  // (face_axes inverted).
+  const float sc = 2.0f * (float(i) + 0.5f) / float(n) - 1.0f,
+              tc = 2.0f * (float(j) + 0.5f) / float(n) - 1.0f;
+  glm::vec3 d;
+  switch (face) {
+    case 0: d = {1.0f, -tc, -sc}; break;
+    case 1: d = {-1.0f, -tc, sc}; break;
+    case 2: d = {sc, 1.0f, tc}; break;
+    case 3: d = {sc, -1.0f, -tc}; break;
+    case 4: d = {sc, -tc, 1.0f}; break;
+    default: d = {-sc, -tc, -1.0f}; break;
+  }
+  const int nf = select_face(d.x, d.y, d.z);
+  float s, t;
+  face_st(nf, d.x, d.y, d.z, s, t);
+  const int m = cube.face(nf).width(level);
+  return cube.face(nf).fetch(level, std::clamp(floor_to_int(s * float(m)), 0, m - 1),
+                             std::clamp(floor_to_int(t * float(m)), 0, m - 1));
+}
+
 SamplerState cube_face_state(const SamplerState& st) {
   SamplerState f = st;
   f.wrap_s = f.wrap_t = f.wrap_r = Wrap::ClampToEdge;
@@ -651,8 +686,26 @@ glm::vec4 sample_cube(const SamplerCube& s, float x, float y, float z, float lod
   const int face = select_face(x, y, z);
   float fs, ft;
   face_st(face, x, y, z, fs, ft);
-  const Sampler2D face_sampler{&s.texture->face(face), cube_face_state(s.state)};
-  return sample_2d(face_sampler, fs, ft, lod);
+  const Texture2D& ftex = s.texture->face(face);
+  const Sampler2D face_sampler{&ftex, cube_face_state(s.state)};
+  if (!s.state.seamless) return sample_2d(face_sampler, fs, ft, lod);
+  const Plan p = make_plan(s.state, ftex.levels(), lod);
+  if (!p.linear) return sample_2d(face_sampler, fs, ft, lod);  // nearest never leaves the face
+  const TextureCube& cube = *s.texture;
+  auto one = [&](int level) {
+    const int n = ftex.width(level);
+    const float u = sane(fs) * float(n) - 0.5f, v = sane(ft) * float(n) - 0.5f;
+    const float fu = std::floor(u), fv = std::floor(v);
+    const float a = u - fu, b = v - fv;
+    const int i0 = floor_to_int(fu), j0 = floor_to_int(fv);
+    auto tap = [&](int i, int j) { return seamless_texel(cube, level, face, i, j); };
+    const glm::vec4 bottom = lerp(tap(i0, j0), tap(i0 + 1, j0), a);
+    const glm::vec4 top = lerp(tap(i0, j0 + 1), tap(i0 + 1, j0 + 1), a);
+    return lerp(bottom, top, b);
+  };
+  const glm::vec4 c0 = one(p.level0);
+  if (p.level1 < 0 || p.blend == 0.0f) return c0;
+  return lerp(c0, one(p.level1), p.blend);
 }
 
 float sample_2d_compare(const Sampler2DShadow& s, float u, float v, float ref, float lod, glm::ivec2 offset) {

@@ -68,6 +68,10 @@ struct SamplerState {
   // filtered texels that pass `ref <compare_func> texel` (GL_COMPARE_REF_TO_TEXTURE).
   bool compare = false;
   CompareFunc compare_func = CompareFunc::LessEqual;
+  // Cube maps (GL_TEXTURE_CUBE_MAP_SEAMLESS, GL 3.3 §3.8.8): a linear lookup next to a face's
+  // edge reads the texels beyond it from the neighbouring face, and at a corner the average of
+  // the three texels that meet there; otherwise each face clamps to its own edge.
+  bool seamless = false;
 };
 
 // One mip level: width x height texels of the texture's format, rows bottom-up, tightly packed.
