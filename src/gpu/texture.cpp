@@ -587,20 +587,13 @@ inline void face_st(int face, float x, float y, float z, float& s, float& t) {
   t = (a.tc / a.ma + 1.0f) * 0.5f;
 }
 
-// Texel (i, j) of a cube face's level where i or j may be one step outside the face (a linear
-// lookup at its edge; GL 3.3 §3.8.8 with TEXTURE_CUBE_MAP_SEAMLESS): the texel of the face the
-// texel's centre direction falls on. Outside in both, the corner: the average of the three
-// texels that meet there, as llvmpipe takes it.
+// Texel (i, j) of a cube face's level where i or j (not both) may be one step outside the face
+// (a linear lookup at its edge; GL 3.3 §3.8.8 with TEXTURE_CUBE_MAP_SEAMLESS): the texel of
+// the face the texel's centre direction falls on. (Corners are sample_cube_seamless's.)
 glm::vec4 seamless_texel(const TextureCube& cube, int level, int face, int i, int j) {
   const int n = cube.face(face).width(level);
   const bool out_i = i < 0 || i >= n, out_j = j < 0 || j >= n;
   if (!out_i && !out_j) return cube.face(face).fetch(level, i, j);
-  if (out_i && out_j) {
-    const int ci = std::clamp(i, 0, n - 1), cj = std::clamp(j, 0, n - 1);
-    return (cube.face(face).fetch(level, ci, cj) + seamless_texel(cube, level, face, i, cj) +
-            seamless_texel(cube, level, face, ci, j)) *
-           (1.0f / 3.0f);
-  }
   // The texel centre's face coordinates, past the edge on one axis, and its direction
   // (face_axes inverted).
   const float sc = 2.0f * (float(i) + 0.5f) / float(n) - 1.0f,
@@ -620,6 +613,35 @@ glm::vec4 seamless_texel(const TextureCube& cube, int level, int face, int i, in
   const int m = cube.face(nf).width(level);
   return cube.face(nf).fetch(level, std::clamp(floor_to_int(s * float(m)), 0, m - 1),
                              std::clamp(floor_to_int(t * float(m)), 0, m - 1));
+}
+
+// A linear lookup of face `face` at (fs, ft) that reads past the face's edges (seamless_texel),
+// each texel passed through `xf` (a depth comparison for shadow cube maps) before filtering.
+template <class Xf>
+glm::vec4 sample_cube_seamless(const TextureCube& cube, const Plan& p, int face, float fs, float ft,
+                               const Xf& xf) {
+  auto one = [&](int level) {
+    const int n = cube.face(face).width(level);
+    const float u = sane(fs) * float(n) - 0.5f, v = sane(ft) * float(n) - 0.5f;
+    const float fu = std::floor(u), fv = std::floor(v);
+    const float a = u - fu, b = v - fv;
+    const int i0 = floor_to_int(fu), j0 = floor_to_int(fv);
+    auto tap = [&](int i, int j) {
+      const int ci = std::clamp(i, 0, n - 1), cj = std::clamp(j, 0, n - 1);
+      if (ci == i || cj == j) return xf(seamless_texel(cube, level, face, i, j));
+      // A corner: the three texels that meet there, each through xf (each compared, for a
+      // shadow lookup, as llvmpipe does), averaged.
+      return (xf(seamless_texel(cube, level, face, ci, cj)) + xf(seamless_texel(cube, level, face, i, cj)) +
+              xf(seamless_texel(cube, level, face, ci, j))) *
+             (1.0f / 3.0f);
+    };
+    const glm::vec4 bottom = lerp(tap(i0, j0), tap(i0 + 1, j0), a);
+    const glm::vec4 top = lerp(tap(i0, j0 + 1), tap(i0 + 1, j0 + 1), a);
+    return lerp(bottom, top, b);
+  };
+  const glm::vec4 c0 = one(p.level0);
+  if (p.level1 < 0 || p.blend == 0.0f) return c0;
+  return lerp(c0, one(p.level1), p.blend);
 }
 
 SamplerState cube_face_state(const SamplerState& st) {
@@ -691,21 +713,7 @@ glm::vec4 sample_cube(const SamplerCube& s, float x, float y, float z, float lod
   if (!s.state.seamless) return sample_2d(face_sampler, fs, ft, lod);
   const Plan p = make_plan(s.state, ftex.levels(), lod);
   if (!p.linear) return sample_2d(face_sampler, fs, ft, lod);  // nearest never leaves the face
-  const TextureCube& cube = *s.texture;
-  auto one = [&](int level) {
-    const int n = ftex.width(level);
-    const float u = sane(fs) * float(n) - 0.5f, v = sane(ft) * float(n) - 0.5f;
-    const float fu = std::floor(u), fv = std::floor(v);
-    const float a = u - fu, b = v - fv;
-    const int i0 = floor_to_int(fu), j0 = floor_to_int(fv);
-    auto tap = [&](int i, int j) { return seamless_texel(cube, level, face, i, j); };
-    const glm::vec4 bottom = lerp(tap(i0, j0), tap(i0 + 1, j0), a);
-    const glm::vec4 top = lerp(tap(i0, j0 + 1), tap(i0 + 1, j0 + 1), a);
-    return lerp(bottom, top, b);
-  };
-  const glm::vec4 c0 = one(p.level0);
-  if (p.level1 < 0 || p.blend == 0.0f) return c0;
-  return lerp(c0, one(p.level1), p.blend);
+  return sample_cube_seamless(*s.texture, p, face, fs, ft, Identity{});
 }
 
 float sample_2d_compare(const Sampler2DShadow& s, float u, float v, float ref, float lod, glm::ivec2 offset) {

@@ -5,7 +5,8 @@
  * towards a corner where three faces meet. The left half is drawn with the capability off -
  * each face clamps to its own edge, hard seams - and the right half with it on: across an
  * edge the lookup blends with the neighbouring face's texels, and at the corner with the three
- * that meet there. A second cube map with mipmaps is read with textureLod at level 1.5.
+ * that meet there. A second cube map with mipmaps is read with textureLod at level 1.5, and a
+ * depth cube map through samplerCubeShadow (each texel compared, then filtered).
  */
 #include "common.h"
 
@@ -19,6 +20,7 @@ static const char* fs =
     "#version 330 core\n"
     "in vec2 p;\n"
     "uniform samplerCube sky, mips;\n"
+    "uniform samplerCubeShadow depths;\n"
     "out vec4 frag;\n"
     "void main() {\n"
     "  // looking at the corner (1, 1, -1) from the centre\n"
@@ -27,10 +29,32 @@ static const char* fs =
     "  vec3 r = normalize(cross(f, vec3(0.0, 1.0, 0.0)));\n"
     "  vec3 u = cross(r, f);\n"
     "  vec3 d = f + 0.55 * (q.x * r + q.y * u);\n"
-    "  frag = p.y > -0.4 ? texture(sky, d) : textureLod(mips, d, 1.5);\n"
+    "  if (p.y > -0.4) frag = texture(sky, d);\n"
+    "  else if (p.y > -0.7) frag = textureLod(mips, d, 1.5);\n"
+    "  else frag = vec4(texture(depths, vec4(d, 0.5)), 0.3, 0.1, 1.0);  // the fraction passing\n"
     "}\n";
 
-static GLuint prog, vao, tex[2];
+static GLuint prog, vao, tex[3];
+
+/* 2x2 depth faces, each face its own depth around the reference 0.5. */
+static GLuint depth_cube(void) {
+  static const float depth[6] = {0.2f, 0.7f, 0.45f, 0.9f, 0.6f, 0.8f};
+  float px[4];
+  GLuint t;
+  int f, i;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, t);
+  for (f = 0; f < 6; ++f) {
+    for (i = 0; i < 4; ++i) px[i] = depth[f] + (i == 1 ? 0.25f : 0.0f) - (i == 2 ? 0.25f : 0.0f);
+    glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_DEPTH_COMPONENT24, 2, 2, 0, GL_DEPTH_COMPONENT,
+                 GL_FLOAT, px);
+  }
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  return t;
+}
 
 static void display(void) {
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
@@ -84,9 +108,12 @@ int main(int argc, char** argv) {
   tex[0] = cube(4, 0);
   glActiveTexture(GL_TEXTURE1);
   tex[1] = cube(16, 1);
+  glActiveTexture(GL_TEXTURE2);
+  tex[2] = depth_cube();
   glUseProgram(prog);
   glUniform1i(glGetUniformLocation(prog, "sky"), 0);
   glUniform1i(glGetUniformLocation(prog, "mips"), 1);
+  glUniform1i(glGetUniformLocation(prog, "depths"), 2);
   vao = window_strip();
   check_gl("setup");
   glutDisplayFunc(display);
