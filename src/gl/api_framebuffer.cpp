@@ -403,12 +403,9 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
           if (!(mask & GL_DEPTH_BUFFER_BIT)) out.x = old.x;
           if (!(mask & GL_STENCIL_BUFFER_BIT)) out.y = old.y;
         } else {
+          out = clamp_integer_texel(p.integer, out);
           for (int k = 0; k < 4; ++k)
-            if (!(p.channels & (1u << k)))
-              out[k] = old[k];
-            else if (p.integer.integer())
-              out[k] = std::bit_cast<float>(gpu::clamp_integer_bits(std::bit_cast<uint32_t>(out[k]),
-                                                                    p.integer.bits[k], p.integer.is_signed));
+            if (!(p.channels & (1u << k))) out[k] = old[k];
         }
         dt.store(p.dst.level, x, y, out);
       }

@@ -543,29 +543,15 @@ bool buffer_texel_of(const TexFormat& f, gpu::BufferTexel& out) {
       GL_RG32I,  GL_RG8UI,   GL_RG16UI,  GL_RG32UI,  GL_RGBA8,    GL_RGBA16,  GL_RGBA16F, GL_RGBA32F,
       GL_RGBA8I, GL_RGBA16I, GL_RGBA32I, GL_RGBA8UI, GL_RGBA16UI, GL_RGBA32UI};
   if (std::find(std::begin(kTable), std::end(kTable), f.internal) == std::end(kTable)) return false;
-  const int channels = f.base == TexBase::Red    ? 1
-                       : f.base == TexBase::RG   ? 2
-                       : f.base == TexBase::RGBA ? 4
-                                                 : 0;
-  if (channels == 0 || (channels >= 2 && f.g != f.r) || (channels == 4 && (f.b != f.r || f.a != f.r)))
-    return false;
-  const int bits = f.r;
-  const int size = bits == 8 ? 0 : bits == 16 ? 1 : bits == 32 ? 2 : -1;
-  if (size < 0) return false;
+  // Each format of the table has 1, 2 or 4 components of r bits (8, 16 or 32).
+  const int size = f.r == 8 ? 0 : f.r == 16 ? 1 : 2;
   switch (f.kind) {
-    case TexKind::Unorm:
-      if (bits == 32) return false;
-      out.component = bits == 8 ? C::Unorm8 : C::Unorm16;
-      break;
-    case TexKind::Float:
-      if (bits == 8 || f.shared_exponent) return false;
-      out.component = bits == 16 ? C::Float16 : C::Float32;
-      break;
+    case TexKind::Unorm: out.component = size == 0 ? C::Unorm8 : C::Unorm16; break;
+    case TexKind::Float: out.component = size == 1 ? C::Float16 : C::Float32; break;
     case TexKind::Int: out.component = C(int(C::Int8) + size); break;
-    case TexKind::Uint: out.component = C(int(C::Uint8) + size); break;
-    default: return false;
+    default: out.component = C(int(C::Uint8) + size); break;
   }
-  out.channels = uint8_t(channels);
+  out.channels = uint8_t(f.base == TexBase::Red ? 1 : f.base == TexBase::RG ? 2 : 4);
   return true;
 }
 

@@ -3,7 +3,6 @@
 #include "context.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -617,14 +616,17 @@ void Context::emit_mode(GLenum mode, FFVertices&& v) {
 
 // Triangles listed with their provoking vertex last, rotated to list it first: (a, b, c)
 // becomes (c, a, b), which keeps the winding and each vertex's edge flag on its own edge.
-void Context::provoking_vertex_first(std::vector<uint32_t>& idx) const {
-  if (s.light.provoking_vertex != GL_FIRST_VERTEX_CONVENTION) return;
-  for (size_t i = 0; i + 2 < idx.size(); i += 3) {
-    const uint32_t c = idx[i + 2];
-    idx[i + 2] = idx[i + 1];
-    idx[i + 1] = idx[i];
-    idx[i] = c;
+void rotate_provoking_first(std::vector<uint32_t>& triangles) {
+  for (size_t i = 0; i + 2 < triangles.size(); i += 3) {
+    const uint32_t c = triangles[i + 2];
+    triangles[i + 2] = triangles[i + 1];
+    triangles[i + 1] = triangles[i];
+    triangles[i] = c;
   }
+}
+
+void Context::provoking_vertex_first(std::vector<uint32_t>& idx) const {
+  if (s.light.provoking_vertex == GL_FIRST_VERTEX_CONVENTION) rotate_provoking_first(idx);
 }
 
 // Mesa cuts a quad (v0, v1, v2, v3) in one of two ways, measured on 22.3 (tests/gl): along
@@ -1165,12 +1167,7 @@ glm::vec4 Context::clear_color_for(const TargetInfo& target, int i, glm::vec4 co
   if (gpu::is_unorm8_format(t->format())) return glm::clamp(color, 0.0f, 1.0f);
   // Integer buffers take the value's bits clamped to their range: glClear's float colour as
   // llvmpipe takes it (GL leaves it undefined), glClearBuffer{i,ui}v's integers as given.
-  const gpu::IntegerRange r = target.integer[size_t(i)];
-  if (r.integer())
-    for (int k = 0; k < 4; ++k)
-      color[k] = std::bit_cast<float>(
-          gpu::clamp_integer_bits(std::bit_cast<uint32_t>(color[k]), r.bits[k], r.is_signed));
-  return color;
+  return clamp_integer_texel(target.integer[size_t(i)], color);
 }
 
 void Context::clear(GLbitfield mask) {

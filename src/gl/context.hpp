@@ -450,6 +450,10 @@ using ListCommand = std::function<void()>;
 // Independent primitives of one emission: 1, 2 or 3 indices each.
 enum class PrimClass : uint8_t { Points, Lines, Triangles };
 
+// Triangles (index triples) that list their provoking vertex last, rotated to list it first:
+// (a, b, c) becomes (c, a, b), the winding kept.
+void rotate_provoking_first(std::vector<uint32_t>& triangles);
+
 class Context {
  public:
   Context(int width, int height, bool double_buffer, bool depth, bool stencil);
@@ -610,7 +614,8 @@ class Context {
   // Converts vertices given in glBegin order for `mode` into independent primitives.
   void emit_mode(GLenum mode, FFVertices&& verts);
   // With the first-vertex convention, rotates triangles that list their provoking vertex
-  // last so that they list it first (quads and polygons keep theirs in both conventions).
+  // last so that they list it first (quads and polygons keep theirs in both conventions;
+  // rotate_provoking_first).
   void provoking_vertex_first(std::vector<uint32_t>& idx) const;
 
   // Clears the draw buffer(s) as glClear with the current masks, scissor and values.

@@ -209,13 +209,7 @@ std::vector<uint32_t> triangulate(GLenum mode, const std::vector<uint32_t>& ids,
       start = i + 1;
     }
   }
-  if (provoking_first)
-    for (size_t i = 0; i + 2 < out.size(); i += 3) {
-      const uint32_t last = out[i + 2];
-      out[i + 2] = out[i + 1];
-      out[i + 1] = out[i];
-      out[i] = last;
-    }
+  if (provoking_first) rotate_provoking_first(out);
   return out;
 }
 

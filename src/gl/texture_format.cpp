@@ -202,6 +202,14 @@ GLenum TexFormat::component_type() const {
   return GL_NONE;
 }
 
+glm::vec4 clamp_integer_texel(const gpu::IntegerRange& range, glm::vec4 texel) {
+  if (!range.integer()) return texel;
+  for (int k = 0; k < 4; ++k)
+    texel[k] = std::bit_cast<float>(
+        gpu::clamp_integer_bits(std::bit_cast<uint32_t>(texel[k]), range.bits[k], range.is_signed));
+  return texel;
+}
+
 gpu::IntegerRange TexFormat::integer_range() const {
   gpu::IntegerRange out;
   if (!integer()) return out;

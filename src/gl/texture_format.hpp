@@ -76,6 +76,10 @@ struct TexFormat {
 // compatibility-only formats (luminance, intensity, alpha, 1-4) are unknown.
 bool tex_format_of(GLint internal, bool core, TexFormat& out);
 
+// An integer texel (each component's 32 bits in its float slot) clamped to the component sizes
+// of `range`, as integer colour buffers store values (unchanged when range is not integer).
+glm::vec4 clamp_integer_texel(const gpu::IntegerRange& range, glm::vec4 texel);
+
 // A texel as unpacked (glTexImage's RGBA floats; depth in .x, stencil in .y) turned into the
 // value the storage holds: the base format's components selected (Table 3.15), values clamped
 // and rounded to the format's precision, sRGB decoded.
