@@ -116,22 +116,29 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_MAX_TEXTURE_COORDS: return n(kMaxTexCoords), true;
     case GL_MAX_UNIFORM_BUFFER_BINDINGS: return n(kMaxUniformBufferBindings), true;
     case GL_MAX_VERTEX_UNIFORM_BLOCKS:
+    case GL_MAX_GEOMETRY_UNIFORM_BLOCKS:
     case GL_MAX_FRAGMENT_UNIFORM_BLOCKS: return n(12), true;
-    case GL_MAX_COMBINED_UNIFORM_BLOCKS: return n(24), true;
+    case GL_MAX_COMBINED_UNIFORM_BLOCKS: return n(36), true;
     case GL_MAX_UNIFORM_BLOCK_SIZE: return n(65536), true;
     case GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT: return n(16), true;
     case GL_MAX_VERTEX_UNIFORM_COMPONENTS:
+    case GL_MAX_GEOMETRY_UNIFORM_COMPONENTS:
     case GL_MAX_FRAGMENT_UNIFORM_COMPONENTS: return n(4096), true;
+    // The geometry stage (GL 3.3 Table 6.42's minimums and more, as Mesa's llvmpipe).
+    case GL_MAX_GEOMETRY_INPUT_COMPONENTS: return n(64), true;
+    case GL_MAX_GEOMETRY_OUTPUT_COMPONENTS: return n(128), true;
+    case GL_MAX_GEOMETRY_OUTPUT_VERTICES: return n(1024), true;
+    case GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS: return n(1024), true;
+    case GL_MAX_GEOMETRY_TEXTURE_IMAGE_UNITS: return n(kMaxTextureUnits), true;
     case GL_MAX_VARYING_COMPONENTS:  // == GL_MAX_VARYING_FLOATS
     case GL_MAX_VERTEX_OUTPUT_COMPONENTS:
     case GL_MAX_FRAGMENT_INPUT_COMPONENTS: return n(64), true;
     // What Tessel does not have reports none: dual-source blending, transform feedback,
-    // geometry shaders, multisample textures and sample masks (docs/gl-coverage.md).
+    // multisample textures and sample masks (docs/gl-coverage.md).
     case GL_MAX_DUAL_SOURCE_DRAW_BUFFERS:
     case GL_MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS:
     case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS:
     case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS:
-    case GL_MAX_GEOMETRY_OUTPUT_VERTICES:
     case GL_MAX_COLOR_TEXTURE_SAMPLES:
     case GL_MAX_DEPTH_TEXTURE_SAMPLES:
     case GL_MAX_SAMPLE_MASK_WORDS:

@@ -221,8 +221,7 @@ extern "C" {
 GLuint GLAPIENTRY glCreateShader(GLenum type) {
   GL_CONTEXT(0);
   GL_OUTSIDE_BEGIN(0);
-  // Geometry shaders (GL 3.2) are not implemented: their type is not accepted.
-  if (type != GL_VERTEX_SHADER && type != GL_FRAGMENT_SHADER) {
+  if (type != GL_VERTEX_SHADER && type != GL_FRAGMENT_SHADER && type != GL_GEOMETRY_SHADER) {
     c.error(GL_INVALID_ENUM);
     return 0;
   }
@@ -276,8 +275,10 @@ void GLAPIENTRY glCompileShader(GLuint name) {
   GL_OUTSIDE_BEGIN();
   ShaderObject* s = shader_of(c, name);
   if (!s) return;
-  s->compiled = glsl::Shader::compile(
-      s->type == GL_VERTEX_SHADER ? glsl::Stage::Vertex : glsl::Stage::Fragment, s->joined());
+  s->compiled = glsl::Shader::compile(s->type == GL_VERTEX_SHADER     ? glsl::Stage::Vertex
+                                      : s->type == GL_GEOMETRY_SHADER ? glsl::Stage::Geometry
+                                                                      : glsl::Stage::Fragment,
+                                      s->joined());
 }
 
 void GLAPIENTRY glGetShaderiv(GLuint name, GLenum pname, GLint* out) {
@@ -520,9 +521,17 @@ void GLAPIENTRY glGetProgramiv(GLuint program, GLenum pname, GLint* out) {
     case GL_TRANSFORM_FEEDBACK_BUFFER_MODE: v = GL_INTERLEAVED_ATTRIBS; break;
     case GL_TRANSFORM_FEEDBACK_VARYINGS:
     case GL_TRANSFORM_FEEDBACK_VARYING_MAX_LENGTH: v = 0; break;
+    // GL 3.3 §6.1.16: a program without a linked geometry shader has none of these.
     case GL_GEOMETRY_VERTICES_OUT:
     case GL_GEOMETRY_INPUT_TYPE:
-    case GL_GEOMETRY_OUTPUT_TYPE: return c.error(GL_INVALID_OPERATION);  // no geometry shader
+    case GL_GEOMETRY_OUTPUT_TYPE: {
+      const glsl::GeometryInfo* gi = g ? g->geometry() : nullptr;
+      if (!gi) return c.error(GL_INVALID_OPERATION);
+      v = pname == GL_GEOMETRY_VERTICES_OUT ? gi->max_vertices
+          : pname == GL_GEOMETRY_INPUT_TYPE ? GLint(gi->input_type)
+                                            : GLint(gi->output_type);
+      break;
+    }
     default: return c.error(GL_INVALID_ENUM);
   }
   if (out) *out = v;

@@ -225,6 +225,10 @@ bool topology_of(GLenum mode, bool core, gpu::Topology& out, bool& decompose) {
     case GL_TRIANGLES: out = gpu::Topology::Triangles; return true;
     case GL_TRIANGLE_STRIP: out = gpu::Topology::TriangleStrip; return true;
     case GL_TRIANGLE_FAN: out = gpu::Topology::TriangleFan; return true;
+    case GL_LINES_ADJACENCY: out = gpu::Topology::LinesAdjacency; return true;
+    case GL_LINE_STRIP_ADJACENCY: out = gpu::Topology::LineStripAdjacency; return true;
+    case GL_TRIANGLES_ADJACENCY: out = gpu::Topology::TrianglesAdjacency; return true;
+    case GL_TRIANGLE_STRIP_ADJACENCY: out = gpu::Topology::TriangleStripAdjacency; return true;
     case GL_QUADS:
     case GL_QUAD_STRIP:
     case GL_POLYGON:
@@ -679,6 +683,19 @@ void draw_generic_call(Context& c, GLenum mode, GLint first, GLsizei count, GLsi
   if (indexed && c.core_profile && !c.vao().element_buffer) return c.error(GL_INVALID_OPERATION);
   if (!indexed && int64_t(first) + int64_t(count) > int64_t(std::numeric_limits<int32_t>::max()))
     return c.error(GL_INVALID_VALUE);
+  // GL 3.3 §2.12.1: with a geometry shader, the mode must give the primitives it takes
+  // (checked after the framebuffer and the counts, as Mesa does).
+  if (const glsl::GeometryInfo* gi = c.executable ? c.executable->geometry() : nullptr) {
+    const GLenum in = gi->input_type;
+    const bool ok = d.decompose       ? false
+                    : in == GL_POINTS ? mode == GL_POINTS
+                    : in == GL_LINES  ? mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP
+                    : in == GL_LINES_ADJACENCY ? mode == GL_LINES_ADJACENCY || mode == GL_LINE_STRIP_ADJACENCY
+                    : in == GL_TRIANGLES
+                        ? mode == GL_TRIANGLES || mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN
+                        : mode == GL_TRIANGLES_ADJACENCY || mode == GL_TRIANGLE_STRIP_ADJACENCY;
+    if (!ok) return c.error(GL_INVALID_OPERATION);
+  }
   d.first = first;
   d.count = count;
   d.instances = instances;

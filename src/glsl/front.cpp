@@ -25,6 +25,18 @@ void init_glslang() {
   std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
+// glslang's limits, with the geometry stage's raised to llvmpipe's (GL_MAX_GEOMETRY_*).
+const TBuiltInResource& resources() {
+  static const TBuiltInResource r = [] {
+    TBuiltInResource x = *GetDefaultResources();
+    x.maxGeometryOutputVertices = kMaxGeometryVertices;
+    x.maxGeometryTotalOutputComponents = 1024;
+    x.maxGeometryOutputComponents = 128;
+    return x;
+  }();
+  return r;
+}
+
 // Parses one stage at its #version (1.10 without one); the shader object must outlive any
 // program that links it.
 bool parse(glslang::TShader& sh, const std::string& source, std::string& log) {
@@ -45,9 +57,13 @@ bool parse(glslang::TShader& sh, const std::string& source, std::string& log) {
   static const std::string kVertex =
       "#define ftransform() (gl_ModelViewProjectionMatrix * gl_Vertex)\n" + kInverse140;
   sh.setPreamble((sh.getStage() == EShLangVertex ? kVertex : kInverse140).c_str());
-  const bool ok = sh.parse(GetDefaultResources(), 110, ENoProfile, false, false, EShMsgDefault);
+  const bool ok = sh.parse(&resources(), 110, ENoProfile, false, false, EShMsgDefault);
   log = sh.getInfoLog();
   return ok;
+}
+
+EShLanguage language(int stage) {
+  return stage == 0 ? EShLangVertex : stage == 1 ? EShLangFragment : EShLangGeometry;
 }
 
 }  // namespace
@@ -56,7 +72,7 @@ bool front_compile(int stage, const std::string& source, std::string& log) {
   init_glslang();
   std::lock_guard lock(glslang_mutex());
   try {
-    glslang::TShader sh(stage == 0 ? EShLangVertex : EShLangFragment);
+    glslang::TShader sh(language(stage));
     return parse(sh, source, log);
   } catch (const std::exception& e) {
     log = std::string("0:0: error: ") + e.what() + "\n";
@@ -65,16 +81,17 @@ bool front_compile(int stage, const std::string& source, std::string& log) {
 }
 
 bool front_link(const std::vector<std::string>& vertex, const std::vector<std::string>& fragment,
-                UniformLayout& layout, LoweredStage& vs, LoweredStage& fs, std::string& log) {
+                const std::vector<std::string>& geometry, UniformLayout& layout, LoweredStage& vs,
+                LoweredStage& fs, LoweredStage& gs, std::string& log) {
   init_glslang();
   std::lock_guard lock(glslang_mutex());
   try {
     // The shader objects outlive the program that links them (glslang's rule).
     std::vector<std::unique_ptr<glslang::TShader>> units;
     glslang::TProgram prog;
-    for (int stage = 0; stage < 2; ++stage) {
-      for (const std::string& source : stage == 0 ? vertex : fragment) {
-        units.push_back(std::make_unique<glslang::TShader>(stage == 0 ? EShLangVertex : EShLangFragment));
+    for (int stage = 0; stage < 3; ++stage) {
+      for (const std::string& source : stage == 0 ? vertex : stage == 1 ? fragment : geometry) {
+        units.push_back(std::make_unique<glslang::TShader>(language(stage)));
         if (!parse(*units.back(), source, log)) return false;
         prog.addShader(units.back().get());
       }
@@ -85,6 +102,7 @@ bool front_link(const std::vector<std::string>& vertex, const std::vector<std::s
       return false;
     }
     vs = lower_stage(*prog.getIntermediate(EShLangVertex), 0, layout);
+    if (!geometry.empty()) gs = lower_stage(*prog.getIntermediate(EShLangGeometry), 2, layout);
     fs = lower_stage(*prog.getIntermediate(EShLangFragment), 1, layout);
     return true;
   } catch (const std::exception& e) {

@@ -9,13 +9,14 @@
 
 namespace tessel::glsl {
 
-// Parses one stage (0 vertex, 1 fragment); returns whether it compiled, and its info log.
+// Parses one stage (0 vertex, 1 fragment, 2 geometry); returns whether it compiled, and its info log.
 bool front_compile(int stage, const std::string& source, std::string& log);
 
-// Parses and links both stages, each of one or more shader objects (GL's several compilation
-// units: one of them has main()), and lowers them into `vs` and `fs` (uniforms into
-// `layout`); false with the info log when glslang or the lowering refuses.
+// Parses and links the stages (a geometry stage when `geometry` is not empty), each of one or more shader
+// objects (GL's several compilation units: one of them has main()), and lowers them into `vs` and `fs`
+// (uniforms into `layout`); false with the info log when glslang or the lowering refuses.
 bool front_link(const std::vector<std::string>& vertex, const std::vector<std::string>& fragment,
-                UniformLayout& layout, LoweredStage& vs, LoweredStage& fs, std::string& log);
+                const std::vector<std::string>& geometry, UniformLayout& layout, LoweredStage& vs,
+                LoweredStage& fs, LoweredStage& gs, std::string& log);
 
 }  // namespace tessel::glsl

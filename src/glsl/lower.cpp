@@ -205,6 +205,7 @@ class Lowerer {
     // Functions by mangled name; global initializers in order; the linker objects declare
     // the interface.
     std::vector<TIntermNode*> globals;
+    std::vector<const TIntermSymbol*> outputs;
     TIntermAggregate* main_fn = nullptr;
     for (TIntermNode* n : root->getAsAggregate()->getSequence()) {
       TIntermAggregate* a = n->getAsAggregate();
@@ -218,6 +219,9 @@ class Lowerer {
           if (TIntermSymbol* s = o->getAsSymbolNode()) {
             const auto storage = s->getType().getQualifier().storage;
             if (storage == glslang::EvqVaryingOut) out_.declared_outputs.insert(name_of(s));
+            if (storage == glslang::EvqVaryingOut || storage == glslang::EvqPosition ||
+                storage == glslang::EvqPointSize || storage == glslang::EvqClipVertex)
+              outputs.push_back(s);
             // A uniform with an initializer carries its value as a constant.
             if (storage == glslang::EvqUniform && s->getConstArray().size() > 0 &&
                 s->getType().getBasicType() != glslang::EbtBlock) {
@@ -234,6 +238,22 @@ class Lowerer {
       }
     }
     if (!main_fn) fail(nullptr, "missing main()");
+    if (stage_ == 2) {
+      // Every output the code names, too (built-ins such as gl_PrimitiveID may be missing
+      // from the linker objects).
+      struct Outputs : glslang::TIntermTraverser {
+        std::vector<const TIntermSymbol*>* list;
+        void visitSymbol(TIntermSymbol* s) override {
+          const auto storage = s->getType().getQualifier().storage;
+          if (storage == glslang::EvqVaryingOut || storage == glslang::EvqPosition ||
+              storage == glslang::EvqPointSize || storage == glslang::EvqClipVertex)
+            list->push_back(s);
+        }
+      } walk;
+      walk.list = &outputs;
+      root->traverse(&walk);
+      geometry_layout(outputs);
+    }
     Node fn;
     fn.kind = Kind::Function;
     blocks_.push_back(&fn.a);
@@ -265,6 +285,61 @@ class Lowerer {
   };
   std::vector<Frame> frames_;
   int inline_depth_ = 0;
+
+  // --- the geometry stage ---------------------------------------------------------------
+  // Its primitives, and every output made an interface variable before any code, so that
+  // each EmitVertex copies the same registers.
+  void geometry_layout(const std::vector<const TIntermSymbol*>& outputs) {
+    GeometryLayout& g = out_.geometry;
+    switch (in_.getInputPrimitive()) {
+      case glslang::ElgPoints: g.input_vertices = 1, g.input_primitive = 0x0000; break;
+      case glslang::ElgLines: g.input_vertices = 2, g.input_primitive = 0x0001; break;
+      case glslang::ElgLinesAdjacency: g.input_vertices = 4, g.input_primitive = 0x000A; break;
+      case glslang::ElgTriangles: g.input_vertices = 3, g.input_primitive = 0x0004; break;
+      case glslang::ElgTrianglesAdjacency: g.input_vertices = 6, g.input_primitive = 0x000C; break;
+      default: fail(nullptr, "the geometry shader declares no input primitive type");
+    }
+    switch (in_.getOutputPrimitive()) {
+      case glslang::ElgPoints: g.output_primitive = 0x0000; break;
+      case glslang::ElgLineStrip: g.output_primitive = 0x0003; break;
+      case glslang::ElgTriangleStrip: g.output_primitive = 0x0005; break;
+      default: fail(nullptr, "the geometry shader declares no output primitive type");
+    }
+    if (in_.getVertices() == glslang::TQualifier::layoutNotSet)
+      fail(nullptr, "the geometry shader declares no max_vertices");
+    g.max_vertices = in_.getVertices();
+    if (g.max_vertices < 0 || g.max_vertices > kMaxGeometryVertices)
+      fail(nullptr, "max_vertices " + std::to_string(g.max_vertices) + " is more than " +
+                        std::to_string(kMaxGeometryVertices));
+    for (const TIntermSymbol* o : outputs) (void)lookup(o);
+    for (const Interface& o : out_.outputs)
+      if (!o.block)
+        for (int c = 0; c < o.components; ++c) g.emit.push_back(o.reg + Reg(c));
+    // (GL_MAX_GEOMETRY_OUTPUT_COMPONENTS: 128 a vertex, as Mesa gives.)
+    if (g.emit.size() > 128) fail(nullptr, "the geometry shader writes more than 128 output components");
+    g.buffer = fresh(int(g.emit.size()) * std::max(1, g.max_vertices));
+    g.starts = fresh(std::max(1, g.max_vertices));
+    g.count = fresh(2);  // the count, then whether the next vertex continues a strip
+    out_.ir.variables.push_back({g.count, 2});
+  }
+  void emit_vertex() {
+    const GeometryLayout& g = out_.geometry;
+    const Reg joined = g.count + 1;
+    Node n;
+    n.kind = Kind::If;
+    n.cond = emit(Op::ILt, g.count, iconst(g.max_vertices));
+    blocks_.push_back(&n.a);
+    const Reg at = emit(Op::IMul, g.count, iconst(int32_t(g.emit.size())));
+    const Reg last = g.buffer + Reg(g.emit.size() * size_t(std::max(1, g.max_vertices))) - 1;
+    for (size_t c = 0; c < g.emit.size(); ++c)
+      code().push_back(Inst{Op::StoreIndexed, g.buffer + Reg(c), at, g.emit[c], 0, 0, last});
+    code().push_back(Inst{Op::StoreIndexed, g.starts, g.count, joined, 0, 0,
+                          g.starts + Reg(std::max(1, g.max_vertices)) - 1});
+    emit_to(Op::Store, joined, iconst(-1));
+    emit_to(Op::Store, g.count, emit(Op::IAdd, g.count, iconst(1)));
+    blocks_.pop_back();
+    blocks_.back()->push_back(std::move(n));
+  }
 
   // --- emission -------------------------------------------------------------------------
   Reg fresh(int n = 1) {
@@ -482,6 +557,7 @@ class Lowerer {
     for (auto& i : list)
       if (i.name == name) return i;
     const TType& t = s->getType();
+    if (stage_ == 2 && !output && t.isArray()) return geometry_input(s);
     if (t.getBasicType() == glslang::EbtBlock && !t.isArray()) {
       // An interface block: its members are interface variables of their own, in
       // consecutive registers. gl_PerVertex's (gl_Position in GLSL 1.50 and later) keep their
@@ -534,6 +610,59 @@ class Lowerer {
     return list.back();
   }
 
+  // A geometry stage's input array (gl_in[], a user block array, or `in T name[]`): one
+  // element a vertex; an element's members (or the element) are each an interface variable
+  // of `vertices` elements, so that the link fills them from the vertex stage's outputs.
+  Interface& geometry_input(const TIntermSymbol* s) {
+    const TType& t = s->getType();
+    const int V = out_.geometry.input_vertices;
+    if (array_length(t) != V)
+      fail(s, "input '" + name_of(s) + "' has " + std::to_string(array_length(t)) +
+                  " elements; the input primitive has " + std::to_string(V) + " vertices");
+    const TType el(t, 0);
+    const int per = count(el);
+    const Reg base = fresh(V * per);
+    auto add = [&](const std::string& name, const TType& mt, int off, bool flat, bool nopersp) {
+      Interface f;
+      f.name = name;
+      f.components = count(mt);
+      f.array_size = mt.isArray() ? array_length(mt) : 0;
+      TType e = mt.isArray() ? TType(mt, 0) : TType();
+      set_type(f, mt.isArray() ? e : mt, s);
+      if (mt.getQualifier().hasLocation()) f.location = int(mt.getQualifier().layoutLocation);
+      f.flat = flat;
+      f.noperspective = nopersp;
+      f.builtin = f.name.rfind("gl_", 0) == 0;
+      f.reg = base + Reg(off);
+      f.vertices = V;
+      f.vertex_stride = per;
+      f.read = true;
+      out_.inputs.push_back(f);
+    };
+    if (el.getBasicType() == glslang::EbtBlock) {
+      const std::string block = el.getTypeName().c_str();
+      const bool user = block != "gl_PerVertex";
+      int off = 0;
+      for (const auto& m : *el.getStruct()) {
+        const TType& mt = *m.type;
+        add((user ? block + "." : std::string()) + std::string(mt.getFieldName().c_str()), mt, off,
+            mt.getQualifier().flat || el.getQualifier().flat,
+            mt.getQualifier().nopersp || el.getQualifier().nopersp);
+        off += count(mt);
+      }
+      Interface whole;
+      whole.name = name_of(s);
+      whole.reg = base;
+      whole.components = V * per;
+      whole.builtin = true;
+      whole.block = true;
+      out_.inputs.push_back(whole);
+    } else {
+      add(name_of(s), el, 0, t.getQualifier().flat, t.getQualifier().nopersp);
+    }
+    return out_.inputs.back();
+  }
+
   Place lookup(const TIntermSymbol* s) {
     const long long id = s->getId();
     for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
@@ -573,7 +702,7 @@ class Lowerer {
       case glslang::EvqPointCoord: {
         Interface& f = interface_for(s, false);
         f.read = true;
-        p = var_place(f.reg, f.components);
+        p = var_place(f.reg, count(t));
         globals_[id] = p;
         return p;
       }
@@ -1495,6 +1624,14 @@ class Lowerer {
           statement(n);
       }
       return last;
+    }
+    if (op == glslang::EOpEmitVertex || op == glslang::EOpEndPrimitive) {
+      if (stage_ != 2) fail(a, "EmitVertex and EndPrimitive are geometry shader functions");
+      if (op == glslang::EOpEmitVertex)
+        emit_vertex();
+      else
+        emit_to(Op::Store, out_.geometry.count + 1, iconst(0));
+      return {};
     }
     if (op > glslang::EOpConstructGuardStart && op < glslang::EOpConstructGuardEnd) return construct(a);
     if (op > glslang::EOpSamplingGuardBegin && op < glslang::EOpSamplingGuardEnd) return texture(a);

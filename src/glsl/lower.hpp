@@ -16,6 +16,8 @@ namespace tessel::glsl {
 
 enum class Base : uint8_t { Float, Int, Uint, Bool };
 
+inline constexpr int kMaxGeometryVertices = 1024;  // GL_MAX_GEOMETRY_OUTPUT_VERTICES, as llvmpipe's
+
 // A uniform of the default block as the lowering laid it out: components (32-bit words)
 // from `word`, in GLSL order (arrays element by element, matrices column by column).
 struct UniformSlot {
@@ -45,12 +47,28 @@ struct Interface {
   bool builtin = false;  // gl_Position, gl_FragCoord, gl_Vertex, ...
   bool read = false, written = false;
   bool block = false;  // a whole interface block (its members are listed too)
+  // A geometry stage's input arrays (one element a vertex of the primitive): `vertices`
+  // elements of `components` each, vertex v's from reg + v * vertex_stride.
+  int vertices = 0, vertex_stride = 0;
+};
+
+// What a geometry stage (GLSL 1.50) emits: each EmitVertex copies the registers `emit` into
+// the next max_vertices-th of `buffer` (vertex v's at buffer + v * emit.size()), notes in
+// starts + v whether it continues a strip (zero: it begins one), and counts it in `count`.
+struct GeometryLayout {
+  int input_vertices = 0;         // 1, 2, 3, 4 or 6
+  uint32_t input_primitive = 0;   // GL_POINTS, GL_LINES, GL_LINES_ADJACENCY, GL_TRIANGLES, ...
+  uint32_t output_primitive = 0;  // GL_POINTS, GL_LINE_STRIP or GL_TRIANGLE_STRIP
+  int max_vertices = 0;
+  std::vector<ir::Reg> emit;
+  ir::Reg buffer = 0, starts = 0, count = 0;
 };
 
 struct LoweredStage {
   ir::Stage ir;
   std::vector<Interface> inputs, outputs;
   std::set<std::string> declared_outputs;  // declared, whether or not written
+  GeometryLayout geometry;                 // a geometry stage's
 };
 
 // A uniform block (GLSL 1.40 / GL 3.1), laid out by std140 (GL 3.3 §2.11.4) in a run of
@@ -80,7 +98,7 @@ struct UniformLayout {
   std::map<std::string, size_t> by_name;  // top-level variable name -> first slot
 };
 
-// Lowers `stage` (0 vertex, 1 fragment). Throws std::runtime_error with a message for
+// Lowers `stage` (0 vertex, 1 fragment, 2 geometry). Throws std::runtime_error with a message for
 // what it cannot lower (named with the source line).
 LoweredStage lower_stage(const glslang::TIntermediate& stage, int which, UniformLayout& uniforms);
 

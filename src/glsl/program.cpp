@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string_view>
 #if defined(__SSE__) || defined(_M_X64)
@@ -41,7 +42,7 @@ std::shared_ptr<Shader> Shader::compile(Stage stage, std::string source) {
   auto s = std::make_shared<Shader>();
   s->stage_ = stage;
   s->source_ = std::move(source);
-  s->ok_ = front_compile(stage == Stage::Vertex ? 0 : 1, s->source_, s->log_);
+  s->ok_ = front_compile(stage == Stage::Vertex ? 0 : stage == Stage::Fragment ? 1 : 2, s->source_, s->log_);
   return s;
 }
 
@@ -56,6 +57,14 @@ struct Linked {
   std::vector<std::pair<ir::Reg, int>> fs_out;  // register, byte offset (colour or depth rows)
   std::vector<ir::Reg> frag_color;              // gl_FragColor's four registers (written to every output)
   gpu::RuntimeShape shape;
+  // A geometry stage: its code, the copies into its registers from gpu::GeometryLanes, and
+  // which of the components it emits (index into geometry.emit) go to which of the pipeline's
+  // (the clip position, then the varyings).
+  bool has_gs = false;
+  ir::Stage gs;
+  GeometryLayout geometry;
+  std::vector<Copy> gs_in;
+  std::vector<std::pair<uint32_t, uint32_t>> gs_out;
   StageIO vio, fio;    // what the native code's stages read and write
   JitEnvironment env;  // read when the program was linked
 
@@ -100,6 +109,7 @@ struct Program::Impl {
   };
   std::vector<Location> locations;
   std::map<std::string, int, std::less<>> uniform_names;  // slot name (and name[0]) -> location
+  std::optional<GeometryInfo> geometry;
 };
 
 namespace {
@@ -155,6 +165,33 @@ class Bound final : public gpu::RuntimeShader {
       for (int o = 0; o < l_->shape.outputs; ++o)
         for (int c = 0; c < 4; ++c)
           std::memcpy(lanes.color[o][c], r[l_->frag_color[size_t(c)]].u, sizeof(LaneReg));
+    }
+  }
+
+  void geometry(gpu::GeometryLanes& g) const override {
+    const Linked& l = *l_;
+    if (!l.has_gs) return;
+    LaneReg* r = regs(l.gs.registers);
+    const auto* base = reinterpret_cast<const std::byte*>(&g);
+    for (const Copy& c : l.gs_in) std::memcpy(r + c.reg, base + c.offset, sizeof(LaneReg));
+    const uint32_t mask = g.count >= ir::kLanes ? 0xFFFFu : (1u << std::max(0, g.count)) - 1;
+    RunInputs in = inputs(false);
+    in.textures = l.gs.textures.data();
+    run_stage(l.gs, r, mask, in);
+    const GeometryLayout& gl = l.geometry;
+    const uint32_t per = uint32_t(gl.emit.size());
+    uint32_t most = 0;
+    for (int lane = 0; lane < ir::kLanes; ++lane) {
+      g.emitted[lane] =
+          (mask >> lane) & 1 ? std::min<uint32_t>(r[gl.count].u[lane], uint32_t(gl.max_vertices)) : 0;
+      most = std::max(most, g.emitted[lane]);
+    }
+    for (uint32_t v = 0; v < most; ++v) {
+      for (const auto& [index, comp] : l.gs_out)
+        std::memcpy(g.out + (size_t(v) * size_t(g.out_stride) + comp) * ir::kLanes,
+                    r[gl.buffer + v * per + index].u, sizeof(LaneReg));
+      for (int lane = 0; lane < ir::kLanes; ++lane)
+        g.strip_start[v * ir::kLanes + uint32_t(lane)] = r[gl.starts + v].u[lane] == 0;
     }
   }
 
@@ -240,23 +277,31 @@ std::shared_ptr<Program> Program::link(const Shader& vertex, const Shader& fragm
 std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, const LinkOptions& options) {
   std::shared_ptr<Program> p(new Program());
   Impl& m = *p->impl_;
-  std::vector<std::string> sources[2];
+  std::vector<std::string> sources[3];
   for (const Shader* s : shaders) {
     if (!s) continue;
     if (!s->ok()) {
       m.log = "error: linking with uncompiled/shader that failed to compile\n";
       return p;
     }
-    sources[s->stage() == Stage::Vertex ? 0 : 1].push_back(s->source());
+    sources[s->stage() == Stage::Vertex ? 0 : s->stage() == Stage::Fragment ? 1 : 2].push_back(s->source());
   }
-  if (sources[0].empty() || sources[1].empty()) {
-    m.log = "error: a program needs a vertex shader and a fragment shader\n";
+  if (sources[0].empty() && !sources[2].empty()) {
+    m.log = "error: Geometry shader must be linked with vertex shader\n";  // Mesa's words
     return p;
   }
+  if (sources[0].empty()) {
+    m.log = "error: a program needs a vertex shader\n";
+    return p;
+  }
+  // Without a fragment shader (a depth-only pass), fragments get no colour (GL 3.3 §3.9:
+  // the colour values are undefined): a shader that writes none.
+  if (sources[1].empty()) sources[1].push_back("#version 110\nvoid main() {}\n");
   auto linked = std::make_shared<Linked>();
-  LoweredStage vs, fs;
-  if (!front_link(sources[0], sources[1], m.layout, vs, fs, m.log)) return p;
-  std::string errors;
+  LoweredStage vs, fs, gs;
+  const bool has_gs = !sources[2].empty();
+  if (!front_link(sources[0], sources[1], sources[2], m.layout, vs, fs, gs, m.log)) return p;
+  std::string errors, warnings;
   auto error = [&](const std::string& e) { errors += "error: " + e + "\n"; };
 
   // Attributes: layout(location), then the application's bindings, then the lowest free
@@ -328,6 +373,85 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
     if (!a.builtin) m.attributes.push_back({a.name, a.gl_type, std::max(1, a.array_size), a.location});
   }
 
+  // With a geometry stage, the vertex stage's outputs are matched by name to its inputs (each
+  // input array takes one vertex's components from consecutive slots of the vertex stage), and
+  // its outputs are what the fragment stage's inputs are matched to.
+  using gpu::GeometryLanes;
+  if (has_gs) {
+    linked->has_gs = true;
+    int vslot = 0;
+    for (const Interface& i : gs.inputs) {
+      if (i.block) continue;
+      if (i.name == "gl_PrimitiveIDIn") {
+        linked->gs_in.push_back({i.reg, offset_of(&GeometryLanes::primitive_id)});
+        continue;
+      }
+      if (i.vertices == 0) {
+        error("geometry shader input '" + i.name + "' is not an array");
+        continue;
+      }
+      if (i.name == "gl_Position") {
+        for (int v = 0; v < i.vertices; ++v)
+          for (int c = 0; c < 4; ++c)
+            linked->gs_in.push_back(
+                {i.reg + ir::Reg(v * i.vertex_stride + c),
+                 offset_of(&GeometryLanes::position) + uint32_t((v * 4 + c) * ir::kLanes * 4)});
+        continue;
+      }
+      const Interface* o = nullptr;
+      for (const Interface& c : vs.outputs)
+        if (c.name == i.name && !c.block) o = &c;
+      if (!o) {
+        // Read as zero; Mesa links such a program with a warning.
+        if (!i.builtin)
+          warnings += "warning: geometry shader varying " + i.name + " not written by vertex shader\n";
+        for (int v = 0; v < i.vertices; ++v)
+          gs.ir.variables.push_back({i.reg + ir::Reg(v * i.vertex_stride), uint32_t(i.components)});
+        continue;
+      }
+      const int n = std::min(o->components, i.components);
+      if (!i.builtin && (o->gl_type != i.gl_type || o->components != i.components)) {
+        error("'" + i.name + "' has different types in the vertex and geometry shaders");
+        continue;
+      }
+      if (vslot + n > gpu::kMaxVaryings) {
+        error("too many vertex shader output components (at most " + std::to_string(gpu::kMaxVaryings) + ")");
+        break;
+      }
+      for (int c = 0; c < n; ++c)
+        linked->vs_out.push_back({o->reg + ir::Reg(c), offset_of(&VertexLanes::varyings) +
+                                                           uint32_t((vslot + c) * ir::kLanes * 4)});
+      for (int v = 0; v < i.vertices; ++v) {
+        for (int c = 0; c < n; ++c)
+          linked->gs_in.push_back({i.reg + ir::Reg(v * i.vertex_stride + c),
+                                   offset_of(&GeometryLanes::varyings) +
+                                       uint32_t((v * gpu::kMaxVaryings + vslot + c) * ir::kLanes * 4)});
+        if (n < i.components)
+          gs.ir.variables.push_back({i.reg + ir::Reg(v * i.vertex_stride + n), uint32_t(i.components - n)});
+      }
+      vslot += n;
+    }
+    linked->shape.vertex_varyings = vslot;
+    const GeometryLayout& g = gs.geometry;
+    linked->shape.geometry_input = g.input_vertices;
+    linked->shape.geometry_output = g.output_primitive == 0x0000   ? gpu::Topology::Points
+                                    : g.output_primitive == 0x0003 ? gpu::Topology::LineStrip
+                                                                   : gpu::Topology::TriangleStrip;
+    linked->shape.geometry_max_vertices = g.max_vertices;
+  }
+  // The stage that feeds the fragment stage, and where each of its output registers goes.
+  const LoweredStage& producer = has_gs ? gs : vs;
+  std::map<ir::Reg, uint32_t> emit_index;  // a geometry stage's output register -> its place in `emit`
+  for (size_t e = 0; e < gs.geometry.emit.size(); ++e) emit_index[gs.geometry.emit[e]] = uint32_t(e);
+  auto produce = [&](ir::Reg reg, uint32_t vertex_offset, uint32_t component) {
+    if (has_gs) {
+      auto it = emit_index.find(reg);
+      if (it != emit_index.end()) linked->gs_out.push_back({it->second, component});
+    } else {
+      linked->vs_out.push_back({reg, vertex_offset});
+    }
+  };
+
   // Varyings: matched by name; each matched fragment input gets consecutive slots.
   int slot = 0;
   std::vector<const Interface*> pipeline_inputs;
@@ -341,8 +465,8 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
   };
   auto from_vertex = [&](const Interface& o, int first, int n) {
     for (int c = 0; c < n; ++c)
-      linked->vs_out.push_back(
-          {o.reg + ir::Reg(c), offset_of(&VertexLanes::varyings) + uint32_t((first + c) * ir::kLanes * 4)});
+      produce(o.reg + ir::Reg(c), offset_of(&VertexLanes::varyings) + uint32_t((first + c) * ir::kLanes * 4),
+              uint32_t(4 + first + c));
   };
   for (const Interface& o : vs.outputs) {
     if (o.name == "gl_Position") {
@@ -351,6 +475,10 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
             {o.reg + ir::Reg(c), offset_of(&VertexLanes::position) + uint32_t(c * ir::kLanes * 4)});
     }
   }
+  if (has_gs)
+    for (const Interface& o : gs.outputs)
+      if (o.name == "gl_Position")
+        for (int c = 0; c < 4; ++c) produce(o.reg + ir::Reg(c), 0, uint32_t(c));
   for (const Interface& i : fs.inputs) {
     if (i.block) continue;
     if (i.name == "gl_FragCoord") {
@@ -373,18 +501,20 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
     }
     const std::string vname = vertex_name_for(i.name);
     const Interface* o = nullptr;
-    for (const Interface& c : vs.outputs)
+    for (const Interface& c : producer.outputs)
       if (c.name == vname) o = &c;
     if (!o) {
       // A varying the vertex shader declares but never writes, or a compatibility input it
       // does not write, reads as zero; one it does not declare is an error (as in Mesa).
-      if (!i.builtin && !vs.declared_outputs.count(vname))
-        error("fragment shader input '" + i.name + "' is not written by the vertex shader");
+      if (!i.builtin && !producer.declared_outputs.count(vname))
+        error("fragment shader input '" + i.name + "' is not written by the " +
+              (has_gs ? "geometry" : "vertex") + " shader");
       fs.ir.variables.push_back({i.reg, uint32_t(i.components)});
       continue;
     }
     if (o->gl_type != i.gl_type || o->components != i.components) {
-      error("'" + i.name + "' has different types in the vertex and fragment shaders");
+      error("'" + i.name + "' has different types in the " + (has_gs ? "geometry" : "vertex") +
+            " and fragment shaders");
       continue;
     }
     if (i.base != Base::Float && !i.flat) {
@@ -412,9 +542,16 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
     slot += n;
     return slot - n;
   };
-  for (const Interface& o : vs.outputs) {
+  for (const Interface& o : producer.outputs) {
     if (o.block || !o.builtin) continue;
-    if (o.name == "gl_PointSize") {
+    if (o.name == "gl_PrimitiveID" && has_gs) {
+      // The geometry stage's gl_PrimitiveID: the pipeline gives it to the fragment stage.
+      const int at = take(1);
+      if (at < 0) break;
+      from_vertex(o, at, 1);
+      linked->shape.primitive_id = at;
+      linked->shape.flat |= uint64_t(1) << at;
+    } else if (o.name == "gl_PointSize") {
       const int at = take(1);
       if (at < 0) break;
       from_vertex(o, at, 1);
@@ -538,6 +675,12 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
   }
   linked->vs = std::move(vs.ir);
   linked->fs = std::move(fs.ir);
+  if (has_gs) {
+    linked->gs = std::move(gs.ir);
+    linked->geometry = std::move(gs.geometry);
+    m.geometry = {linked->geometry.max_vertices, linked->geometry.input_primitive,
+                  linked->geometry.output_primitive};
+  }
   // Native code for both stages, unless the options or TESSEL_GLSL=interp ask for the
   // interpreter. A program LLVM cannot compile still runs, on the interpreter (same results).
   NativeCode when = options.native_code;
@@ -581,6 +724,7 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
   }
   m.linked = std::move(linked);
   m.ok = true;
+  m.log = warnings;
   p->set_compat_defaults();
   // Uniform initializers (GLSL 1.20 §4.3.5) give the initial values.
   for (const auto& [name, words] : m.layout.initial) {
@@ -686,6 +830,7 @@ bool Program::wait_native() const {
 }
 const std::string& Program::info_log() const { return impl_->log; }
 const std::vector<Variable>& Program::attributes() const { return impl_->attributes; }
+const GeometryInfo* Program::geometry() const { return impl_->geometry ? &*impl_->geometry : nullptr; }
 const std::vector<Variable>& Program::uniforms() const { return impl_->uniforms; }
 const std::vector<Variable>& Program::outputs() const { return impl_->outputs; }
 

@@ -34,6 +34,7 @@
 
 #include "stages.hpp"
 #include "tessel/gpu/context.hpp"
+#include "tessel/gpu/runtime_shader.hpp"
 
 namespace tessel::gpu {
 namespace detail {
@@ -78,6 +79,12 @@ struct Worker {
   std::vector<unsigned> codes;
   std::vector<WinVert> win;
   std::vector<float> soa;  // clip positions as blocks of 8 x, 8 y, 8 z, 8 w
+  // A geometry stage's call and what it emitted (as pos/vars/prim_slots are for vertices).
+  std::unique_ptr<GeometryLanes> gs_lanes;
+  std::vector<float> gs_out;
+  std::vector<uint32_t> gs_start, gs_slots, gs_prim_ids;
+  std::vector<glm::vec4> gs_pos;
+  std::vector<float> gs_vars, gs_soa;
   // Tile-local copies of the colour and depth attachments during the raster phase.
   std::vector<std::byte> tile_color, tile_depth;
   ClipVert clip_a[24], clip_b[24];
@@ -93,6 +100,10 @@ inline uint32_t prim_count(Topology t, uint32_t n) {
     case Topology::Triangles: return n / 3;
     case Topology::TriangleStrip:
     case Topology::TriangleFan: return n >= 3 ? n - 2 : 0;
+    case Topology::LinesAdjacency: return n / 4;
+    case Topology::LineStripAdjacency: return n >= 4 ? n - 3 : 0;
+    case Topology::TrianglesAdjacency: return n / 6;
+    case Topology::TriangleStripAdjacency: return n >= 6 ? (n - 4) / 2 : 0;
   }
   return 0;
 }
@@ -103,9 +114,15 @@ inline int prim_size(Topology t) {
     case Topology::Lines:
     case Topology::LineStrip:
     case Topology::LineLoop: return 2;
+    case Topology::LinesAdjacency:
+    case Topology::LineStripAdjacency: return 4;
+    case Topology::TrianglesAdjacency:
+    case Topology::TriangleStripAdjacency: return 6;
     default: return 3;
   }
 }
+
+inline bool is_adjacency(Topology t) { return t >= Topology::LinesAdjacency; }
 
 // Elements of primitive p, the provoking vertex last (GL 4.6 §10.1 and Table 13.2).
 inline void prim_elements(Topology t, uint32_t p, uint32_t n, uint32_t* e) {
@@ -144,6 +161,31 @@ inline void prim_elements(Topology t, uint32_t p, uint32_t n, uint32_t* e) {
       e[1] = p + 1;
       e[2] = p + 2;
       break;
+    // With adjacency, in the geometry stage's order (gl_in[0..3] or [0..5]; GL 3.3 §2.6.1).
+    case Topology::LinesAdjacency:
+    case Topology::TrianglesAdjacency: {
+      const uint32_t size = uint32_t(prim_size(t));
+      for (uint32_t k = 0; k < size; ++k) e[k] = size * p + k;
+      break;
+    }
+    case Topology::LineStripAdjacency:
+      for (uint32_t k = 0; k < 4; ++k) e[k] = p + k;
+      break;
+    case Topology::TriangleStripAdjacency: {
+      // GL 3.3 Table 2.4: triangle p's vertices are 2p, 2p + 2, 2p + 4 (the first two swapped
+      // when p is odd), each followed by the vertex across the edge to the next; the ends of
+      // the strip have no neighbour triangle and take the strip's own odd vertices.
+      const uint32_t last = n >= 6 ? (n - 4) / 2 - 1 : 0;
+      const uint32_t b = 2 * p;
+      const bool odd = p & 1;
+      e[0] = odd ? b + 2 : b;
+      e[2] = odd ? b : b + 2;
+      e[4] = b + 4;
+      e[1] = p == 0 ? 1 : b - 2;
+      e[3] = p == last ? (odd ? b + 3 : b + 5) : (odd ? b + 3 : b + 6);
+      e[5] = p == last ? (odd ? b + 5 : b + 3) : (odd ? b + 6 : b + 3);
+      break;
+    }
   }
 }
 
@@ -152,6 +194,7 @@ inline void prim_elements(Topology t, uint32_t p, uint32_t n, uint32_t* e) {
 // which for an odd strip triangle (listed with its first two swapped) and for a fan's
 // triangle (whose vertex 0 is shared) is element 1.
 inline int provoking_element(Topology t, uint32_t p, bool first) {
+  if (is_adjacency(t)) return 0;  // only drawn through a geometry stage, which decides
   if (!first) return prim_size(t) - 1;
   if (t == Topology::TriangleFan) return 1;
   if (t == Topology::TriangleStrip) return int(p & 1);
@@ -163,6 +206,20 @@ inline int provoking_element(Topology t, uint32_t p, bool first) {
 // provoking_element finds it in the list (with provoking_first, triangles are rotated).
 std::vector<uint32_t> expand_restart(Topology& t, const std::vector<uint32_t>& idx, uint32_t restart,
                                      bool provoking_first);
+// A topology with adjacency drawn without a geometry stage: the elements it draws, and t
+// becomes lines, a line strip, triangles or a triangle strip (GL 3.3 §2.6.1).
+std::vector<uint32_t> drop_adjacency(Topology& t, const std::vector<uint32_t>& idx);
+
+// The list topology of a primitive of `size` vertices (1, 2, 3, 4 or 6).
+inline Topology list_topology(int size) {
+  switch (size) {
+    case 1: return Topology::Points;
+    case 2: return Topology::Lines;
+    case 4: return Topology::LinesAdjacency;
+    case 6: return Topology::TrianglesAdjacency;
+    default: return Topology::Triangles;
+  }
+}
 
 }  // namespace detail
 
@@ -206,6 +263,10 @@ struct Context::Frame {
 
   void process_chunk(Worker& w, uint32_t chunk_index);
   void process_draw_chunk(Worker& w, uint32_t chunk_index, const Chunk& ch, const DrawRecord& d);
+  void run_geometry(Worker& w, const Chunk& ch, const DrawRecord& d, uint32_t nprims);
+  void assemble(Worker& w, uint32_t chunk_index, const DrawRecord& d, Topology topo, uint32_t nprims,
+                const uint32_t* slots, size_t nv, const glm::vec4* pos, const float* vars, const float* soa,
+                const uint32_t* prim_ids, uint32_t first_prim);
   // Bins a Prim into the tiles it touches: inline for one tile (most small triangles),
   // bin_tiles for more.
   void bin(Worker& w, uint32_t chunk, const DrawRecord* d, const Prim* p) {

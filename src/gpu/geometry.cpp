@@ -3,6 +3,7 @@
 // (Sutherland-Hodgman in clip space), setup (setup.cpp, setup_triangle.hpp) and binning.
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstring>
 
 #include "frame.hpp"
@@ -39,7 +40,7 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     else
       for (size_t i = 0; i < total; ++i) ids[i] = d.first + uint32_t(e0 + i);
   } else {
-    uint32_t e[3];
+    uint32_t e[kMaxGeometryInputVertices];
     for (uint32_t p = 0; p < nprims; ++p) {
       prim_elements(d.topology, ch.begin + p, n_elements, e);
       for (int k = 0; k < ps; ++k) {
@@ -110,12 +111,119 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
   w.soa.resize((nv + 7) / 8 * 32);
   d.program->shade_vertices(d, w.ids.data(), int(nv), ch.instance, w.pos.data(), w.vars.data(), w.soa.data());
   w.counters.vertices_shaded += nv;
+  w.counters.primitives_in += nprims;
+  if (d.program->geometry_input) {
+    run_geometry(w, ch, d, nprims);
+    const int out = prim_size(d.program->geometry_output == Topology::TriangleStrip ? Topology::Triangles
+                              : d.program->geometry_output == Topology::LineStrip   ? Topology::Lines
+                                                                                    : Topology::Points);
+    assemble(w, chunk_index, d, list_topology(out), uint32_t(w.gs_slots.size() / size_t(out)),
+             w.gs_slots.data(), w.gs_pos.size(), w.gs_pos.data(), w.gs_vars.data(), w.gs_soa.data(),
+             w.gs_prim_ids.data(), 0);
+    return;
+  }
+  assemble(w, chunk_index, d, d.topology, nprims, w.prim_slots.data(), nv, w.pos.data(), w.vars.data(),
+           w.soa.data(), nullptr, ch.begin);
+}
 
+// The geometry stage over the chunk's primitives, sixteen a call: what they emit becomes the
+// vertices (gs_pos, gs_vars, gs_soa) and list primitives (gs_slots, gs_prim_ids) that
+// assemble() takes. Strips are cut into lines and triangles here, each triangle listed so that
+// it keeps the strip's winding and the list's provoking vertex is the strip's.
+void Context::Frame::run_geometry(Worker& w, const Chunk& ch, const DrawRecord& d, uint32_t nprims) {
+  const ProgramBase& prog = *d.program;
+  const int K = prog.varyings;
+  const int ps = prim_size(d.topology);
+  const int kv = std::min(prog.vertex_varyings, K);
+  const int maxv = std::clamp(prog.geometry_max_vertices, 0, kMaxGeometryVertices);
+  const int stride = 4 + K;
+  constexpr int L = kRuntimeLanes;
+  if (!w.gs_lanes) w.gs_lanes = std::make_unique<GeometryLanes>();
+  GeometryLanes& g = *w.gs_lanes;
+  w.gs_out.assign(size_t(maxv) * size_t(stride) * L, 0.0f);
+  w.gs_start.assign(size_t(maxv) * L, 0u);
+  g.out = w.gs_out.data();
+  g.strip_start = w.gs_start.data();
+  g.out_stride = stride;
+  w.gs_pos.clear();
+  w.gs_vars.clear();
+  w.gs_slots.clear();
+  w.gs_prim_ids.clear();
+  const Topology out_t = prog.geometry_output;
+  const bool first = d.state.provoking_first;
+  const int pid = prog.primitive_id_var;
+  const uint32_t* slots = w.prim_slots.data();
+  for (uint32_t p0 = 0; p0 < nprims; p0 += L) {
+    const int n = int(std::min<uint32_t>(L, nprims - p0));
+    g.count = n;
+    for (int l = 0; l < L; ++l) {
+      const uint32_t p = p0 + uint32_t(std::min(l, n - 1));  // idle lanes repeat the last primitive
+      const uint32_t* s = slots + size_t(p) * ps;
+      for (int v = 0; v < ps; ++v) {
+        const glm::vec4& pos = w.pos[s[v]];
+        for (int c = 0; c < 4; ++c) g.position[v][c][l] = pos[c];
+        const float* src = &w.vars[size_t(s[v]) * K];
+        for (int k = 0; k < kv; ++k) g.varyings[v][k][l] = src[k];
+      }
+      g.primitive_id[l] = int32_t(ch.begin + p);
+      g.emitted[l] = 0;
+    }
+    prog.shade_geometry(g);
+    for (int l = 0; l < n; ++l) {
+      const uint32_t ne = std::min<uint32_t>(g.emitted[l], uint32_t(maxv));
+      const uint32_t base = uint32_t(w.gs_pos.size());
+      for (uint32_t v = 0; v < ne; ++v) {
+        const float* row = g.out + size_t(v) * stride * L + l;
+        w.gs_pos.emplace_back(row[0], row[L], row[2 * L], row[3 * L]);
+        for (int k = 0; k < K; ++k) w.gs_vars.push_back(row[size_t(4 + k) * L]);
+      }
+      auto add = [&](std::initializer_list<uint32_t> vs, uint32_t provoking) {
+        for (uint32_t v : vs) w.gs_slots.push_back(base + v);
+        uint32_t id = ch.begin + p0 + uint32_t(l);
+        if (pid >= 0) std::memcpy(&id, &w.gs_vars[size_t(base + provoking) * K + size_t(pid)], 4);
+        w.gs_prim_ids.push_back(id);
+      };
+      uint32_t run = 0;  // where the current strip began
+      for (uint32_t v = 0; v < ne; ++v) {
+        if (g.strip_start[size_t(v) * L + l]) run = v;
+        if (out_t == Topology::Points) {
+          add({v}, v);
+        } else if (out_t == Topology::LineStrip) {
+          if (v >= run + 1) add({v - 1, v}, first ? v - 1 : v);
+        } else if (v >= run + 2) {
+          const bool odd = (v - run) & 1;  // (v - run - 2) odd
+          if (first)
+            odd ? add({v - 2, v, v - 1}, v - 2) : add({v - 2, v - 1, v}, v - 2);
+          else
+            odd ? add({v - 1, v - 2, v}, v) : add({v - 2, v - 1, v}, v);
+        }
+      }
+    }
+  }
+  const size_t nv = w.gs_pos.size();
+  w.gs_vars.push_back(0.0f);  // never empty
+  w.gs_soa.assign((nv + 7) / 8 * 32, 0.0f);
+  for (size_t i = 0; i < nv; ++i)
+    for (int c = 0; c < 4; ++c) w.gs_soa[i / 8 * 32 + size_t(c) * 8 + i % 8] = w.gs_pos[i][c];
+  // Lanes past the last vertex of a block repeat it, as shade_vertices leaves them.
+  for (size_t i = nv; i < (nv + 7) / 8 * 8; ++i)
+    for (int c = 0; c < 4; ++c) w.gs_soa[i / 8 * 32 + size_t(c) * 8 + i % 8] = w.gs_pos[nv - 1][c];
+}
+
+// Clipping, setup and binning of nprims primitives of topology `topo` (slots: prim_size
+// vertex slots each) over nv shaded vertices (pos, vars with K components each, soa as
+// shade_vertices writes it); each primitive's id is prim_ids[p], or first_prim + p.
+void Context::Frame::assemble(Worker& w, uint32_t chunk_index, const DrawRecord& d, Topology topo,
+                              uint32_t nprims, const uint32_t* slots, size_t nv, const glm::vec4* pos,
+                              const float* vars, const float* soa, const uint32_t* prim_ids,
+                              uint32_t first_prim) {
+  const int K = d.program->varyings;
+  const int ps = prim_size(topo);
   // 2. Per vertex: clip code, and the window position of the vertices inside every plane.
   const ClipPlanes planes = make_clip_planes(d);
   w.codes.resize(nv);
   w.win.resize(nv);
-  finish_vertices(d, planes, w.soa.data(), w.vars.data(), K, nv, w.codes.data(), w.win.data());
+  finish_vertices(d, planes, soa, vars, K, nv, w.codes.data(), w.win.data());
 
   // 3. Assembly, clipping, setup, binning.
   const PolygonMode mode_front = d.state.polygon_mode;
@@ -126,22 +234,18 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
   // Read through locals in the loop: stores into Prims could alias the vectors' and the
   // DrawRecord's fields as far as the compiler knows, so it would load them again each time.
   const SetupConstants sc(d);
-  const uint32_t* const slots = w.prim_slots.data();
   const unsigned* const codes = w.codes.data();
   const WinVert* const win = w.win.data();
-  const float* const vars = w.vars.data();
   const bool offset_fill = d.state.offset_fill;
   const bool provoking_first = d.state.provoking_first;
   const int list_provoking = provoking_first ? 0 : ps - 1;  // of a point, line or triangle list
-  const bool is_list =
-      d.topology == Topology::Points || d.topology == Topology::Lines || d.topology == Topology::Triangles;
+  const bool is_list = topo == Topology::Points || topo == Topology::Lines || topo == Topology::Triangles;
   uint64_t culled_count = 0;
-  w.counters.primitives_in += nprims;
   for (uint32_t p = 0; p < nprims; ++p) {
-    const uint32_t prim_id = ch.begin + p;
+    const uint32_t prim_id = prim_ids ? prim_ids[p] : first_prim + p;
     const uint32_t* s = slots + size_t(p) * ps;
     const uint32_t provoking =
-        s[is_list ? list_provoking : provoking_element(d.topology, prim_id, provoking_first)];
+        s[is_list ? list_provoking : provoking_element(topo, first_prim + p, provoking_first)];
     if (filled_triangles && (codes[s[0]] | codes[s[1]] | codes[s[2]]) == 0) {
       // The common case: a filled triangle inside every plane, set up here without a call.
       bool culled = false;
@@ -154,16 +258,19 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     unsigned any_code = 0;
     for (int k = 0; k < ps; ++k) any_code |= w.codes[s[k]];
     if (any_code & kNotFinite) continue;  // NaN or Inf position: the primitive is dropped
-    auto var_of = [&](uint32_t slot) { return &w.vars[size_t(slot) * K]; };
+    auto var_of = [&](uint32_t slot) { return &vars[size_t(slot) * K]; };
 
     if (ps == 1) {
-      if (w.codes[s[0]]) continue;
+      // A point is kept whole or discarded by where its centre is (GL 3.3 §2.20): the view
+      // volume's sides too, not the guard band, so a wide point just outside draws nothing.
+      const glm::vec4& c = pos[s[0]];
+      if (w.codes[s[0]] || !(std::fabs(c.x) <= c.w && std::fabs(c.y) <= c.w)) continue;
       const int n = setup_point(d, w.win[s[0]], prim_id, true, 0.0f, w.arena, w.counters, out);
       for (int i = 0; i < n; ++i) bin(w, chunk_index, &d, out[i]);
       continue;
     }
     if (ps == 2) {
-      const glm::vec4 &p0 = w.pos[s[0]], &p1 = w.pos[s[1]];
+      const glm::vec4 &p0 = pos[s[0]], &p1 = pos[s[1]];
       const unsigned c0 = w.codes[s[0]], c1 = w.codes[s[1]];
       if (c0 & c1) continue;
       const float* flat_src = var_of(provoking);
@@ -206,7 +313,7 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     } else {
       ++w.counters.primitives_clipped;
       for (int k = 0; k < 3; ++k) {
-        w.clip_a[k].pos = w.pos[s[k]];
+        w.clip_a[k].pos = pos[s[k]];
         std::copy_n(var_of(s[k]), K, w.clip_a[k].var);
       }
       ClipVert* poly;

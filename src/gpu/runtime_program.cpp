@@ -59,16 +59,20 @@ struct RuntimeBridge {
     lanes.count = N;
     u->vertex(lanes);
     if constexpr (K > 0) {
-      const int n = std::min(K, shape.varyings);
+      // With a geometry stage the vertex stage's components are that stage's inputs.
+      const bool gs = shape.geometry_input != 0;
+      const int n = std::min(K, gs ? shape.vertex_varyings : shape.varyings);
       for (int k = 0; k < n; ++k) out.v[k] = F::load(lanes.varyings[k]);
       for (int k = n; k < K; ++k) out.v[k] = F(0.0f);
       // gl_PointCoord is set by setup on points; the program does not write it (zero elsewhere).
-      if (shape.point_coord >= 0 && shape.point_coord + 1 < K)
+      if (!gs && shape.point_coord >= 0 && shape.point_coord + 1 < K)
         out.v[shape.point_coord] = out.v[shape.point_coord + 1] = F(0.0f);
     }
     return Vec4<F>(F::load(lanes.position[0]), F::load(lanes.position[1]), F::load(lanes.position[2]),
                    F::load(lanes.position[3]));
   }
+
+  void geometry(const Uniforms& u, GeometryLanes& lanes) const { u->geometry(lanes); }
 
   // The lane rows the fragment stage reads and writes on this thread, two sets (`slot` 0 and
   // 1) so that two calls' worth can be shaded together. The raster loop (detail/raster.hpp)
@@ -142,6 +146,11 @@ std::unique_ptr<detail::ProgramBase> make_bridge(const std::shared_ptr<const Run
   p->point_coord_var = shape.point_coord;
   p->clip_distance_var = shape.clip_distance;
   p->clip_distances = shape.clip_distances;
+  p->geometry_input = shape.geometry_input;
+  p->geometry_output = shape.geometry_output;
+  p->geometry_max_vertices = shape.geometry_max_vertices;
+  p->vertex_varyings = shape.vertex_varyings;
+  p->primitive_id_var = shape.primitive_id;
   return p;
 }
 
@@ -175,8 +184,22 @@ void Context::draw(std::shared_ptr<const RuntimeShader> shader, const VertexLayo
                 std::to_string(shape.point_size) + ", " + std::to_string(shape.point_coord) + ", " +
                 std::to_string(shape.clip_distance) + " + " + std::to_string(shape.clip_distances) +
                 ") are not among its " + std::to_string(shape.varyings) + " varying components");
+  if (shape.geometry_input) {
+    const int in = shape.geometry_input;
+    const Topology out = shape.geometry_output;
+    if ((in != 1 && in != 2 && in != 3 && in != 4 && in != 6) ||
+        (out != Topology::Points && out != Topology::LineStrip && out != Topology::TriangleStrip) ||
+        shape.geometry_max_vertices < 0 || shape.geometry_max_vertices > kMaxGeometryVertices ||
+        shape.vertex_varyings < 0 || shape.vertex_varyings > kMaxVaryings ||
+        (shape.primitive_id != -1 && !inside(shape.primitive_id, 1)))
+      throw Error("draw: the program's geometry stage (" + std::to_string(in) + " input vertices, " +
+                  std::to_string(shape.geometry_max_vertices) + " output vertices, " +
+                  std::to_string(shape.vertex_varyings) + " vertex components) is out of range");
+  }
   const bool packed = shape.lanes_independent && !shape.discards && !shape.writes_depth && shape.outputs <= 1;
-  const int K = shape.varyings;
+  // The vertex stage's components (for a geometry stage) and the fragment stage's share the
+  // per-vertex storage, so the larger count picks the size.
+  const int K = std::max(shape.varyings, shape.geometry_input ? shape.vertex_varyings : 0);
   auto program = packed ? pick<true>(shader, K, std::make_index_sequence<kSizes.size()>())
                         : pick<false>(shader, K, std::make_index_sequence<kSizes.size()>());
   submit(std::move(program), layout, state, call, shape.attributes);

@@ -21,7 +21,7 @@ std::vector<uint32_t> detail::expand_restart(Topology& t, const std::vector<uint
   auto flush_run = [&](size_t a, size_t b) {  // [a, b)
     const uint32_t n = uint32_t(b - a);
     const uint32_t np = prim_count(in, n);
-    uint32_t e[3];
+    uint32_t e[kMaxGeometryInputVertices];
     for (uint32_t p = 0; p < np; ++p) {
       prim_elements(in, p, n, e);
       const int size = prim_size(in);
@@ -36,8 +36,53 @@ std::vector<uint32_t> detail::expand_restart(Topology& t, const std::vector<uint
       start = i + 1;
     }
   }
-  t = prim_size(in) == 1 ? Topology::Points : prim_size(in) == 2 ? Topology::Lines : Topology::Triangles;
+  t = list_topology(prim_size(in));
   return out;
+}
+
+std::vector<uint32_t> detail::drop_adjacency(Topology& t, const std::vector<uint32_t>& idx) {
+  std::vector<uint32_t> out;
+  const size_t n = idx.size();
+  switch (t) {
+    case Topology::LinesAdjacency:  // vertices 1 and 2 of each four
+      for (size_t i = 0; i + 4 <= n; i += 4) out.insert(out.end(), {idx[i + 1], idx[i + 2]});
+      t = Topology::Lines;
+      break;
+    case Topology::LineStripAdjacency:  // all but the first and the last
+      if (n >= 4) out.assign(idx.begin() + 1, idx.end() - 1);
+      t = Topology::LineStrip;
+      break;
+    case Topology::TrianglesAdjacency:  // vertices 0, 2 and 4 of each six
+      for (size_t i = 0; i + 6 <= n; i += 6) out.insert(out.end(), {idx[i], idx[i + 2], idx[i + 4]});
+      t = Topology::Triangles;
+      break;
+    case Topology::TriangleStripAdjacency:  // the even vertices make the strip (Table 2.4)
+      if (n >= 6)
+        for (size_t i = 0; i < n; i += 2) out.push_back(idx[i]);
+      t = Topology::TriangleStrip;
+      break;
+    default: return idx;
+  }
+  return out;
+}
+
+// Whether a geometry stage taking primitives of `input` vertices takes topology t (GL 3.3
+// §2.12.1, "Geometry Shader Input Primitives").
+static bool geometry_takes(int input, Topology t) {
+  switch (t) {
+    case Topology::Points: return input == 1;
+    case Topology::Lines:
+    case Topology::LineStrip:
+    case Topology::LineLoop: return input == 2;
+    case Topology::Triangles:
+    case Topology::TriangleStrip:
+    case Topology::TriangleFan: return input == 3;
+    case Topology::LinesAdjacency:
+    case Topology::LineStripAdjacency: return input == 4;
+    case Topology::TrianglesAdjacency:
+    case Topology::TriangleStripAdjacency: return input == 6;
+  }
+  return false;
 }
 
 static Rect render_area(const RenderState& s, int width, int height) {
@@ -83,8 +128,12 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
                      const RenderState& state, const DrawCall& call, uint32_t required_attribs) {
   note_draw_submitted();  // from now on earlier resources may be read by queued work
   if (!fb_) throw Error("draw: no framebuffer bound");
-  if (unsigned(call.topology) > unsigned(Topology::TriangleFan))
+  if (unsigned(call.topology) > unsigned(Topology::TriangleStripAdjacency))
     throw Error("draw: invalid topology " + std::to_string(int(call.topology)));
+  const int gs_input = program->geometry_input;
+  if (gs_input && !geometry_takes(gs_input, call.topology))
+    throw Error("draw: the program's geometry stage takes primitives of " + std::to_string(gs_input) +
+                " vertices; topology " + std::to_string(int(call.topology)) + " does not give them");
   if (unsigned(state.cull) > unsigned(CullMode::FrontAndBack) || unsigned(state.front_face) > 1 ||
       unsigned(state.polygon_mode) > 2 || unsigned(state.polygon_mode_back) > 2 ||
       unsigned(state.depth_func) > 7)
@@ -140,7 +189,8 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
     const uint64_t begin = uint64_t(call.index_offset) + uint64_t(call.first) * isz;
     const std::byte* src = call.index_buffer->data() + begin;
     const uint32_t restart = isz == 1 ? 0xFFu : isz == 2 ? 0xFFFFu : 0xFFFFFFFFu;
-    if (isz == 4 && !state.primitive_restart && call.base_vertex == 0) {
+    if (isz == 4 && !state.primitive_restart && call.base_vertex == 0 &&
+        (gs_input || !is_adjacency(d->topology))) {
       // The common case: 32-bit indices read where they are, checked against their maximum.
       const uint32_t m = call.index_buffer->max_u32(begin, call.count);
       if (m > uint32_t(INT32_MAX)) {
@@ -163,6 +213,7 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
       raw[i] = v;
     }
     if (state.primitive_restart) raw = expand_restart(d->topology, raw, restart, state.provoking_first);
+    if (!gs_input && is_adjacency(d->topology)) raw = drop_adjacency(d->topology, raw);
     if (!raw.empty()) d->indices.resize(raw.size());
     for (size_t i = 0; i < raw.size(); ++i) {
       const int64_t id = int64_t(raw[i]) + call.base_vertex;
@@ -177,6 +228,16 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
       d->elements = d->indices.data();
       d->count = uint32_t(d->indices.size());
     }
+  } else if (!gs_input && is_adjacency(d->topology)) {
+    // Adjacency without a geometry stage: the vertices drawn, as indices.
+    if (uint64_t(call.first) + call.count > uint64_t(INT32_MAX)) throw Error("draw: vertex range overflows");
+    std::vector<uint32_t> all(call.count);
+    for (uint32_t i = 0; i < call.count; ++i) all[i] = call.first + i;
+    d->indices = drop_adjacency(d->topology, all);
+    d->indexed = true;
+    d->elements = d->indices.data();
+    d->count = uint32_t(d->indices.size());
+    max_id = call.first + call.count - 1;
   } else {
     if (uint64_t(call.first) + call.count > uint64_t(INT32_MAX)) throw Error("draw: vertex range overflows");
     d->first = call.first;

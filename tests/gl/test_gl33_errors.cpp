@@ -641,6 +641,129 @@ TEST_F(GL33ErrorsTest, ProgramInterfaceQueryErrorsWriteNothing) {
   glDeleteProgram(pr);
 }
 
+// Geometry shaders (GL 3.3 §2.12): link errors for what a geometry shader must declare, the
+// program queries, and a draw mode the shader does not take (GL_INVALID_OPERATION, after the
+// checks of counts and framebuffer, as in Mesa; nothing is drawn). Probed against Mesa 22.3.
+TEST_F(GL33ErrorsTest, GeometryShaderErrors) {
+  const char* vs =
+      "#version 330 core\nlayout(location = 0) in vec4 p;\nout vec3 col;\n"
+      "void main() { col = p.xyz; gl_Position = p; }\n";
+  const char* fs = "#version 330 core\nin vec3 fcol;\nout vec4 o;\nvoid main() { o = vec4(fcol, 1.0); }\n";
+  auto gs_text = [](const char* layout_in, const char* layout_out, const char* input) {
+    return std::string("#version 330 core\n") + layout_in + layout_out + "in vec3 " + input +
+           "[];\nout vec3 fcol;\nvoid main() {\n  for (int i = 0; i < 3; ++i) {\n    fcol = " + input +
+           "[0];\n    gl_Position = gl_in[0].gl_Position + vec4(0.3 * float(i & 1), 0.3 * float(i >> 1), "
+           "0.0, 0.0);\n"
+           "    EmitVertex();\n  }\n}\n";
+  };
+  auto link = [&](const char* v, const std::string& g, const char* f, GLint* status) {
+    const GLuint p = glCreateProgram();
+    for (auto [type, src] :
+         {std::pair{GLenum(GL_VERTEX_SHADER), v}, std::pair{GLenum(GL_GEOMETRY_SHADER), g.c_str()},
+          std::pair{GLenum(GL_FRAGMENT_SHADER), f}}) {
+      if (!src || !*src) continue;
+      const GLuint sh = glCreateShader(type);
+      glShaderSource(sh, 1, &src, nullptr);
+      glCompileShader(sh);
+      glAttachShader(p, sh);
+      glDeleteShader(sh);
+    }
+    glLinkProgram(p);
+    glGetProgramiv(p, GL_LINK_STATUS, status);
+    return p;
+  };
+  GLint ok = -1, v = -7;
+  const std::string good =
+      gs_text("layout(points) in;\n", "layout(triangle_strip, max_vertices = 3) out;\n", "col");
+  const GLuint pr = link(vs, good, fs, &ok);
+  ASSERT_EQ(ok, GL_TRUE);
+  EXPECT_GL_ERR(glGetProgramiv(pr, GL_GEOMETRY_VERTICES_OUT, &v), GL_NO_ERROR);
+  EXPECT_EQ(v, 3);
+  EXPECT_GL_ERR(glGetProgramiv(pr, GL_GEOMETRY_INPUT_TYPE, &v), GL_NO_ERROR);
+  EXPECT_EQ(v, GL_POINTS);
+  EXPECT_GL_ERR(glGetProgramiv(pr, GL_GEOMETRY_OUTPUT_TYPE, &v), GL_NO_ERROR);
+  EXPECT_EQ(v, GL_TRIANGLE_STRIP);
+  GLuint attached[4] = {};
+  GLsizei count = 0;
+  glGetAttachedShaders(pr, 4, &count, attached);
+  EXPECT_EQ(count, 3);
+  GLint type = 0;
+  for (GLsizei i = 0; i < count; ++i) {
+    glGetShaderiv(attached[i], GL_SHADER_TYPE, &v);
+    if (v == GL_GEOMETRY_SHADER) type = v;
+  }
+  EXPECT_EQ(type, GL_GEOMETRY_SHADER);
+  // No input primitive, no output primitive, no max_vertices, no vertex shader: link errors.
+  for (const std::string& bad : {gs_text("", "layout(triangle_strip, max_vertices = 3) out;\n", "col"),
+                                 gs_text("layout(points) in;\n", "", "col"),
+                                 gs_text("layout(points) in;\n", "layout(points) out;\n", "col")}) {
+    const GLuint p = link(vs, bad, fs, &ok);
+    EXPECT_EQ(ok, GL_FALSE) << bad;
+    glGetProgramiv(p, GL_INFO_LOG_LENGTH, &v);
+    EXPECT_GT(v, 1);
+    glDeleteProgram(p);
+  }
+  GLuint p = link(nullptr, good, fs, &ok);
+  EXPECT_EQ(ok, GL_FALSE);
+  glDeleteProgram(p);
+  // An input the vertex shader does not write links (Mesa warns) and reads zero; a program
+  // without a fragment shader links.
+  p = link(vs, gs_text("layout(points) in;\n", "layout(points, max_vertices = 3) out;\n", "other"), fs, &ok);
+  EXPECT_EQ(ok, GL_TRUE);
+  glDeleteProgram(p);
+  p = link(vs, good, nullptr, &ok);
+  EXPECT_EQ(ok, GL_TRUE);
+  glDeleteProgram(p);
+  // A max_vertices beyond GL_MAX_GEOMETRY_OUTPUT_VERTICES does not compile.
+  const GLint max_out = get_int(GL_MAX_GEOMETRY_OUTPUT_VERTICES);
+  EXPECT_GE(max_out, 256);
+  const std::string too_many =
+      gs_text("layout(points) in;\n",
+              ("layout(points, max_vertices = " + std::to_string(max_out + 1) + ") out;\n").c_str(), "col");
+  p = link(vs, too_many, fs, &ok);
+  EXPECT_EQ(ok, GL_FALSE);
+  glDeleteProgram(p);
+  EXPECT_GE(get_int(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS), 1024);
+  EXPECT_GE(get_int(GL_MAX_GEOMETRY_OUTPUT_COMPONENTS), 128);
+  EXPECT_GE(get_int(GL_MAX_GEOMETRY_INPUT_COMPONENTS), 64);
+  EXPECT_GE(get_int(GL_MAX_GEOMETRY_TEXTURE_IMAGE_UNITS), 16);
+  EXPECT_GE(get_int(GL_MAX_GEOMETRY_UNIFORM_BLOCKS), 12);
+  // Draws: a mode the geometry shader does not take draws nothing.
+  GLuint vbo;
+  glGenBuffers(1, &vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  const float pts[12] = {-0.5f, -0.5f, 0, 1, 0, 0, 0, 1, 0.5f, 0.5f, 0, 1};
+  glBufferData(GL_ARRAY_BUFFER, sizeof pts, pts, GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(0);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glUseProgram(pr);
+  EXPECT_GL_ERR(glDrawArrays(GL_TRIANGLES, 0, 3), GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glDrawArrays(GL_LINES_ADJACENCY, 0, 3), GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glDrawArrays(GL_TRIANGLES, 0, -1), GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glDrawArrays(0x1234, 0, 3), GL_INVALID_ENUM);
+  GLubyte px[32 * 32 * 4];
+  glReadPixels(0, 0, 32, 32, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  int lit = 0;
+  for (int i = 0; i < 32 * 32; ++i) lit += px[i * 4 + 3] != 0;
+  EXPECT_EQ(lit, 0);
+  EXPECT_GL_ERR(glDrawArrays(GL_POINTS, 0, 3), GL_NO_ERROR);
+  glReadPixels(0, 0, 32, 32, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  for (int i = 0; i < 32 * 32; ++i) lit += px[i * 4 + 3] != 0;
+  EXPECT_GT(lit, 0);
+  // Adjacency modes without a geometry shader draw (their adjacent vertices ignored).
+  const GLuint plain =
+      program(vs, "#version 330 core\nin vec3 col;\nout vec4 o;\nvoid main() { o = vec4(col, 1.0); }\n");
+  glUseProgram(plain);
+  EXPECT_GL_ERR(glDrawArrays(GL_LINES_ADJACENCY, 0, 3), GL_NO_ERROR);
+  EXPECT_GL_ERR(glDrawArrays(GL_TRIANGLE_STRIP_ADJACENCY, 0, 3), GL_NO_ERROR);
+  glUseProgram(0);
+  glDeleteProgram(plain);
+  glDeleteProgram(pr);
+  glDeleteBuffers(1, &vbo);
+}
+
 TEST_F(GL33ErrorsTest, ShaderAndProgramObjectErrors) {
   const GLuint pr = program(kVs, kFs), unlinked = glCreateProgram();
   const GLuint sh = glCreateShader(GL_VERTEX_SHADER), other = glCreateShader(GL_FRAGMENT_SHADER);
@@ -671,7 +794,7 @@ TEST_F(GL33ErrorsTest, ShaderAndProgramObjectErrors) {
   EXPECT_GL_ERR(glGetProgramiv(sh, GL_LINK_STATUS, &v), GL_INVALID_OPERATION);
   EXPECT_GL_ERR(glGetProgramiv(999, GL_LINK_STATUS, &v), GL_INVALID_VALUE);
   EXPECT_GL_ERR(glGetProgramiv(pr, GL_GEOMETRY_VERTICES_OUT, &v),
-                GL_INVALID_OPERATION);  // no geometry shader
+                GL_INVALID_OPERATION);  // no geometry shader (GeometryShaderErrors has one)
   EXPECT_GL_ERR(glGetShaderiv(sh, 0x1234, &v), GL_INVALID_ENUM);
   EXPECT_GL_ERR(glGetShaderiv(pr, GL_COMPILE_STATUS, &v), GL_INVALID_OPERATION);
   EXPECT_GL_ERR(glGetShaderiv(999, GL_COMPILE_STATUS, &v), GL_INVALID_VALUE);

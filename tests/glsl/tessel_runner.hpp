@@ -47,13 +47,16 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
   TesselResult r;
   auto vs = glsl::Shader::compile(glsl::Stage::Vertex, spec.vertex);
   auto fs = glsl::Shader::compile(glsl::Stage::Fragment, spec.fragment);
-  if (!vs->ok() || !fs->ok()) {
-    r.log = vs->info_log() + fs->info_log();
+  auto gs = glsl::Shader::compile(glsl::Stage::Geometry, spec.geometry);
+  if (!vs->ok() || !fs->ok() || (!spec.geometry.empty() && !gs->ok())) {
+    r.log = vs->info_log() + fs->info_log() + (spec.geometry.empty() ? "" : gs->info_log());
     return r;
   }
   glsl::LinkOptions options;
   options.native_code = native;
-  auto prog = glsl::Program::link(*vs, *fs, options);
+  std::vector<const glsl::Shader*> shaders = {vs.get(), fs.get()};
+  if (!spec.geometry.empty()) shaders.push_back(gs.get());
+  auto prog = glsl::Program::link(shaders, options);
   if (!prog->ok()) {
     r.log = prog->info_log();
     return r;
@@ -209,6 +212,10 @@ inline TesselResult run_tessel(const reference::GlslDrawSpec& spec, int threads 
       case 0x0003: call.topology = gpu::Topology::LineStrip; break;
       case 0x0005: call.topology = gpu::Topology::TriangleStrip; break;
       case 0x0006: call.topology = gpu::Topology::TriangleFan; break;
+      case 0x000A: call.topology = gpu::Topology::LinesAdjacency; break;
+      case 0x000B: call.topology = gpu::Topology::LineStripAdjacency; break;
+      case 0x000C: call.topology = gpu::Topology::TrianglesAdjacency; break;
+      case 0x000D: call.topology = gpu::Topology::TriangleStripAdjacency; break;
       default: call.topology = gpu::Topology::Triangles; break;
     }
     std::vector<std::unique_ptr<gpu::Buffer>> ubos;

@@ -668,6 +668,136 @@ void main() {
   run_spec("clip distances, points", spec, {2e-6f, 2e-6f});
 }
 
+// A geometry stage (GLSL 3.30 §8.10): two strips emitted per input triangle (EndPrimitive
+// between them), inputs read through gl_in[] and an interface block array, smooth, flat and
+// noperspective outputs, and gl_PrimitiveID written for the fragment stage from
+// gl_PrimitiveIDIn, against llvmpipe.
+TEST(GlslMesa, GeometryStageEmitsStrips) {
+  reference::GlslDrawSpec spec;
+  spec.width = spec.height = 32;
+  spec.vertex = R"(#version 330
+layout(location = 0) in vec2 pos;
+out V { vec3 colour; flat int id; } v;
+void main() {
+  v.colour = vec3(fract(float(gl_VertexID) * 0.37), pos * 0.5 + 0.5);
+  v.id = gl_VertexID;
+  gl_Position = vec4(pos, 0.0, 1.0);
+})";
+  spec.geometry = R"(#version 330
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 7) out;
+in V { vec3 colour; flat int id; } v[];
+out vec3 colour;
+flat out int ids;
+noperspective out float edge;
+void main() {
+  vec4 c = (gl_in[0].gl_Position + gl_in[1].gl_Position + gl_in[2].gl_Position) / 3.0;
+  ids = v[0].id * 100 + v[1].id * 10 + v[2].id;
+  for (int i = 0; i < 3; ++i) {
+    gl_Position = mix(c, gl_in[i].gl_Position, 0.8) * vec4(1.0, 1.0, 1.0, 1.0 + 0.2 * float(i));
+    colour = v[i].colour;
+    edge = float(i);
+    gl_PrimitiveID = gl_PrimitiveIDIn * 2;
+    EmitVertex();
+  }
+  EndPrimitive();
+  for (int i = 0; i < 4; ++i) {
+    gl_Position = c + vec4(float(i & 1) * 0.15 - 0.07, float(i >> 1) * 0.15 - 0.07, 0.0, 0.0);
+    colour = vec3(0.25 * float(i));
+    edge = 4.0;
+    gl_PrimitiveID = gl_PrimitiveIDIn * 2 + 1;
+    EmitVertex();
+  }
+})";
+  spec.fragment = R"(#version 330
+in vec3 colour;
+flat in int ids;
+noperspective in float edge;
+out vec4 c;
+void main() { c = vec4(colour.xy + vec2(edge, 0.0), colour.z + float(ids), float(gl_PrimitiveID)); })";
+  spec.attributes.push_back(
+      {"pos", 2, {-0.9f, -0.9f, -0.7f, 0.8f, 0.1f, -0.8f, 0.3f, 0.9f, 0.9f, -0.6f, 0.8f, 0.7f}});
+  spec.primitive = 0x0005;  // GL_TRIANGLE_STRIP: four triangles, the odd ones listed (1, 0, 2)
+  spec.count = 6;
+  run_spec("geometry stage strips", spec, {2e-6f, 2e-6f});
+  // The first convention of flat outputs would give other ids: the tolerance would see it.
+  spec.primitive = 0x0004;  // GL_TRIANGLES: two
+  run_spec("geometry stage triangles", spec, {1e-5f, 1e-5f});
+}
+
+// The order in which the adjacency topologies give their vertices to gl_in[] (GL 3.3 §2.6.1,
+// Table 2.4 for triangle strips), seen as vertex ids that each primitive's quad writes, and a
+// geometry stage that emits points with gl_PointSize, against llvmpipe.
+TEST(GlslMesa, GeometryStageAdjacencyOrder) {
+  auto geometry = [](const char* input, int n) {
+    std::string s = std::string("#version 150\nlayout(") + input +
+                    ") in;\nlayout(triangle_strip, max_vertices = 4) out;\nflat in int id[];\n"
+                    "flat out ivec4 a;\nflat out ivec2 b;\nvoid main() {\n  a = ivec4(";
+    for (int i = 0; i < 4; ++i)
+      s += (i ? ", " : "") + (i < n ? "id[" + std::to_string(i) + "]" : std::string("-1"));
+    s += ");\n  b = ivec2(";
+    for (int i = 4; i < 6; ++i)
+      s += (i > 4 ? ", " : "") + (i < n ? "id[" + std::to_string(i) + "]" : std::string("-1"));
+    s += ");\n"
+         "  float x = -1.0 + 0.25 * float(gl_PrimitiveIDIn);\n"
+         "  for (int k = 0; k < 4; ++k) {\n"
+         "    gl_Position = vec4(x + 0.25 * float(k & 1), -1.0 + 2.0 * float(k >> 1), 0.0, 1.0);\n"
+         "    EmitVertex();\n  }\n}\n";
+    return s;
+  };
+  reference::GlslDrawSpec spec;
+  spec.width = 32;
+  spec.height = 4;
+  spec.outputs = 2;
+  spec.vertex =
+      "#version 150\nin vec2 pos;\nflat out int id;\nvoid main() { id = gl_VertexID; gl_Position = vec4(pos, "
+      "0.0, 1.0); }\n";
+  spec.fragment =
+      "#version 150\nflat in ivec4 a;\nflat in ivec2 b;\nout vec4 c0;\nout vec4 c1;\n"
+      "void main() { c0 = vec4(a); c1 = vec4(b, 0.0, 1.0); }\n";
+  std::vector<float> pos;
+  for (int i = 0; i < 24; ++i) pos.insert(pos.end(), {0.05f * float(i) - 0.6f, (i & 1) ? 0.5f : -0.5f});
+  spec.attributes.push_back({"pos", 2, pos});
+  struct Case {
+    uint32_t primitive;
+    int count;
+    const char* input;
+    int vertices;
+  };
+  for (const Case& k : {Case{0x000A, 12, "lines_adjacency", 4}, Case{0x000B, 10, "lines_adjacency", 4},
+                        Case{0x000C, 18, "triangles_adjacency", 6}, Case{0x000D, 6, "triangles_adjacency", 6},
+                        Case{0x000D, 7, "triangles_adjacency", 6}, Case{0x000D, 8, "triangles_adjacency", 6},
+                        Case{0x000D, 16, "triangles_adjacency", 6}}) {
+    spec.geometry = geometry(k.input, k.vertices);
+    spec.primitive = k.primitive;
+    spec.count = k.count;
+    run_spec("adjacency 0x" + std::to_string(k.primitive) + " count " + std::to_string(k.count), spec,
+             {0, 0});
+  }
+  // Points out, sized by the geometry stage's gl_PointSize.
+  spec.width = spec.height = 32;
+  spec.outputs = 1;
+  spec.geometry = R"(#version 150
+layout(points) in;
+layout(points, max_vertices = 3) out;
+flat in int id[];
+flat out ivec4 a;
+void main() {
+  for (int i = 0; i < 3; ++i) {
+    a = ivec4(id[0], i, 0, 1);
+    gl_PointSize = 1.0 + 2.0 * float(i);
+    gl_Position = gl_in[0].gl_Position + vec4(0.0, 0.3 * float(i), 0.0, 0.0);
+    EmitVertex();
+  }
+})";
+  spec.fragment =
+      "#version 150\nflat in ivec4 a;\nout vec4 c0;\nvoid main() { c0 = vec4(a) + vec4(gl_PointCoord, 0.0, "
+      "0.0); }\n";
+  spec.primitive = 0x0000;
+  spec.count = 8;
+  run_spec("geometry stage points", spec, {1e-5f, 1e-5f});
+}
+
 // gl_PointSize (with GL_PROGRAM_POINT_SIZE) sizes each point, clamped to 1..255, and
 // gl_PointCoord runs from (0, 0) at the upper left to (1, 1) across it (GL 3.3 §3.4): points
 // of sizes 0.5 to 9.5 at and off pixel centres, against llvmpipe.
@@ -693,9 +823,12 @@ void main() { c = vec4(gl_PointCoord, s, 1.0); })";
     const float y = float(6 + (k / 5) * 15) + (k % 2 ? 0.5f : 0.25f);
     data.insert(data.end(), {x / 32.0f - 1.0f, y / 32.0f - 1.0f, size});
   }
+  // Two wide points whose centres are just outside the view volume: discarded whole (GL 3.3
+  // §2.20), though they would reach into the window.
+  data.insert(data.end(), {-1.03f, 0.2f, 9.5f, 0.3f, 1.02f, 7.5f});
   spec.attributes.push_back({"pos_size", 3, data});
   spec.primitive = 0x0000;
-  spec.count = 20;
+  spec.count = 22;
   run_spec("point size and coordinate", spec, {1e-5f, 1e-5f});
 }
 

@@ -334,7 +334,7 @@ const float kIdentity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 // run changed, on every path out of run() (a failure half-way included), so the next run
 // starts from the same context state.
 struct RunObjects {
-  GLuint vs = 0, fs = 0, program = 0;
+  GLuint vs = 0, fs = 0, gs = 0, program = 0;
   GLuint fbo = 0, depth_rb = 0, vao = 0;
   std::vector<GLuint> color_rbs, vbos, textures;
 
@@ -350,6 +350,7 @@ struct RunObjects {
     if (program) glDeleteProgram(program);
     if (vs) glDeleteShader(vs);
     if (fs) glDeleteShader(fs);
+    if (gs) glDeleteShader(gs);
     if (vao) glDeleteVertexArrays(1, &vao);
     if (!vbos.empty()) glDeleteBuffers(GLsizei(vbos.size()), vbos.data());
     // Deleting a texture also unbinds it from every unit of the current context.
@@ -509,10 +510,13 @@ GlslResult GlslOracle::Impl::run(const GlslDrawSpec& spec) {
   };
   const bool vs_ok = compile(GL_VERTEX_SHADER, spec.vertex, &obj.vs, "vertex shader");
   const bool fs_ok = compile(GL_FRAGMENT_SHADER, spec.fragment, &obj.fs, "fragment shader");
-  r.compiled = vs_ok && fs_ok;
+  const bool gs_ok =
+      spec.geometry.empty() || compile(GL_GEOMETRY_SHADER, spec.geometry, &obj.gs, "geometry shader");
+  r.compiled = vs_ok && fs_ok && gs_ok;
   if (!r.compiled) return finish();
   obj.program = glCreateProgram();
   glAttachShader(obj.program, obj.vs);
+  if (obj.gs) glAttachShader(obj.program, obj.gs);
   glAttachShader(obj.program, obj.fs);
   glLinkProgram(obj.program);
   GLint linked = GL_FALSE;

@@ -90,6 +90,7 @@ struct GlslTexture {
 
 struct GlslDrawSpec {
   std::string vertex, fragment;  // GLSL source, any #version 110..330 (+ compatibility)
+  std::string geometry;          // a geometry shader between them, when not empty
   std::vector<GlslAttribute> attributes;
   std::vector<GlslUniform> uniforms;  // set in this order after glUseProgram
   std::vector<GlslTexture> textures;

@@ -28,7 +28,7 @@
 
 namespace tessel::glsl {
 
-enum class Stage : uint8_t { Vertex, Fragment };
+enum class Stage : uint8_t { Vertex, Fragment, Geometry };
 
 class Shader {
  public:
@@ -95,6 +95,14 @@ struct BufferBinding {
   size_t size = 0;  // 0: to the end of the buffer
 };
 
+// A program's geometry stage (GLSL 1.50 §4.3.8.1 layout qualifiers), as GL reports it
+// (GL_GEOMETRY_VERTICES_OUT, GL_GEOMETRY_INPUT_TYPE, GL_GEOMETRY_OUTPUT_TYPE).
+struct GeometryInfo {
+  int max_vertices = 0;
+  uint32_t input_type = 0;   // GL_POINTS, GL_LINES, GL_LINES_ADJACENCY, GL_TRIANGLES, GL_TRIANGLES_ADJACENCY
+  uint32_t output_type = 0;  // GL_POINTS, GL_LINE_STRIP, GL_TRIANGLE_STRIP
+};
+
 // A uniform block as GL reports it (glGetActiveUniformBlock*, glGetActiveUniforms with
 // GL_UNIFORM_OFFSET and the strides): std140 layout, which also serves shared and packed.
 struct UniformBlockMember {
@@ -133,7 +141,8 @@ class Program {
   static std::shared_ptr<Program> link(const Shader& vertex, const Shader& fragment,
                                        const LinkOptions& options = {});
   // Links any number of shader objects (glAttachShader): one or more of each stage, which
-  // GL links as one stage's compilation units (exactly one of them defines main()).
+  // GL links as one stage's compilation units (exactly one of them defines main()). A vertex
+  // and a fragment stage are needed; a geometry stage runs between them when there is one.
   static std::shared_ptr<Program> link(std::span<const Shader* const> shaders,
                                        const LinkOptions& options = {});
   ~Program();
@@ -149,6 +158,9 @@ class Program {
   // Waits until the native code's compile has finished (at once when it has, or when there is
   // none to wait for) and returns native().
   bool wait_native() const;
+
+  // The geometry stage's layout, when the program has one.
+  const GeometryInfo* geometry() const;
 
   const std::vector<Variable>& attributes() const;      // active, user-declared
   const std::vector<Variable>& uniforms() const;        // active, user-declared (gl_ state excluded)

@@ -48,6 +48,42 @@ struct RuntimeShape {
   // themselves: the pipeline sets it around its work for the draw (the shading loops and
   // everything in them), and a direct caller with ScopedDenormalFlush.
   bool flush_denormals = false;
+
+  // A geometry stage (GL 3.2), between the vertex stage and clipping, when geometry_input is
+  // not 0: the vertices of each primitive it takes (1, 2, 3, 4 or 6; the draw's topology must
+  // match: points; lines and strips; triangles, strips and fans; and the adjacency kinds).
+  // The vertex stage then writes vertex_varyings components for it, and everything above
+  // (varyings, flat, point_size, clip_distance, ...) describes what the geometry stage emits.
+  int geometry_input = 0;
+  Topology geometry_output = Topology::Points;  // Points, LineStrip or TriangleStrip
+  int geometry_max_vertices = 0;                // emitted per primitive (<= kMaxGeometryVertices)
+  int vertex_varyings = 0;                      // <= kMaxVaryings
+  // The varying component holding the bits of the geometry stage's gl_PrimitiveID, which the
+  // fragment stage reads from the provoking vertex (-1: the input primitive's number).
+  int primitive_id = -1;
+};
+
+inline constexpr int kMaxGeometryInputVertices = 6;
+inline constexpr int kMaxGeometryVertices = 1024;
+
+// One geometry call: up to sixteen primitives, one a lane.
+struct GeometryLanes {
+  int count = 0;  // primitives in lanes 0..count-1
+  // Each input vertex's clip position and vertex_varyings components ([vertex][component][lane]),
+  // and each primitive's number in the draw (gl_PrimitiveIDIn).
+  alignas(64) float position[kMaxGeometryInputVertices][4][kRuntimeLanes];
+  alignas(64) float varyings[kMaxGeometryInputVertices][kMaxVaryings][kRuntimeLanes];
+  alignas(64) int32_t primitive_id[kRuntimeLanes];
+  // Set by the caller: room for geometry_max_vertices vertices a lane, of out_stride
+  // (>= 4 + varyings) components. The shader writes vertex v of lane l as its clip position
+  // and then its varyings, component c at out[(v * out_stride + c) * kRuntimeLanes + l]
+  // (the components past 4 + varyings are left alone), and strip_start[v * kRuntimeLanes + l],
+  // not zero when that vertex begins a strip (the first one, and the first after EndPrimitive).
+  float* out = nullptr;
+  uint32_t* strip_start = nullptr;
+  int out_stride = 0;
+  // Written by the shader: the vertices each lane emitted.
+  uint32_t emitted[kRuntimeLanes] = {};
 };
 
 // Sets the SSE flush-to-zero and denormals-are-zero bits for the life of the object when
@@ -110,6 +146,8 @@ class RuntimeShader {
   virtual const RuntimeShape& shape() const = 0;
   virtual void vertex(VertexLanes& lanes) const = 0;
   virtual void fragment(FragmentLanes& lanes) const = 0;
+  // The geometry stage, for a program whose shape() has one.
+  virtual void geometry(GeometryLanes& lanes) const { (void)lanes; }
   // Two fragment calls' worth at once (the pipeline has them ready together), so that an
   // implementation can interleave their work; the results must be those of fragment(a) then
   // fragment(b).

@@ -15,7 +15,22 @@ inline constexpr int kMaxColorAttachments = 8;
 inline constexpr int kMaxClipPlanes = 8;
 inline constexpr int kMaxViewportSize = 16384;
 
-enum class Topology : uint8_t { Points, Lines, LineStrip, LineLoop, Triangles, TriangleStrip, TriangleFan };
+// The last four carry adjacent vertices for a geometry stage (GL 3.3 §2.6.1): a program
+// without one draws them as lines, a line strip, triangles and a triangle strip of their
+// other vertices.
+enum class Topology : uint8_t {
+  Points,
+  Lines,
+  LineStrip,
+  LineLoop,
+  Triangles,
+  TriangleStrip,
+  TriangleFan,
+  LinesAdjacency,
+  LineStripAdjacency,
+  TrianglesAdjacency,
+  TriangleStripAdjacency,
+};
 enum class CullMode : uint8_t { None, Front, Back, FrontAndBack };
 enum class FrontFace : uint8_t { CCW, CW };
 enum class PolygonMode : uint8_t { Fill, Line, Point };

@@ -20,6 +20,7 @@
 namespace tessel::gpu {
 
 struct DrawCall;
+struct GeometryLanes;
 
 namespace detail {
 
@@ -206,11 +207,19 @@ class ProgramBase {
   int outputs = 1;
   // Varying components the pipeline reads or sets itself (RuntimeShape; -1: none).
   int point_size_var = -1, point_coord_var = -1, clip_distance_var = -1, clip_distances = 0;
+  // A geometry stage (RuntimeShape): input vertices per primitive (0: none), what it emits,
+  // the components the vertex stage writes for it, and the gl_PrimitiveID component.
+  int geometry_input = 0;
+  Topology geometry_output = Topology::Points;
+  int geometry_max_vertices = 0, vertex_varyings = 0, primitive_id_var = -1;
   // Fetches and shades n vertices (element ids, base vertex added) of one instance; writes
   // clip positions and n * varyings floats, and, unless soa is null, the clip positions again
   // as blocks of eight x, eight y, eight z and eight w (n rounded up to a multiple of 8).
   virtual void shade_vertices(const DrawRecord& d, const uint32_t* ids, int n, uint32_t instance,
                               glm::vec4* pos, float* vars, float* soa = nullptr) const = 0;
+  // Runs the geometry stage on lanes.count primitives (the caller fills the inputs and
+  // lanes.out / lanes.strip_start; see RuntimeShader::geometry).
+  virtual void shade_geometry(GeometryLanes& lanes) const { (void)lanes; }
   // Rasterizes and shades n consecutive triangles of one draw, in order, inside the tile
   // rectangle [x0,x1) x [y0,y1), writing through `t` (the draw's attachments, or the raster
   // phase's tile-local copies of them).

@@ -65,6 +65,14 @@ class Program final : public ProgramBase {
     }
   }
 
+  void shade_geometry(GeometryLanes& lanes) const override {
+    if constexpr (shader_runtime<S>()) {
+      [[maybe_unused]] const auto mode = float_mode();
+      shader_.geometry(uniforms_, lanes);
+    }
+    (void)lanes;
+  }
+
   void raster(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0, int y0,
               int x1, int y1, Counters& counters) const override {
     [[maybe_unused]] const auto mode = float_mode();
