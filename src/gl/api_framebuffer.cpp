@@ -247,6 +247,9 @@ void draw_buffers(Context& c, GLsizei n, const std::array<GLenum, kMaxDrawBuffer
 // in `color`).
 enum class ClearKind { Float, Int, Uint };
 
+void clear_buffer_layer(Context& c, GLenum buffer, GLint drawbuffer, glm::vec4 color, float depth,
+                        int stencil, ClearKind kind, int layer);
+
 void clear_buffer(Context& c, GLenum buffer, GLint drawbuffer, glm::vec4 color, float depth, int stencil,
                   ClearKind kind) {
   GL_OUTSIDE_BEGIN();
@@ -262,13 +265,22 @@ void clear_buffer(Context& c, GLenum buffer, GLint drawbuffer, glm::vec4 color, 
     default: return c.error(GL_INVALID_ENUM);
   }
   c.touch();
-  if (!c.bind_draw_target()) return;
+  // Every layer of a layered framebuffer is cleared (§4.4.7).
+  const int layers = c.draw_layers();
+  for (int layer = 1; layer < layers; ++layer)
+    clear_buffer_layer(c, buffer, drawbuffer, color, depth, stencil, kind, layer);
+  clear_buffer_layer(c, buffer, drawbuffer, color, depth, stencil, kind, 0);
+}
+
+void clear_buffer_layer(Context& c, GLenum buffer, GLint drawbuffer, glm::vec4 color, float depth,
+                        int stencil, ClearKind kind, int layer) {
+  if (!c.bind_draw_target(layer)) return;
   const gpu::Framebuffer& fb = c.framebuffer();
   const Context::TargetInfo target = c.target_info();
   gpu::ClearValues cv;
   cv.clear_color = cv.clear_depth = cv.clear_stencil = false;
   if (buffer == GL_COLOR) {
-    if (!fb.color[size_t(drawbuffer)].texture) return;
+    if (!fb.color[size_t(drawbuffer)]) return;
     // Integers into a buffer that is not integer (undefined, §4.2.3): their values as floats.
     if (kind != ClearKind::Float && !target.integer[size_t(drawbuffer)].integer())
       for (int k = 0; k < 4; ++k) {
@@ -333,11 +345,11 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
   if (mask & GL_COLOR_BUFFER_BIT) {
     const gpu::Attachment src = c.read_color();
     const Context::TargetInfo target = c.target_info();
-    if (src.texture) {
+    if (src) {
       const gpu::IntegerRange src_int = c.read_color_integer();
       for (int i = 0; i < kMaxDrawBuffers; ++i) {
         const gpu::Attachment& d = fb.color[size_t(i)];
-        if (!d.texture) continue;
+        if (!d) continue;
         // Float and fixed-point may mix; integer buffers blit only into integer buffers of the
         // same signedness (as Mesa checks), and never with GL_LINEAR (§4.3.2).
         const gpu::IntegerRange dst_int = target.integer[size_t(i)];
@@ -354,11 +366,11 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
   if (mask & (GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT)) {
     const gpu::Attachment src = c.read_depth();
     const gpu::Attachment dst = fb.depth;
-    if (src.texture && dst.texture) {
+    if (src && dst) {
       // The depth formats must match in bits and kind (as Mesa checks): D24 with D24S8 is
       // fine, float depth with fixed-point is not.
-      const bool src_float = src.texture->format() == gpu::Format::Depth32F;
-      const bool dst_float = dst.texture->format() == gpu::Format::Depth32F;
+      const bool src_float = src.format() == gpu::Format::Depth32F;
+      const bool dst_float = dst.format() == gpu::Format::Depth32F;
       if (src_float != dst_float) return c.error(GL_INVALID_OPERATION);
       passes.push_back({src, dst, true, 0, {}});
     }
@@ -369,11 +381,10 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
   const int xa = std::min(dx0, dx1), xb = std::max(dx0, dx1), ya = std::min(dy0, dy1),
             yb = std::max(dy0, dy1);
   for (const Pass& p : passes) {
-    gpu::Texture2D& dt = *p.dst.texture;
-    const gpu::Texture2D& st = *p.src.texture;
-    const int sw = st.width(p.src.level), sh = st.height(p.src.level);
-    int x0 = std::max(xa, 0), x1 = std::min(xb, dt.width(p.dst.level));
-    int y0 = std::max(ya, 0), y1 = std::min(yb, dt.height(p.dst.level));
+    const gpu::Attachment &dt = p.dst, &st = p.src;
+    const int sw = st.width(), sh = st.height();
+    int x0 = std::max(xa, 0), x1 = std::min(xb, dt.width());
+    int y0 = std::max(ya, 0), y1 = std::min(yb, dt.height());
     if (sc.test) {
       x0 = std::max(x0, sc.x), x1 = std::min(x1, sc.x + sc.width);
       y0 = std::max(y0, sc.y), y1 = std::min(y1, sc.y + sc.height);
@@ -386,19 +397,19 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
         if (filter == GL_NEAREST || p.depth) {
           const int ix = int(std::floor(u)), iy = int(std::floor(v));
           if (ix < 0 || iy < 0 || ix >= sw || iy >= sh) continue;
-          out = st.fetch(p.src.level, ix, iy);
+          out = st.fetch(ix, iy);
         } else {
           if (u < 0.0 || v < 0.0 || u >= double(sw) || v >= double(sh)) continue;
           const double fu = u - 0.5, fv = v - 0.5;
           const int i0 = int(std::floor(fu)), j0 = int(std::floor(fv));
           const float ax = float(fu - std::floor(fu)), ay = float(fv - std::floor(fv));
           auto at = [&](int i, int j) {
-            return st.fetch(p.src.level, std::clamp(i, 0, sw - 1), std::clamp(j, 0, sh - 1));
+            return st.fetch(std::clamp(i, 0, sw - 1), std::clamp(j, 0, sh - 1));
           };
           out = (at(i0, j0) * (1 - ax) + at(i0 + 1, j0) * ax) * (1 - ay) +
                 (at(i0, j0 + 1) * (1 - ax) + at(i0 + 1, j0 + 1) * ax) * ay;
         }
-        const glm::vec4 old = dt.fetch(p.dst.level, x, y);
+        const glm::vec4 old = dt.fetch(x, y);
         if (p.depth) {
           if (!(mask & GL_DEPTH_BUFFER_BIT)) out.x = old.x;
           if (!(mask & GL_STENCIL_BUFFER_BIT)) out.y = old.y;
@@ -407,7 +418,7 @@ void blit(Context& c, GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLi
           for (int k = 0; k < 4; ++k)
             if (!(p.channels & (1u << k))) out[k] = old[k];
         }
-        dt.store(p.dst.level, x, y, out);
+        dt.store(x, y, out);
       }
   }
 }

@@ -258,12 +258,12 @@ void copy_pixels(Context& c, GLint x, GLint y, GLsizei w, GLsizei h, GLenum type
   auto data = std::make_shared<Pixels>();
   data->px.assign(size_t(w) * size_t(h), glm::vec4(0.0f));
   const gpu::Attachment a = type == GL_COLOR ? c.read_color() : c.read_depth();
-  gpu::Texture2D* src = a.texture;
-  if (!src) return;
+  if (!a) return;
+  const int aw = a.width(), ah = a.height();
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i)
-      if (x + i >= 0 && y + j >= 0 && x + i < src->width(a.level) && y + j < src->height(a.level)) {
-        glm::vec4 v = src->fetch(a.level, x + i, y + j);
+      if (x + i >= 0 && y + j >= 0 && x + i < aw && y + j < ah) {
+        glm::vec4 v = a.fetch(x + i, y + j);
         if (type == GL_STENCIL) v.x = v.y;
         data->px[size_t(j) * size_t(w) + size_t(i)] = v;
       }
@@ -310,7 +310,7 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum form
   const bool depth_stencil = format == GL_DEPTH_STENCIL;
   const bool depth = format == GL_DEPTH_COMPONENT || depth_stencil, stencil = format == GL_STENCIL_INDEX;
   const tessel::gpu::Attachment a = depth || stencil ? c.read_depth() : c.read_color();
-  if (!a.texture) return c.error(GL_INVALID_OPERATION);
+  if (!a) return c.error(GL_INVALID_OPERATION);
   // §4.3.1: integer formats read integer colour buffers, the others the rest.
   const tessel::gpu::IntegerRange integer =
       depth || stencil ? tessel::gpu::IntegerRange{} : c.read_color_integer();
@@ -331,13 +331,13 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum form
   }
   if (w == 0 || h == 0 || !dst) return;
   c.finish();
-  const tessel::gpu::Texture2D* src = a.texture;
+  const int aw = a.width(), ah = a.height();
   std::vector<glm::vec4> px(size_t(w) * size_t(h), glm::vec4(0.0f));
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const int sx = x + i, sy = y + j;
-      if (sx < 0 || sy < 0 || sx >= src->width(a.level) || sy >= src->height(a.level)) continue;
-      glm::vec4 v = src->fetch(a.level, sx, sy);
+      if (sx < 0 || sy < 0 || sx >= aw || sy >= ah) continue;
+      glm::vec4 v = a.fetch(sx, sy);
       if (stencil) v.x = v.y;
       px[size_t(j) * size_t(w) + size_t(i)] = v;
     }
@@ -347,9 +347,8 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum form
     return pack_pixels(c.c.pack, w, h, format, type, px, dst);
   }
   if (!depth && !stencil) transfer(c.s.pixel, px);
-  const bool fixed_point = src->format() == tessel::gpu::Format::RGBA8 ||
-                           src->format() == tessel::gpu::Format::R8 ||
-                           src->format() == tessel::gpu::Format::RG8;
+  const bool fixed_point = a.format() == tessel::gpu::Format::RGBA8 ||
+                           a.format() == tessel::gpu::Format::R8 || a.format() == tessel::gpu::Format::RG8;
   if (!depth && !stencil &&
       (c.s.pixel.clamp_read == GL_TRUE || (c.s.pixel.clamp_read == GL_FIXED_ONLY && fixed_point)))
     for (glm::vec4& v : px) v = glm::clamp(v, 0.0f, 1.0f);

@@ -455,14 +455,13 @@ std::vector<glm::vec4> read_block(Context& c, GLint x, GLint y, GLsizei w, GLsiz
   c.finish();
   std::vector<glm::vec4> out(size_t(w) * size_t(h), glm::vec4(0.0f));
   const gpu::Attachment a = depth ? c.read_depth() : c.read_color();
-  const gpu::Texture2D* src = a.texture;
-  const int level = a.level;
-  if (!src) return out;
+  if (!a) return out;
+  const int aw = a.width(), ah = a.height();
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const int sx = x + i, sy = y + j;
-      if (sx < 0 || sy < 0 || sx >= src->width(level) || sy >= src->height(level)) continue;
-      out[size_t(j) * size_t(w) + size_t(i)] = src->fetch(level, sx, sy);
+      if (sx < 0 || sy < 0 || sx >= aw || sy >= ah) continue;
+      out[size_t(j) * size_t(w) + size_t(i)] = a.fetch(sx, sy);
     }
   return out;
 }
@@ -481,7 +480,7 @@ void copy_tex_image(Context& c, const ImageTarget& it, GLint level, GLint intern
   if (!fmt.is_depth() && fmt.integer() != c.read_color_integer().integer())
     return c.error(GL_INVALID_OPERATION);
   if (c.read_fbo && c.read_fbo->samples() > 0) return c.error(GL_INVALID_OPERATION);
-  if (!(fmt.is_depth() ? c.read_depth() : c.read_color()).texture) return c.error(GL_INVALID_OPERATION);
+  if (!(fmt.is_depth() ? c.read_depth() : c.read_color())) return c.error(GL_INVALID_OPERATION);
   auto data = std::make_shared<ImageData>();
   try {
     data->px = read_block(c, x, y, w, it.target == TexTarget::T1D ? 1 : h, fmt.is_depth());
@@ -503,7 +502,7 @@ void copy_tex_sub_image(Context& c, const ImageTarget& it, GLint level, GLint xo
   const bool depth = img.fmt.is_depth();
   if (!depth && img.fmt.integer() != c.read_color_integer().integer()) return c.error(GL_INVALID_OPERATION);
   if (c.read_fbo && c.read_fbo->samples() > 0) return c.error(GL_INVALID_OPERATION);
-  if (!(depth ? c.read_depth() : c.read_color()).texture) return c.error(GL_INVALID_OPERATION);
+  if (!(depth ? c.read_depth() : c.read_color())) return c.error(GL_INVALID_OPERATION);
   auto data = std::make_shared<ImageData>();
   try {
     data->px = read_block(c, x, y, w, h, depth);

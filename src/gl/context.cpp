@@ -195,12 +195,10 @@ gpu::Texture2D* Context::color_buffer(GLenum which) {
 
 namespace {
 constexpr GLenum kFramebufferObjectTarget = 0xFFFFFFFFu;  // fb_target_ while an FBO is bound
-bool same_attachment(const gpu::Attachment& a, const gpu::Attachment& b) {
-  return a.texture == b.texture && a.level == b.level;
-}
+bool same_attachment(const gpu::Attachment& a, const gpu::Attachment& b) { return a == b; }
 }  // namespace
 
-bool Context::bind_draw_target() {
+bool Context::bind_draw_target(int layer) {
   if (conditional_render_skips()) return false;
   if (!draw_fbo && !has_default_framebuffer) {
     error(GL_INVALID_FRAMEBUFFER_OPERATION);
@@ -223,7 +221,7 @@ bool Context::bind_draw_target() {
   gpu::Framebuffer nf;
   bool any = false;
   auto take = [&](const Attachment& a, gpu::Attachment& out) {
-    if (!gpu_image(a, out)) return;
+    if (!gpu_image(a, out, layer)) return;
     any = true;
     if (a.type == GL_TEXTURE) a.texture->rendered = true;  // images pulled back before CPU access
   };
@@ -275,18 +273,19 @@ Context::TargetInfo Context::target_info() const {
   return t;
 }
 
-bool Context::gpu_image(const Attachment& a, gpu::Attachment& out) {
+bool Context::gpu_image(const Attachment& a, gpu::Attachment& out, int layer) {
   out = {};
   if (a.type == GL_RENDERBUFFER) {
     if (!a.renderbuffer || !a.renderbuffer->image) return false;
     out.texture = a.renderbuffer->image.get();
     return true;
   }
-  if (a.type != GL_TEXTURE || !a.texture || a.layered) return false;
+  if (a.type != GL_TEXTURE || !a.texture) return false;
   TextureObject& t = *a.texture;
   if (!update_gpu_texture(*this, t)) return false;
   const int li = a.level - t.gpu_base;
   if (li < 0 || li >= t.gpu_levels) return false;
+  const int at = a.layered ? layer : a.layer;
   switch (t.target) {
     case TexTarget::T1D:
     case TexTarget::T2D:
@@ -296,12 +295,47 @@ bool Context::gpu_image(const Attachment& a, gpu::Attachment& out) {
       break;
     case TexTarget::Cube:
       if (!t.cube) return false;
-      out.texture = &t.cube->face(a.face);
+      out.texture = &t.cube->face(a.layered ? layer : a.face);
+      break;
+    case TexTarget::T3D:
+      if (!t.tex3d) return false;
+      out.texture_3d = t.tex3d.get();
+      out.layer = at;
+      break;
+    case TexTarget::T1DArray:
+    case TexTarget::T2DArray:
+      if (!t.array) return false;
+      out.texture_array = t.array.get();
+      out.layer = at;
       break;
     default: return false;
   }
   out.level = li;
+  if (!out.texture && (at < 0 || at >= out.layers())) return false;
   return true;
+}
+
+int Context::draw_layers() {
+  if (!draw_fbo) return 0;
+  int n = 0;
+  bool layered = false;
+  auto count = [&](const Attachment& a) {
+    if (!a || !a.layered || !a.texture) return;
+    TexFormat fmt;
+    int w, h;
+    if (!a.image(fmt, w, h)) return;
+    const TextureObject& t = *a.texture;
+    const TextureImage& img = t.image(0, a.level);
+    const int layers = t.target == TexTarget::Cube       ? 6
+                       : t.target == TexTarget::T1DArray ? img.height
+                                                         : img.depth;
+    n = layered ? std::min(n, layers) : layers;
+    layered = true;
+  };
+  for (const Attachment& a : draw_fbo->color) count(a);
+  count(draw_fbo->depth);
+  count(draw_fbo->stencil);
+  return layered ? n : 0;
 }
 
 GLenum Context::framebuffer_status(FramebufferObject& f) {
@@ -1161,10 +1195,10 @@ void Context::send_stippled_lines(const FFVertices& verts, const std::vector<uin
 }
 
 glm::vec4 Context::clear_color_for(const TargetInfo& target, int i, glm::vec4 color) const {
-  const gpu::Texture2D* t = fb_.color[size_t(i)].texture;
+  const gpu::Attachment& t = fb_.color[size_t(i)];
   // Unsigned normalized buffers take the colour clamped to [0, 1], float ones as it is.
   if (!t) return color;
-  if (gpu::is_unorm8_format(t->format())) return glm::clamp(color, 0.0f, 1.0f);
+  if (gpu::is_unorm8_format(t.format())) return glm::clamp(color, 0.0f, 1.0f);
   // Integer buffers take the value's bits clamped to their range: glClear's float colour as
   // llvmpipe takes it (GL leaves it undefined), glClearBuffer{i,ui}v's integers as given.
   return clamp_integer_texel(target.integer[size_t(i)], color);
@@ -1172,7 +1206,14 @@ glm::vec4 Context::clear_color_for(const TargetInfo& target, int i, glm::vec4 co
 
 void Context::clear(GLbitfield mask) {
   touch();
-  if (!bind_draw_target()) return;
+  // Every layer of a layered framebuffer is cleared (§4.4.7).
+  const int layers = draw_layers();
+  for (int layer = 1; layer < layers; ++layer) clear_layer(mask, layer);
+  clear_layer(mask, 0);
+}
+
+void Context::clear_layer(GLbitfield mask, int layer) {
+  if (!bind_draw_target(layer)) return;
   const TargetInfo target = target_info();
   gpu::ClearValues cv;
   cv.clear_color = (mask & GL_COLOR_BUFFER_BIT) != 0;
@@ -1185,7 +1226,7 @@ void Context::clear(GLbitfield mask) {
   rs.depth_write = s.depth.mask;
   bool any_color = false;
   for (int i = 0; i < kMaxDrawBuffers; ++i) {
-    if (!fb_.color[size_t(i)].texture) continue;
+    if (!fb_.color[size_t(i)]) continue;
     any_color = true;
     cv.attachment_colors[size_t(i)] = clear_color_for(target, i, cv.color);
   }

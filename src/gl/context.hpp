@@ -545,8 +545,8 @@ class Context {
   FramebufferRef draw_fbo, read_fbo;
   RenderbufferRef bound_renderbuffer;
   // glCheckFramebufferStatus of a framebuffer object: §4.4.4's rules, then what the gpu layer
-  // cannot render to (GL_FRAMEBUFFER_UNSUPPORTED: 3D and array layers, a level outside the texture's level
-  // chain, separate depth and stencil images).
+  // cannot render to (GL_FRAMEBUFFER_UNSUPPORTED: a level outside the texture's level chain,
+  // separate depth and stencil images).
   GLenum framebuffer_status(FramebufferObject& f);
   bool draw_framebuffer_complete() {
     return draw_fbo ? framebuffer_status(*draw_fbo) == GL_FRAMEBUFFER_COMPLETE : has_default_framebuffer;
@@ -554,8 +554,13 @@ class Context {
   bool read_framebuffer_complete() {
     return read_fbo ? framebuffer_status(*read_fbo) == GL_FRAMEBUFFER_COMPLETE : has_default_framebuffer;
   }
-  // The gpu image of an attachment (texture level or renderbuffer); false when there is none.
-  bool gpu_image(const Attachment& a, gpu::Attachment& out);
+  // The gpu image of an attachment (texture level, a layer of one, or renderbuffer); false
+  // when there is none. A layered attachment (glFramebufferTexture of a cube map, 3D or array
+  // texture) gives its layer `layer` (a cube's face).
+  bool gpu_image(const Attachment& a, gpu::Attachment& out, int layer = 0);
+  // The layers of the draw framebuffer when it is layered (GL 3.3 §4.4.7: the fewest of any
+  // attachment), else 0.
+  int draw_layers();
   // What pixel reads (glReadPixels, glCopyTex*, glBlitFramebuffer) read: the read
   // framebuffer's read buffer and its depth (or depth-stencil) image.
   gpu::Attachment read_color();
@@ -719,6 +724,8 @@ class Context {
   void bind_current_values(gpu::VertexLayout& layout, std::vector<std::unique_ptr<gpu::Buffer>>& keep);
   void run_program(ProgramRun run, const gpu::VertexLayout& layout, const gpu::DrawCall& call,
                    gpu::RenderState rs);
+  void run_program_layer(ProgramRun run, const gpu::VertexLayout& layout, const gpu::DrawCall& call,
+                         gpu::RenderState rs, int layer);
   void feed_compat_state(ProgramRun run);
   bool texture_units_for_draw(const glsl::Program& program, std::vector<glsl::TextureBinding>& units);
   std::vector<glsl::BufferBinding> uniform_buffers_for_draw() const;
@@ -730,7 +737,9 @@ class Context {
   gpu::RenderState render_state(bool for_clear) const;
   // Binds the draw framebuffer for a draw or clear. False (nothing must be drawn) when it is
   // incomplete (GL_INVALID_FRAMEBUFFER_OPERATION is raised) or has no image to draw into.
-  bool bind_draw_target();
+  // Of a layered framebuffer, `layer` of every attachment is bound.
+  bool bind_draw_target(int layer = 0);
+  void clear_layer(GLbitfield mask, int layer);
   const gpu::Framebuffer& framebuffer() const { return fb_; }
 
  private:

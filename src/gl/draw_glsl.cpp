@@ -438,7 +438,25 @@ void Context::draw_program_batch(ProgramRun run, const gpu::Buffer& vbuf, const 
 
 void Context::run_program(ProgramRun run, const gpu::VertexLayout& layout, const gpu::DrawCall& call,
                           gpu::RenderState rs) {
-  if (!bind_draw_target()) return;
+  // A geometry shader that writes gl_Layer into a layered framebuffer: the draw runs once a
+  // layer, each run keeping the primitives of its layer (§4.4.7). Other draws into a layered
+  // framebuffer render into layer 0.
+  const glsl::GeometryInfo* gi = run.program.geometry();
+  const int layers = gi && gi->writes_layer ? draw_layers() : 0;
+  if (layers > 0) {
+    rs.layer_count = layers;
+    for (int layer = 0; layer < layers; ++layer) {
+      rs.layer = layer;
+      run_program_layer(run, layout, call, rs, layer);
+    }
+    return;
+  }
+  run_program_layer(run, layout, call, rs, 0);
+}
+
+void Context::run_program_layer(ProgramRun run, const gpu::VertexLayout& layout, const gpu::DrawCall& call,
+                                gpu::RenderState rs, int layer) {
+  if (!bind_draw_target(layer)) return;
   feed_compat_state(run);
   // GL_PROGRAM_POINT_SIZE is for the application's programs; fixed function's generated ones
   // keep glPointSize's size.

@@ -249,6 +249,16 @@ void pull_rendered(Context& c, TextureObject& t) {
     pull(*t.tex2d, 0);
   if (t.target == TexTarget::Cube && t.cube)
     for (int f = 0; f < 6; ++f) pull(t.cube->face(f), f);
+  // 3D and array textures (a 1D array's layers are its image's rows): every layer at once.
+  auto pull_layers = [&](const auto& g) {
+    for (int i = 0; i < t.gpu_levels && i < g.levels(); ++i) {
+      TextureImage& img = t.image(0, t.gpu_base + i);
+      const gpu::Level3D& l = g.level(i);
+      if (img.data.size() == l.data.size()) std::memcpy(img.data.data(), l.data.data(), l.data.size());
+    }
+  };
+  if (t.target == TexTarget::T3D && t.tex3d) pull_layers(*t.tex3d);
+  if ((t.target == TexTarget::T2DArray || t.target == TexTarget::T1DArray) && t.array) pull_layers(*t.array);
 }
 
 gpu::SamplerState sampler_state_of(const SamplerParams& p, const TextureObject& t) {

@@ -544,12 +544,13 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
   };
   for (const Interface& o : producer.outputs) {
     if (o.block || !o.builtin) continue;
-    if (o.name == "gl_PrimitiveID" && has_gs) {
-      // The geometry stage's gl_PrimitiveID: the pipeline gives it to the fragment stage.
+    if ((o.name == "gl_PrimitiveID" || o.name == "gl_Layer") && has_gs) {
+      // The geometry stage's gl_PrimitiveID (the pipeline gives it to the fragment stage) and
+      // gl_Layer (it picks the layer of a layered framebuffer).
       const int at = take(1);
       if (at < 0) break;
       from_vertex(o, at, 1);
-      linked->shape.primitive_id = at;
+      (o.name == "gl_Layer" ? linked->shape.layer : linked->shape.primitive_id) = at;
       linked->shape.flat |= uint64_t(1) << at;
     } else if (o.name == "gl_PointSize") {
       const int at = take(1);
@@ -679,7 +680,7 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
     linked->gs = std::move(gs.ir);
     linked->geometry = std::move(gs.geometry);
     m.geometry = {linked->geometry.max_vertices, linked->geometry.input_primitive,
-                  linked->geometry.output_primitive};
+                  linked->geometry.output_primitive, linked->shape.layer >= 0};
   }
   // Native code for both stages, unless the options or TESSEL_GLSL=interp ask for the
   // interpreter. A program LLVM cannot compile still runs, on the interpreter (same results).

@@ -53,18 +53,14 @@ TargetView Context::make_target() const {
   t.height = fb_->height();
   for (int i = 0; i < kMaxColorAttachments; ++i) {
     const Attachment& a = fb_->color[i];
-    if (!a.texture) continue;
-    // Attachments are written by the raster phase; the texture is not otherwise changed
-    // while the frame runs (any change flushes first).
-    Level& lv = const_cast<Level&>(a.texture->level(a.level));
-    t.color[i] = {lv.data.data(), lv.row_bytes(), a.texture->format()};
+    if (!a) continue;
+    t.color[i] = {a.data(), a.row_bytes(), a.format()};
     t.color_count = i + 1;
   }
-  if (fb_->depth.texture) {
-    Level& lv = const_cast<Level&>(fb_->depth.texture->level(fb_->depth.level));
-    t.depth = lv.data.data();
-    t.depth_row_bytes = lv.row_bytes();
-    t.depth_format = fb_->depth.texture->format();
+  if (fb_->depth) {
+    t.depth = fb_->depth.data();
+    t.depth_row_bytes = fb_->depth.row_bytes();
+    t.depth_format = fb_->depth.format();
     t.has_stencil = t.depth_format == Format::Depth24Stencil8;
   }
   return t;

@@ -152,6 +152,9 @@ void Context::Frame::run_geometry(Worker& w, const Chunk& ch, const DrawRecord& 
   const Topology out_t = prog.geometry_output;
   const bool first = d.state.provoking_first;
   const int pid = prog.primitive_id_var;
+  // Of a layered framebuffer drawn a layer at a time, the primitives of other layers go.
+  const int layer_var = d.state.layer >= 0 ? prog.layer_var : -1;
+  const uint32_t last_layer = uint32_t(std::max(1, d.state.layer_count) - 1);
   const uint32_t* slots = w.prim_slots.data();
   for (uint32_t p0 = 0; p0 < nprims; p0 += L) {
     const int n = int(std::min<uint32_t>(L, nprims - p0));
@@ -178,6 +181,11 @@ void Context::Frame::run_geometry(Worker& w, const Chunk& ch, const DrawRecord& 
         for (int k = 0; k < K; ++k) w.gs_vars.push_back(row[size_t(4 + k) * L]);
       }
       auto add = [&](std::initializer_list<uint32_t> vs, uint32_t provoking) {
+        if (layer_var >= 0) {
+          uint32_t layer;
+          std::memcpy(&layer, &w.gs_vars[size_t(base + provoking) * K + size_t(layer_var)], 4);
+          if (std::min(layer, last_layer) != uint32_t(d.state.layer)) return;
+        }
         for (uint32_t v : vs) w.gs_slots.push_back(base + v);
         uint32_t id = ch.begin + p0 + uint32_t(l);
         if (pid >= 0) std::memcpy(&id, &w.gs_vars[size_t(base + provoking) * K + size_t(pid)], 4);

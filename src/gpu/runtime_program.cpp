@@ -151,6 +151,7 @@ std::unique_ptr<detail::ProgramBase> make_bridge(const std::shared_ptr<const Run
   p->geometry_max_vertices = shape.geometry_max_vertices;
   p->vertex_varyings = shape.vertex_varyings;
   p->primitive_id_var = shape.primitive_id;
+  p->layer_var = shape.layer;
   return p;
 }
 
@@ -191,7 +192,8 @@ void Context::draw(std::shared_ptr<const RuntimeShader> shader, const VertexLayo
         (out != Topology::Points && out != Topology::LineStrip && out != Topology::TriangleStrip) ||
         shape.geometry_max_vertices < 0 || shape.geometry_max_vertices > kMaxGeometryVertices ||
         shape.vertex_varyings < 0 || shape.vertex_varyings > kMaxVaryings ||
-        (shape.primitive_id != -1 && !inside(shape.primitive_id, 1)))
+        (shape.primitive_id != -1 && !inside(shape.primitive_id, 1)) ||
+        (shape.layer != -1 && !inside(shape.layer, 1)))
       throw Error("draw: the program's geometry stage (" + std::to_string(in) + " input vertices, " +
                   std::to_string(shape.geometry_max_vertices) + " output vertices, " +
                   std::to_string(shape.vertex_varyings) + " vertex components) is out of range");

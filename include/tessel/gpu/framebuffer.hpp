@@ -1,5 +1,6 @@
 // Framebuffers: up to eight colour attachments and one depth (or depth-stencil) attachment,
-// each a level of a Texture2D (or of a cube face). Fragment output i goes to attachment i.
+// each a level of a Texture2D (or of a cube face), or one layer of a level of a Texture3D or
+// Texture2DArray. Fragment output i goes to attachment i.
 #pragma once
 
 #include <array>
@@ -13,7 +14,25 @@ namespace tessel::gpu {
 struct Attachment {
   Texture2D* texture = nullptr;
   int level = 0;
-  explicit operator bool() const { return texture != nullptr; }
+  // Or a layer of a 3D or array texture (texture null, one of these set).
+  Texture3D* texture_3d = nullptr;
+  Texture2DArray* texture_array = nullptr;
+  int layer = 0;
+  explicit operator bool() const { return texture || texture_3d || texture_array; }
+  // Of the attached texture (which must be there):
+  Format format() const;
+  int levels() const;
+  int layers() const;  // 1 for a Texture2D
+  int width() const;   // of the attached level
+  int height() const;
+  // The attached image's texels (the layer's, bottom row first) and its row size; null when
+  // the level or layer does not exist.
+  std::byte* data() const;
+  size_t row_bytes() const;
+  // One texel of the attached image as floats, and a store of one (as the textures' own).
+  glm::vec4 fetch(int x, int y) const;
+  void store(int x, int y, const glm::vec4& value) const;
+  bool operator==(const Attachment&) const = default;
 };
 
 class Framebuffer {
@@ -36,7 +55,7 @@ class Framebuffer {
   // The drawable size: the smallest width and height over the attachments.
   int width() const;
   int height() const;
-  bool has_stencil() const { return depth.texture && depth.texture->format() == Format::Depth24Stencil8; }
+  bool has_stencil() const { return depth && depth.format() == Format::Depth24Stencil8; }
 };
 
 }  // namespace tessel::gpu

@@ -61,6 +61,8 @@ struct RuntimeShape {
   // The varying component holding the bits of the geometry stage's gl_PrimitiveID, which the
   // fragment stage reads from the provoking vertex (-1: the input primitive's number).
   int primitive_id = -1;
+  // The component holding the bits of its gl_Layer, for RenderState::layer (-1: none).
+  int layer = -1;
 };
 
 inline constexpr int kMaxGeometryInputVertices = 6;

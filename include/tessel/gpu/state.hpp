@@ -160,6 +160,13 @@ struct RenderState {
   bool provoking_first = false;
 
   bool primitive_restart = false;  // index 0xFF / 0xFFFF / 0xFFFFFFFF restarts (fixed index)
+
+  // Layered rendering (GL 3.3 §4.4.7), one layer of the framebuffer a draw: with a program
+  // whose geometry stage writes gl_Layer (RuntimeShape::layer), this draw keeps the primitives
+  // whose provoking vertex gives `layer` (values past the last of layer_count layers count
+  // as the last, as llvmpipe clamps them). -1: every primitive.
+  int layer = -1;
+  int layer_count = 0;
 };
 
 }  // namespace tessel::gpu

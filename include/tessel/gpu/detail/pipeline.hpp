@@ -211,7 +211,7 @@ class ProgramBase {
   // the components the vertex stage writes for it, and the gl_PrimitiveID component.
   int geometry_input = 0;
   Topology geometry_output = Topology::Points;
-  int geometry_max_vertices = 0, vertex_varyings = 0, primitive_id_var = -1;
+  int geometry_max_vertices = 0, vertex_varyings = 0, primitive_id_var = -1, layer_var = -1;
   // Fetches and shades n vertices (element ids, base vertex added) of one instance; writes
   // clip positions and n * varyings floats, and, unless soa is null, the clip positions again
   // as blocks of eight x, eight y, eight z and eight w (n rounded up to a multiple of 8).
