@@ -88,9 +88,12 @@ void attach_texture(Context& c, GLenum target, GLenum attachment, GLenum textarg
         if (textarget != GL_TEXTURE_1D || t->target != TexTarget::T1D) return c.error(GL_INVALID_OPERATION);
         break;
       case 2:
-        if (textarget == GL_TEXTURE_2D || textarget == GL_TEXTURE_RECTANGLE) {
-          if (t->target != (textarget == GL_TEXTURE_2D ? TexTarget::T2D : TexTarget::Rect))
-            return c.error(GL_INVALID_OPERATION);
+        if (textarget == GL_TEXTURE_2D || textarget == GL_TEXTURE_RECTANGLE ||
+            textarget == GL_TEXTURE_2D_MULTISAMPLE) {
+          const TexTarget want = textarget == GL_TEXTURE_2D          ? TexTarget::T2D
+                                 : textarget == GL_TEXTURE_RECTANGLE ? TexTarget::Rect
+                                                                     : TexTarget::T2DMS;
+          if (t->target != want) return c.error(GL_INVALID_OPERATION);
         } else if (textarget >= GL_TEXTURE_CUBE_MAP_POSITIVE_X &&
                    textarget <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z) {
           if (t->target != TexTarget::Cube) return c.error(GL_INVALID_OPERATION);
@@ -105,7 +108,7 @@ void attach_texture(Context& c, GLenum target, GLenum attachment, GLenum textarg
         break;
       case 4:  // glFramebufferTextureLayer
         if (t->target != TexTarget::T3D && t->target != TexTarget::T1DArray &&
-            t->target != TexTarget::T2DArray)
+            t->target != TexTarget::T2DArray && t->target != TexTarget::T2DMSArray)
           return c.error(GL_INVALID_OPERATION);
         // §4.4.2: the layer below MAX_3D_TEXTURE_SIZE or MAX_ARRAY_TEXTURE_LAYERS.
         if (layer < 0 || layer >= (t->target == TexTarget::T3D ? kMax3DTextureSize : kMaxArrayTextureLayers))
@@ -114,11 +117,13 @@ void attach_texture(Context& c, GLenum target, GLenum attachment, GLenum textarg
       case 0:  // glFramebufferTexture: layered for 3D, array and cube textures
         if (t->target == TexTarget::Buffer) return c.error(GL_INVALID_OPERATION);
         n.layered = t->target == TexTarget::T3D || t->target == TexTarget::T1DArray ||
-                    t->target == TexTarget::T2DArray || t->target == TexTarget::Cube;
+                    t->target == TexTarget::T2DArray || t->target == TexTarget::Cube ||
+                    t->target == TexTarget::T2DMSArray;
         break;
       default: break;
     }
-    if (t->target == TexTarget::Rect && level != 0) return c.error(GL_INVALID_VALUE);
+    if ((t->target == TexTarget::Rect || is_multisample(t->target)) && level != 0)
+      return c.error(GL_INVALID_VALUE);
     int max_level = 0;
     while (((t->target == TexTarget::T3D ? kMax3DTextureSize : kMaxTextureSize) >> max_level) > 1)
       ++max_level;
@@ -176,7 +181,7 @@ void renderbuffer_storage(Context& c, GLenum target, GLsizei samples, GLenum int
   r.fmt = fmt;
   r.width = w;
   r.height = h;
-  r.samples = samples;
+  r.samples = samples > 0 ? kMaxSamples : 0;  // any sample count gives llvmpipe's one (4)
   r.image.reset();
   if (w == 0 || h == 0) return;
   try {
@@ -683,6 +688,30 @@ void GLAPIENTRY glRenderbufferStorageMultisample(GLenum target, GLsizei samples,
   GL_CONTEXT();
   renderbuffer_storage(c, target, samples, internal, w, h);
 }
+// GL 3.3 §4.1.3: the sample mask word (one, GL_MAX_SAMPLE_MASK_WORDS).
+void GLAPIENTRY glSampleMaski(GLuint index, GLbitfield mask) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  if (index != 0) return c.error(GL_INVALID_VALUE);
+  c.touch();
+  c.sample_mask = mask;
+}
+
+// GL 3.3 §3.3.1: where sample `index` of the draw framebuffer's pixels lies, as llvmpipe's
+// four-sample pattern places it; an index past GL_SAMPLES is GL_INVALID_VALUE.
+void GLAPIENTRY glGetMultisamplefv(GLenum pname, GLuint index, GLfloat* val) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  if (pname != GL_SAMPLE_POSITION) return c.error(GL_INVALID_ENUM);
+  const int samples = c.draw_fbo ? c.draw_fbo->samples() : 0;
+  if (index >= GLuint(samples)) return c.error(GL_INVALID_VALUE);
+  static const float kPositions[4][2] = {
+      {0.375f, 0.125f}, {0.875f, 0.375f}, {0.125f, 0.625f}, {0.625f, 0.875f}};
+  if (!val) return;
+  val[0] = kPositions[index % 4][0];
+  val[1] = kPositions[index % 4][1];
+}
+
 void GLAPIENTRY glGetRenderbufferParameteriv(GLenum target, GLenum pname, GLint* params) {
   GL_CONTEXT();
   GL_OUTSIDE_BEGIN();

@@ -71,6 +71,8 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_TEXTURE_BINDING_2D_ARRAY:
     case GL_TEXTURE_BINDING_RECTANGLE:
     case GL_TEXTURE_BINDING_BUFFER:
+    case GL_TEXTURE_BINDING_2D_MULTISAMPLE:
+    case GL_TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY:
       for (int t = 0; t < kTexTargetCount; ++t)
         if (binding_query_of(TexTarget(t)) == pname) {
           const TextureRef& r = c.s.unit().bound[size_t(t)];
@@ -133,20 +135,19 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_MAX_VARYING_COMPONENTS:  // == GL_MAX_VARYING_FLOATS
     case GL_MAX_VERTEX_OUTPUT_COMPONENTS:
     case GL_MAX_FRAGMENT_INPUT_COMPONENTS: return n(64), true;
-    // What Tessel does not have reports none: dual-source blending, transform feedback,
-    // multisample textures and sample masks (docs/gl-coverage.md).
+    // What Tessel does not have reports none: dual-source blending and transform feedback
+    // (docs/gl-coverage.md).
     case GL_MAX_DUAL_SOURCE_DRAW_BUFFERS:
     case GL_MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS:
     case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS:
     case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS:
-    case GL_MAX_COLOR_TEXTURE_SAMPLES:
-    case GL_MAX_DEPTH_TEXTURE_SAMPLES:
-    case GL_MAX_SAMPLE_MASK_WORDS:
     case GL_TRANSFORM_FEEDBACK_BUFFER_BINDING:
-    case GL_TEXTURE_BINDING_2D_MULTISAMPLE:
-    case GL_TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY:
     case GL_MAX_SERVER_WAIT_TIMEOUT: return n(0), true;  // glWaitSync returns at once
-    case GL_MAX_INTEGER_SAMPLES: return n(kMaxSamples), true;
+    case GL_MAX_INTEGER_SAMPLES:
+    case GL_MAX_COLOR_TEXTURE_SAMPLES:
+    case GL_MAX_DEPTH_TEXTURE_SAMPLES: return n(kMaxSamples), true;
+    case GL_MAX_SAMPLE_MASK_WORDS: return n(1), true;
+    case GL_SAMPLE_MASK_VALUE: return n(double(c.sample_mask)), true;
     // Multisample renderbuffers are stored (and drawn) single-sampled; GL_SAMPLES says what
     // the framebuffer was given (GL 3.3 §4.4.2), as blits and reads check it.
     case GL_SAMPLE_BUFFERS: return n(c.draw_fbo && c.draw_fbo->samples() > 0 ? 1 : 0), true;
@@ -513,6 +514,14 @@ void get(GLenum pname, T* out, auto convert) {
 // Indexed state (GL 3.3 §6.1.1): the uniform buffer binding points. False, with the error
 // recorded and nothing written, for a name that is not indexed state or an index past it.
 bool indexed_value(Context& c, GLenum pname, GLuint index, GLint64& out) {
+  if (pname == GL_SAMPLE_MASK_VALUE) {  // one word (GL_MAX_SAMPLE_MASK_WORDS)
+    if (index != 0) {
+      c.error(GL_INVALID_VALUE);
+      return false;
+    }
+    out = GLint64(c.sample_mask);
+    return true;
+  }
   // The transform feedback binding points: none (see glBindBufferRange).
   if (pname == GL_TRANSFORM_FEEDBACK_BUFFER_BINDING || pname == GL_TRANSFORM_FEEDBACK_BUFFER_START ||
       pname == GL_TRANSFORM_FEEDBACK_BUFFER_SIZE) {

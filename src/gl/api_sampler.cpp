@@ -120,6 +120,8 @@ void tex_parameter(Context& c, GLenum target, GLenum pname, Param a) {
   SamplerParams p = t->sampler;
   const GLenum e = set_sampling(p, pname, a, c.core_profile, rect);
   if (e != GL_INVALID_INDEX) {
+    // Multisample textures have no sampling state (GL 3.3 §3.8.8; Mesa: GL_INVALID_ENUM).
+    if (is_multisample(t->target)) return c.error(GL_INVALID_ENUM);
     if (e != GL_NO_ERROR) return c.error(e);
     c.touch();
     t->sampler = p;
@@ -130,7 +132,8 @@ void tex_parameter(Context& c, GLenum target, GLenum pname, Param a) {
     case GL_TEXTURE_BASE_LEVEL:
     case GL_TEXTURE_MAX_LEVEL: {
       if (a.v[0] < 0.0) return c.error(GL_INVALID_VALUE);
-      if (rect && pname == GL_TEXTURE_BASE_LEVEL && a.v[0] != 0.0) return c.error(GL_INVALID_OPERATION);
+      if ((rect || is_multisample(t->target)) && pname == GL_TEXTURE_BASE_LEVEL && a.v[0] != 0.0)
+        return c.error(GL_INVALID_OPERATION);
       pull_rendered(c, *t);
       c.touch();
       const int level = int(std::min(a.v[0], 1e9));
@@ -306,6 +309,14 @@ bool level_target(GLenum target, TexTarget& t, int& face, bool& proxy) {
       proxy = true;
       t = TexTarget::Rect;
       return true;
+    case GL_PROXY_TEXTURE_2D_MULTISAMPLE:
+      proxy = true;
+      t = TexTarget::T2DMS;
+      return true;
+    case GL_PROXY_TEXTURE_2D_MULTISAMPLE_ARRAY:
+      proxy = true;
+      t = TexTarget::T2DMSArray;
+      return true;
     case GL_TEXTURE_CUBE_MAP: return false;
     default:
       if (target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z) {
@@ -329,9 +340,9 @@ bool get_level_parameter(Context& c, GLenum target, GLint level, GLenum pname, d
     c.error(GL_INVALID_ENUM);
     return false;
   }
-  // §6.1.3: rectangle and buffer textures have level 0 only.
+  // §6.1.3: rectangle, buffer and multisample textures have level 0 only.
   if (level < 0 || level >= kMaxTextureLevels ||
-      ((tt == TexTarget::Rect || tt == TexTarget::Buffer) && level != 0)) {
+      ((tt == TexTarget::Rect || tt == TexTarget::Buffer || is_multisample(tt)) && level != 0)) {
     c.error(GL_INVALID_VALUE);
     return false;
   }
@@ -387,6 +398,10 @@ bool get_level_parameter(Context& c, GLenum target, GLint level, GLenum pname, d
       c.error(GL_INVALID_OPERATION);
       return false;
     case GL_TEXTURE_BUFFER_DATA_STORE_BINDING: out = t->buffer ? t->buffer->name : 0; return true;
+    case GL_TEXTURE_SAMPLES: out = d && is_multisample(tt) ? t->samples : 0; return true;
+    case GL_TEXTURE_FIXED_SAMPLE_LOCATIONS:
+      out = d && is_multisample(tt) ? t->fixed_sample_locations : GL_TRUE;
+      return true;
     default: break;
   }
   if (!c.core_profile) switch (pname) {

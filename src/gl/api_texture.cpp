@@ -512,6 +512,36 @@ void copy_tex_sub_image(Context& c, const ImageTarget& it, GLint level, GLint xo
   tex_sub_image(c, it, level, xo, yo, zo, w, h, 1, GL_NONE, data);
 }
 
+// glTexImage2DMultisample / glTexImage3DMultisample (GL 3.3 §3.8.6): level 0 of a 2D or 2D
+// array texture of `samples` samples, stored with one (as multisample renderbuffers are).
+// The errors are Mesa's: a format neither colour-, depth- nor stencil-renderable (compressed
+// ones too) GL_INVALID_ENUM; samples < 1 or a bad size GL_INVALID_VALUE; more samples than
+// GL_MAX_SAMPLES GL_INVALID_OPERATION. Any sample count reads back as 4, as llvmpipe's.
+void tex_image_multisample(Context& c, GLenum target, GLsizei samples, GLenum internal, GLsizei w, GLsizei h,
+                           GLsizei d, GLboolean fixed, bool array) {
+  GL_OUTSIDE_BEGIN();
+  const bool proxy =
+      target == (array ? GL_PROXY_TEXTURE_2D_MULTISAMPLE_ARRAY : GL_PROXY_TEXTURE_2D_MULTISAMPLE);
+  if (target != (array ? GL_TEXTURE_2D_MULTISAMPLE_ARRAY : GL_TEXTURE_2D_MULTISAMPLE) && !proxy)
+    return c.error(GL_INVALID_ENUM);
+  TexFormat fmt;
+  if (!tex_format_of(GLint(internal), c.core_profile, fmt) || fmt.rgtc() ||
+      (!fmt.color_renderable() && !fmt.is_depth() && !fmt.has_stencil()))
+    return c.error(GL_INVALID_ENUM);
+  if (samples < 1) return c.error(GL_INVALID_VALUE);
+  if (samples > kMaxSamples) return c.error(GL_INVALID_OPERATION);
+  if (w < 0 || h < 0 || d < 0 || w > kMaxTextureSize || h > kMaxTextureSize || d > kMaxArrayTextureLayers)
+    return c.error(GL_INVALID_VALUE);
+  const TexTarget tt = array ? TexTarget::T2DMSArray : TexTarget::T2DMS;
+  TextureObject& t = proxy ? proxy_texture(c, tt) : c.bound_texture(tt);
+  ImageTarget it;
+  it.target = tt;
+  it.proxy = proxy;
+  tex_image(c, it, 0, fmt, w, h, array ? d : 1, nullptr);
+  t.samples = kMaxSamples;
+  t.fixed_sample_locations = fixed != GL_FALSE;
+}
+
 void bind_texture(Context& c, GLenum target, GLuint name) {
   GL_OUTSIDE_BEGIN();
   TexTarget t;
@@ -788,12 +818,23 @@ void GLAPIENTRY glTexBuffer(GLenum target, GLenum internal, GLuint buffer) {
   t.dirty = true;
 }
 
+void GLAPIENTRY glTexImage2DMultisample(GLenum target, GLsizei samples, GLenum internal, GLsizei w, GLsizei h,
+                                        GLboolean fixed) {
+  GL_CONTEXT();
+  tex_image_multisample(c, target, samples, internal, w, h, 1, fixed, false);
+}
+void GLAPIENTRY glTexImage3DMultisample(GLenum target, GLsizei samples, GLenum internal, GLsizei w, GLsizei h,
+                                        GLsizei d, GLboolean fixed) {
+  GL_CONTEXT();
+  tex_image_multisample(c, target, samples, internal, w, h, d, fixed, true);
+}
+
 // GL 3.3 §3.8.10: the mipmap levels of the bound texture made from its base level.
 void GLAPIENTRY glGenerateMipmap(GLenum target) {
   GL_CONTEXT();
   GL_OUTSIDE_BEGIN();
   TexTarget tt;
-  if (!tex_target_of(target, tt) || tt == TexTarget::Rect || tt == TexTarget::Buffer)
+  if (!tex_target_of(target, tt) || tt == TexTarget::Rect || tt == TexTarget::Buffer || is_multisample(tt))
     return c.error(GL_INVALID_ENUM);
   TextureObject& t = c.bound_texture(tt);
   const int base = t.effective_base();

@@ -290,6 +290,7 @@ bool Context::gpu_image(const Attachment& a, gpu::Attachment& out, int layer) {
     case TexTarget::T1D:
     case TexTarget::T2D:
     case TexTarget::Rect:
+    case TexTarget::T2DMS:
       if (!t.tex2d) return false;
       out.texture = t.tex2d.get();
       break;
@@ -304,6 +305,7 @@ bool Context::gpu_image(const Attachment& a, gpu::Attachment& out, int layer) {
       break;
     case TexTarget::T1DArray:
     case TexTarget::T2DArray:
+    case TexTarget::T2DMSArray:
       if (!t.array) return false;
       out.texture_array = t.array.get();
       out.layer = at;

@@ -696,6 +696,9 @@ class Context {
   bool primitive_restart = false;
   bool program_point_size = false, depth_clamp = false;
   bool cube_map_seamless = false;  // GL_TEXTURE_CUBE_MAP_SEAMLESS (GL 3.3 §3.8.8)
+  // glSampleMaski's word (GL 3.3 §4.1.3). Kept and queried: it acts on samples, and Tessel's
+  // multisample buffers are stored with one.
+  GLbitfield sample_mask = ~GLbitfield(0);
   // Shader and program objects share one name space (GL 3.3 §2.11.1).
   std::unordered_map<GLuint, ShaderObject> shaders;
   std::unordered_map<GLuint, ProgramObject> programs;

@@ -503,6 +503,12 @@ bool sampler_target(uint32_t type, TexTarget& t) {
     case GL_SAMPLER_BUFFER:
     case GL_INT_SAMPLER_BUFFER:
     case GL_UNSIGNED_INT_SAMPLER_BUFFER: t = TexTarget::Buffer; return true;
+    case GL_SAMPLER_2D_MULTISAMPLE:
+    case GL_INT_SAMPLER_2D_MULTISAMPLE:
+    case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE: t = TexTarget::T2DMS; return true;
+    case GL_SAMPLER_2D_MULTISAMPLE_ARRAY:
+    case GL_INT_SAMPLER_2D_MULTISAMPLE_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE_ARRAY: t = TexTarget::T2DMSArray; return true;
     default: return false;
   }
 }
@@ -540,11 +546,13 @@ bool Context::texture_units_for_draw(const glsl::Program& program, std::vector<g
     switch (target) {
       case TexTarget::T1D:
       case TexTarget::T2D:
-      case TexTarget::Rect: b.texture_2d = t.tex2d.get(); break;
+      case TexTarget::Rect:
+      case TexTarget::T2DMS: b.texture_2d = t.tex2d.get(); break;
       case TexTarget::T3D: b.texture_3d = t.tex3d.get(); break;
       case TexTarget::Cube: b.texture_cube = t.cube.get(); break;
       case TexTarget::T1DArray:
-      case TexTarget::T2DArray: b.texture_2d_array = t.array.get(); break;
+      case TexTarget::T2DArray:
+      case TexTarget::T2DMSArray: b.texture_2d_array = t.array.get(); break;
       case TexTarget::Buffer: b.texture_buffer = t.tbuf.get(); break;
     }
   }

@@ -21,7 +21,7 @@ bool Attachment::image(TexFormat& fmt, int& width, int& height) const {
   if (!img.defined()) return false;
   // A layer of a 3D or array texture must exist (§4.4.4.1).
   const bool has_layers = texture->target == TexTarget::T3D || texture->target == TexTarget::T2DArray ||
-                          texture->target == TexTarget::T1DArray;
+                          texture->target == TexTarget::T2DMSArray || texture->target == TexTarget::T1DArray;
   if (has_layers && !layered) {
     const int layers = texture->target == TexTarget::T1DArray ? img.height : img.depth;
     if (layer < 0 || layer >= layers) return false;
@@ -44,6 +44,8 @@ int FramebufferObject::samples() const {
   int n = 0;
   auto take = [&](const Attachment& a) {
     if (a.type == GL_RENDERBUFFER && a.renderbuffer) n = std::max(n, a.renderbuffer->samples);
+    if (a.type == GL_TEXTURE && a.texture && is_multisample(a.texture->target))
+      n = std::max(n, a.texture->samples);
   };
   for (const Attachment& a : color) take(a);
   take(depth);
@@ -55,7 +57,7 @@ GLenum FramebufferObject::status() const {
   bool any = false;
   TexFormat fmt;
   int w = 0, h = 0;
-  int samples = -1;
+  int samples = -1, fixed = -1;
   int layered_kind = -1;  // 0: none layered, 1: all layered
   auto check = [&](const Attachment& a, int kind) -> GLenum {
     if (!a) return GL_FRAMEBUFFER_COMPLETE;
@@ -63,9 +65,15 @@ GLenum FramebufferObject::status() const {
     const bool ok = kind == 0 ? fmt.color_renderable() : kind == 1 ? fmt.is_depth() : fmt.has_stencil();
     if (!ok) return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
     any = true;
-    const int s = a.type == GL_RENDERBUFFER ? a.renderbuffer->samples : 0;
+    // Every attachment of one sample count, and multisample textures all with fixed sample
+    // locations or none; renderbuffers count as fixed (§4.4.4.2).
+    const bool ms_texture = a.type == GL_TEXTURE && is_multisample(a.texture->target);
+    const int s = a.type == GL_RENDERBUFFER ? a.renderbuffer->samples : ms_texture ? a.texture->samples : 0;
     if (samples >= 0 && s != samples) return GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE;
     samples = s;
+    const int f = ms_texture ? int(a.texture->fixed_sample_locations) : 1;
+    if (samples > 0 && fixed >= 0 && f != fixed) return GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE;
+    fixed = f;
     const int l = a.layered ? 1 : 0;
     if (layered_kind >= 0 && l != layered_kind) return GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS;
     layered_kind = l;

@@ -16,25 +16,40 @@ namespace tessel::gl {
 
 namespace {
 
-constexpr GLenum kTargets[kTexTargetCount] = {GL_TEXTURE_1D,        GL_TEXTURE_2D,       GL_TEXTURE_3D,
-                                              GL_TEXTURE_CUBE_MAP,  GL_TEXTURE_1D_ARRAY, GL_TEXTURE_2D_ARRAY,
-                                              GL_TEXTURE_RECTANGLE, GL_TEXTURE_BUFFER};
-constexpr GLenum kBindings[kTexTargetCount] = {GL_TEXTURE_BINDING_1D,        GL_TEXTURE_BINDING_2D,
-                                               GL_TEXTURE_BINDING_3D,        GL_TEXTURE_BINDING_CUBE_MAP,
-                                               GL_TEXTURE_BINDING_1D_ARRAY,  GL_TEXTURE_BINDING_2D_ARRAY,
-                                               GL_TEXTURE_BINDING_RECTANGLE, GL_TEXTURE_BINDING_BUFFER};
+constexpr GLenum kTargets[kTexTargetCount] = {GL_TEXTURE_1D,
+                                              GL_TEXTURE_2D,
+                                              GL_TEXTURE_3D,
+                                              GL_TEXTURE_CUBE_MAP,
+                                              GL_TEXTURE_1D_ARRAY,
+                                              GL_TEXTURE_2D_ARRAY,
+                                              GL_TEXTURE_RECTANGLE,
+                                              GL_TEXTURE_BUFFER,
+                                              GL_TEXTURE_2D_MULTISAMPLE,
+                                              GL_TEXTURE_2D_MULTISAMPLE_ARRAY};
+constexpr GLenum kBindings[kTexTargetCount] = {GL_TEXTURE_BINDING_1D,
+                                               GL_TEXTURE_BINDING_2D,
+                                               GL_TEXTURE_BINDING_3D,
+                                               GL_TEXTURE_BINDING_CUBE_MAP,
+                                               GL_TEXTURE_BINDING_1D_ARRAY,
+                                               GL_TEXTURE_BINDING_2D_ARRAY,
+                                               GL_TEXTURE_BINDING_RECTANGLE,
+                                               GL_TEXTURE_BINDING_BUFFER,
+                                               GL_TEXTURE_BINDING_2D_MULTISAMPLE,
+                                               GL_TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY};
 
 // Which sizes halve from level to level: width always, height except for 1D arrays (whose
 // height is the layer count), depth only for 3D textures.
 bool halves_height(TexTarget t) { return t != TexTarget::T1DArray && t != TexTarget::T1D; }
 bool halves_depth(TexTarget t) { return t == TexTarget::T3D; }
+// The targets of one level only (§3.8.4, §3.8.6).
+bool single_level(TexTarget t) { return t == TexTarget::Rect || t == TexTarget::Buffer || is_multisample(t); }
 
 // The number of levels from `base` that form a chain: each has the halved sizes of the one
 // before and the base's internal format, down to 1x1(x1) and at most to max_level.
 int chain_length(const TextureObject& t, int face, int base) {
   const TextureImage& b = t.image(face, base);
   if (!b.defined()) return 0;
-  if (t.target == TexTarget::Rect || t.target == TexTarget::Buffer) return 1;
+  if (single_level(t.target)) return 1;
   int n = 1;
   for (int i = 1; base + i < kMaxTextureLevels && base + i <= t.max_level; ++i) {
     const int pw = std::max(1, b.width >> (i - 1));
@@ -128,6 +143,8 @@ bool texture_complete(const TextureObject& t, const SamplerParams& p) {
   const TextureImage& b = t.image(0, base);
   // A base level beyond the last level has no image: incomplete (§3.8.14).
   if (t.base_level >= kMaxTextureLevels || !b.defined() || t.base_level > t.max_level) return false;
+  // A multisample texture has no filtering (texelFetch only): complete with its image.
+  if (is_multisample(t.target)) return true;
   // Integer textures filter with NEAREST only (§3.8.14).
   if (b.fmt.integer() && (p.mag_filter != GL_NEAREST ||
                           (p.min_filter != GL_NEAREST && p.min_filter != GL_NEAREST_MIPMAP_NEAREST)))
@@ -191,6 +208,7 @@ bool update_gpu_texture(Context& c, TextureObject& t) {
       case TexTarget::T1D:
       case TexTarget::T2D:
       case TexTarget::Rect:
+      case TexTarget::T2DMS:
         if (!t.tex2d || t.tex2d->format() != fmt || t.tex2d->width() != b.width ||
             t.tex2d->height() != b.height || t.tex2d->levels() != n)
           t.tex2d = std::make_unique<gpu::Texture2D>(fmt, b.width, b.height, n);
@@ -210,7 +228,8 @@ bool update_gpu_texture(Context& c, TextureObject& t) {
         upload_levels(t, 0, base, n, [&](int i, const void* d, size_t s) { t.tex3d->upload(i, d, s); });
         break;
       case TexTarget::T1DArray:
-      case TexTarget::T2DArray: {
+      case TexTarget::T2DArray:
+      case TexTarget::T2DMSArray: {
         const bool one = t.target == TexTarget::T1DArray;
         const int h = one ? 1 : b.height, layers = one ? b.height : b.depth;
         if (!t.array || t.array->format() != fmt || t.array->width() != b.width || t.array->height() != h ||
@@ -245,7 +264,9 @@ void pull_rendered(Context& c, TextureObject& t) {
       if (img.data.size() == l.data.size()) std::memcpy(img.data.data(), l.data.data(), l.data.size());
     }
   };
-  if ((t.target == TexTarget::T2D || t.target == TexTarget::T1D || t.target == TexTarget::Rect) && t.tex2d)
+  if ((t.target == TexTarget::T2D || t.target == TexTarget::T1D || t.target == TexTarget::Rect ||
+       t.target == TexTarget::T2DMS) &&
+      t.tex2d)
     pull(*t.tex2d, 0);
   if (t.target == TexTarget::Cube && t.cube)
     for (int f = 0; f < 6; ++f) pull(t.cube->face(f), f);
@@ -258,7 +279,10 @@ void pull_rendered(Context& c, TextureObject& t) {
     }
   };
   if (t.target == TexTarget::T3D && t.tex3d) pull_layers(*t.tex3d);
-  if ((t.target == TexTarget::T2DArray || t.target == TexTarget::T1DArray) && t.array) pull_layers(*t.array);
+  if ((t.target == TexTarget::T2DArray || t.target == TexTarget::T1DArray ||
+       t.target == TexTarget::T2DMSArray) &&
+      t.array)
+    pull_layers(*t.array);
 }
 
 gpu::SamplerState sampler_state_of(const SamplerParams& p, const TextureObject& t) {

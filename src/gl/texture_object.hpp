@@ -29,8 +29,11 @@ inline constexpr int kMaxTextureLevels = 14;  // 8192 = 2^13
 inline constexpr int kMax3DTextureSize = 2048, kMaxArrayTextureLayers = 2048;
 
 // The binding targets of glBindTexture, in the order of the per-unit binding table.
-enum class TexTarget : uint8_t { T1D, T2D, T3D, Cube, T1DArray, T2DArray, Rect, Buffer };
-inline constexpr int kTexTargetCount = 8;
+// The multisample targets (GL 3.2) keep one sample of each texel: their images are level 0
+// of a 2D or 2D array texture, drawn into and read (texelFetch) as that.
+enum class TexTarget : uint8_t { T1D, T2D, T3D, Cube, T1DArray, T2DArray, Rect, Buffer, T2DMS, T2DMSArray };
+inline constexpr int kTexTargetCount = 10;
+inline bool is_multisample(TexTarget t) { return t == TexTarget::T2DMS || t == TexTarget::T2DMSArray; }
 GLenum gl_target_of(TexTarget t);
 // A glBindTexture target; false for anything else.
 bool tex_target_of(GLenum target, TexTarget& out);
@@ -80,11 +83,16 @@ struct TextureObject {
   TexFormat buffer_format;
   gpu::BufferTexel buffer_texel;
 
+  // glTexImage2D/3DMultisample: the samples GL reports (the storage keeps one) and
+  // GL_TEXTURE_FIXED_SAMPLE_LOCATIONS.
+  int samples = 0;
+  bool fixed_sample_locations = true;
+
   // The gpu texture (one of them, by target) and how many levels from base_level it has.
-  std::unique_ptr<gpu::Texture2D> tex2d;  // 1D, 2D, rectangle
+  std::unique_ptr<gpu::Texture2D> tex2d;  // 1D, 2D, rectangle, 2D multisample
   std::unique_ptr<gpu::TextureCube> cube;
   std::unique_ptr<gpu::Texture3D> tex3d;
-  std::unique_ptr<gpu::Texture2DArray> array;  // 1D and 2D arrays
+  std::unique_ptr<gpu::Texture2DArray> array;  // 1D and 2D arrays, 2D multisample arrays
   std::unique_ptr<gpu::TextureBuffer> tbuf;
   int gpu_base = 0, gpu_levels = 0;
   bool dirty = true;      // the images changed since the gpu texture was made

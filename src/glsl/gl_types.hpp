@@ -33,6 +33,8 @@ inline uint32_t gl_type_of(const glslang::TType& t) {
           if (s.isArrayed()) return kind == 0 ? 0x8DC0 : kind == 1 ? 0x8DCE : 0x8DD6;
           return kind == 0 ? 0x8B5D : kind == 1 ? 0x8DC9 : 0x8DD1;
         case Esd2D:
+          // GL_SAMPLER_2D_MULTISAMPLE(_ARRAY) and their int and unsigned forms.
+          if (s.isMultiSample()) return (s.isArrayed() ? 0x910B : 0x9108) + uint32_t(kind);
           if (s.isShadow()) return s.isArrayed() ? 0x8DC4 : 0x8B62;
           if (s.isArrayed()) return kind == 0 ? 0x8DC1 : kind == 1 ? 0x8DCF : 0x8DD7;
           return kind == 0 ? 0x8B5E : kind == 1 ? 0x8DCA : 0x8DD2;

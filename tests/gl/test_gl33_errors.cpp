@@ -1712,14 +1712,113 @@ TEST_F(GL33ErrorsTest, ProvokingVertexAndLogicOpErrors) {
 }
 
 TEST_F(GL33ErrorsTest, DISABLED_MinimumsOfWhatTesselLacks) {
-  GLuint t;
-  glGenTextures(1, &t);
-  EXPECT_GL_ERR(glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t), GL_NO_ERROR);  // a GL 3.3 target
   EXPECT_GE(get_int(GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS), 4);
   EXPECT_GE(get_int(GL_MAX_DUAL_SOURCE_DRAW_BUFFERS), 1);
+}
+
+// Multisample textures (GL 3.3 §3.8.6) and the sample mask (§4.1.3): every case below gives
+// the error Mesa 22.3 gives (an EGL probe of the same calls), and sample counts read back as
+// llvmpipe's 4.
+TEST_F(GL33ErrorsTest, MultisampleTextureErrors) {
+  GLuint t[3];
+  glGenTextures(3, t);
+  EXPECT_GL_ERR(glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t[0]), GL_NO_ERROR);
   EXPECT_GE(get_int(GL_MAX_SAMPLE_MASK_WORDS), 1);
   EXPECT_GE(get_int(GL_MAX_COLOR_TEXTURE_SAMPLES), 1);
-  glDeleteTextures(1, &t);
+  EXPECT_GE(get_int(GL_MAX_DEPTH_TEXTURE_SAMPLES), 1);
+  EXPECT_EQ(get_int(GL_TEXTURE_BINDING_2D_MULTISAMPLE), GLint(t[0]));
+  EXPECT_GL_ERR(glTexImage2DMultisample(GL_TEXTURE_2D, 4, GL_RGBA8, 16, 16, GL_TRUE), GL_INVALID_ENUM);
+  EXPECT_GL_ERR(glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_RGBA8, 16, 16, GL_TRUE),
+                GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 64, GL_RGBA8, 16, 16, GL_TRUE),
+                GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, -1, 16, GL_TRUE),
+                GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, 100000, 16, GL_TRUE),
+                GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, 0x1234, 16, 16, GL_TRUE),
+                GL_INVALID_ENUM);
+  EXPECT_GL_ERR(
+      glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_COMPRESSED_RED_RGTC1, 16, 16, GL_TRUE),
+      GL_INVALID_ENUM);
+  GLint v = -7;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_WIDTH, &v);
+  EXPECT_EQ(v, 0);  // the errors defined nothing
+  EXPECT_GL_ERR(glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 3, GL_RGBA8, 16, 8, GL_FALSE),
+                GL_NO_ERROR);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_SAMPLES, &v);
+  EXPECT_EQ(v, 4);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_FIXED_SAMPLE_LOCATIONS, &v);
+  EXPECT_EQ(v, GL_FALSE);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_HEIGHT, &v);
+  EXPECT_EQ(v, 8);
+  EXPECT_GL_ERR(glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 1, GL_TEXTURE_WIDTH, &v),
+                GL_INVALID_VALUE);
+  // No sampling state, no levels but 0, no single-sample image calls.
+  EXPECT_GL_ERR(glTexParameteri(GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_MIN_FILTER, GL_LINEAR),
+                GL_INVALID_ENUM);
+  EXPECT_GL_ERR(glTexParameteri(GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_WRAP_S, GL_REPEAT), GL_INVALID_ENUM);
+  EXPECT_GL_ERR(glTexParameteri(GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_BASE_LEVEL, 1), GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glTexParameteri(GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_BASE_LEVEL, 0), GL_NO_ERROR);
+  EXPECT_GL_ERR(glTexParameteri(GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_SWIZZLE_R, GL_GREEN), GL_NO_ERROR);
+  EXPECT_GL_ERR(
+      glTexImage2D(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr),
+      GL_INVALID_ENUM);
+  EXPECT_GL_ERR(glGenerateMipmap(GL_TEXTURE_2D_MULTISAMPLE), GL_INVALID_ENUM);
+  EXPECT_GL_ERR(glBindTexture(GL_TEXTURE_2D, t[0]), GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glBindTexture(GL_TEXTURE_2D_MULTISAMPLE_ARRAY, t[1]), GL_NO_ERROR);
+  EXPECT_GL_ERR(glTexImage3DMultisample(GL_TEXTURE_2D_MULTISAMPLE_ARRAY, 4, GL_RGBA8, 16, 16, 3, GL_TRUE),
+                GL_NO_ERROR);
+  EXPECT_GL_ERR(glTexImage3DMultisample(GL_TEXTURE_2D_MULTISAMPLE_ARRAY, 4, GL_RGBA8, 16, 16, 5000, GL_TRUE),
+                GL_INVALID_VALUE);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE_ARRAY, 0, GL_TEXTURE_DEPTH, &v);
+  EXPECT_EQ(v, 3);
+  // Framebuffers: level 0 only; every attachment of one sample count; a renderbuffer counts as
+  // fixed sample locations.
+  GLuint fb, rb;
+  glGenFramebuffers(1, &fb);
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  EXPECT_GL_ERR(glGetMultisamplefv(GL_SAMPLE_POSITION, 0, nullptr), GL_INVALID_VALUE);  // no samples
+  EXPECT_GL_ERR(
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE, t[0], 1),
+      GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t[0], 0),
+                GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE, t[0], 0),
+      GL_NO_ERROR);
+  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  EXPECT_EQ(get_int(GL_SAMPLES), 4);
+  GLfloat pos[2] = {-1, -1};
+  EXPECT_GL_ERR(glGetMultisamplefv(GL_SAMPLE_POSITION, 3, pos), GL_NO_ERROR);
+  EXPECT_EQ(pos[0], 0.625f);
+  EXPECT_EQ(pos[1], 0.875f);
+  EXPECT_GL_ERR(glGetMultisamplefv(GL_SAMPLE_POSITION, 4, pos), GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glGetMultisamplefv(0x1234, 0, pos), GL_INVALID_ENUM);
+  glGenRenderbuffers(1, &rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, 2, GL_DEPTH_COMPONENT24, 16, 8);
+  glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &v);
+  EXPECT_EQ(v, 4);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb);
+  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE));
+  glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, 16, 8, GL_TRUE);
+  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, 16, 8);
+  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE));
+  // The sample mask: one word.
+  EXPECT_GL_ERR(glSampleMaski(0, 0x5), GL_NO_ERROR);
+  EXPECT_GL_ERR(glSampleMaski(1, 0x5), GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glGetIntegeri_v(GL_SAMPLE_MASK_VALUE, 0, &v), GL_NO_ERROR);
+  EXPECT_EQ(v, 0x5);
+  EXPECT_GL_ERR(glGetIntegeri_v(GL_SAMPLE_MASK_VALUE, 1, &v), GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glEnable(GL_SAMPLE_MASK), GL_NO_ERROR);
+  EXPECT_TRUE(glIsEnabled(GL_SAMPLE_MASK));
+  glDisable(GL_SAMPLE_MASK);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glDeleteFramebuffers(1, &fb);
+  glDeleteRenderbuffers(1, &rb);
+  glDeleteTextures(3, t);
 }
 
 TEST_F(GL33ErrorsTest, CoreGetsRejectCompatibilityState) {

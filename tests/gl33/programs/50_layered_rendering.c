@@ -297,7 +297,7 @@ static void fill_layers(void) {
     glUniform4f(glGetUniformLocation(flat_prog, "colour"), 0.9f, 0.25f * (float)z, 0.3f, 1.0f);
     glDrawArrays(GL_TRIANGLES, 3 * z, 3);
   }
-  glReadPixels(8, 6, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  glReadPixels(3, 9, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px); /* inside slice 3's triangle */
   if (px[0] < 200) fprintf(stderr, "slice 3 reads back %d %d %d %d\n", px[0], px[1], px[2], px[3]);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   check_gl("fill_layers");
