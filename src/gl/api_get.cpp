@@ -137,7 +137,6 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_MAX_FRAGMENT_INPUT_COMPONENTS: return n(64), true;
     // What Tessel does not have reports none: dual-source blending and transform feedback
     // (docs/gl-coverage.md).
-    case GL_MAX_DUAL_SOURCE_DRAW_BUFFERS:
     case GL_MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS:
     case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS:
     case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS:
@@ -146,7 +145,8 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_MAX_INTEGER_SAMPLES:
     case GL_MAX_COLOR_TEXTURE_SAMPLES:
     case GL_MAX_DEPTH_TEXTURE_SAMPLES: return n(kMaxSamples), true;
-    case GL_MAX_SAMPLE_MASK_WORDS: return n(1), true;
+    case GL_MAX_SAMPLE_MASK_WORDS:
+    case GL_MAX_DUAL_SOURCE_DRAW_BUFFERS: return n(1), true;
     case GL_SAMPLE_MASK_VALUE: return n(double(c.sample_mask)), true;
     // Multisample renderbuffers are stored (and drawn) single-sampled; GL_SAMPLES says what
     // the framebuffer was given (GL 3.3 §4.4.2), as blits and reads check it.

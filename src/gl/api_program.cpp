@@ -413,10 +413,11 @@ void GLAPIENTRY glBindFragDataLocation(GLuint program, GLuint color, const GLcha
 void GLAPIENTRY glBindFragDataLocationIndexed(GLuint program, GLuint color, GLuint index,
                                               const GLchar* name) {
   GL_CONTEXT();
-  // Dual-source blending is not implemented: GL_MAX_DUAL_SOURCE_DRAW_BUFFERS is 0 here, so
-  // index 1 is out of range (GL 3.3 §3.9.2).
-  if (index > 0) return c.error(GL_INVALID_VALUE);
+  // GL 3.3 §3.9.2: index 0 or 1, and an index-1 colour below GL_MAX_DUAL_SOURCE_DRAW_BUFFERS (1).
+  if (index > 1 || (index == 1 && color >= 1)) return c.error(GL_INVALID_VALUE);
   glBindFragDataLocation(program, color, name);
+  ProgramObject* p = program_of(c, program);
+  if (p && name && std::strncmp(name, "gl_", 3) != 0) p->frag_data_indices[name] = GLint(index);
 }
 
 void GLAPIENTRY glLinkProgram(GLuint program) {
@@ -447,6 +448,7 @@ void GLAPIENTRY glLinkProgram(GLuint program) {
   glsl::LinkOptions options;
   options.attribute_locations = p->attribute_bindings;
   options.frag_data_locations = p->frag_data_bindings;
+  options.frag_data_indices = p->frag_data_indices;
   p->linked = glsl::Program::link(units, options);
   p->log = p->linked->info_log();
   c.compat_cache.erase(program);
@@ -557,9 +559,8 @@ GLint GLAPIENTRY glGetFragDataLocation(GLuint program, const GLchar* name) {
 }
 
 GLint GLAPIENTRY glGetFragDataIndex(GLuint program, const GLchar* name) {
-  return location_query(program, name, [](const glsl::Program& p, const char* n) {
-    return p.frag_data_location(n) >= 0 ? 0 : -1;
-  });
+  return location_query(program, name,
+                        [](const glsl::Program& p, const char* n) { return p.frag_data_index(n); });
 }
 
 GLint GLAPIENTRY glGetUniformLocation(GLuint program, const GLchar* name) {

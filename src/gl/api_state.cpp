@@ -143,7 +143,11 @@ bool valid_blend(GLenum f, bool src) {
     case GL_CONSTANT_COLOR:
     case GL_ONE_MINUS_CONSTANT_COLOR:
     case GL_CONSTANT_ALPHA:
-    case GL_ONE_MINUS_CONSTANT_ALPHA: return true;
+    case GL_ONE_MINUS_CONSTANT_ALPHA:
+    case GL_SRC1_COLOR:  // dual-source blending (GL 3.3 §4.1.8)
+    case GL_ONE_MINUS_SRC1_COLOR:
+    case GL_SRC1_ALPHA:
+    case GL_ONE_MINUS_SRC1_ALPHA: return true;
     case GL_SRC_ALPHA_SATURATE: return src;
     default: return false;
   }

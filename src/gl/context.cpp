@@ -45,6 +45,10 @@ gpu::BlendFactor blend_of(GLenum f) {
     case GL_ONE_MINUS_CONSTANT_COLOR: return B::OneMinusConstantColor;
     case GL_CONSTANT_ALPHA: return B::ConstantAlpha;
     case GL_ONE_MINUS_CONSTANT_ALPHA: return B::OneMinusConstantAlpha;
+    case GL_SRC1_COLOR: return B::Src1Color;
+    case GL_ONE_MINUS_SRC1_COLOR: return B::OneMinusSrc1Color;
+    case GL_SRC1_ALPHA: return B::Src1Alpha;
+    case GL_ONE_MINUS_SRC1_ALPHA: return B::OneMinusSrc1Alpha;
     default: return B::One;
   }
 }

@@ -462,6 +462,7 @@ void Context::run_program_layer(ProgramRun run, const gpu::VertexLayout& layout,
   // keep glPointSize's size.
   rs.program_point_size = program_point_size && &run.program == executable.get();
   rs.depth_clamp = depth_clamp;
+  rs.dual_source = run.program.dual_source();
   std::vector<glsl::TextureBinding> units;
   if (!texture_units_for_draw(run.program, units)) return error(GL_INVALID_OPERATION);
   const std::vector<glsl::BufferBinding> ubos = uniform_buffers_for_draw();

@@ -68,6 +68,7 @@ struct ProgramObject {
   GLuint name = 0;
   std::vector<GLuint> attached;
   std::map<std::string, int> attribute_bindings, frag_data_bindings;  // applied at link
+  std::map<std::string, int> frag_data_indices;                       // glBindFragDataLocationIndexed
   std::shared_ptr<glsl::Program> linked;                              // the last link's result (ok() or not)
   std::string log;  // the last link's or validation's info log
   bool link_attempted = false, validated = false;

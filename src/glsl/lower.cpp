@@ -602,6 +602,7 @@ class Lowerer {
     set_type(f, el, s);
     const auto& q = t.getQualifier();
     if (q.hasLocation()) f.location = int(q.layoutLocation);
+    if (q.hasIndex()) f.index = int(q.getIndex());
     f.flat = q.flat;
     f.noperspective = q.nopersp;
     f.builtin = name.rfind("gl_", 0) == 0;

@@ -43,6 +43,7 @@ struct Interface {
   uint32_t gl_type = 0;
   Base base = Base::Float;
   int location = -1;  // layout(location), or -1
+  int index = -1;     // layout(index) of a fragment output (dual-source blending), or -1
   bool flat = false, noperspective = false;
   bool builtin = false;  // gl_Position, gl_FragCoord, gl_Vertex, ...
   bool read = false, written = false;

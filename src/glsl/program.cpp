@@ -110,6 +110,8 @@ struct Program::Impl {
   std::vector<Location> locations;
   std::map<std::string, int, std::less<>> uniform_names;  // slot name (and name[0]) -> location
   std::optional<GeometryInfo> geometry;
+  std::map<std::string, int, std::less<>> output_index;  // fragment output name -> index
+  bool dual_source = false;
 };
 
 namespace {
@@ -611,8 +613,13 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
     if (o.builtin) continue;
     if (o.location < 0) {
       auto it = options.frag_data_locations.find(o.name);
-      if (it != options.frag_data_locations.end()) o.location = it->second;
+      if (it != options.frag_data_locations.end()) {
+        o.location = it->second;
+        auto ix = options.frag_data_indices.find(o.name);
+        if (o.index < 0 && ix != options.frag_data_indices.end()) o.index = ix->second;
+      }
     }
+    if (o.index < 0) o.index = 0;
     if (o.location < 0) free_outputs.push_back(&o);
   }
   if (frag_color && frag_data) error("a fragment shader may not write both gl_FragColor and gl_FragData");
@@ -621,30 +628,44 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
     for (;; ++loc) {
       bool taken = false;
       for (const Interface& q : fs.outputs)
-        if (&q != o && q.location >= 0 && loc >= q.location && loc < q.location + std::max(1, q.array_size))
+        if (&q != o && q.location >= 0 && q.index == o->index && loc >= q.location &&
+            loc < q.location + std::max(1, q.array_size))
           taken = true;
       if (!taken) break;
     }
     o->location = loc;
   }
+  // Dual-source blending (GL 3.3 §3.9.2): an output of index 1 is the second colour of
+  // location 0 (GL_MAX_DUAL_SOURCE_DRAW_BUFFERS is 1), carried as fragment colour 1; the
+  // other outputs must then stay below that maximum too.
+  bool dual = false;
+  for (const Interface& o : fs.outputs)
+    if (!o.builtin && o.index == 1) dual = true;
   for (const Interface& o : fs.outputs) {
     if (o.builtin) continue;
     const int n = std::max(1, o.array_size);
+    if (o.index > 1 || (dual && o.location + n > 1)) {
+      error("fragment output '" + o.name + "' at location " + std::to_string(o.location) + ", index " +
+            std::to_string(o.index) + ": dual-source blending has one draw buffer");
+      continue;
+    }
     if (o.location < 0 || o.location + n > gpu::kMaxColorAttachments) {
       error("fragment output '" + o.name + "' has no room at location " + std::to_string(o.location));
       continue;
     }
     const int per = o.components / n;
+    const int slot = o.index == 1 ? 1 : o.location;
     for (int e = 0; e < n; ++e)
       for (int c = 0; c < per; ++c)
-        linked->fs_out.push_back(
-            {o.reg + ir::Reg(e * per + c),
-             int(offset_of(&FragmentLanes::color)) + ((o.location + e) * 4 + c) * ir::kLanes * 4});
-    outputs = std::max(outputs, o.location + n);
+        linked->fs_out.push_back({o.reg + ir::Reg(e * per + c), int(offset_of(&FragmentLanes::color)) +
+                                                                    ((slot + e) * 4 + c) * ir::kLanes * 4});
+    outputs = std::max(outputs, slot + n);
+    m.output_index[o.name] = o.index;
     m.outputs.push_back({o.name, o.gl_type, std::max(1, o.array_size), o.location});
   }
   if (frag_color) outputs = gpu::kMaxColorAttachments;  // gl_FragColor is written to every draw buffer
   linked->shape.outputs = outputs;
+  m.dual_source = dual;
   linked->shape.discards = fs.ir.discards;
   linked->shape.writes_depth = fs.ir.writes_depth;
   linked->shape.lanes_independent = !fs.ir.uses_derivatives;
@@ -832,6 +853,11 @@ bool Program::wait_native() const {
 const std::string& Program::info_log() const { return impl_->log; }
 const std::vector<Variable>& Program::attributes() const { return impl_->attributes; }
 const GeometryInfo* Program::geometry() const { return impl_->geometry ? &*impl_->geometry : nullptr; }
+bool Program::dual_source() const { return impl_->dual_source; }
+int Program::frag_data_index(std::string_view name) const {
+  auto it = impl_->output_index.find(name);
+  return it == impl_->output_index.end() ? -1 : it->second;
+}
 const std::vector<Variable>& Program::uniforms() const { return impl_->uniforms; }
 const std::vector<Variable>& Program::outputs() const { return impl_->outputs; }
 

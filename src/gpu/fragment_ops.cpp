@@ -54,7 +54,8 @@ void store_color(const ColorTarget& t, int x, int y, glm::vec4 c, uint8_t wmask)
   encode_texel(t.format, p, c);
 }
 
-inline glm::vec3 factor_rgb(BlendFactor f, const glm::vec4& s, const glm::vec4& d, const glm::vec4& k) {
+inline glm::vec3 factor_rgb(BlendFactor f, const glm::vec4& s, const glm::vec4& d, const glm::vec4& k,
+                            const glm::vec4& s1) {
   switch (f) {
     case BlendFactor::Zero: return glm::vec3(0.0f);
     case BlendFactor::One: return glm::vec3(1.0f);
@@ -71,11 +72,16 @@ inline glm::vec3 factor_rgb(BlendFactor f, const glm::vec4& s, const glm::vec4& 
     case BlendFactor::ConstantAlpha: return glm::vec3(k.a);
     case BlendFactor::OneMinusConstantAlpha: return glm::vec3(1.0f - k.a);
     case BlendFactor::SrcAlphaSaturate: return glm::vec3(std::min(s.a, 1.0f - d.a));
+    case BlendFactor::Src1Color: return glm::vec3(s1);
+    case BlendFactor::OneMinusSrc1Color: return glm::vec3(1.0f) - glm::vec3(s1);
+    case BlendFactor::Src1Alpha: return glm::vec3(s1.a);
+    case BlendFactor::OneMinusSrc1Alpha: return glm::vec3(1.0f - s1.a);
   }
   return glm::vec3(0.0f);
 }
 
-inline float factor_alpha(BlendFactor f, const glm::vec4& s, const glm::vec4& d, const glm::vec4& k) {
+inline float factor_alpha(BlendFactor f, const glm::vec4& s, const glm::vec4& d, const glm::vec4& k,
+                          const glm::vec4& s1) {
   switch (f) {
     case BlendFactor::Zero: return 0.0f;
     case BlendFactor::One: return 1.0f;
@@ -92,6 +98,10 @@ inline float factor_alpha(BlendFactor f, const glm::vec4& s, const glm::vec4& d,
     case BlendFactor::OneMinusConstantColor:
     case BlendFactor::OneMinusConstantAlpha: return 1.0f - k.a;
     case BlendFactor::SrcAlphaSaturate: return 1.0f;
+    case BlendFactor::Src1Color:
+    case BlendFactor::Src1Alpha: return s1.a;
+    case BlendFactor::OneMinusSrc1Color:
+    case BlendFactor::OneMinusSrc1Alpha: return 1.0f - s1.a;
   }
   return 0.0f;
 }
@@ -110,15 +120,16 @@ inline T apply_equation(BlendEquation eq, T s, T sf, T d, T df) {
 
 // GL 4.6 §17.3.6: blending, with source, destination and constant clamped to [0, 1] for
 // fixed-point (unsigned normalized) attachments.
-glm::vec4 blend(const BlendTarget& b, glm::vec4 s, glm::vec4 d, glm::vec4 k, bool unorm) {
+glm::vec4 blend(const BlendTarget& b, glm::vec4 s, glm::vec4 d, glm::vec4 k, bool unorm, glm::vec4 s1) {
   if (unorm) {
     s = glm::clamp(s, 0.0f, 1.0f);
     k = glm::clamp(k, 0.0f, 1.0f);
+    s1 = glm::clamp(s1, 0.0f, 1.0f);
   }
-  const glm::vec3 rgb = apply_equation(b.eq_rgb, glm::vec3(s), factor_rgb(b.src_rgb, s, d, k), glm::vec3(d),
-                                       factor_rgb(b.dst_rgb, s, d, k));
-  const float a = apply_equation(b.eq_alpha, s.a, factor_alpha(b.src_alpha, s, d, k), d.a,
-                                 factor_alpha(b.dst_alpha, s, d, k));
+  const glm::vec3 rgb = apply_equation(b.eq_rgb, glm::vec3(s), factor_rgb(b.src_rgb, s, d, k, s1),
+                                       glm::vec3(d), factor_rgb(b.dst_rgb, s, d, k, s1));
+  const float a = apply_equation(b.eq_alpha, s.a, factor_alpha(b.src_alpha, s, d, k, s1), d.a,
+                                 factor_alpha(b.dst_alpha, s, d, k, s1));
   return {rgb, a};
 }
 
@@ -316,7 +327,9 @@ void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsi
                   const Vec4<Float8>* colors, int outputs) {
   if (d.fast_color && gx + 4 <= t.width && gy + 2 <= t.height)
     return write_rgba8(t.color[0], gx, gy, mask, colors[0]);
-  const int n = std::min(outputs, t.color_count);
+  // With dual-source blending output 1 is attachment 0's second source, not a colour.
+  const bool dual = d.state.dual_source && outputs >= 2;
+  const int n = dual ? std::min(1, t.color_count) : std::min(outputs, t.color_count);
   for (int i = 0; i < n; ++i) {
     const ColorTarget& ct = t.color[i];
     if (!ct.data) continue;
@@ -336,7 +349,9 @@ void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsi
           s[k] = std::bit_cast<float>(
               clamp_integer_bits(std::bit_cast<uint32_t>(s[k]), b.integer.bits[k], b.integer.is_signed));
       } else if (b.enabled) {
-        s = blend(b, s, load_color(ct, x, y), d.state.blend_color, unorm);
+        const glm::vec4 s1 = dual ? glm::vec4(colors[1].x[l], colors[1].y[l], colors[1].z[l], colors[1].w[l])
+                                  : glm::vec4(0.0f);
+        s = blend(b, s, load_color(ct, x, y), d.state.blend_color, unorm, s1);
       }
       store_color(ct, x, y, s, b.write_mask);
     }

@@ -1713,7 +1713,35 @@ TEST_F(GL33ErrorsTest, ProvokingVertexAndLogicOpErrors) {
 
 TEST_F(GL33ErrorsTest, DISABLED_MinimumsOfWhatTesselLacks) {
   EXPECT_GE(get_int(GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS), 4);
-  EXPECT_GE(get_int(GL_MAX_DUAL_SOURCE_DRAW_BUFFERS), 1);
+}
+
+// Dual-source blending (GL 3.3 §3.9.2, §4.1.8): one dual-source draw buffer; an index-1 output
+// beside an output at location 1 does not link; glGetFragDataIndex reports the index.
+TEST_F(GL33ErrorsTest, DualSourceBlendingRules) {
+  EXPECT_EQ(get_int(GL_MAX_DUAL_SOURCE_DRAW_BUFFERS), 1);
+  const char* vs = "#version 330 core\nlayout(location = 0) in vec4 p;\nvoid main() { gl_Position = p; }\n";
+  const GLuint ok_prog =
+      program(vs,
+              "#version 330 core\nlayout(location = 0, index = 0) out vec4 a;\n"
+              "layout(location = 0, index = 1) out vec4 b;\nvoid main() { a = b = vec4(1.0); }\n");
+  GLint linked = 0;
+  glGetProgramiv(ok_prog, GL_LINK_STATUS, &linked);
+  EXPECT_EQ(linked, GL_TRUE);
+  EXPECT_EQ(glGetFragDataIndex(ok_prog, "b"), 1);
+  EXPECT_EQ(glGetFragDataIndex(ok_prog, "a"), 0);
+  EXPECT_EQ(glGetFragDataLocation(ok_prog, "b"), 0);
+  const GLuint bad =
+      program(vs,
+              "#version 330 core\nlayout(location = 1) out vec4 a;\n"
+              "layout(location = 0, index = 1) out vec4 b;\nvoid main() { a = b = vec4(1.0); }\n");
+  glGetProgramiv(bad, GL_LINK_STATUS, &linked);
+  EXPECT_EQ(linked, GL_FALSE);
+  glBlendFunc(GL_SRC1_COLOR, GL_ONE_MINUS_SRC1_ALPHA);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(get_int(GL_BLEND_SRC_RGB), GL_SRC1_COLOR);
+  glBlendFunc(GL_ONE, GL_ZERO);
+  glDeleteProgram(ok_prog);
+  glDeleteProgram(bad);
 }
 
 // Multisample textures (GL 3.3 §3.8.6) and the sample mask (§4.1.3): every case below gives

@@ -66,6 +66,9 @@ enum class NativeCode {
 struct LinkOptions {
   std::map<std::string, int> attribute_locations;
   std::map<std::string, int> frag_data_locations;
+  // glBindFragDataLocationIndexed's index (0, or 1 for the second source of dual-source
+  // blending), by output name; layout(index) takes precedence.
+  std::map<std::string, int> frag_data_indices;
   // TESSEL_GLSL=interp in the environment means Off for every program, TESSEL_GLSL=sync AtLink.
   NativeCode native_code = NativeCode::Background;
 };
@@ -171,6 +174,11 @@ class Program {
   // or -1. Compatibility state has locations too ("gl_ModelViewMatrix").
   int uniform_location(std::string_view name) const;
   int frag_data_location(std::string_view name) const;
+  // glGetFragDataIndex: 0 or 1 for an active output, -1 otherwise.
+  int frag_data_index(std::string_view name) const;
+  // Whether an output of index 1 gives dual-source blending its second colour (it arrives
+  // as fragment colour 1, and only draw buffer 0 is written: GL 3.3 §4.1.8).
+  bool dual_source() const;
 
   // Sets count elements from `location` (GL's glUniform*v): `data` holds the components of
   // each element (matrices column by column). The base type must match the uniform's (float,

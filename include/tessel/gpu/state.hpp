@@ -74,6 +74,11 @@ enum class BlendFactor : uint8_t {
   ConstantAlpha,
   OneMinusConstantAlpha,
   SrcAlphaSaturate,
+  // Dual-source blending (GL 3.3 §4.1.8): the fragment's second colour for attachment 0.
+  Src1Color,
+  OneMinusSrc1Color,
+  Src1Alpha,
+  OneMinusSrc1Alpha,
 };
 
 struct Rect {
@@ -160,6 +165,10 @@ struct RenderState {
   bool provoking_first = false;
 
   bool primitive_restart = false;  // index 0xFF / 0xFFFF / 0xFFFFFFFF restarts (fixed index)
+
+  // Dual-source blending: fragment output 1 is the second source colour of attachment 0's
+  // blend (the Src1 factors), and only attachment 0 is written.
+  bool dual_source = false;
 
   // Layered rendering (GL 3.3 §4.4.7), one layer of the framebuffer a draw: with a program
   // whose geometry stage writes gl_Layer (RuntimeShape::layer), this draw keeps the primitives
