@@ -200,28 +200,6 @@ static GLuint house, sphere, normals, shrink, tri_adj, line_adj, points, plain;
 static GLuint vao[6];
 static GLsizei sphere_count;
 
-static GLuint link3(const char* vs, const char* gs, const char* fs) {
-  GLuint p = glCreateProgram();
-  GLuint v = compile_shader(GL_VERTEX_SHADER, vs), f = compile_shader(GL_FRAGMENT_SHADER, fs);
-  GLuint g = compile_shader(GL_GEOMETRY_SHADER, gs);
-  GLint ok = 0;
-  glAttachShader(p, v);
-  glAttachShader(p, g);
-  glAttachShader(p, f);
-  glLinkProgram(p);
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[4096];
-    glGetProgramInfoLog(p, sizeof log, NULL, log);
-    fprintf(stderr, "program link failed:\n%s\n", log);
-    exit(1);
-  }
-  glDeleteShader(v);
-  glDeleteShader(g);
-  glDeleteShader(f);
-  return p;
-}
-
 static GLuint array2(const float* xy, int n) {
   GLuint a, b;
   glGenVertexArrays(1, &a);
@@ -350,13 +328,13 @@ int main(int argc, char** argv) {
   static unsigned short si[SPHERE_INDICES];
   GLuint b;
   open_window(&argc, argv, 3, 3, GLUT_CORE_PROFILE, "geometry shaders");
-  house = link3(house_vs, house_gs, color_fs);
+  house = link_shaders(house_vs, house_gs, color_fs);
   sphere = link_program(sphere_vs, sphere_fs);
-  normals = link3(normals_vs, normals_gs, color_fs);
-  shrink = link3(shrink_vs, shrink_gs, shrink_fs);
-  tri_adj = link3(adj_vs, tri_adj_gs, color_fs);
-  line_adj = link3(adj_vs, line_adj_gs, color_fs);
-  points = link3(adj_vs, points_gs, color_fs);
+  normals = link_shaders(normals_vs, normals_gs, color_fs);
+  shrink = link_shaders(shrink_vs, shrink_gs, shrink_fs);
+  tri_adj = link_shaders(adj_vs, tri_adj_gs, color_fs);
+  line_adj = link_shaders(adj_vs, line_adj_gs, color_fs);
+  points = link_shaders(adj_vs, points_gs, color_fs);
   plain = link_program(adj_vs, plain_fs);
 
   glGenVertexArrays(1, &vao[0]);

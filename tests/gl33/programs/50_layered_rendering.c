@@ -308,7 +308,6 @@ int main(int argc, char** argv) {
                                    {1, 0, 0, 0, 0, -1, 0, 1, 0}, {-1, 0, 0, 0, 0, 1, 0, 1, 0},
                                    {0, 1, 0, 1, 0, 0, 0, 0, -1}, {0, -1, 0, 1, 0, 0, 0, 0, 1}};
   static const float corner[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
-  static const float quad[8] = {-1, -1, 1, -1, -1, 1, 1, 1};
   static const float tris[24] = {-0.9f, -0.9f, 0.6f,  -0.7f, -0.5f, 0.8f,  -0.2f, -0.8f,
                                  0.9f,  -0.1f, -0.3f, 0.9f,  0.1f,  0.1f,  0.9f,  0.6f,
                                  -0.1f, 0.95f, -0.9f, 0.2f,  -0.6f, -0.2f, -0.3f, 0.4f};
@@ -316,26 +315,8 @@ int main(int argc, char** argv) {
   GLuint vbo;
   int f, k, i;
   open_window(&argc, argv, 3, 3, GLUT_CORE_PROFILE, "layered rendering");
-  depth_prog = glCreateProgram();
-  {
-    GLuint s[3];
-    GLint ok = 0;
-    s[0] = compile_shader(GL_VERTEX_SHADER, depth_vs);
-    s[1] = compile_shader(GL_GEOMETRY_SHADER, depth_gs);
-    s[2] = compile_shader(GL_FRAGMENT_SHADER, depth_fs);
-    for (i = 0; i < 3; ++i) glAttachShader(depth_prog, s[i]);
-    glLinkProgram(depth_prog);
-    glGetProgramiv(depth_prog, GL_LINK_STATUS, &ok);
-    if (!ok) fprintf(stderr, "depth program link failed\n");
-    layer_prog = glCreateProgram();
-    s[0] = compile_shader(GL_VERTEX_SHADER, layer_vs);
-    s[1] = compile_shader(GL_GEOMETRY_SHADER, layer_gs);
-    s[2] = compile_shader(GL_FRAGMENT_SHADER, tint_fs);
-    for (i = 0; i < 3; ++i) glAttachShader(layer_prog, s[i]);
-    glLinkProgram(layer_prog);
-    glGetProgramiv(layer_prog, GL_LINK_STATUS, &ok);
-    if (!ok) fprintf(stderr, "layer program link failed\n");
-  }
+  depth_prog = link_shaders(depth_vs, depth_gs, depth_fs);
+  layer_prog = link_shaders(layer_vs, layer_gs, tint_fs);
   scene_prog = link_program(scene_vs, scene_fs);
   flat_prog = link_program(layer_vs, flat_fs);
   show_array = link_program(show_vs, show_array_fs);
@@ -357,13 +338,7 @@ int main(int argc, char** argv) {
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), (void*)(3 * sizeof(float)));
   glEnableVertexAttribArray(0);
   glEnableVertexAttribArray(1);
-  glGenVertexArrays(1, &quad_vao);
-  glBindVertexArray(quad_vao);
-  glGenBuffers(1, &vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, (void*)0);
-  glEnableVertexAttribArray(0);
+  quad_vao = window_strip();
   glGenVertexArrays(1, &tri_vao);
   glBindVertexArray(tri_vao);
   glGenBuffers(1, &vbo);

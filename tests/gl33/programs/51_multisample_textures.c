@@ -106,9 +106,8 @@ static void expect(const char* what, GLint got, GLint want) {
 }
 
 int main(int argc, char** argv) {
-  static const float quad[8] = {-1, -1, 1, -1, -1, 1, 1, 1};
   static const GLuint count_value[4] = {40, 120, 200, 255};
-  GLuint vbo, depth_rb, layer_fbo, int_fbo, t2d, unfixed;
+  GLuint depth_rb, layer_fbo, int_fbo, t2d, unfixed;
   GLint v = 0;
   GLfloat pos[2] = {0, 0};
   open_window(&argc, argv, 3, 3, GLUT_CORE_PROFILE, "multisample textures");
@@ -116,13 +115,7 @@ int main(int argc, char** argv) {
   fetch = link_program(quad_vs, fetch_fs);
   show = link_program(quad_vs, show_fs);
   layers = link_program(quad_vs, layers_fs);
-  glGenVertexArrays(1, &quad_vao);
-  glBindVertexArray(quad_vao);
-  glGenBuffers(1, &vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, (void*)0);
-  glEnableVertexAttribArray(0);
+  quad_vao = window_strip();
 
   /* The multisample colour texture and depth renderbuffer. */
   glGenTextures(1, &ms_tex);

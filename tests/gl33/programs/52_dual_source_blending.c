@@ -108,8 +108,6 @@ static void display(void) {
 }
 
 int main(int argc, char** argv) {
-  static const float quad[8] = {-1, -1, 1, -1, -1, 1, 1, 1};
-  GLuint vbo;
   GLint v = 0;
   open_window(&argc, argv, 3, 3, GLUT_CORE_PROFILE, "dual-source blending");
   glGetIntegerv(GL_MAX_DUAL_SOURCE_DRAW_BUFFERS, &v);
@@ -123,13 +121,7 @@ int main(int argc, char** argv) {
     fprintf(stderr, "fragment data indices %d %d %d %d\n", glGetFragDataIndex(layout_prog, "coverage"),
             glGetFragDataIndex(layout_prog, "colour"), glGetFragDataIndex(bound_prog, "weight"),
             glGetFragDataLocation(bound_prog, "weight"));
-  glGenVertexArrays(1, &quad_vao);
-  glBindVertexArray(quad_vao);
-  glGenBuffers(1, &vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, (void*)0);
-  glEnableVertexAttribArray(0);
+  quad_vao = window_strip();
   glGenTextures(1, &fbo_tex);
   glBindTexture(GL_TEXTURE_2D, fbo_tex);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, 128, 128, 0, GL_RGBA, GL_FLOAT, NULL);

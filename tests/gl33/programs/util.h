@@ -30,11 +30,14 @@ static inline GLuint compile_shader(GLenum type, const char* src) {
   return s;
 }
 
-static inline GLuint link_program(const char* vs, const char* fs) {
+/* A program of a vertex, an optional geometry (NULL: none) and a fragment shader. */
+static inline GLuint link_shaders(const char* vs, const char* gs, const char* fs) {
   GLuint p = glCreateProgram();
   GLuint v = compile_shader(GL_VERTEX_SHADER, vs), f = compile_shader(GL_FRAGMENT_SHADER, fs);
+  GLuint g = gs ? compile_shader(GL_GEOMETRY_SHADER, gs) : 0;
   GLint ok = 0;
   glAttachShader(p, v);
+  if (g) glAttachShader(p, g);
   glAttachShader(p, f);
   glLinkProgram(p);
   glGetProgramiv(p, GL_LINK_STATUS, &ok);
@@ -45,9 +48,12 @@ static inline GLuint link_program(const char* vs, const char* fs) {
     exit(1);
   }
   glDeleteShader(v);
+  if (g) glDeleteShader(g);
   glDeleteShader(f);
   return p;
 }
+
+static inline GLuint link_program(const char* vs, const char* fs) { return link_shaders(vs, NULL, fs); }
 
 /* A vertex array of the window-filling quad at attribute 0 (vec2 positions -1..1), drawn
  * with glDrawArrays(GL_TRIANGLE_STRIP, 0, 4); left bound. */
