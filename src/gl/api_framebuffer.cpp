@@ -270,11 +270,8 @@ void clear_buffer(Context& c, GLenum buffer, GLint drawbuffer, glm::vec4 color, 
     default: return c.error(GL_INVALID_ENUM);
   }
   c.touch();
-  // Every layer of a layered framebuffer is cleared (§4.4.7).
-  const int layers = c.draw_layers();
-  for (int layer = 1; layer < layers; ++layer)
-    clear_buffer_layer(c, buffer, drawbuffer, color, depth, stencil, kind, layer);
-  clear_buffer_layer(c, buffer, drawbuffer, color, depth, stencil, kind, 0);
+  c.for_each_clear_layer(
+      [&](int layer) { clear_buffer_layer(c, buffer, drawbuffer, color, depth, stencil, kind, layer); });
 }
 
 void clear_buffer_layer(Context& c, GLenum buffer, GLint drawbuffer, glm::vec4 color, float depth,

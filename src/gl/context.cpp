@@ -1212,10 +1212,7 @@ glm::vec4 Context::clear_color_for(const TargetInfo& target, int i, glm::vec4 co
 
 void Context::clear(GLbitfield mask) {
   touch();
-  // Every layer of a layered framebuffer is cleared (§4.4.7).
-  const int layers = draw_layers();
-  for (int layer = 1; layer < layers; ++layer) clear_layer(mask, layer);
-  clear_layer(mask, 0);
+  for_each_clear_layer([&](int layer) { clear_layer(mask, layer); });
 }
 
 void Context::clear_layer(GLbitfield mask, int layer) {

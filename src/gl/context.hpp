@@ -743,6 +743,14 @@ class Context {
   // Of a layered framebuffer, `layer` of every attachment is bound.
   bool bind_draw_target(int layer = 0);
   void clear_layer(GLbitfield mask, int layer);
+  // Runs clear(layer) for every layer of a layered draw framebuffer (GL 3.3 §4.4.7: a clear
+  // clears them all), layer 0 last so that it stays bound; for another framebuffer, once.
+  template <class F>
+  void for_each_clear_layer(F&& clear) {
+    const int layers = draw_layers();
+    for (int layer = 1; layer < layers; ++layer) clear(layer);
+    clear(0);
+  }
   const gpu::Framebuffer& framebuffer() const { return fb_; }
 
  private:

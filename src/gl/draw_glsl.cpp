@@ -712,17 +712,9 @@ void draw_generic_call(Context& c, GLenum mode, GLint first, GLsizei count, GLsi
     return c.error(GL_INVALID_VALUE);
   // GL 3.3 §2.12.1: with a geometry shader, the mode must give the primitives it takes
   // (checked after the framebuffer and the counts, as Mesa does).
-  if (const glsl::GeometryInfo* gi = c.executable ? c.executable->geometry() : nullptr) {
-    const GLenum in = gi->input_type;
-    const bool ok = d.decompose       ? false
-                    : in == GL_POINTS ? mode == GL_POINTS
-                    : in == GL_LINES  ? mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP
-                    : in == GL_LINES_ADJACENCY ? mode == GL_LINES_ADJACENCY || mode == GL_LINE_STRIP_ADJACENCY
-                    : in == GL_TRIANGLES
-                        ? mode == GL_TRIANGLES || mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN
-                        : mode == GL_TRIANGLES_ADJACENCY || mode == GL_TRIANGLE_STRIP_ADJACENCY;
-    if (!ok) return c.error(GL_INVALID_OPERATION);
-  }
+  if (const glsl::GeometryInfo* gi = c.executable ? c.executable->geometry() : nullptr)
+    if (d.decompose || !gpu::geometry_takes(gi->input_vertices, d.topology))
+      return c.error(GL_INVALID_OPERATION);
   d.first = first;
   d.count = count;
   d.instances = instances;

@@ -700,8 +700,9 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
   if (has_gs) {
     linked->gs = std::move(gs.ir);
     linked->geometry = std::move(gs.geometry);
-    m.geometry = {linked->geometry.max_vertices, linked->geometry.input_primitive,
-                  linked->geometry.output_primitive, linked->shape.layer >= 0};
+    m.geometry = {linked->geometry.max_vertices, linked->geometry.input_vertices,
+                  linked->geometry.input_primitive, linked->geometry.output_primitive,
+                  linked->shape.layer >= 0};
   }
   // Native code for both stages, unless the options or TESSEL_GLSL=interp ask for the
   // interpreter. A program LLVM cannot compile still runs, on the interpreter (same results).

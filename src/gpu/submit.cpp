@@ -66,25 +66,6 @@ std::vector<uint32_t> detail::drop_adjacency(Topology& t, const std::vector<uint
   return out;
 }
 
-// Whether a geometry stage taking primitives of `input` vertices takes topology t (GL 3.3
-// §2.12.1, "Geometry Shader Input Primitives").
-static bool geometry_takes(int input, Topology t) {
-  switch (t) {
-    case Topology::Points: return input == 1;
-    case Topology::Lines:
-    case Topology::LineStrip:
-    case Topology::LineLoop: return input == 2;
-    case Topology::Triangles:
-    case Topology::TriangleStrip:
-    case Topology::TriangleFan: return input == 3;
-    case Topology::LinesAdjacency:
-    case Topology::LineStripAdjacency: return input == 4;
-    case Topology::TrianglesAdjacency:
-    case Topology::TriangleStripAdjacency: return input == 6;
-  }
-  return false;
-}
-
 static Rect render_area(const RenderState& s, int width, int height) {
   Rect r{0, 0, width, height};
   if (s.scissor_test) {

@@ -102,6 +102,7 @@ struct BufferBinding {
 // (GL_GEOMETRY_VERTICES_OUT, GL_GEOMETRY_INPUT_TYPE, GL_GEOMETRY_OUTPUT_TYPE).
 struct GeometryInfo {
   int max_vertices = 0;
+  int input_vertices = 0;     // of each input primitive: 1, 2, 3, 4 or 6
   uint32_t input_type = 0;    // GL_POINTS, GL_LINES, GL_LINES_ADJACENCY, GL_TRIANGLES, GL_TRIANGLES_ADJACENCY
   uint32_t output_type = 0;   // GL_POINTS, GL_LINE_STRIP, GL_TRIANGLE_STRIP
   bool writes_layer = false;  // gl_Layer: draws into a layered framebuffer pick layers with it

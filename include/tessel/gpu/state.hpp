@@ -31,6 +31,25 @@ enum class Topology : uint8_t {
   TrianglesAdjacency,
   TriangleStripAdjacency,
 };
+// Whether a geometry stage taking primitives of `input_vertices` vertices (1, 2, 3, 4 or 6)
+// takes topology t (GL 3.3 §2.12.1, "Geometry Shader Input Primitives").
+inline bool geometry_takes(int input_vertices, Topology t) {
+  switch (t) {
+    case Topology::Points: return input_vertices == 1;
+    case Topology::Lines:
+    case Topology::LineStrip:
+    case Topology::LineLoop: return input_vertices == 2;
+    case Topology::Triangles:
+    case Topology::TriangleStrip:
+    case Topology::TriangleFan: return input_vertices == 3;
+    case Topology::LinesAdjacency:
+    case Topology::LineStripAdjacency: return input_vertices == 4;
+    case Topology::TrianglesAdjacency:
+    case Topology::TriangleStripAdjacency: return input_vertices == 6;
+  }
+  return false;
+}
+
 enum class CullMode : uint8_t { None, Front, Back, FrontAndBack };
 enum class FrontFace : uint8_t { CCW, CW };
 enum class PolygonMode : uint8_t { Fill, Line, Point };

@@ -200,18 +200,6 @@ static GLuint house, sphere, normals, shrink, tri_adj, line_adj, points, plain;
 static GLuint vao[6];
 static GLsizei sphere_count;
 
-static GLuint array2(const float* xy, int n) {
-  GLuint a, b;
-  glGenVertexArrays(1, &a);
-  glBindVertexArray(a);
-  glGenBuffers(1, &b);
-  glBindBuffer(GL_ARRAY_BUFFER, b);
-  glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(sizeof(float) * 2 * (size_t)n), xy, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, (void*)0);
-  glEnableVertexAttribArray(0);
-  return a;
-}
-
 static void panel(int col, int row) { glViewport(col * W, row * H, W, H); }
 
 static void display(void) {
@@ -360,9 +348,9 @@ int main(int argc, char** argv) {
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, sizeof si, si, GL_STATIC_DRAW);
 
-  vao[2] = array2(strip, 6);
-  vao[3] = array2(tri_adj_xy, 16);
-  vao[4] = array2(line_adj_xy, 12);
+  vao[2] = vertex_array2(strip, 6);
+  vao[3] = vertex_array2(tri_adj_xy, 16);
+  vao[4] = vertex_array2(line_adj_xy, 12);
   check_gl("setup");
   check_queries();
   glutDisplayFunc(display);

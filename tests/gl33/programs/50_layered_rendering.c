@@ -339,13 +339,7 @@ int main(int argc, char** argv) {
   glEnableVertexAttribArray(0);
   glEnableVertexAttribArray(1);
   quad_vao = window_strip();
-  glGenVertexArrays(1, &tri_vao);
-  glBindVertexArray(tri_vao);
-  glGenBuffers(1, &vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof tris, tris, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, (void*)0);
-  glEnableVertexAttribArray(0);
+  tri_vao = vertex_array2(tris, 12);
 
   /* The depth cube map and its framebuffer (no colour buffer). */
   glGenTextures(1, &cube_map);

@@ -55,19 +55,24 @@ static inline GLuint link_shaders(const char* vs, const char* gs, const char* fs
 
 static inline GLuint link_program(const char* vs, const char* fs) { return link_shaders(vs, NULL, fs); }
 
-/* A vertex array of the window-filling quad at attribute 0 (vec2 positions -1..1), drawn
- * with glDrawArrays(GL_TRIANGLE_STRIP, 0, 4); left bound. */
-static inline GLuint window_strip(void) {
-  static const float quad[8] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
+/* A vertex array of n vec2 positions at attribute 0, in a buffer of its own; left bound. */
+static inline GLuint vertex_array2(const float* xy, int n) {
   GLuint vao, vbo;
   glGenVertexArrays(1, &vao);
   glBindVertexArray(vao);
   glGenBuffers(1, &vbo);
   glBindBuffer(GL_ARRAY_BUFFER, vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(sizeof(float) * 2 * (size_t)n), xy, GL_STATIC_DRAW);
   glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, (void*)0);
   glEnableVertexAttribArray(0);
   return vao;
+}
+
+/* A vertex array of the window-filling quad at attribute 0 (vec2 positions -1..1), drawn
+ * with glDrawArrays(GL_TRIANGLE_STRIP, 0, 4); left bound. */
+static inline GLuint window_strip(void) {
+  static const float quad[8] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
+  return vertex_array2(quad, 4);
 }
 
 static inline void check_gl(const char* where) {
