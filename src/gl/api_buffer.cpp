@@ -27,6 +27,7 @@ BufferRef* target_binding(Context& c, GLenum target) {
     case GL_PIXEL_UNPACK_BUFFER: return &c.pixel_unpack_buffer;
     case GL_UNIFORM_BUFFER: return &c.uniform_buffer;
     case GL_TEXTURE_BUFFER: return &c.texture_buffer;
+    case GL_TRANSFORM_FEEDBACK_BUFFER: return &c.feedback_buffer;
     default: return nullptr;
   }
 }
@@ -40,7 +41,8 @@ bool valid_target(GLenum target) {
     case GL_PIXEL_PACK_BUFFER:
     case GL_PIXEL_UNPACK_BUFFER:
     case GL_UNIFORM_BUFFER:
-    case GL_TEXTURE_BUFFER: return true;
+    case GL_TEXTURE_BUFFER:
+    case GL_TRANSFORM_FEEDBACK_BUFFER: return true;
     default: return false;
   }
 }
@@ -146,9 +148,11 @@ void GLAPIENTRY glDeleteBuffers(GLsizei n, const GLuint* names) {
     // GL 3.3 §2.9.1: the bindings of the context, and the attachments of the bound vertex
     // array object, that name it revert to zero. Other vertex array objects keep it alive.
     for (BufferRef* r : {&c.array_buffer, &c.copy_read_buffer, &c.copy_write_buffer, &c.pixel_pack_buffer,
-                         &c.pixel_unpack_buffer, &c.uniform_buffer, &c.texture_buffer})
+                         &c.pixel_unpack_buffer, &c.uniform_buffer, &c.texture_buffer, &c.feedback_buffer})
       if (*r == b) r->reset();
     for (auto& u : c.uniform_bindings)
+      if (u.buffer == b) u = {};
+    for (auto& u : c.feedback_bindings)  // an active transform feedback keeps writing it
       if (u.buffer == b) u = {};
     if (c.vertex_arrays.count(c.bound_vertex_array)) {
       VertexArrayObject& va = c.vao();
@@ -359,18 +363,25 @@ void GLAPIENTRY glGetBufferPointerv(GLenum target, GLenum pname, void** out) {
   if (out) *out = b->mapped ? const_cast<std::byte*>(b->data.data()) + b->map_offset : nullptr;
 }
 
-// Indexed binding points (GL 3.3 §2.11.4 for uniform buffers). Transform feedback is not
-// implemented: its target is GL_INVALID_ENUM.
-void GLAPIENTRY glBindBufferRange(GLenum target, GLuint index, GLuint name, GLintptr offset,
-                                  GLsizeiptr size) {
-  GL_CONTEXT();
+}  // extern "C"
+
+namespace {
+
+// Indexed binding points: uniform buffers (GL 3.3 §2.11.4) and transform feedback buffers
+// (§2.15.2). Each bind sets the target's generic binding too. `whole`: glBindBufferBase, the
+// whole buffer however large it becomes.
+void bind_indexed(Context& c, GLenum target, GLuint index, GLuint name, GLintptr offset, GLsizeiptr size,
+                  bool whole) {
   GL_OUTSIDE_BEGIN();
-  // Transform feedback has no binding points in Tessel (GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS
-  // is 0: it has no transform feedback), so every index is out of range (GL 3.3 §2.16).
-  if (target == GL_TRANSFORM_FEEDBACK_BUFFER) return c.error(GL_INVALID_VALUE);
-  if (target != GL_UNIFORM_BUFFER) return c.error(GL_INVALID_ENUM);
-  if (index >= GLuint(kMaxUniformBufferBindings)) return c.error(GL_INVALID_VALUE);
-  if (name != 0 && (size <= 0 || offset < 0 || offset % 16 != 0)) return c.error(GL_INVALID_VALUE);
+  const bool feedback = target == GL_TRANSFORM_FEEDBACK_BUFFER;
+  if (!feedback && target != GL_UNIFORM_BUFFER) return c.error(GL_INVALID_ENUM);
+  if (index >= GLuint(feedback ? glsl::kMaxFeedbackSeparateAttribs : kMaxUniformBufferBindings))
+    return c.error(GL_INVALID_VALUE);
+  if (feedback && c.feedback.active) return c.error(GL_INVALID_OPERATION);
+  // Feedback ranges are of whole words, uniform blocks start at GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT.
+  if (name != 0 && !whole &&
+      (size <= 0 || offset < 0 || offset % (feedback ? 4 : 16) != 0 || (feedback && size % 4 != 0)))
+    return c.error(GL_INVALID_VALUE);
   BufferRef obj;
   if (name != 0) {
     auto it = c.buffers.find(name);
@@ -383,19 +394,29 @@ void GLAPIENTRY glBindBufferRange(GLenum target, GLuint index, GLuint name, GLin
     obj = slot;
   }
   c.touch();
-  c.uniform_bindings[index] = {obj, obj ? offset : 0, obj ? size : 0};
-  c.uniform_buffer = obj;  // the generic binding too (GL 3.3 §2.11.4)
+  const Context::IndexedBuffer binding{obj, obj && !whole ? offset : 0, obj && !whole ? size : 0};
+  if (feedback) {
+    c.feedback_bindings[index] = binding;
+    c.feedback_buffer = obj;
+  } else {
+    c.uniform_bindings[index] = binding;
+    c.uniform_buffer = obj;
+  }
+}
+
+}  // namespace
+
+extern "C" {
+
+void GLAPIENTRY glBindBufferRange(GLenum target, GLuint index, GLuint name, GLintptr offset,
+                                  GLsizeiptr size) {
+  GL_CONTEXT();
+  bind_indexed(c, target, index, name, offset, size, false);
 }
 
 void GLAPIENTRY glBindBufferBase(GLenum target, GLuint index, GLuint name) {
   GL_CONTEXT();
-  if (target == GL_UNIFORM_BUFFER && index < GLuint(kMaxUniformBufferBindings) && name != 0) {
-    // The whole buffer, however large it becomes: size 0 reads to the end.
-    glBindBufferRange(target, index, name, 0, 1);
-    if (c.uniform_bindings[index].buffer) c.uniform_bindings[index].size = 0;
-    return;
-  }
-  glBindBufferRange(target, index, name, 0, 0);
+  bind_indexed(c, target, index, name, 0, 0, true);
 }
 
 // --- vertex array objects --------------------------------------------------------------

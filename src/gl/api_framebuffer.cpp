@@ -269,6 +269,7 @@ void clear_buffer(Context& c, GLenum buffer, GLint drawbuffer, glm::vec4 color, 
       break;
     default: return c.error(GL_INVALID_ENUM);
   }
+  if (c.rasterizer_discard) return;  // GL 3.3 §3.1: ClearBuffer* is ignored too
   c.touch();
   c.for_each_clear_layer(
       [&](int layer) { clear_buffer_layer(c, buffer, drawbuffer, color, depth, stencil, kind, layer); });

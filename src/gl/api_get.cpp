@@ -135,12 +135,12 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_MAX_VARYING_COMPONENTS:  // == GL_MAX_VARYING_FLOATS
     case GL_MAX_VERTEX_OUTPUT_COMPONENTS:
     case GL_MAX_FRAGMENT_INPUT_COMPONENTS: return n(64), true;
-    // What Tessel does not have reports none: dual-source blending and transform feedback
-    // (docs/gl-coverage.md).
     case GL_MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS:
-    case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS:
-    case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS:
-    case GL_TRANSFORM_FEEDBACK_BUFFER_BINDING:
+      return n(glsl::kMaxFeedbackInterleavedComponents), true;
+    case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS: return n(glsl::kMaxFeedbackSeparateAttribs), true;
+    case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS: return n(glsl::kMaxFeedbackSeparateComponents), true;
+    case GL_TRANSFORM_FEEDBACK_BUFFER_BINDING: return n(name_of(c.feedback_buffer)), true;
+    case GL_RASTERIZER_DISCARD: return b(c.rasterizer_discard), true;
     case GL_MAX_SERVER_WAIT_TIMEOUT: return n(0), true;  // glWaitSync returns at once
     case GL_MAX_INTEGER_SAMPLES:
     case GL_MAX_COLOR_TEXTURE_SAMPLES:
@@ -522,25 +522,23 @@ bool indexed_value(Context& c, GLenum pname, GLuint index, GLint64& out) {
     out = GLint64(c.sample_mask);
     return true;
   }
-  // The transform feedback binding points: none (see glBindBufferRange).
-  if (pname == GL_TRANSFORM_FEEDBACK_BUFFER_BINDING || pname == GL_TRANSFORM_FEEDBACK_BUFFER_START ||
-      pname == GL_TRANSFORM_FEEDBACK_BUFFER_SIZE) {
-    c.error(GL_INVALID_VALUE);
-    return false;
-  }
-  if (pname != GL_UNIFORM_BUFFER_BINDING && pname != GL_UNIFORM_BUFFER_START &&
+  const bool feedback = pname == GL_TRANSFORM_FEEDBACK_BUFFER_BINDING ||
+                        pname == GL_TRANSFORM_FEEDBACK_BUFFER_START ||
+                        pname == GL_TRANSFORM_FEEDBACK_BUFFER_SIZE;
+  if (!feedback && pname != GL_UNIFORM_BUFFER_BINDING && pname != GL_UNIFORM_BUFFER_START &&
       pname != GL_UNIFORM_BUFFER_SIZE) {
     c.error(GL_INVALID_ENUM);
     return false;
   }
-  if (index >= GLuint(kMaxUniformBufferBindings)) {
+  if (index >= GLuint(feedback ? glsl::kMaxFeedbackSeparateAttribs : kMaxUniformBufferBindings)) {
     c.error(GL_INVALID_VALUE);
     return false;
   }
-  const Context::IndexedBuffer& ib = c.uniform_bindings[index];
-  out = pname == GL_UNIFORM_BUFFER_BINDING ? GLint64(ib.buffer ? ib.buffer->name : 0)
-        : pname == GL_UNIFORM_BUFFER_START ? GLint64(ib.offset)
-                                           : GLint64(ib.size);
+  const Context::IndexedBuffer& ib = feedback ? c.feedback_bindings[index] : c.uniform_bindings[index];
+  out = pname == GL_UNIFORM_BUFFER_BINDING || pname == GL_TRANSFORM_FEEDBACK_BUFFER_BINDING
+            ? GLint64(ib.buffer ? ib.buffer->name : 0)
+        : pname == GL_UNIFORM_BUFFER_START || pname == GL_TRANSFORM_FEEDBACK_BUFFER_START ? GLint64(ib.offset)
+                                                                                          : GLint64(ib.size);
   return true;
 }
 

@@ -425,6 +425,8 @@ void GLAPIENTRY glLinkProgram(GLuint program) {
   GL_OUTSIDE_BEGIN();
   ProgramObject* p = program_of(c, program);
   if (!p) return;
+  // GL 3.3 §2.15.2: not the program transform feedback is capturing with.
+  if (c.feedback.active && program == c.current_program) return c.error(GL_INVALID_OPERATION);
   c.touch();
   std::vector<std::shared_ptr<glsl::Shader>> keep;
   std::vector<const glsl::Shader*> units;
@@ -446,6 +448,8 @@ void GLAPIENTRY glLinkProgram(GLuint program) {
     return;
   }
   glsl::LinkOptions options;
+  options.feedback_varyings = p->feedback_varyings;
+  options.feedback_separate = p->feedback_mode == GL_SEPARATE_ATTRIBS;
   options.attribute_locations = p->attribute_bindings;
   options.frag_data_locations = p->frag_data_bindings;
   options.frag_data_indices = p->frag_data_indices;
@@ -459,6 +463,7 @@ void GLAPIENTRY glLinkProgram(GLuint program) {
 void GLAPIENTRY glUseProgram(GLuint program) {
   GL_CONTEXT();
   GL_OUTSIDE_BEGIN();
+  if (c.feedback.active) return c.error(GL_INVALID_OPERATION);  // GL 3.3 §2.15.2
   std::shared_ptr<glsl::Program> exe;
   if (program != 0) {
     ProgramObject* p = program_of(c, program);
@@ -520,9 +525,12 @@ void GLAPIENTRY glGetProgramiv(GLuint program, GLenum pname, GLint* out) {
                        [](const glsl::UniformBlock& x) -> const std::string& { return x.name; })
             : 0;
       break;
-    case GL_TRANSFORM_FEEDBACK_BUFFER_MODE: v = GL_INTERLEAVED_ATTRIBS; break;
-    case GL_TRANSFORM_FEEDBACK_VARYINGS:
-    case GL_TRANSFORM_FEEDBACK_VARYING_MAX_LENGTH: v = 0; break;
+    // What glTransformFeedbackVaryings gave, linked or not yet, as Mesa reports it.
+    case GL_TRANSFORM_FEEDBACK_BUFFER_MODE: v = GLint(p->feedback_mode); break;
+    case GL_TRANSFORM_FEEDBACK_VARYINGS: v = GLint(p->feedback_varyings.size()); break;
+    case GL_TRANSFORM_FEEDBACK_VARYING_MAX_LENGTH:
+      v = max_name(p->feedback_varyings, [](const std::string& x) -> const std::string& { return x; });
+      break;
     // GL 3.3 §6.1.16: a program without a linked geometry shader has none of these.
     case GL_GEOMETRY_VERTICES_OUT:
     case GL_GEOMETRY_INPUT_TYPE:
@@ -579,6 +587,38 @@ void GLAPIENTRY glGetActiveAttrib(GLuint program, GLuint index, GLsizei size, GL
   if (!po) return;
   if (!po->usable() || index >= po->linked->attributes().size()) return c.error(GL_INVALID_VALUE);
   const glsl::Variable& v = po->linked->attributes()[index];
+  copy_out(v.name, size, length, name);
+  if (count) *count = v.size;
+  if (type) *type = v.type;
+}
+
+// GL 3.3 §2.11.8: the outputs transform feedback captures, set for the next link.
+void GLAPIENTRY glTransformFeedbackVaryings(GLuint program, GLsizei count, const GLchar* const* varyings,
+                                            GLenum mode) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  if (mode != GL_INTERLEAVED_ATTRIBS && mode != GL_SEPARATE_ATTRIBS) return c.error(GL_INVALID_ENUM);
+  ProgramObject* p = program_of(c, program);
+  if (!p) return;
+  if (count < 0 || (mode == GL_SEPARATE_ATTRIBS && count > glsl::kMaxFeedbackSeparateAttribs))
+    return c.error(GL_INVALID_VALUE);
+  if (c.feedback.active && program == c.current_program) return c.error(GL_INVALID_OPERATION);
+  if (count > 0 && !varyings) return;
+  std::vector<std::string> names;
+  for (GLsizei i = 0; i < count; ++i) names.emplace_back(varyings[i] ? varyings[i] : "");
+  p->feedback_varyings = std::move(names);
+  p->feedback_mode = mode;
+}
+
+void GLAPIENTRY glGetTransformFeedbackVarying(GLuint program, GLuint index, GLsizei size, GLsizei* length,
+                                              GLsizei* count, GLenum* type, GLchar* name) {
+  GL_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  ProgramObject* po = program_of(c, program);
+  if (!po) return;
+  if (size < 0) return c.error(GL_INVALID_VALUE);
+  if (!po->usable() || index >= po->linked->feedback_varyings().size()) return c.error(GL_INVALID_VALUE);
+  const glsl::FeedbackVarying& v = po->linked->feedback_varyings()[index];
   copy_out(v.name, size, length, name);
   if (count) *count = v.size;
   if (type) *type = v.type;

@@ -1,7 +1,6 @@
 // Query objects (GL 3.3 §2.14, §6.1.7): occlusion (GL_SAMPLES_PASSED, GL_ANY_SAMPLES_PASSED),
-// GL_PRIMITIVES_GENERATED, GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN (always 0: no transform
-// feedback), timer queries (GL_TIME_ELAPSED, glQueryCounter with GL_TIMESTAMP); conditional
-// rendering (§2.15); and sync objects (§5.2).
+// GL_PRIMITIVES_GENERATED, GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, timer queries (GL_TIME_ELAPSED,
+// glQueryCounter with GL_TIMESTAMP); conditional rendering (§2.15); and sync objects (§5.2).
 //
 // A query's counts come from the pipeline's counters (gpu::Context::stats) read when it begins
 // and when it ends, each after the work before it has run; the result is ready at the end.
@@ -127,7 +126,8 @@ void GLAPIENTRY glBeginQuery(GLenum target, GLuint id) {
     if (a == &q) return c.error(GL_INVALID_OPERATION);
   const tessel::gpu::Stats s = settled(c);
   q.start_samples = s.fragments_written;
-  q.start_primitives = s.primitives_in;
+  q.start_primitives = s.primitives_generated;
+  q.start_written = s.primitives_written;
   q.start_ns = now_ns();
   q.result = 0;
   c.active_queries[size_t(slot)] = &q;
@@ -143,9 +143,9 @@ void GLAPIENTRY glEndQuery(GLenum target) {
   switch (target) {
     case GL_SAMPLES_PASSED: q->result = s.fragments_written - q->start_samples; break;
     case GL_ANY_SAMPLES_PASSED: q->result = s.fragments_written != q->start_samples ? 1 : 0; break;
-    case GL_PRIMITIVES_GENERATED: q->result = s.primitives_in - q->start_primitives; break;
-    case GL_TIME_ELAPSED: q->result = now_ns() - q->start_ns; break;
-    default: q->result = 0; break;  // no transform feedback writes primitives
+    case GL_PRIMITIVES_GENERATED: q->result = s.primitives_generated - q->start_primitives; break;
+    case GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN: q->result = s.primitives_written - q->start_written; break;
+    default: q->result = now_ns() - q->start_ns; break;  // GL_TIME_ELAPSED
   }
   c.active_queries[size_t(slot)] = nullptr;
 }

@@ -26,6 +26,7 @@ bool* capability(Context& c, GLenum cap) {
     case GL_PROGRAM_POINT_SIZE: return &c.program_point_size;
     case GL_PRIMITIVE_RESTART: return &c.primitive_restart;
     case GL_DEPTH_CLAMP: return &c.depth_clamp;
+    case GL_RASTERIZER_DISCARD: return &c.rasterizer_discard;
     case GL_TEXTURE_CUBE_MAP_SEAMLESS: return &c.cube_map_seamless;
     case GL_AUTO_NORMAL: return &s.eval.auto_normal;
     case GL_LIGHTING: return &s.light.lighting;
@@ -102,6 +103,7 @@ bool core_capability(GLenum cap) {
     case GL_POLYGON_SMOOTH:
     case GL_PRIMITIVE_RESTART:
     case GL_PROGRAM_POINT_SIZE:
+    case GL_RASTERIZER_DISCARD:
     case GL_SAMPLE_ALPHA_TO_COVERAGE:
     case GL_SAMPLE_ALPHA_TO_ONE:
     case GL_SAMPLE_COVERAGE:

@@ -860,6 +860,7 @@ void Context::build_uniforms(FFUniforms& u, TextureObject* tex) const {
 
 gpu::RenderState Context::render_state(bool for_clear) const {
   gpu::RenderState r;
+  r.rasterizer_discard = rasterizer_discard;
   const TargetInfo target = target_info();
   r.viewport = {s.viewport.x, s.viewport.y, s.viewport.width, s.viewport.height};
   r.depth_near = float(s.viewport.near_);
@@ -1211,6 +1212,7 @@ glm::vec4 Context::clear_color_for(const TargetInfo& target, int i, glm::vec4 co
 }
 
 void Context::clear(GLbitfield mask) {
+  if (rasterizer_discard) return;  // GL 3.3 §3.1: Clear is ignored too
   touch();
   for_each_clear_layer([&](int layer) { clear_layer(mask, layer); });
 }

@@ -278,7 +278,7 @@ struct GenericDraw {
 // A query object (GL 3.3 §2.14): its target, and the counters when it began.
 struct QueryObject {
   GLenum target = 0;
-  uint64_t start_samples = 0, start_primitives = 0, start_ns = 0;
+  uint64_t start_samples = 0, start_primitives = 0, start_written = 0, start_ns = 0;
   uint64_t result = 0;
 };
 
@@ -536,6 +536,9 @@ class Context {
   std::unordered_map<GLsync, std::shared_ptr<void>> syncs;
   // Whether conditional rendering skips draws and clears now (its query counted nothing).
   bool conditional_render_skips();
+  // Whether a draw of `draw_mode` gives the primitives the active transform feedback writes
+  // (GL 3.3 §2.15.2), after the current program's geometry stage.
+  bool feedback_takes(GLenum draw_mode) const;
 
   // Framebuffer and renderbuffer objects (api_framebuffer.cpp). Names map to null until
   // first bound; draw_fbo/read_fbo null is the default (window) framebuffer.
@@ -685,6 +688,18 @@ class Context {
     GLsizeiptr size = 0;  // 0 with glBindBufferBase: the whole buffer
   };
   std::array<IndexedBuffer, kMaxUniformBufferBindings> uniform_bindings{};
+  // Transform feedback (GL 3.3 §2.15): the binding points, and what glBeginTransformFeedback
+  // set up (the program and buffers it captures with, kept while it is active).
+  BufferRef feedback_buffer;
+  std::array<IndexedBuffer, glsl::kMaxFeedbackSeparateAttribs> feedback_bindings{};
+  struct Feedback {
+    bool active = false;
+    GLenum mode = GL_POINTS;
+    std::shared_ptr<glsl::Program> program;
+    std::vector<BufferRef> buffers;
+    gpu::Capture capture;
+  } feedback;
+  bool rasterizer_discard = false;                                               // GL_RASTERIZER_DISCARD
   std::unordered_map<GLuint, std::unique_ptr<VertexArrayObject>> vertex_arrays;  // 0: the default
   GLuint next_vertex_array_name = 1;
   GLuint bound_vertex_array = 0;

@@ -443,7 +443,16 @@ void Context::run_program(ProgramRun run, const gpu::VertexLayout& layout, const
   // framebuffer render into layer 0.
   const glsl::GeometryInfo* gi = run.program.geometry();
   const int layers = gi && gi->writes_layer ? draw_layers() : 0;
+  gpu::DrawCall captured = call;
+  if (feedback.active && &run.program == feedback.program.get()) captured.capture = &feedback.capture;
   if (layers > 0) {
+    // Transform feedback captures the primitives once, in a run of their own.
+    if (captured.capture) {
+      gpu::RenderState discard = rs;
+      discard.rasterizer_discard = true;
+      run_program_layer(run, layout, captured, discard, 0);
+      if (rs.rasterizer_discard) return;
+    }
     rs.layer_count = layers;
     for (int layer = 0; layer < layers; ++layer) {
       rs.layer = layer;
@@ -451,7 +460,7 @@ void Context::run_program(ProgramRun run, const gpu::VertexLayout& layout, const
     }
     return;
   }
-  run_program_layer(run, layout, call, rs, 0);
+  run_program_layer(run, layout, captured, rs, 0);
 }
 
 void Context::run_program_layer(ProgramRun run, const gpu::VertexLayout& layout, const gpu::DrawCall& call,
@@ -715,6 +724,12 @@ void draw_generic_call(Context& c, GLenum mode, GLint first, GLsizei count, GLsi
   if (const glsl::GeometryInfo* gi = c.executable ? c.executable->geometry() : nullptr)
     if (d.decompose || !gpu::geometry_takes(gi->input_vertices, d.topology))
       return c.error(GL_INVALID_OPERATION);
+  // §2.15.2: the primitives must be those transform feedback writes, and its buffers unmapped.
+  if (c.feedback.active) {
+    if (!c.feedback_takes(mode)) return c.error(GL_INVALID_OPERATION);
+    for (const BufferRef& b : c.feedback.buffers)
+      if (b->mapped) return c.error(GL_INVALID_OPERATION);
+  }
   d.first = first;
   d.count = count;
   d.instances = instances;

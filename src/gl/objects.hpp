@@ -70,6 +70,9 @@ struct ProgramObject {
   std::map<std::string, int> attribute_bindings, frag_data_bindings;  // applied at link
   std::map<std::string, int> frag_data_indices;                       // glBindFragDataLocationIndexed
   std::shared_ptr<glsl::Program> linked;                              // the last link's result (ok() or not)
+  // glTransformFeedbackVaryings: applied at the next link (and what glGetProgramiv reports).
+  std::vector<std::string> feedback_varyings;
+  GLenum feedback_mode = GL_INTERLEAVED_ATTRIBS;
   std::string log;  // the last link's or validation's info log
   bool link_attempted = false, validated = false;
   bool delete_pending = false;

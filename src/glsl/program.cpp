@@ -110,6 +110,9 @@ struct Program::Impl {
   std::vector<Location> locations;
   std::map<std::string, int, std::less<>> uniform_names;  // slot name (and name[0]) -> location
   std::optional<GeometryInfo> geometry;
+  std::vector<FeedbackVarying> feedback;
+  std::vector<std::vector<int>> feedback_words;
+  bool feedback_separate = false;
   std::map<std::string, int, std::less<>> output_index;  // fragment output name -> index
   bool dual_source = false;
 };
@@ -456,6 +459,7 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
 
   // Varyings: matched by name; each matched fragment input gets consecutive slots.
   int slot = 0;
+  std::map<const Interface*, int> slot_of;  // where each of the producer's outputs is, when it has slots
   std::vector<const Interface*> pipeline_inputs;
   // Copies of n components between a stage's registers and varying components first.. of the
   // lane rows; a fragment input's components past n read zero.
@@ -528,6 +532,7 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
       break;
     }
     from_vertex(*o, slot, i.components);
+    slot_of[o] = slot;
     to_fragment(i, slot, i.components);
     const uint64_t bits = (i.components >= 64 ? ~uint64_t(0) : (uint64_t(1) << i.components) - 1) << slot;
     if (i.flat || i.base != Base::Float) linked->shape.flat |= bits;
@@ -552,12 +557,14 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
       const int at = take(1);
       if (at < 0) break;
       from_vertex(o, at, 1);
+      slot_of[&o] = at;
       (o.name == "gl_Layer" ? linked->shape.layer : linked->shape.primitive_id) = at;
       linked->shape.flat |= uint64_t(1) << at;
     } else if (o.name == "gl_PointSize") {
       const int at = take(1);
       if (at < 0) break;
       from_vertex(o, at, 1);
+      slot_of[&o] = at;
       linked->shape.point_size = at;
       linked->shape.flat |= uint64_t(1) << at;
     } else if (o.name == "gl_ClipDistance" && o.components > 0) {
@@ -565,6 +572,7 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
       const int at = take(n);
       if (at < 0) break;
       from_vertex(o, at, n);
+      if (n == o.components) slot_of[&o] = at;
       linked->shape.clip_distance = at;
       linked->shape.clip_distances = n;
     }
@@ -580,6 +588,84 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
       const int n = std::min(i->components, linked->shape.clip_distances);
       to_fragment(*i, linked->shape.clip_distance, n);
     }
+  }
+  // Transform feedback (GL 3.3 §2.11.8): each captured output of the producer keeps the
+  // slots it has, or gets its own, and each buffer's words name them.
+  if (!options.feedback_varyings.empty()) {
+    const bool separate = options.feedback_separate;
+    std::set<std::string> seen;
+    int total = 0;
+    m.feedback_words.assign(separate ? options.feedback_varyings.size() : 1, {});
+    for (size_t v = 0; v < options.feedback_varyings.size(); ++v) {
+      const std::string& full = options.feedback_varyings[v];
+      std::vector<int>& words = m.feedback_words[separate ? v : 0];
+      if (!seen.insert(full).second) {
+        error("Transform feedback varying " + full + " specified more than once.");
+        continue;
+      }
+      // "name" or "name[index]".
+      std::string name = full;
+      int index = -1;
+      if (const size_t open = full.find('['); open != std::string::npos) {
+        const std::string digits = full.substr(open + 1, full.size() - open - 2);
+        if (full.back() != ']' || digits.empty() || digits.size() > 6 ||
+            digits.find_first_not_of("0123456789") != std::string::npos) {
+          error("Transform feedback varying " + full + " undeclared.");
+          continue;
+        }
+        name = full.substr(0, open);
+        index = std::stoi(digits);
+      }
+      const Interface* o = nullptr;
+      for (const Interface& c : producer.outputs)
+        if (c.name == name && !c.block) o = &c;
+      if (name == "gl_Position" && o) {
+        if (index >= 0) {
+          error("Transform feedback varying " + full + " undeclared.");
+          continue;
+        }
+        for (int c = 0; c < 4; ++c) words.push_back(gpu::kCapturePosition - c);
+        m.feedback.push_back({full, 0x8B52 /* GL_FLOAT_VEC4 */, 1});
+        total += 4;
+        continue;
+      }
+      if (!o) {
+        error("Transform feedback varying " + full + " undeclared.");
+        continue;
+      }
+      if (index >= 0 && o->array_size == 0) {
+        error("Transform feedback varying " + full + " undeclared.");
+        continue;
+      }
+      if (index >= 0 && index >= o->array_size) {
+        error("Transform feedback varying " + full + " has index " + std::to_string(index) +
+              ", but the array size is " + std::to_string(o->array_size) + ".");
+        continue;
+      }
+      auto at = slot_of.find(o);
+      if (at == slot_of.end()) {
+        const int first = take(o->components);
+        if (first < 0) break;
+        from_vertex(*o, first, o->components);
+        if (o->base != Base::Float)
+          linked->shape.flat |= (o->components >= 64 ? ~uint64_t(0) : (uint64_t(1) << o->components) - 1)
+                                << first;
+        at = slot_of.emplace(o, first).first;
+      }
+      const int per = o->array_size ? o->components / o->array_size : o->components;
+      const int from = index >= 0 ? at->second + index * per : at->second;
+      const int n = index >= 0 ? per : o->components;
+      for (int c = 0; c < n; ++c) words.push_back(from + c);
+      m.feedback.push_back({full, o->gl_type, index >= 0 ? 1 : std::max(1, o->array_size)});
+      total += n;
+      if (separate && n > kMaxFeedbackSeparateComponents)
+        error("Transform feedback varying " + full + " exceeds the maximum of " +
+              std::to_string(kMaxFeedbackSeparateComponents) + " components in separate mode.");
+    }
+    if (!separate && total > kMaxFeedbackInterleavedComponents)
+      error("Too many feedback components in interleaved mode: " + std::to_string(total) +
+            ", the maximum is " + std::to_string(kMaxFeedbackInterleavedComponents) + ".");
+    m.feedback_separate = separate;
   }
   linked->shape.varyings = slot;
 
@@ -854,6 +940,9 @@ bool Program::wait_native() const {
 const std::string& Program::info_log() const { return impl_->log; }
 const std::vector<Variable>& Program::attributes() const { return impl_->attributes; }
 const GeometryInfo* Program::geometry() const { return impl_->geometry ? &*impl_->geometry : nullptr; }
+const std::vector<FeedbackVarying>& Program::feedback_varyings() const { return impl_->feedback; }
+bool Program::feedback_separate() const { return impl_->feedback_separate; }
+const std::vector<std::vector<int>>& Program::feedback_words() const { return impl_->feedback_words; }
 bool Program::dual_source() const { return impl_->dual_source; }
 int Program::frag_data_index(std::string_view name) const {
   auto it = impl_->output_index.find(name);

@@ -3,6 +3,7 @@
 // chunks and runs the geometry and raster phases on the worker pool.
 #include <algorithm>
 #include <atomic>
+#include <cstring>
 #include <string>
 #include <thread>
 
@@ -68,11 +69,64 @@ TargetView Context::make_target() const {
 
 bool Context::has_pending() const { return !frame_->commands.empty(); }
 
+namespace {
+
+// A draw's transform feedback: what its chunks captured, written in chunk order while every
+// buffer has room for the whole primitive (GL 3.3 §2.15.2). Returns the primitives written.
+uint64_t write_capture(Capture& cap, std::vector<uint32_t>* chunks, size_t nchunks) {
+  const size_t verts = size_t(prim_size(cap.mode));
+  size_t per_vertex = 0;
+  for (const CaptureBuffer& b : cap.buffers) per_vertex += b.words.size();
+  std::byte* base[kMaxCaptureBuffers] = {};
+  size_t end[kMaxCaptureBuffers] = {};
+  for (size_t i = 0; i < cap.buffers.size(); ++i) {
+    CaptureBuffer& b = cap.buffers[i];
+    base[i] = b.buffer->writable();  // the buffer's readers queued elsewhere run first
+    end[i] = std::min(b.end, b.buffer->size());
+  }
+  uint64_t written = 0;
+  for (size_t c = 0; c < nchunks; ++c) {
+    const uint32_t* src = chunks[c].data();
+    const size_t prims = per_vertex ? chunks[c].size() / (per_vertex * verts) : 0;
+    for (size_t p = 0; p < prims; ++p, src += per_vertex * verts) {
+      bool fits = cap.overflowed == 0;
+      for (size_t i = 0; i < cap.buffers.size() && fits; ++i) {
+        const CaptureBuffer& b = cap.buffers[i];
+        fits = b.offset <= end[i] && (end[i] - b.offset) / 4 >= b.words.size() * verts;
+      }
+      if (!fits) {
+        ++cap.overflowed;
+        continue;
+      }
+      for (size_t v = 0; v < verts; ++v) {
+        const uint32_t* word = src + v * per_vertex;
+        for (size_t i = 0; i < cap.buffers.size(); ++i) {
+          CaptureBuffer& b = cap.buffers[i];
+          std::memcpy(base[i] + b.offset, word, b.words.size() * 4);
+          b.offset += b.words.size() * 4;
+          word += b.words.size();
+        }
+      }
+      ++written;
+    }
+    chunks[c].clear();
+  }
+  cap.written += written;
+  return written;
+}
+
+}  // namespace
+
 void Context::flush() {
   Frame& fr = *frame_;
   if (fr.commands.empty()) return;
   // 1. Chunks, numbered in submission order.
   fr.chunks.clear();
+  struct CaptureRange {
+    Capture* capture;
+    size_t first, count;  // chunks
+  };
+  std::vector<CaptureRange> captures;
   for (uint32_t c = 0; c < fr.commands.size(); ++c) {
     const Command& cmd = fr.commands[c];
     if (cmd.clear) {
@@ -80,10 +134,22 @@ void Context::flush() {
       continue;
     }
     const DrawRecord& d = *fr.draws[cmd.index];
+    const size_t first_chunk = fr.chunks.size();
     for (uint32_t inst = 0; inst < d.instance_count; ++inst)
       for (uint32_t b = 0; b < d.prim_count; b += kChunkPrims)
         fr.chunks.push_back({c, d.base_instance + inst, b, std::min(d.prim_count, b + kChunkPrims)});
+    if (d.capture) captures.push_back({d.capture, first_chunk, fr.chunks.size() - first_chunk});
   }
+  if (fr.captured.size() < fr.chunks.size()) fr.captured.resize(fr.chunks.size());
+  run_frame();
+  // Transform feedback is written once the frame's work is done and no longer queued, so
+  // that the writes (which flush whatever reads the buffers first) find nothing of it.
+  for (const CaptureRange& r : captures)
+    stats_.primitives_written += write_capture(*r.capture, fr.captured.data() + r.first, r.count);
+}
+
+void Context::run_frame() {
+  Frame& fr = *frame_;
   fr.tiles_x = (fr.target.width + kTileSize - 1) / kTileSize;
   fr.tiles_y = (fr.target.height + kTileSize - 1) / kTileSize;
   const int ntiles = fr.tiles_x * fr.tiles_y;
@@ -136,6 +202,7 @@ void Context::flush() {
     stats_.fragments_shaded += c.fragments_shaded;
     stats_.fragments_written += c.fragments_written;
     stats_.fragments_rejected += c.fragments_rejected;
+    stats_.primitives_generated += c.primitives_generated;
   }
 }
 }  // namespace tessel::gpu

@@ -264,6 +264,10 @@ struct Context::Frame {
   void process_chunk(Worker& w, uint32_t chunk_index);
   void process_draw_chunk(Worker& w, uint32_t chunk_index, const Chunk& ch, const DrawRecord& d);
   void run_geometry(Worker& w, const Chunk& ch, const DrawRecord& d, uint32_t nprims);
+  void capture(uint32_t chunk_index, const DrawRecord& d, Topology topo, uint32_t nprims,
+               const uint32_t* slots, const glm::vec4* pos, const float* vars, uint32_t first_prim);
+  // Transform feedback's words of each chunk (empty for the chunks of draws without it).
+  std::vector<std::vector<uint32_t>> captured;
   void assemble(Worker& w, uint32_t chunk_index, const DrawRecord& d, Topology topo, uint32_t nprims,
                 const uint32_t* slots, size_t nv, const glm::vec4* pos, const float* vars, const float* soa,
                 const uint32_t* prim_ids, uint32_t first_prim);

@@ -117,13 +117,50 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
     const int out = prim_size(d.program->geometry_output == Topology::TriangleStrip ? Topology::Triangles
                               : d.program->geometry_output == Topology::LineStrip   ? Topology::Lines
                                                                                     : Topology::Points);
-    assemble(w, chunk_index, d, list_topology(out), uint32_t(w.gs_slots.size() / size_t(out)),
-             w.gs_slots.data(), w.gs_pos.size(), w.gs_pos.data(), w.gs_vars.data(), w.gs_soa.data(),
-             w.gs_prim_ids.data(), 0);
+    const uint32_t n_out = uint32_t(w.gs_slots.size() / size_t(out));
+    if (d.capture)
+      capture(chunk_index, d, list_topology(out), n_out, w.gs_slots.data(), w.gs_pos.data(), w.gs_vars.data(),
+              0);
+    if (d.raster)
+      assemble(w, chunk_index, d, list_topology(out), n_out, w.gs_slots.data(), w.gs_pos.size(),
+               w.gs_pos.data(), w.gs_vars.data(), w.gs_soa.data(), w.gs_prim_ids.data(), 0);
     return;
   }
-  assemble(w, chunk_index, d, d.topology, nprims, w.prim_slots.data(), nv, w.pos.data(), w.vars.data(),
-           w.soa.data(), nullptr, ch.begin);
+  w.counters.primitives_generated += nprims;
+  if (d.capture)
+    capture(chunk_index, d, d.topology, nprims, w.prim_slots.data(), w.pos.data(), w.vars.data(), ch.begin);
+  if (d.raster)
+    assemble(w, chunk_index, d, d.topology, nprims, w.prim_slots.data(), nv, w.pos.data(), w.vars.data(),
+             w.soa.data(), nullptr, ch.begin);
+}
+
+// Transform feedback of a chunk's primitives (nprims of topology `topo`, prim_size(topo)
+// vertex slots each, in prim_elements' order): each vertex's captured words, in the order
+// GL writes them, into the chunk's own list; flush() writes the lists to the buffers in chunk
+// order. Strip and fan triangles are listed as prim_elements gives them, and with the
+// first-vertex convention turned to start at their provoking vertex, as llvmpipe writes them.
+void Context::Frame::capture(uint32_t chunk_index, const DrawRecord& d, Topology topo, uint32_t nprims,
+                             const uint32_t* slots, const glm::vec4* pos, const float* vars,
+                             uint32_t first_prim) {
+  const int K = d.program->varyings;
+  const int ps = prim_size(topo);
+  const bool first = d.state.provoking_first;
+  size_t per_vertex = 0;
+  for (const CaptureBuffer& b : d.capture->buffers) per_vertex += b.words.size();
+  std::vector<uint32_t>& out = captured[chunk_index];
+  out.resize(size_t(nprims) * size_t(ps) * per_vertex);
+  uint32_t* o = out.data();
+  for (uint32_t p = 0; p < nprims; ++p) {
+    const uint32_t* s = slots + size_t(p) * ps;
+    const int rot = ps == 3 && first ? provoking_element(topo, first_prim + p, true) : 0;
+    for (int k = 0; k < ps; ++k) {
+      const uint32_t v = s[(k + rot) % ps];
+      for (const CaptureBuffer& b : d.capture->buffers)
+        for (const int src : b.words)
+          std::memcpy(o++, src >= 0 ? &vars[size_t(v) * K + size_t(src)] : &pos[v][kCapturePosition - src],
+                      4);
+    }
+  }
 }
 
 // The geometry stage over the chunk's primitives, sixteen a call: what they emit becomes the
@@ -181,6 +218,8 @@ void Context::Frame::run_geometry(Worker& w, const Chunk& ch, const DrawRecord& 
         for (int k = 0; k < K; ++k) w.gs_vars.push_back(row[size_t(4 + k) * L]);
       }
       auto add = [&](std::initializer_list<uint32_t> vs, uint32_t provoking) {
+        // Counted once for a draw run a layer at a time: in its first layer's run.
+        if (d.state.layer <= 0) ++w.counters.primitives_generated;
         if (layer_var >= 0) {
           uint32_t layer;
           std::memcpy(&layer, &w.gs_vars[size_t(base + provoking) * K + size_t(layer_var)], 4);

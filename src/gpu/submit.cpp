@@ -226,6 +226,7 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
     max_id = call.first + call.count - 1;
   }
   validate_vertex_range(layout, max_id, call.base_instance + call.instance_count, required_attribs);
+  if (call.capture) check_capture(*call.capture, *d);
   d->prim_count = prim_count(d->topology, d->count);
   if (d->prim_count == 0) return;
   // One draw runs as one frame, so its size bounds the frame's memory: at most 2^13 chunks
@@ -273,7 +274,13 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   d->area_y0 = area.y;
   d->area_x1 = area.x + area.width;
   d->area_y1 = area.y + area.height;
-  if (area.width <= 0 || area.height <= 0) return;
+  d->raster = area.width > 0 && area.height > 0 && !state.rasterizer_discard;
+  d->capture = call.capture;
+  if (!d->raster && !d->capture && !gs_input) {
+    // Nothing to run: only the primitives to count.
+    stats_.primitives_generated += uint64_t(d->prim_count) * d->instance_count;
+    return;
+  }
   d->depth_float = d->target.depth && d->target.depth_format == Format::Depth32F;
   d->depth_resolution = 1.0f / 16777216.0f;  // 2^-24 for 24-bit depth
   d->early_depth = !d->program->discards && !d->program->writes_depth;
@@ -286,6 +293,34 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   frame_->pending_prims += uint64_t(d->prim_count) * d->instance_count;
   frame_->commands.push_back({false, uint32_t(frame_->draws.size())});
   frame_->draws.push_back(std::move(d));
-  if (frame_->pending_prims > kMaxPendingPrims) flush();
+  if (frame_->pending_prims > kMaxPendingPrims || call.capture) flush();
+}
+
+// A transform feedback request that the draw `d` (its program and topology set) can serve.
+void Context::check_capture(const Capture& cap, const DrawRecord& d) const {
+  if (cap.mode != Topology::Points && cap.mode != Topology::Lines && cap.mode != Topology::Triangles)
+    throw Error("draw: transform feedback writes points, lines or triangles, not topology " +
+                std::to_string(int(cap.mode)));
+  if (cap.buffers.empty() || cap.buffers.size() > size_t(kMaxCaptureBuffers))
+    throw Error("draw: transform feedback needs 1 to " + std::to_string(kMaxCaptureBuffers) +
+                " buffers, not " + std::to_string(cap.buffers.size()));
+  const ProgramBase& prog = *d.program;
+  const Topology out = prog.geometry_input ? prog.geometry_output : d.topology;
+  const int size = out == Topology::TriangleStrip ? 3 : out == Topology::LineStrip ? 2 : prim_size(out);
+  if (size != prim_size(cap.mode))
+    throw Error("draw: the draw gives primitives of " + std::to_string(size) +
+                " vertices, but transform feedback writes primitives of " +
+                std::to_string(prim_size(cap.mode)));
+  for (size_t i = 0; i < cap.buffers.size(); ++i) {
+    const CaptureBuffer& b = cap.buffers[i];
+    if (!b.buffer) throw Error("draw: transform feedback buffer " + std::to_string(i) + " is null");
+    if (b.offset % 4)
+      throw Error("draw: transform feedback buffer " + std::to_string(i) + " offset is not 4-aligned");
+    for (const int w : b.words)
+      if (w >= prog.varyings || w < kCapturePosition - 3)
+        throw Error("draw: transform feedback word source " + std::to_string(w) +
+                    " is not one of the program's " + std::to_string(prog.varyings) +
+                    " varying components or its position");
+  }
 }
 }  // namespace tessel::gpu

@@ -15,15 +15,21 @@ inline GLint get_int(GLenum name) {
   return v[0];
 }
 
+// A shader object compiled from one source.
+inline GLuint shader(GLenum type, const char* src) {
+  GLuint s = glCreateShader(type);
+  glShaderSource(s, 1, &src, nullptr);
+  glCompileShader(s);
+  return s;
+}
+
 // Compiles and links a vertex and a fragment shader; the shaders are deleted (the program
 // keeps them attached until it goes).
 inline GLuint program(const char* vs, const char* fs) {
   GLuint p = glCreateProgram();
   for (auto [type, src] :
        {std::pair{GLenum(GL_VERTEX_SHADER), vs}, std::pair{GLenum(GL_FRAGMENT_SHADER), fs}}) {
-    GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &src, nullptr);
-    glCompileShader(s);
+    GLuint s = shader(type, src);
     glAttachShader(p, s);
     glDeleteShader(s);
   }

@@ -1106,10 +1106,25 @@ TEST_F(GL33CoreTest, RandomCallSequenceNeverCrashes) {
   auto pick = [&](int n) { return int(rng() % unsigned(n)); };
   auto name = [&]() { return GLuint(pick(4)); };
   const GLuint p = program(kVs, kFs);
+  // The same program capturing its position and a point size (transform feedback).
+  const GLuint tf = glCreateProgram();
+  {
+    const char* vs =
+        "#version 330\nlayout(location = 0) in vec2 pos;\nout float size;\n"
+        "void main() { size = pos.x; gl_Position = vec4(pos, 0.0, 1.0); }\n";
+    const char* names[] = {"gl_Position", "size"};
+    const GLuint v = gl33test::shader(GL_VERTEX_SHADER, vs), f = gl33test::shader(GL_FRAGMENT_SHADER, kFs);
+    glAttachShader(tf, v);
+    glAttachShader(tf, f);
+    glDeleteShader(v);
+    glDeleteShader(f);
+    glTransformFeedbackVaryings(tf, 2, names, (rng() & 1) ? GL_SEPARATE_ATTRIBS : GL_INTERLEAVED_ATTRIBS);
+    glLinkProgram(tf);
+  }
   std::vector<unsigned char> bytes(256);
   for (auto& b : bytes) b = static_cast<unsigned char>(rng());
-  const GLenum targets[] = {GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER, GL_UNIFORM_BUFFER, GL_COPY_READ_BUFFER,
-                            0x1234};
+  const GLenum targets[] = {GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER, GL_UNIFORM_BUFFER,
+                            GL_TRANSFORM_FEEDBACK_BUFFER, 0x1234};
   const GLenum types[] = {GL_FLOAT,      GL_UNSIGNED_BYTE,      GL_SHORT,       GL_INT, GL_DOUBLE,
                           GL_HALF_FLOAT, GL_INT_2_10_10_10_REV, GL_UNSIGNED_INT};
   const GLenum modes[] = {GL_POINTS,         GL_LINES, GL_LINE_LOOP, GL_TRIANGLES,
@@ -1129,7 +1144,7 @@ TEST_F(GL33CoreTest, RandomCallSequenceNeverCrashes) {
   int drawn = 0;  // draws without an error
   for (int i = 0; i < 4000; ++i) {
     const GLenum target = targets[pick(5)];
-    const int call = pick(22);
+    const int call = pick(26);
     if (call >= 13 && call <= 16) (void)glGetError();
     switch (call) {
       case 0: {
@@ -1185,11 +1200,22 @@ TEST_F(GL33CoreTest, RandomCallSequenceNeverCrashes) {
         glBindBufferRange(GL_UNIFORM_BUFFER, GLuint(pick(40)), name(), pick(64) - 8, pick(64) - 8);
         break;
       case 20: pick(2) ? glEnable(GL_PRIMITIVE_RESTART) : glPrimitiveRestartIndex(GLuint(pick(4))); break;
+      case 22:
+        if (pick(2))
+          glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, GLuint(pick(5)), name());
+        else
+          glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, GLuint(pick(5)), name(), 4 * pick(8) - 4,
+                            4 * pick(16) - 4);
+        break;
+      case 23: pick(3) ? glBeginTransformFeedback(modes[pick(8)]) : glEndTransformFeedback(); break;
+      case 24: glUseProgram(tf); break;
+      case 25: (pick(2) ? glEnable : glDisable)(GL_RASTERIZER_DISCARD); break;
       default: glVertexAttrib4f(GLuint(pick(18)), 1.0f, 2.0f, 3.0f, 4.0f); break;
     }
     if (call >= 13 && call <= 16 && glGetError() == GL_NO_ERROR) ++drawn;
   }
   EXPECT_GT(drawn, 10);  // the sequence reaches the pipeline, not only the checks
+  glEndTransformFeedback();
   glFinish();
   while (glGetError() != GL_NO_ERROR) {
   }

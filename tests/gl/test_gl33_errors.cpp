@@ -1463,8 +1463,7 @@ TEST_F(GL33ErrorsTest, IndexedAndPlainGetErrorsWriteNothing) {
   EXPECT_GL_ERR(glGetStringi(GL_VENDOR, 0), GL_INVALID_ENUM);
   const GLuint extensions = GLuint(get_int(GL_NUM_EXTENSIONS));
   EXPECT_GL_ERR(glGetStringi(GL_EXTENSIONS, extensions), GL_INVALID_VALUE);
-  // State GL 3.3 has (tables 6.x). Tessel reports zero for the limits of what it lacks
-  // (DISABLED_MinimumsOfWhatTesselLacks).
+  // State GL 3.3 has (tables 6.x).
   for (GLenum name :
        {GL_BLEND_SRC_RGB, GL_BLEND_DST_RGB, GL_SAMPLE_BUFFERS, GL_SAMPLES, GL_SAMPLE_COVERAGE_VALUE,
         GL_SAMPLE_COVERAGE_INVERT, GL_PROVOKING_VERTEX, GL_TEXTURE_BINDING_2D_MULTISAMPLE,
@@ -1711,8 +1710,139 @@ TEST_F(GL33ErrorsTest, ProvokingVertexAndLogicOpErrors) {
   glLogicOp(GL_COPY);
 }
 
-TEST_F(GL33ErrorsTest, DISABLED_MinimumsOfWhatTesselLacks) {
+// GL 3.3 Table 6.57's minimums of transform feedback; Tessel gives llvmpipe's values.
+TEST_F(GL33ErrorsTest, TransformFeedbackLimits) {
   EXPECT_GE(get_int(GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS), 4);
+  EXPECT_GE(get_int(GL_MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS), 64);
+  EXPECT_GE(get_int(GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS), 4);
+}
+
+// Transform feedback (GL 3.3 §2.11.8, §2.15): every case below gives the error Mesa 22.3
+// gives to the same calls (an EGL probe), and changes nothing: the link errors leave the
+// program unlinked, the failed begins leave feedback inactive, the failed binds the bindings.
+TEST_F(GL33ErrorsTest, TransformFeedbackErrors) {
+  const char* vs =
+      "#version 330 core\nout vec4 v; out float f; out float arr[3];\n"
+      "void main() { v = vec4(gl_VertexID); f = 0.5 * float(gl_VertexID); arr[0] = arr[1] = arr[2] = f;\n"
+      "  gl_Position = vec4(0.0, 0.0, 0.0, 1.0); }\n";
+  const char* fs = "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
+  auto link_with = [&](std::vector<const char*> names, GLenum mode) {
+    const GLuint p = glCreateProgram();
+    const GLuint v = gl33test::shader(GL_VERTEX_SHADER, vs), f = gl33test::shader(GL_FRAGMENT_SHADER, fs);
+    glAttachShader(p, v);
+    glAttachShader(p, f);
+    glTransformFeedbackVaryings(p, GLsizei(names.size()), names.data(), mode);
+    glLinkProgram(p);
+    glDeleteShader(v);
+    glDeleteShader(f);
+    return p;
+  };
+  auto linked = [](GLuint p) {
+    GLint ok = -1;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    return ok;
+  };
+  // Link errors: undeclared, twice, an index past the array, a member of a vector.
+  for (std::vector<const char*> bad :
+       {std::vector<const char*>{"nope"}, {"f", "f"}, {"arr[3]"}, {"v", "v.x"}}) {
+    const GLuint p = link_with(bad, GL_INTERLEAVED_ATTRIBS);
+    EXPECT_EQ(linked(p), GL_FALSE) << bad.back();
+    glDeleteProgram(p);
+  }
+  const GLuint sep = link_with({"v", "f"}, GL_SEPARATE_ATTRIBS);
+  ASSERT_EQ(linked(sep), GL_TRUE);
+  GLint v = -1;
+  glGetProgramiv(sep, GL_TRANSFORM_FEEDBACK_BUFFER_MODE, &v);
+  EXPECT_EQ(v, GL_SEPARATE_ATTRIBS);
+  glGetProgramiv(sep, GL_TRANSFORM_FEEDBACK_VARYINGS, &v);
+  EXPECT_EQ(v, 2);
+  glGetProgramiv(sep, GL_TRANSFORM_FEEDBACK_VARYING_MAX_LENGTH, &v);
+  EXPECT_EQ(v, 2);
+  char name[16] = "?";
+  GLsizei length = -1, size = -1;
+  GLenum type = 0;
+  EXPECT_GL_ERR(glGetTransformFeedbackVarying(sep, 0, sizeof name, &length, &size, &type, name), GL_NO_ERROR);
+  EXPECT_STREQ(name, "v");
+  EXPECT_EQ(type, GLenum(GL_FLOAT_VEC4));
+  EXPECT_GL_ERR(glGetTransformFeedbackVarying(sep, 2, sizeof name, &length, &size, &type, name),
+                GL_INVALID_VALUE);
+  EXPECT_EQ(length, 1);  // unchanged
+  const char* five[] = {"f", "f", "f", "f", "f"};
+  EXPECT_GL_ERR(glTransformFeedbackVaryings(sep, 5, five, GL_SEPARATE_ATTRIBS), GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glTransformFeedbackVaryings(sep, 1, five, GL_FLOAT), GL_INVALID_ENUM);
+  EXPECT_GL_ERR(glTransformFeedbackVaryings(sep, -1, five, GL_INTERLEAVED_ATTRIBS), GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glTransformFeedbackVaryings(9999, 1, five, GL_INTERLEAVED_ATTRIBS), GL_INVALID_VALUE);
+  glGetProgramiv(sep, GL_TRANSFORM_FEEDBACK_VARYINGS, &v);
+  EXPECT_EQ(v, 2);
+
+  // Binding points: past the four, misaligned, empty; the bindings stay as they were.
+  GLuint b[2];
+  glGenBuffers(2, b);
+  glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, b[0]);
+  glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, 64, nullptr, GL_STATIC_READ);
+  glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, b[1]);
+  glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, 64, nullptr, GL_STATIC_READ);
+  EXPECT_GL_ERR(glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, b[0], 0, 16), GL_NO_ERROR);
+  EXPECT_GL_ERR(glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, b[1], 4, 0), GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, b[1], -4, 8), GL_INVALID_VALUE);
+  EXPECT_GL_ERR(glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 4, b[1], 0, 8), GL_INVALID_VALUE);
+  GLint64 v64 = -1;
+  glGetInteger64i_v(GL_TRANSFORM_FEEDBACK_BUFFER_BINDING, 0, &v64);
+  EXPECT_EQ(v64, GLint64(b[0]));
+  glGetInteger64i_v(GL_TRANSFORM_FEEDBACK_BUFFER_SIZE, 0, &v64);
+  EXPECT_EQ(v64, 16);
+  EXPECT_EQ(get_int(GL_TRANSFORM_FEEDBACK_BUFFER_BINDING), GLint(b[0]));  // the generic binding too
+
+  // Begin: a bad mode before anything else; no program; a program capturing nothing; a
+  // buffer missing for a separate attribute.
+  EXPECT_GL_ERR(glBeginTransformFeedback(GL_POINTS), GL_INVALID_OPERATION);
+  const GLuint plain = program("#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n", fs);
+  glUseProgram(plain);
+  EXPECT_GL_ERR(glBeginTransformFeedback(GL_POINTS), GL_INVALID_OPERATION);
+  glUseProgram(sep);
+  EXPECT_GL_ERR(glBeginTransformFeedback(GL_POINTS), GL_INVALID_OPERATION);  // binding 1 is empty
+  EXPECT_GL_ERR(glBeginTransformFeedback(GL_TRIANGLE_STRIP), GL_INVALID_ENUM);
+  EXPECT_GL_ERR(glEndTransformFeedback(), GL_INVALID_OPERATION);
+  glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 1, b[1], 0, 8);
+  EXPECT_GL_ERR(glBeginTransformFeedback(GL_POINTS), GL_NO_ERROR);
+  // While active: begin again, another program, relinking, rebinding, new varyings; a draw
+  // of other primitives. Generic binds and buffer data are allowed.
+  EXPECT_GL_ERR(glBeginTransformFeedback(GL_POINTS), GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glUseProgram(plain), GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glUseProgram(0), GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glLinkProgram(sep), GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, b[1]), GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glTransformFeedbackVaryings(sep, 1, five, GL_INTERLEAVED_ATTRIBS), GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, b[0]), GL_NO_ERROR);
+  EXPECT_EQ(get_int(GL_CURRENT_PROGRAM), GLint(sep));
+  EXPECT_GL_ERR(glDrawArrays(GL_LINES, 0, 4), GL_INVALID_OPERATION);
+  EXPECT_GL_ERR(glDrawArrays(GL_POINTS, 0, 5), GL_NO_ERROR);
+  EXPECT_GL_ERR(glEndTransformFeedback(), GL_NO_ERROR);
+  EXPECT_GL_ERR(glEndTransformFeedback(), GL_INVALID_OPERATION);
+  // Four vertices fit buffer 0's 16 bytes... one vec4: one point was written, whole, in both.
+  float out[4] = {-1, -1, -1, -1};
+  glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, b[1]);
+  glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 8, out);
+  EXPECT_EQ(out[0], 0.0f);
+  EXPECT_EQ(out[1], 0.0f);  // the second point did not fit buffer 0, so nothing of it here
+
+  // GL_RASTERIZER_DISCARD: a capability of the core profile, and clears are ignored under it.
+  EXPECT_GL_ERR(glEnable(GL_RASTERIZER_DISCARD), GL_NO_ERROR);
+  EXPECT_EQ(glIsEnabled(GL_RASTERIZER_DISCARD), GL_TRUE);
+  glClearColor(1, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  const GLfloat blue[4] = {0, 0, 1, 1};
+  glClearBufferfv(GL_COLOR, 0, blue);
+  glDisable(GL_RASTERIZER_DISCARD);
+  GLubyte px[4] = {9, 9, 9, 9};
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  EXPECT_EQ(px[0], 0);
+  EXPECT_EQ(px[2], 0);
+  glUseProgram(0);
+  glDeleteProgram(sep);
+  glDeleteProgram(plain);
+  glDeleteBuffers(2, b);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 // Dual-source blending (GL 3.3 §3.9.2, §4.1.8): one dual-source draw buffer; an index-1 output

@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+
+#include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -245,6 +248,97 @@ TEST(Glsl, DrawsAndIsIdenticalForAnyThreadCount) {
   const float* px = &a.outputs[0][size_t((11 * 37 + 18) * 4)];
   EXPECT_NEAR(px[0], 18.5f / 37.0f, 1e-5f);
   EXPECT_NEAR(px[1], 11.5f / 23.0f, 1e-5f);
+}
+
+// Transform feedback through the gpu layer (gpu::Capture): a triangle strip of several chunks
+// and three instances, written as independent triangles in draw order (odd strip triangles
+// as (i + 1, i, i + 2), each instance after the one before), the same bytes for any thread
+// count; a buffer too small takes the primitives that fit whole and no byte past its range;
+// with the rasterizer discarding, nothing is drawn.
+TEST(Glsl, TransformFeedbackCapturesInDrawOrderForAnyThreadCount) {
+  auto v = Shader::compile(Stage::Vertex, R"(#version 330
+flat out int id;
+out float half_id;
+void main() {
+  id = gl_VertexID + 100000 * gl_InstanceID;
+  half_id = float(gl_VertexID) * 0.5;
+  gl_Position = vec4(gl_VertexID % 2 == 0 ? -1.0 : 1.0, gl_VertexID % 4 < 2 ? -1.0 : 1.0, 0.5, 1.0);
+})");
+  auto f = Shader::compile(Stage::Fragment, "#version 330\nout vec4 c;\nvoid main() { c = vec4(1.0); }");
+  LinkOptions options;
+  options.feedback_varyings = {"id", "gl_Position", "half_id"};
+  auto prog = Program::link(*v, *f, options);
+  ASSERT_TRUE(prog->ok()) << prog->info_log();
+  ASSERT_EQ(prog->feedback_words().size(), 1u);
+  ASSERT_EQ(prog->feedback_words()[0].size(), 6u);  // id, the position's four, half_id
+  EXPECT_EQ(prog->feedback_varyings()[1].name, "gl_Position");
+  constexpr uint32_t kVertices = 2600, kInstances = 3, kTriangles = (kVertices - 2) * kInstances;
+  auto capture = [&](int threads, size_t bytes, bool discard, uint64_t* written) {
+    gpu::Context ctx(threads);
+    gpu::Texture2D color(gpu::Format::RGBA8, 8, 8);
+    gpu::Framebuffer fb(&color);
+    ctx.bind_framebuffer(&fb);
+    ctx.clear({.color = {0, 0, 0, 0}});
+    gpu::Buffer out(std::vector<uint8_t>(bytes + 64, 0xAB));
+    gpu::Capture cap;
+    cap.mode = gpu::Topology::Triangles;
+    cap.buffers.push_back({&out, 0, bytes, prog->feedback_words()[0]});
+    gpu::RenderState st;
+    st.rasterizer_discard = discard;
+    prog->draw(ctx, gpu::VertexLayout{}, st,
+               {.topology = gpu::Topology::TriangleStrip,
+                .count = kVertices,
+                .instance_count = kInstances,
+                .capture = &cap});
+    *written = cap.written;
+    EXPECT_EQ(cap.written + cap.overflowed, kTriangles);
+    EXPECT_EQ(cap.buffers[0].offset, size_t(cap.written) * 3 * 24);
+    ctx.finish();
+    EXPECT_EQ(color.fetch(0, 4, 4).w, discard ? 0.0f : 1.0f);
+    return std::vector<uint8_t>(reinterpret_cast<const uint8_t*>(out.data()),
+                                reinterpret_cast<const uint8_t*>(out.data()) + out.size());
+  };
+  uint64_t written = 0;
+  const size_t all = size_t(kTriangles) * 3 * 24;
+  const std::vector<uint8_t> one = capture(1, all, true, &written);
+  EXPECT_EQ(written, kTriangles);
+  EXPECT_EQ(capture(2, all, false, &written), one);
+  EXPECT_EQ(capture(5, all, true, &written), one);
+  auto id_at = [&](size_t vertex) {
+    int32_t id;
+    std::memcpy(&id, one.data() + vertex * 24, 4);
+    return id;
+  };
+  const int32_t expect[] = {0, 1, 2, 2, 1, 3, 2, 3, 4};  // even, odd, even
+  for (size_t k = 0; k < 9; ++k) EXPECT_EQ(id_at(k), expect[k]) << k;
+  // Triangle 2598 of the second instance comes after the first's last.
+  EXPECT_EQ(id_at(size_t(kVertices - 2) * 3), 100000);
+  EXPECT_EQ(id_at(size_t(kVertices - 2) * 3 - 1), int32_t(kVertices - 1));
+  float half;
+  std::memcpy(&half, one.data() + 5 * 24 + 20, 4);  // vertex 3's
+  EXPECT_EQ(half, 1.5f);
+  EXPECT_EQ(one[all], 0xAB);  // nothing past the range
+  // Room for 10.5 triangles: 10 are written, whole.
+  const std::vector<uint8_t> part = capture(2, 10 * 72 + 36, true, &written);
+  EXPECT_EQ(written, 10u);
+  EXPECT_TRUE(std::equal(part.begin(), part.begin() + 720, one.begin()));
+  EXPECT_EQ(part[720], 0xAB);
+  // A capture of points from triangles is refused.
+  gpu::Context ctx(1);
+  gpu::Texture2D color(gpu::Format::RGBA8, 8, 8);
+  gpu::Framebuffer fb(&color);
+  ctx.bind_framebuffer(&fb);
+  gpu::Buffer out(size_t(64));
+  gpu::Capture points;
+  points.buffers.push_back({&out, 0, 64, prog->feedback_words()[0]});
+  EXPECT_THROW(prog->draw(ctx, gpu::VertexLayout{}, gpu::RenderState{}, {.count = 3, .capture = &points}),
+               gpu::Error);
+  // Link errors GL names (§2.11.8).
+  for (std::vector<std::string> bad :
+       {std::vector<std::string>{"nothing"}, {"id", "id"}, {"id[0]"}, {"half_id[1]"}}) {
+    options.feedback_varyings = bad;
+    EXPECT_FALSE(Program::link(*v, *f, options)->ok()) << bad.back();
+  }
 }
 
 // The background tier: link() returns before the native code is there, the draws run on the

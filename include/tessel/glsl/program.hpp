@@ -69,6 +69,12 @@ struct LinkOptions {
   // glBindFragDataLocationIndexed's index (0, or 1 for the second source of dual-source
   // blending), by output name; layout(index) takes precedence.
   std::map<std::string, int> frag_data_indices;
+  // glTransformFeedbackVaryings: the outputs of the stage before clipping (the geometry
+  // stage's, or the vertex stage's) that transform feedback captures, by GL name ("v",
+  // "a[2]", "gl_Position", "gl_PointSize", "gl_ClipDistance[1]"), into one buffer in this
+  // order, or with feedback_separate each into a buffer of its own (GL_SEPARATE_ATTRIBS).
+  std::vector<std::string> feedback_varyings;
+  bool feedback_separate = false;
   // TESSEL_GLSL=interp in the environment means Off for every program, TESSEL_GLSL=sync AtLink.
   NativeCode native_code = NativeCode::Background;
 };
@@ -107,6 +113,17 @@ struct GeometryInfo {
   uint32_t output_type = 0;   // GL_POINTS, GL_LINE_STRIP, GL_TRIANGLE_STRIP
   bool writes_layer = false;  // gl_Layer: draws into a layered framebuffer pick layers with it
 };
+
+// A captured output as glGetTransformFeedbackVarying reports it: its name as given, its GL
+// type and how many of them (an array's elements, 1 for an element).
+struct FeedbackVarying {
+  std::string name;
+  uint32_t type = 0;
+  int size = 1;
+};
+// Transform feedback's limits (GL_MAX_TRANSFORM_FEEDBACK_*), those of llvmpipe.
+inline constexpr int kMaxFeedbackInterleavedComponents = 64, kMaxFeedbackSeparateAttribs = 4,
+                     kMaxFeedbackSeparateComponents = 64;
 
 // A uniform block as GL reports it (glGetActiveUniformBlock*, glGetActiveUniforms with
 // GL_UNIFORM_OFFSET and the strides): std140 layout, which also serves shared and packed.
@@ -166,6 +183,12 @@ class Program {
 
   // The geometry stage's layout, when the program has one.
   const GeometryInfo* geometry() const;
+  // Transform feedback, as LinkOptions asked for it: the captured outputs, whether each has
+  // a buffer of its own, and the words each buffer takes of a vertex (gpu::CaptureBuffer::
+  // words: one list, or one per output when separate).
+  const std::vector<FeedbackVarying>& feedback_varyings() const;
+  bool feedback_separate() const;
+  const std::vector<std::vector<int>>& feedback_words() const;
 
   const std::vector<Variable>& attributes() const;      // active, user-declared
   const std::vector<Variable>& uniforms() const;        // active, user-declared (gl_ state excluded)

@@ -28,6 +28,29 @@
 
 namespace tessel::gpu {
 
+// Transform feedback (GL 3.3 §2.15): a draw's primitives as they leave the vertex stage, or
+// the geometry stage when the program has one, written to buffers as independent points,
+// lines or triangles (strips, fans and loops cut as GL cuts them: each triangle keeps its
+// provoking vertex first or last), in the draw's order, before clipping.
+inline constexpr int kMaxCaptureBuffers = 4;
+// A captured word's source: the vertex's clip position component c is kCapturePosition - c.
+inline constexpr int kCapturePosition = -1;
+struct CaptureBuffer {
+  Buffer* buffer = nullptr;
+  size_t offset = 0;  // where the next vertex goes: advances as primitives are written
+  size_t end = 0;     // the end of the range it may write (the buffer's size at most)
+  // The 32-bit words of each vertex, in order: the varying component (RuntimeShape's
+  // numbering, of the stage that feeds clipping) or the position component each one copies.
+  std::vector<int> words;
+};
+struct Capture {
+  Topology mode = Topology::Points;    // Points, Lines or Triangles
+  std::vector<CaptureBuffer> buffers;  // at most kMaxCaptureBuffers
+  // Primitives of every draw so far: those written and those that did not fit (once one does
+  // not, none after it is written).
+  uint64_t written = 0, overflowed = 0;
+};
+
 struct DrawCall {
   Topology topology = Topology::Triangles;
   uint32_t first = 0;                    // first vertex (arrays) or first index (indexed)
@@ -38,6 +61,11 @@ struct DrawCall {
   int32_t base_vertex = 0;
   uint32_t instance_count = 1;
   uint32_t base_instance = 0;
+  // Transform feedback: when set, the draw also writes its primitives there, and runs at
+  // once (the queued work with it), so that the buffers and counts are up to date when draw()
+  // returns. The draw's topology must give primitives of capture->mode (after the geometry
+  // stage). Throws Error when it does not, or for a word source the program does not have.
+  Capture* capture = nullptr;
 };
 
 struct ClearValues {
@@ -106,6 +134,8 @@ class Context final : public PendingWork {
   void submit(std::unique_ptr<detail::ProgramBase> program, const VertexLayout& layout,
               const RenderState& state, const DrawCall& call, uint32_t required_attribs);
   detail::TargetView make_target() const;
+  void run_frame();  // the chunks' geometry and raster phases (flush())
+  void check_capture(const Capture& capture, const detail::DrawRecord& d) const;
 
   struct Frame;
   class WorkerPool;

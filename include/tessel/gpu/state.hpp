@@ -195,6 +195,10 @@ struct RenderState {
   // as the last, as llvmpipe clamps them). -1: every primitive.
   int layer = -1;
   int layer_count = 0;
+
+  // GL_RASTERIZER_DISCARD (GL 3.3 §3.1): primitives go no further than transform feedback
+  // (DrawCall::capture) and the counters; nothing is rasterized.
+  bool rasterizer_discard = false;
 };
 
 }  // namespace tessel::gpu

@@ -20,6 +20,7 @@
 namespace tessel::gpu {
 
 struct DrawCall;
+struct Capture;
 struct GeometryLanes;
 
 namespace detail {
@@ -152,14 +153,19 @@ struct Counters {
   uint64_t fragments_shaded = 0;    // lanes covered when the shader ran
   uint64_t fragments_written = 0;   // samples that passed every test
   uint64_t fragments_rejected = 0;  // samples the depth or stencil test rejected
+  // Primitives out of the vertex or geometry stage (GL_PRIMITIVES_GENERATED), and those
+  // transform feedback wrote (GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN).
+  uint64_t primitives_generated = 0;
+  uint64_t primitives_written = 0;
 };
 
 // What was counted between two readings (a later one minus an earlier one).
 inline Counters operator-(const Counters& a, const Counters& b) {
-  return {a.vertices_shaded - b.vertices_shaded,       a.primitives_in - b.primitives_in,
-          a.primitives_clipped - b.primitives_clipped, a.primitives_culled - b.primitives_culled,
-          a.triangles_setup - b.triangles_setup,       a.fragments_shaded - b.fragments_shaded,
-          a.fragments_written - b.fragments_written,   a.fragments_rejected - b.fragments_rejected};
+  return {a.vertices_shaded - b.vertices_shaded,           a.primitives_in - b.primitives_in,
+          a.primitives_clipped - b.primitives_clipped,     a.primitives_culled - b.primitives_culled,
+          a.triangles_setup - b.triangles_setup,           a.fragments_shaded - b.fragments_shaded,
+          a.fragments_written - b.fragments_written,       a.fragments_rejected - b.fragments_rejected,
+          a.primitives_generated - b.primitives_generated, a.primitives_written - b.primitives_written};
 }
 
 class ProgramBase;
@@ -194,6 +200,10 @@ struct DrawRecord {
   // stencil; one RGBA8 colour attachment without blending, all channels written.
   bool fast_depth = false;
   bool fast_color = false;
+  // Whether primitives go on to clipping and rasterization (not when the rasterizer
+  // discards them, or the render area is empty), and where transform feedback writes them.
+  bool raster = true;
+  Capture* capture = nullptr;
 };
 
 // The shader of a draw with its uniforms; the two virtual calls are the only places where
