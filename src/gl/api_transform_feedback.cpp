@@ -52,7 +52,7 @@ void GLAPIENTRY glBeginTransformFeedback(GLenum mode) {
   f.program = c.executable;
   f.buffers.clear();
   f.capture = {};
-  f.capture.mode = mode == GL_POINTS ? tessel::gpu::Topology::Points
+  f.capture.mode = mode == GL_POINTS  ? tessel::gpu::Topology::Points
                    : mode == GL_LINES ? tessel::gpu::Topology::Lines
                                       : tessel::gpu::Topology::Triangles;
   for (size_t i = 0; i < words.size(); ++i) {

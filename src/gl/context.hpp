@@ -828,6 +828,8 @@ class Context {
   std::vector<std::unique_ptr<gpu::Texture2D>> transient_textures_;
   std::vector<std::shared_ptr<const gpu::Buffer>> transient_shared_;
   size_t transient_bytes_ = 0;
+  // Past this many bytes of transient buffers the queued work runs, and they go.
+  static constexpr size_t kTransientFlushBytes = size_t(256) << 20;
   GLenum error_ = GL_NO_ERROR;
   std::string version_string_, glsl_version_string_, extension_string_;
   GLenum render_mode_ = GL_RENDER;

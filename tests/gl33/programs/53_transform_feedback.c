@@ -67,7 +67,8 @@ static const char* quad_gs =
     "out vec3 gcol;\n"
     "void main() {\n"
     "  for (int i = 0; i < 4; ++i) {\n"
-    "    gl_Position = gl_in[0].gl_Position + vec4(float(i & 1) * 0.5 - 0.25, float(i >> 1) * 0.5 - 0.25, 0, 0);\n"
+    "    gl_Position = gl_in[0].gl_Position + vec4(float(i & 1) * 0.5 - 0.25, float(i >> 1) * 0.5 - 0.25, 0, "
+    "0);\n"
     "    gcol = mix(vcol[0], vec3(float(i & 1), float(i >> 1), 1.0 - float(i) / 3.0), 0.7);\n"
     "    EmitVertex();\n"
     "  }\n"
@@ -206,7 +207,8 @@ static GLint capture_ids(int slot, GLuint vao, GLenum prim, GLenum mode, GLint c
   glGetQueryObjectuiv(q[0], GL_QUERY_RESULT, &generated);
   glGetQueryObjectuiv(q[1], GL_QUERY_RESULT, &written);
   glDeleteQueries(2, q);
-  if (!size && generated != written) fprintf(stderr, "slot %d: %u generated, %u written\n", slot, generated, written);
+  if (!size && generated != written)
+    fprintf(stderr, "slot %d: %u generated, %u written\n", slot, generated, written);
   return (GLint)written;
 }
 
