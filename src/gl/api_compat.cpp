@@ -29,8 +29,7 @@ void window_pos(Context& c, float x, float y, float z) {
   GL_OUTSIDE_BEGIN();
   CurrentState& cur = c.s.current;
   const ViewportState& v = c.s.viewport;
-  const double zc = std::clamp(double(z), 0.0, 1.0);
-  cur.raster_pos = glm::vec4(x, y, float(v.near_ + zc * (v.far_ - v.near_)), 1.0f);
+  cur.raster_pos = glm::vec4(x, y, tessel::gpu::depth_in_range(z, v.near_, v.far_), 1.0f);
   cur.raster_valid = true;
   cur.raster_distance = 0.0f;
   cur.raster_color = glm::clamp(cur.color, 0.0f, 1.0f);

@@ -45,24 +45,13 @@ void raster_pos(Context& c, float x, float y, float z, float w) {
   const glm::vec4 eye = c.modelview() * glm::vec4(x, y, z, w);
   const glm::vec4 clip = c.projection() * eye;
   CurrentState& cur = c.s.current;
-  bool valid = clip.w != 0.0f && std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w &&
-               std::abs(clip.z) <= clip.w;
-  for (int i = 0; i < kMaxClipPlanes && valid; ++i)
-    if (c.s.transform.clip_enabled[size_t(i)] &&
-        glm::dot(glm::dvec4(eye), c.s.transform.clip_plane[size_t(i)]) < 0.0)
-      valid = false;
+  const bool valid = clip.w != 0.0f && tessel::gpu::clip_code(c.cpu_clip_planes(), clip) == 0;
   cur.raster_valid = valid;
   if (!valid) return;
-  if (c.render_mode() == GL_SELECT) {
-    // A valid raster position is a selection hit (GL 2.1 §5.2).
-    const ViewportState& v = c.s.viewport;
-    c.select_hit(float(v.near_ + (v.far_ - v.near_) * (double(clip.z / clip.w) + 1.0) * 0.5));
-  }
-  const ViewportState& v = c.s.viewport;
-  const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-  cur.raster_pos = glm::vec4(float(v.x) + (ndc.x + 1.0f) * 0.5f * float(v.width),
-                             float(v.y) + (ndc.y + 1.0f) * 0.5f * float(v.height),
-                             float(v.near_ + (v.far_ - v.near_) * (double(ndc.z) + 1.0) * 0.5), clip.w);
+  const glm::vec3 window = c.viewport_transform().window(clip);
+  // A valid raster position is a selection hit (GL 2.1 §5.2).
+  if (c.render_mode() == GL_SELECT) c.select_hit(window.z);
+  cur.raster_pos = glm::vec4(window, clip.w);
   cur.raster_distance = std::abs(eye.z);
   cur.raster_color = glm::clamp(cur.color, 0.0f, 1.0f);
   if (c.s.light.lighting) {

@@ -165,18 +165,16 @@ void Context::send_stippled_lines(const FFVertices& verts, const std::vector<uin
   };
   const auto lerp = lerp_post;
 
-  const ViewportState& vp = s.viewport;
+  const gpu::ViewportTransform xf = viewport_transform();
+  const gpu::ClipPlanes planes = cpu_clip_planes();
+  const unsigned all = (1u << planes.count) - 1;
   const float fw = float(fb_.width()), fh = float(fb_.height());
-  // Window coordinates of a clip-space vertex, and back to the full-framebuffer clip space
-  // the pieces are drawn in (viewport = framebuffer, depth range [0, 1], w = 1).
+  // Window coordinates of a clip-space vertex; the pieces are drawn in the clip space of the
+  // whole framebuffer (viewport = framebuffer, depth range [0, 1], w = 1).
   auto to_window = [&](const FFPostVertex& c) {
-    const float iw = 1.0f / c.pos[3];
-    return glm::vec3(float(vp.x) + (c.pos[0] * iw + 1.0f) * 0.5f * float(vp.width),
-                     float(vp.y) + (c.pos[1] * iw + 1.0f) * 0.5f * float(vp.height),
-                     float(vp.near_ + (vp.far_ - vp.near_) * (double(c.pos[2] * iw) + 1.0) * 0.5));
+    return xf.window(glm::vec4(c.pos[0], c.pos[1], c.pos[2], c.pos[3]));
   };
   const bool flat = s.light.shade_model == GL_FLAT;
-  const glm::mat4& mv = modelview();
   std::vector<FFPostVertex> out;
   float counter = 0.0f;  // pixels along the major axis so far; whole pixels select the bit
   const int factor = std::max(1, s.line.stipple_factor);
@@ -189,33 +187,18 @@ void Context::send_stippled_lines(const FFVertices& verts, const std::vector<uin
       std::memcpy(a.front, b.front, sizeof a.front);
       std::memcpy(a.back, b.back, sizeof a.back);
     }
-    // Clip against the view volume and the user planes (parametric, GL 2.1 §2.12).
-    float t0 = 0.0f, t1 = 1.0f;
-    bool visible = true;
-    auto clip = [&](float da, float db) {
-      if (da < 0.0f && db < 0.0f) return false;
-      if (da < 0.0f)
-        t0 = std::max(t0, da / (da - db));
-      else if (db < 0.0f)
-        t1 = std::min(t1, da / (da - db));
-      return t0 <= t1;
-    };
-    for (int p = 0; p < 6 && visible; ++p) {
-      const int axis = p / 2;
-      const float sign = (p % 2) ? -1.0f : 1.0f;
-      visible = clip(a.pos[3] + sign * a.pos[axis], b.pos[3] + sign * b.pos[axis]);
-    }
-    if (visible) {
-      const glm::vec4 ea = mv * glm::vec4(src0.pos[0], src0.pos[1], src0.pos[2], src0.pos[3]);
-      const FFVertex& src1 = verts[indices[k + 1]];
-      const glm::vec4 eb = mv * glm::vec4(src1.pos[0], src1.pos[1], src1.pos[2], src1.pos[3]);
-      for (int p = 0; p < kMaxClipPlanes && visible; ++p)
-        if (s.transform.clip_enabled[size_t(p)])
-          visible = clip(float(glm::dot(glm::dvec4(ea), s.transform.clip_plane[size_t(p)])),
-                         float(glm::dot(glm::dvec4(eb), s.transform.clip_plane[size_t(p)])));
-    }
-    if (!visible) continue;
-    const FFPostVertex ca = lerp(a, b, t0), cb = lerp(a, b, t1);
+    // Clipped against the view volume and the user planes (gpu/clip_space.hpp).
+    float t0, t1;
+    const FFPostVertex* ends[2] = {&a, &b};
+    if (!gpu::clip_segment(
+            planes.count, all,
+            [&](int i, int end) {
+              const float* p = ends[end]->pos;
+              return gpu::plane_distance(planes, i, glm::vec4(p[0], p[1], p[2], p[3]));
+            },
+            t0, t1))
+      continue;
+    const FFPostVertex ca = lerp(a, b, t0), cb = lerp(b, a, t1);
     const glm::vec3 wa = to_window(ca), wb = to_window(cb);
     // In window space from here on: the pieces interpolate linearly between the ends.
     FFPostVertex sa = ca, sb = cb;

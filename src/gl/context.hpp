@@ -27,6 +27,7 @@
 #include "ff_shader.hpp"
 #include "framebuffer_object.hpp"
 #include "objects.hpp"
+#include "tessel/gpu/clip_space.hpp"
 #include "tessel/gpu/context.hpp"
 #include "tessel/gpu/framebuffer.hpp"
 #include "tessel/gpu/texture.hpp"
@@ -653,10 +654,18 @@ class Context {
   std::vector<GLuint>& name_stack() { return sel_names_; }
   void write_hit_record();
   void select_hit(float window_z);
-  // For primitives processed on the CPU (selection, feedback): the view volume and enabled
-  // user planes in clip space, and whether culling removes a triangle (clip positions).
-  std::vector<glm::vec4> clip_space_planes() const;
+  // For primitives processed on the CPU (selection, feedback, stippled lines, raster
+  // positions), with gpu/clip_space.hpp's rules: the view volume (near and far unless depth
+  // clamping) and the enabled user planes in clip space, as the gpu layer tests them; the
+  // viewport and depth-range transform; whether culling removes a triangle (clip positions).
+  gpu::ClipPlanes cpu_clip_planes() const;
+  gpu::ViewportTransform viewport_transform() const;
   bool culled(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) const;
+  // glCullFace / glFrontFace as the gpu layer names them (CullMode::None when culling is off).
+  gpu::CullMode cull_mode() const;
+  gpu::FrontFace front_face() const;
+  // User clip plane i (enabled or not) in clip space: p_eye * P^-1, as a row vector.
+  glm::vec4 clip_space_plane(int i) const;
   // Feedback mode (feedback.cpp).
   void set_feedback_buffer(GLfloat* buffer, GLsizei size, GLenum type) {
     fb_buffer_ = buffer;
@@ -808,7 +817,6 @@ class Context {
   void close_quad_run();
   void split_quads(const FFVertices& v, uint32_t n, bool along_v1v3, FFVertices& out,
                    std::vector<uint32_t>& idx) const;
-  bool outside_view_volume(const FFVertex& v) const;
   void select_primitives(PrimClass cls, const FFVertices& verts, const std::vector<uint32_t>& idx);
   void build_uniforms(FFUniforms& u, TextureObject* tex) const;
   void release_transient();

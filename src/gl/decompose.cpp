@@ -130,7 +130,11 @@ void Context::emit_mode(GLenum mode, FFVertices&& v) {
         } else {
           // Immediate quads join the run of quads that Mesa would draw together; how the
           // run is cut is known only when it ends (close_quad_run).
-          for (uint32_t i = 0; i < whole; ++i) quad_run_clipped_ |= outside_view_volume(v[i]);
+          const gpu::ClipPlanes planes = cpu_clip_planes();
+          const glm::mat4 mvp = projection() * modelview();
+          for (uint32_t i = 0; i < whole; ++i)
+            quad_run_clipped_ |= gpu::clip_code(planes, mvp * glm::vec4(v[i].pos[0], v[i].pos[1], v[i].pos[2],
+                                                                        v[i].pos[3])) != 0;
           v.v.resize(whole);
           if (v.wide()) v.x.resize(whole);
           quad_run_.append(v);
@@ -228,18 +232,6 @@ void Context::split_quads(const FFVertices& v, uint32_t n, bool along_v1v3, FFVe
       put(i + 3, d, true);  // d -> a
     }
   }
-}
-
-bool Context::outside_view_volume(const FFVertex& v) const {
-  const glm::vec4 p(v.pos[0], v.pos[1], v.pos[2], v.pos[3]);
-  const glm::vec4 eye = modelview() * p;
-  const glm::vec4 c = projection() * eye;
-  if (c.x < -c.w || c.x > c.w || c.y < -c.w || c.y > c.w || c.z < -c.w || c.z > c.w) return true;
-  for (int i = 0; i < kMaxClipPlanes; ++i)
-    if (s.transform.clip_enabled[size_t(i)] &&
-        glm::dot(glm::dvec4(eye), s.transform.clip_plane[size_t(i)]) < 0.0)
-      return true;
-  return false;
 }
 
 void Context::close_quad_run() {

@@ -238,7 +238,6 @@ void Context::renderbuffer_deleted(const RenderbufferObject& r) {
   if (bound_renderbuffer.get() == &r) bound_renderbuffer = nullptr;
 }
 
-
 glm::vec4 Context::clear_color_for(const TargetInfo& target, int i, glm::vec4 color) const {
   const gpu::Attachment& t = fb_.color[size_t(i)];
   // Unsigned normalized buffers take the colour clamped to [0, 1], float ones as it is.

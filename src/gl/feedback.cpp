@@ -11,12 +11,6 @@
 
 namespace tessel::gl {
 
-namespace {
-
-float dot4(const glm::vec4& p, const float* v) { return p.x * v[0] + p.y * v[1] + p.z * v[2] + p.w * v[3]; }
-
-}  // namespace
-
 void Context::feedback_value(float v) {
   if (fb_overflow_ || fb_written_ >= size_t(std::max(0, fb_size_))) {
     fb_overflow_ = true;
@@ -36,46 +30,48 @@ void Context::feedback_primitives(PrimClass cls, const FFVertices& verts, const 
   FFUniforms u;
   build_uniforms(u, tex);
   const size_t per = cls == PrimClass::Points ? 1 : cls == PrimClass::Lines ? 2 : 3;
-  const std::vector<glm::vec4> planes = clip_space_planes();
-  const ViewportState& vp = s.viewport;
+  const gpu::ClipPlanes planes = cpu_clip_planes();
+  const unsigned all = (1u << planes.count) - 1;
+  const gpu::ViewportTransform xf = viewport_transform();
   auto write_vertex = [&](const FFPostVertex& v) {
-    const float iw = 1.0f / v.pos[3];
-    feedback_value(float(vp.x) + (v.pos[0] * iw + 1.0f) * 0.5f * float(vp.width));
-    feedback_value(float(vp.y) + (v.pos[1] * iw + 1.0f) * 0.5f * float(vp.height));
+    const glm::vec3 w = xf.window(glm::vec4(v.pos[0], v.pos[1], v.pos[2], v.pos[3]));
+    feedback_value(w.x);
+    feedback_value(w.y);
     if (fb_type_ == GL_2D) return;
-    feedback_value(float(vp.near_ + (vp.far_ - vp.near_) * (double(v.pos[2] * iw) + 1.0) * 0.5));
+    feedback_value(w.z);
     if (fb_type_ == GL_4D_COLOR_TEXTURE) feedback_value(v.pos[3]);
     if (fb_type_ == GL_3D) return;
     for (int k = 0; k < 4; ++k) feedback_value(v.front[k]);
     if (fb_type_ == GL_3D_COLOR) return;
     for (int k = 0; k < 4; ++k) feedback_value(v.tex[k]);
   };
-  std::vector<FFPostVertex> poly, next;
+  auto clip_pos = [](const FFPostVertex& v) { return glm::vec4(v.pos[0], v.pos[1], v.pos[2], v.pos[3]); };
+  auto distance = [&](int i, const FFPostVertex& v) { return gpu::plane_distance(planes, i, clip_pos(v)); };
+  auto lerp = [](const FFPostVertex& from, const FFPostVertex& to, float t, FFPostVertex& r) {
+    r = lerp_post(from, to, t);
+  };
+  constexpr int kMaxVertices = 3 + gpu::ClipPlanes::kMax;
+  FFPostVertex a[kMaxVertices], b[kMaxVertices];
+  std::vector<FFPostVertex> poly;
   for (size_t k = 0; k + per <= idx.size(); k += per) {
+    for (size_t j = 0; j < per; ++j) a[j] = post_vertex(verts[idx[k + j]], u, tex != nullptr);
+    if (per == 3 && culled(clip_pos(a[0]), clip_pos(a[1]), clip_pos(a[2]))) continue;
+    // Clipped with gpu/clip_space.hpp's rules (as Mesa's clipper: a polygon keeps its first
+    // vertex first when it is inside).
     poly.clear();
-    for (size_t j = 0; j < per; ++j) poly.push_back(post_vertex(verts[idx[k + j]], u, tex != nullptr));
-    auto clip_pos = [&](size_t j) {
-      return glm::vec4(poly[j].pos[0], poly[j].pos[1], poly[j].pos[2], poly[j].pos[3]);
-    };
-    if (per == 3 && culled(clip_pos(0), clip_pos(1), clip_pos(2))) continue;
-    // Clip (Sutherland–Hodgman; for a segment the same keeps its ends in order).
-    for (const glm::vec4& p : planes) {
-      if (poly.empty()) break;
-      if (per == 1) {
-        if (dot4(p, poly[0].pos) < 0.0f) poly.clear();
-        continue;
+    if (per == 1) {
+      if (gpu::clip_code(planes, clip_pos(a[0])) == 0) poly.push_back(a[0]);
+    } else if (per == 2) {
+      float t0, t1;
+      if (gpu::clip_segment(
+              planes.count, all, [&](int i, int end) { return distance(i, a[end]); }, t0, t1)) {
+        poly.push_back(lerp_post(a[0], a[1], t0));
+        poly.push_back(lerp_post(a[1], a[0], t1));
       }
-      next.clear();
-      const size_t n = poly.size();
-      const size_t edges = per == 2 ? 1 : n;
-      for (size_t i = 0; i < edges; ++i) {
-        const FFPostVertex &a = poly[i], &b = poly[(i + 1) % n];
-        const float da = dot4(p, a.pos), db = dot4(p, b.pos);
-        if (da >= 0.0f) next.push_back(a);
-        if ((da >= 0.0f) != (db >= 0.0f)) next.push_back(lerp_post(a, b, da / (da - db)));
-        if (per == 2 && db >= 0.0f) next.push_back(b);
-      }
-      poly.swap(next);
+    } else {
+      FFPostVertex* out = nullptr;
+      const int n = gpu::clip_polygon(planes.count, all, a, 3, b, kMaxVertices, distance, lerp, &out);
+      poly.assign(out, out + n);
     }
     if (poly.empty() || (per == 2 && poly.size() < 2) || (per == 3 && poly.size() < 3)) continue;
     if (per == 1) {

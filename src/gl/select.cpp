@@ -21,41 +21,7 @@ GLuint scaled_depth(float z) {
   return GLuint(std::llround(d * 4294967295.0));
 }
 
-// Sutherland–Hodgman against one plane (dot(plane, v) >= 0 inside) in clip space.
-void clip_against(std::vector<glm::vec4>& poly, const glm::vec4& plane) {
-  std::vector<glm::vec4> out;
-  const size_t n = poly.size();
-  for (size_t i = 0; i < n; ++i) {
-    const glm::vec4 &a = poly[i], &b = poly[(i + 1) % n];
-    const float da = glm::dot(plane, a), db = glm::dot(plane, b);
-    if (da >= 0.0f) out.push_back(a);
-    if ((da >= 0.0f) != (db >= 0.0f)) out.push_back(a + (b - a) * (da / (da - db)));
-  }
-  poly.swap(out);
-}
 }  // namespace
-
-std::vector<glm::vec4> Context::clip_space_planes() const {
-  std::vector<glm::vec4> planes = {glm::vec4(1, 0, 0, 1),  glm::vec4(-1, 0, 0, 1), glm::vec4(0, 1, 0, 1),
-                                   glm::vec4(0, -1, 0, 1), glm::vec4(0, 0, 1, 1),  glm::vec4(0, 0, -1, 1)};
-  // User planes are kept in eye space; in clip space they are p_eye * P^-1.
-  const glm::mat4 inv_p = glm::inverse(projection());
-  for (int i = 0; i < kMaxClipPlanes; ++i)
-    if (s.transform.clip_enabled[size_t(i)])
-      planes.push_back(glm::vec4(s.transform.clip_plane[size_t(i)]) * inv_p);
-  return planes;
-}
-
-// Facing from the window-space area (GL 2.1 §2.14.1, eq. 2.6), before clipping; a triangle
-// with a vertex at w <= 0 is not culled here (clipping decides).
-bool Context::culled(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) const {
-  if (!s.polygon.cull || !(a.w > 0.0f) || !(b.w > 0.0f) || !(c.w > 0.0f)) return false;
-  const glm::vec2 w0 = glm::vec2(a) / a.w, w1 = glm::vec2(b) / b.w, w2 = glm::vec2(c) / c.w;
-  const float area = (w1.x - w0.x) * (w2.y - w0.y) - (w2.x - w0.x) * (w1.y - w0.y);
-  const bool front = (s.polygon.front_face == GL_CCW) == (area > 0.0f);
-  const GLenum cf = s.polygon.cull_face;
-  return cf == GL_FRONT_AND_BACK || (cf == GL_FRONT && front) || (cf == GL_BACK && !front);
-}
 
 void Context::write_hit_record() {
   if (!sel_hit_) return;
@@ -85,50 +51,45 @@ void Context::select_hit(float z) {
 }
 
 // The primitives of one emission, tested instead of drawn: culled as they would be, clipped
-// against the view volume and the user planes; what is left is a hit at its window depths.
+// against the view volume and the user planes (gpu/clip_space.hpp); what is left is a hit at
+// its window depths.
 void Context::select_primitives(PrimClass cls, const FFVertices& verts, const std::vector<uint32_t>& idx) {
-  const glm::mat4& mv = modelview();
-  const glm::mat4 mvp = projection() * mv;
+  const glm::mat4 mvp = projection() * modelview();
   const size_t per = cls == PrimClass::Points ? 1 : cls == PrimClass::Lines ? 2 : 3;
-  const std::vector<glm::vec4> planes = clip_space_planes();
-  const ViewportState& vp = s.viewport;
-  std::vector<glm::vec4> poly;
+  const gpu::ClipPlanes planes = cpu_clip_planes();
+  const unsigned all = (1u << planes.count) - 1;
+  const gpu::ViewportTransform xf = viewport_transform();
+  auto hit = [&](const glm::vec4& p) {
+    if (p.w != 0.0f) select_hit(xf.window(p).z);
+  };
+  auto distance = [&](int i, const glm::vec4& v) { return gpu::plane_distance(planes, i, v); };
+  auto lerp = [](const glm::vec4& from, const glm::vec4& to, float t, glm::vec4& r) {
+    r = from + (to - from) * t;
+  };
+  constexpr int kMaxVertices = 3 + gpu::ClipPlanes::kMax;
+  glm::vec4 a[kMaxVertices], b[kMaxVertices];
   for (size_t k = 0; k + per <= idx.size(); k += per) {
-    poly.clear();
     for (size_t j = 0; j < per; ++j) {
       const FFVertex& v = verts[idx[k + j]];
-      poly.push_back(mvp * glm::vec4(v.pos[0], v.pos[1], v.pos[2], v.pos[3]));
+      a[j] = mvp * glm::vec4(v.pos[0], v.pos[1], v.pos[2], v.pos[3]);
     }
-    if (per == 3 && culled(poly[0], poly[1], poly[2])) continue;
     if (per == 1) {
-      bool inside = true;
-      for (const glm::vec4& p : planes) inside = inside && glm::dot(p, poly[0]) >= 0.0f;
-      if (!inside) continue;
-    } else {
-      for (const glm::vec4& p : planes) {
-        if (per == 2 && poly.size() == 2) {
-          // A segment: clip its ends along the line.
-          const float da = glm::dot(p, poly[0]), db = glm::dot(p, poly[1]);
-          if (da < 0.0f && db < 0.0f) {
-            poly.clear();
-            break;
-          }
-          if (da < 0.0f)
-            poly[0] = poly[0] + (poly[1] - poly[0]) * (da / (da - db));
-          else if (db < 0.0f)
-            poly[1] = poly[0] + (poly[1] - poly[0]) * (da / (da - db));
-        } else {
-          clip_against(poly, p);
-          if (poly.empty()) break;
-        }
-      }
-      if (poly.empty()) continue;
+      if (gpu::clip_code(planes, a[0]) == 0) hit(a[0]);
+      continue;
     }
-    for (const glm::vec4& p : poly) {
-      if (!(p.w != 0.0f)) continue;
-      const float z = float(vp.near_ + (vp.far_ - vp.near_) * (double(p.z / p.w) + 1.0) * 0.5);
-      select_hit(z);
+    if (per == 2) {
+      float t0, t1;
+      if (!gpu::clip_segment(
+              planes.count, all, [&](int i, int end) { return distance(i, a[end]); }, t0, t1))
+        continue;
+      hit(a[0] + (a[1] - a[0]) * t0);
+      hit(a[1] + (a[0] - a[1]) * t1);
+      continue;
     }
+    if (culled(a[0], a[1], a[2])) continue;
+    glm::vec4* poly = nullptr;
+    const int n = gpu::clip_polygon(planes.count, all, a, 3, b, kMaxVertices, distance, lerp, &poly);
+    for (int i = 0; i < n; ++i) hit(poly[i]);
   }
 }
 

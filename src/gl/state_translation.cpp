@@ -200,11 +200,8 @@ gpu::RenderState Context::render_state(bool for_clear) const {
   r.scissor = {s.scissor.x, s.scissor.y, s.scissor.width, s.scissor.height};
   if (!for_clear) {
     const PolygonState& p = s.polygon;
-    if (p.cull)
-      r.cull = p.cull_face == GL_FRONT  ? gpu::CullMode::Front
-               : p.cull_face == GL_BACK ? gpu::CullMode::Back
-                                        : gpu::CullMode::FrontAndBack;
-    r.front_face = p.front_face == GL_CW ? gpu::FrontFace::CW : gpu::FrontFace::CCW;
+    r.cull = cull_mode();
+    r.front_face = front_face();
     r.polygon_mode = polygon_mode_of(p.mode_front);
     r.polygon_mode_per_face = p.mode_back != p.mode_front;
     r.polygon_mode_back = polygon_mode_of(p.mode_back);
@@ -218,13 +215,10 @@ gpu::RenderState Context::render_state(bool for_clear) const {
     r.line_width = std::clamp(s.line.width, 1.0f, 255.0f);
     r.point_size = std::clamp(s.point.size, 1.0f, 255.0f);
     r.point_sprite_lower_left = s.point.sprite_lower_left;
-    const glm::mat4 inv_p = glm::inverse(projection());
     for (int i = 0; i < kMaxClipPlanes; ++i) {
       if (!s.transform.clip_enabled[size_t(i)]) continue;
       r.clip_plane_enable |= uint8_t(1u << i);
-      // The gpu layer tests planes in clip space: p_clip = p_eye * P^-1 (as a row vector).
-      const glm::vec4 pe(s.transform.clip_plane[size_t(i)]);
-      r.clip_planes[size_t(i)] = pe * inv_p;
+      r.clip_planes[size_t(i)] = clip_space_plane(i);
     }
     r.depth_test = s.depth.test && target.depth;
     r.depth_func = compare_of(s.depth.func);
@@ -276,6 +270,45 @@ gpu::RenderState Context::render_state(bool for_clear) const {
   r.logic_op = gpu::LogicOp(s.color.logic_op_mode - GL_CLEAR);
   r.provoking_first = s.light.provoking_vertex == GL_FIRST_VERTEX_CONVENTION;
   return r;
+}
+
+gpu::CullMode Context::cull_mode() const {
+  const PolygonState& p = s.polygon;
+  if (!p.cull) return gpu::CullMode::None;
+  return p.cull_face == GL_FRONT  ? gpu::CullMode::Front
+         : p.cull_face == GL_BACK ? gpu::CullMode::Back
+                                  : gpu::CullMode::FrontAndBack;
+}
+
+gpu::FrontFace Context::front_face() const {
+  return s.polygon.front_face == GL_CW ? gpu::FrontFace::CW : gpu::FrontFace::CCW;
+}
+
+glm::vec4 Context::clip_space_plane(int i) const {
+  // The gpu layer tests planes in clip space: p_clip = p_eye * P^-1 (as a row vector).
+  return glm::vec4(s.transform.clip_plane[size_t(i)]) * glm::inverse(projection());
+}
+
+gpu::ClipPlanes Context::cpu_clip_planes() const {
+  gpu::ClipPlanes planes = gpu::ClipPlanes::view_volume(!depth_clamp);
+  for (int i = 0; i < kMaxClipPlanes; ++i)
+    if (s.transform.clip_enabled[size_t(i)]) planes.add(clip_space_plane(i));
+  return planes;
+}
+
+gpu::ViewportTransform Context::viewport_transform() const {
+  const ViewportState& v = s.viewport;
+  return gpu::ViewportTransform({v.x, v.y, v.width, v.height}, float(v.near_), float(v.far_));
+}
+
+// Facing from the window-space area (GL 2.1 §2.14.1, eq. 2.6), before clipping; a triangle
+// with a vertex at w <= 0 is not culled here (clipping decides).
+bool Context::culled(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) const {
+  const gpu::CullMode mode = cull_mode();
+  if (mode == gpu::CullMode::None || !(a.w > 0.0f) || !(b.w > 0.0f) || !(c.w > 0.0f)) return false;
+  const glm::vec2 w0 = glm::vec2(a) / a.w, w1 = glm::vec2(b) / b.w, w2 = glm::vec2(c) / c.w;
+  const float area = (w1.x - w0.x) * (w2.y - w0.y) - (w2.x - w0.x) * (w1.y - w0.y);
+  return gpu::culled(mode, gpu::front_facing(front_face(), area > 0.0f));
 }
 
 }  // namespace tessel::gl

@@ -332,11 +332,11 @@ void Context::Frame::assemble(Worker& w, uint32_t chunk_index, const DrawRecord&
         ClipVert& ca = w.clip_a[0];
         ClipVert& cb = w.clip_a[1];
         ca.pos = p0 + (p1 - p0) * t0;
-        cb.pos = p0 + (p1 - p0) * t1;
+        cb.pos = p1 + (p0 - p1) * t1;
         const float *va = var_of(s[0]), *vb = var_of(s[1]);
         for (int k = 0; k < K; ++k) {
           ca.var[k] = va[k] + (vb[k] - va[k]) * t0;
-          cb.var[k] = va[k] + (vb[k] - va[k]) * t1;
+          cb.var[k] = vb[k] + (va[k] - vb[k]) * t1;
         }
         a = to_window(d, ca.pos, ca.var);
         b = to_window(d, cb.pos, cb.var);
@@ -386,10 +386,8 @@ void Context::Frame::assemble(Worker& w, uint32_t chunk_index, const DrawRecord&
       area += double(a.x) * b.y - double(b.x) * a.y;
     }
     if (area == 0.0) continue;
-    const bool front = (d.state.front_face == FrontFace::CCW) == (area > 0.0);
-    const CullMode cm = d.state.cull;
-    if (cm == CullMode::FrontAndBack || (cm == CullMode::Front && front) ||
-        (cm == CullMode::Back && !front)) {
+    const bool front = front_facing(d.state.front_face, area > 0.0);
+    if (culled(d.state.cull, front)) {
       ++w.counters.primitives_culled;
       continue;
     }

@@ -87,20 +87,16 @@ struct SetupConstants {
   int varyings;
   uint64_t flat, linear;  // components from the provoking vertex; flat or noperspective
   explicit SetupConstants(const DrawRecord& d)
-      : ccw_front(d.state.front_face == FrontFace::CCW),
+      : cull_ccw(culled(d.state.cull, front_facing(d.state.front_face, true))),
+        cull_cw(culled(d.state.cull, front_facing(d.state.front_face, false))),
+        ccw_front(front_facing(d.state.front_face, true)),
         area_x0(d.area_x0),
         area_y0(d.area_y0),
         area_x1(d.area_x1),
         area_y1(d.area_y1),
         varyings(d.program->varyings),
         flat(d.program->flat),
-        linear(d.program->flat | d.program->noperspective) {
-    const CullMode cm = d.state.cull;
-    const bool cull_front = cm == CullMode::Front || cm == CullMode::FrontAndBack;
-    const bool cull_back = cm == CullMode::Back || cm == CullMode::FrontAndBack;
-    cull_ccw = ccw_front ? cull_front : cull_back;
-    cull_cw = ccw_front ? cull_back : cull_front;
-  }
+        linear(d.program->flat | d.program->noperspective) {}
 };
 
 // setup_triangle (stages.hpp), inline for the geometry phase's loop over a chunk's triangles.

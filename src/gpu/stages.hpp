@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "tessel/gpu/clip_space.hpp"
 #include "tessel/gpu/detail/pipeline.hpp"
 
 namespace tessel::gpu::detail {
@@ -62,37 +63,17 @@ struct ClipVert {
   float var[kMaxVaryings];
 };
 
-// The half-spaces a primitive is clipped against: inside where dot(n, pos) + d >= 0, or for a
-// plane with var[i] >= 0 (a clip distance the vertex shader wrote) where the vertex's varying
-// component var[i] is >= 0 (n and d are zero then, so the position test passes).
-struct ClipPlanes {
-  int count = 0;
-  glm::vec4 n[6 + kMaxClipPlanes + 1];
-  float d[6 + kMaxClipPlanes + 1];
-  int8_t var[6 + kMaxClipPlanes + 1];
-  unsigned var_planes = 0;  // bit i: plane i is a clip distance
-};
+// The planes of a draw: w > 0, near and far (unless depth clamping), the guard band in x and
+// y, and the enabled user planes or clip distances (clip_space.hpp has the rest of clipping).
 ClipPlanes make_clip_planes(const DrawRecord& draw);
-// Bit i set when pos is outside plane i. NaN counts as outside every plane. Inline: it runs
-// once per shaded vertex.
 inline constexpr unsigned kNotFinite = 1u << 31;  // a clip code for NaN/Inf positions
-// The signed distance of a vertex (clip position, varyings) from plane i.
-inline float plane_distance(const ClipPlanes& p, int i, const glm::vec4& v, const float* var) {
-  if (p.var[i] >= 0) return var[p.var[i]];
-  return p.n[i].x * v.x + p.n[i].y * v.y + p.n[i].z * v.z + p.n[i].w * v.w + p.d[i];
-}
-inline unsigned clip_code(const ClipPlanes& planes, const glm::vec4& pos, const float* var = nullptr) {
-  unsigned code = 0;
-  for (int i = 0; i < planes.count; ++i)
-    if (!(plane_distance(planes, i, pos, var) >= 0.0f)) code |= 1u << i;  // NaN: outside
-  return code;
-}
-// Clips the convex polygon in[0..n) against the planes in `mask`; returns the vertex count
-// (0 when nothing is left) and points *out at the result (one of the two buffers).
+// Clips the convex polygon in[0..n) against the planes in `mask` (clip_space.hpp's
+// clip_polygon, with K varyings); returns the vertex count (0 when nothing is left) and
+// points *out at the result (one of the two buffers).
 int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, ClipVert* b, int varyings,
                  ClipVert** out);
-// Clips the segment p0-p1 (varyings v0, v1): the kept part is [t0, t1] of the parameter;
-// false if none.
+// Clips the segment p0-p1 (varyings v0, v1), as clip_space.hpp's clip_segment: t0 is cut
+// from p0's end, t1 from p1's; false if nothing is left.
 bool clip_line(const ClipPlanes& planes, unsigned mask, const glm::vec4& p0, const glm::vec4& p1,
                const float* v0, const float* v1, float& t0, float& t1);
 

@@ -247,14 +247,12 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   vp.height = std::min(vp.height, kMaxViewportSize);
   vp.x = std::clamp(vp.x, -kMaxViewportSize, kMaxViewportSize);
   vp.y = std::clamp(vp.y, -kMaxViewportSize, kMaxViewportSize);
-  // GL 4.6 §13.8.1: x_w = (x_ndc + 1) w/2 + x, as scale and offset.
-  d->vp_scale[0] = float(vp.width) * 0.5f;
-  d->vp_scale[1] = float(vp.height) * 0.5f;
-  d->vp_offset[0] = float(vp.x) + float(vp.width) * 0.5f;
-  d->vp_offset[1] = float(vp.y) + float(vp.height) * 0.5f;
+  const ViewportTransform xf(vp, state.depth_near, state.depth_far);  // GL 4.6 §13.8.1
+  for (int k = 0; k < 3; ++k) {
+    d->vp_scale[k] = xf.scale[k];
+    d->vp_offset[k] = xf.offset[k];
+  }
   const float n = std::clamp(state.depth_near, 0.0f, 1.0f), f = std::clamp(state.depth_far, 0.0f, 1.0f);
-  d->vp_scale[2] = (f - n) * 0.5f;
-  d->vp_offset[2] = (n + f) * 0.5f;
   d->depth_min = std::min(n, f);
   d->depth_max = std::max(n, f);
   // |x_w| stays under the guard band: |x_ndc * s + o| <= G for |x_ndc| <= (G - |o|) / s.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include "shaders.hpp"
 #include "stages.hpp"
@@ -125,10 +126,39 @@ TEST(Clip, CodesAndTrivialCases) {
   EXPECT_EQ(clip_code(planes, {100, 0, 0, 1}), 0u);   // outside the viewport, inside the guard band
   EXPECT_NE(clip_code(planes, {3000, 0, 0, 1}), 0u);  // beyond the guard band
   float t0, t1;
+  // t0 is cut from the first end, t1 from the second (each measured from its own end).
   ASSERT_TRUE(clip_line(planes, ~0u, {0, 0, -3, 1}, {0, 0, 1, 1}, nullptr, nullptr, t0, t1));
   EXPECT_NEAR(t0, 0.5f, 1e-6f);
-  EXPECT_EQ(t1, 1.0f);
+  EXPECT_EQ(t1, 0.0f);
+  ASSERT_TRUE(clip_line(planes, ~0u, {0, 0, 0, 1}, {0, 0, 3, 1}, nullptr, nullptr, t0, t1));
+  EXPECT_EQ(t0, 0.0f);
+  EXPECT_NEAR(t1, 2.0f / 3.0f, 1e-6f);  // the far plane: the new end is at z = 1
   EXPECT_FALSE(clip_line(planes, ~0u, {0, 0, -3, 1}, {0, 0, -2, 1}, nullptr, nullptr, t0, t1));
+}
+
+// The polygon clipper's order is Mesa's (draw_pipe_clip.c): for each edge from vertex 0 on,
+// its first vertex when inside, then the crossing point, which is interpolated from the
+// outside end; so a clipped polygon starts at its first vertex when that one is inside, and
+// the two triangles sharing a cut edge get the same new vertex.
+TEST(Clip, PolygonOrderAndSharedEdges) {
+  const ClipPlanes planes = ClipPlanes::view_volume();
+  const glm::vec4 tri[3] = {{0, 0, 0, 1}, {2, 0, 0, 1}, {0, 0.5f, 0, 1}};  // v1 beyond x = w
+  glm::vec4 a[8] = {tri[0], tri[1], tri[2]}, b[8];
+  glm::vec4* out = nullptr;
+  auto distance = [&](int i, const glm::vec4& v) { return plane_distance(planes, i, v); };
+  auto lerp = [](const glm::vec4& from, const glm::vec4& to, float t, glm::vec4& r) {
+    r = from + (to - from) * t;
+  };
+  ASSERT_EQ(clip_polygon(planes.count, ~0u, a, 3, b, 8, distance, lerp, &out), 4);
+  const std::vector<glm::vec4> first(out, out + 4);
+  EXPECT_EQ(first[0], tri[0]);
+  EXPECT_EQ(first[1], glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(first[3], tri[2]);
+  // The edge v1-v2 walked the other way (a second triangle v2, v1, v3) is cut at the same point.
+  glm::vec4 c[8] = {tri[2], tri[1], {2, 2, 0, 1}}, d[8];
+  ASSERT_GT(clip_polygon(planes.count, ~0u, c, 3, d, 8, distance, lerp, &out), 0);
+  EXPECT_EQ(out[0], tri[2]);
+  EXPECT_EQ(out[1], first[2]);
 }
 
 // The geometry phase computes clip codes and window positions eight vertices at a time
