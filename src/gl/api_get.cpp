@@ -475,8 +475,8 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_ALIASED_LINE_WIDTH_RANGE: put(out, {1.0, 255.0}); return true;
     case GL_RED_BITS:
     case GL_GREEN_BITS:
-    case GL_BLUE_BITS:
-    case GL_ALPHA_BITS: put(out, {8.0}); return true;
+    case GL_BLUE_BITS: put(out, {8.0}); return true;
+    case GL_ALPHA_BITS: put(out, {c.has_alpha() || c.draw_fbo ? 8.0 : 0.0}); return true;
     case GL_DEPTH_BITS: put(out, {c.has_depth() ? 24.0 : 0.0}); return true;
     case GL_STENCIL_BITS: put(out, {c.has_stencil() ? 8.0 : 0.0}); return true;
     case GL_INDEX_BITS:

@@ -58,7 +58,7 @@ void accum(Context& c, GLenum op, float value) {
             glm::vec4 out = glm::clamp(v * value, 0.0f, 1.0f);
             const glm::vec4 old = draw->fetch(0, x, y);
             for (int k = 0; k < 4; ++k)
-              if (!c.s.color.color_mask[0][size_t(k)]) out[k] = old[k];
+              if (!c.s.color.color_mask[0][size_t(k)] || (k == 3 && !c.has_alpha())) out[k] = old[k];
             draw->store(0, x, y, out);
           }
           break;

@@ -17,8 +17,8 @@ thread_local Context* g_current = nullptr;
 Context* current() { return g_current; }
 void make_current(Context* c) { g_current = c; }
 
-Context::Context(int width, int height, bool double_buffer, bool depth, bool stencil)
-    : double_buffer_(double_buffer), has_depth_(depth || stencil), has_stencil_(stencil) {
+Context::Context(int width, int height, bool double_buffer, bool depth, bool stencil, bool alpha)
+    : double_buffer_(double_buffer), has_depth_(depth || stencil), has_stencil_(stencil), has_alpha_(alpha) {
   for (auto& m : matrices) m.assign(1, glm::mat4(1.0f));
   for (int i = 0; i < kTexTargetCount; ++i) default_textures[size_t(i)] = make_texture(0, TexTarget(i));
   s.color.draw_buffer = double_buffer ? GL_BACK : GL_FRONT;
@@ -53,9 +53,20 @@ void Context::resize(int width, int height) {
   gpu_->bind_framebuffer(nullptr);
   width_ = width;
   height_ = height;
-  // New buffers start black (alpha 0) with depth 1, as a freshly mapped window would.
-  for (int i = 0; i < (double_buffer_ ? 2 : 1); ++i)
+  // New buffers start black (alpha 0, or 1 without alpha bits) with depth 1, as a freshly
+  // mapped window would.
+  for (int i = 0; i < (double_buffer_ ? 2 : 1); ++i) {
     color_[i] = std::make_unique<gpu::Texture2D>(gpu::Format::RGBA8, width, height);
+    if (has_alpha_) continue;
+    gpu::Framebuffer f(color_[i].get(), nullptr);
+    gpu_->bind_framebuffer(&f);
+    gpu::ClearValues cv;
+    cv.color = {0.0f, 0.0f, 0.0f, 1.0f};
+    cv.clear_depth = cv.clear_stencil = false;
+    gpu_->clear(cv);
+    gpu_->finish();
+    gpu_->bind_framebuffer(nullptr);
+  }
   if (!double_buffer_) color_[1].reset();
   if (has_depth_) {
     depth_ = std::make_unique<gpu::Texture2D>(gpu::Format::Depth24Stencil8, width, height);

@@ -457,7 +457,10 @@ void rotate_provoking_first(std::vector<uint32_t>& triangles);
 
 class Context {
  public:
-  Context(int width, int height, bool double_buffer, bool depth, bool stencil);
+  // `alpha`: whether the window's colour buffers have alpha (GLUT_ALPHA, GLFW_ALPHA_BITS); without
+  // it they read alpha 1, as an X visual without alpha bits does (GL 2.1 §4.1.8: the
+  // destination alpha of a buffer without alpha is 1), and GL_ALPHA_BITS is 0.
+  Context(int width, int height, bool double_buffer, bool depth, bool stencil, bool alpha = true);
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -487,6 +490,7 @@ class Context {
   gpu::Texture2D* color_buffer(GLenum which);  // GL_FRONT / GL_BACK (nullptr if none)
   gpu::Texture2D* depth_buffer() { return depth_.get(); }
   bool has_depth() const { return has_depth_; }
+  bool has_alpha() const { return has_alpha_; }
   bool has_stencil() const { return has_stencil_; }
 
   // --- state
@@ -822,7 +826,7 @@ class Context {
   void release_transient();
 
   int width_ = 0, height_ = 0;
-  bool double_buffer_ = true, has_depth_ = true, has_stencil_ = true;
+  bool double_buffer_ = true, has_depth_ = true, has_stencil_ = true, has_alpha_ = true;
   std::unique_ptr<gpu::Texture2D> color_[2];  // front, back
   std::unique_ptr<gpu::Texture2D> depth_;
   gpu::Framebuffer fb_;

@@ -82,7 +82,7 @@ Context::TargetInfo Context::target_info() const {
   if (!draw_fbo) {
     t.depth = has_depth_;
     t.stencil = has_stencil_;
-    t.channels[0] = 0xF;
+    t.channels[0] = has_alpha_ ? 0xF : 0x7;  // a window without alpha keeps its alpha at 1
     return t;
   }
   const FramebufferObject& f = *draw_fbo;

@@ -82,7 +82,7 @@ struct Hints {
   int client_api = GLFW_OPENGL_API;
   int major = 1, minor = 0;
   int profile = GLFW_OPENGL_ANY_PROFILE;
-  int depth_bits = 24, stencil_bits = 8;
+  int depth_bits = 24, stencil_bits = 8, alpha_bits = 8;
   bool double_buffer = true, resizable = true, visible = true, decorated = true, focused = true;
   bool floating = false, maximized = false;
 };
@@ -555,6 +555,7 @@ void glfwWindowHint(int hint, int value) {
     case GLFW_OPENGL_PROFILE: h.profile = value; break;
     case GLFW_DEPTH_BITS: h.depth_bits = value; break;
     case GLFW_STENCIL_BITS: h.stencil_bits = value; break;
+    case GLFW_ALPHA_BITS: h.alpha_bits = value; break;
     case GLFW_DOUBLEBUFFER: h.double_buffer = value != 0; break;
     case GLFW_RESIZABLE: h.resizable = value != 0; break;
     case GLFW_VISIBLE: h.visible = value != 0; break;
@@ -562,11 +563,11 @@ void glfwWindowHint(int hint, int value) {
     case GLFW_FOCUSED: h.focused = value != 0; break;
     case GLFW_FLOATING: h.floating = value != 0; break;
     case GLFW_MAXIMIZED: h.maximized = value != 0; break;
-    // Accepted; a Tessel context is what it is: 8-bit RGBA, no multisampling, no sRGB.
+    // Accepted; a Tessel context is what it is: 8-bit RGB (alpha as GLFW_ALPHA_BITS asks),
+    // no multisampling, no sRGB.
     case GLFW_RED_BITS:
     case GLFW_GREEN_BITS:
     case GLFW_BLUE_BITS:
-    case GLFW_ALPHA_BITS:
     case GLFW_ACCUM_RED_BITS:
     case GLFW_ACCUM_GREEN_BITS:
     case GLFW_ACCUM_BLUE_BITS:
@@ -635,7 +636,7 @@ GLFWwindow* glfwCreateWindow(int width, int height, const char* title, GLFWmonit
   w->floating = h.floating;
   if (h.client_api == GLFW_OPENGL_API) {
     w->context = std::make_unique<tessel::gl::Context>(w->width, w->height, h.double_buffer, h.depth_bits > 0,
-                                                       h.stencil_bits > 0);
+                                                       h.stencil_bits > 0, h.alpha_bits != 0);
     // A 3.2+ request is a core context unless the compatibility profile is asked for (as GLX
     // gives), and 1.x/2.x requests are the default compatibility context. Tessel's newest
     // is 3.3: a newer request gets it (GL_VERSION says so).

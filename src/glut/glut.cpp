@@ -302,7 +302,7 @@ int GLAPIENTRY glutCreateWindow(const char* title) {
   w->mode = s.display_mode;
   const bool dbl = (w->mode & GLUT_DOUBLE) != 0;
   w->context = std::make_unique<gl::Context>(w->width, w->height, dbl, (w->mode & GLUT_DEPTH) != 0,
-                                             (w->mode & GLUT_STENCIL) != 0);
+                                             (w->mode & GLUT_STENCIL) != 0, (w->mode & GLUT_ALPHA) != 0);
   apply_context_version(*w->context);
   if (!s.headless.on && !native_open(*w)) parse_headless(s.headless, "");
   Window& ref = *w;

@@ -181,3 +181,41 @@ TEST(GlutProcs, GlutAndGlEntryPoints) {
 }
 
 }  // namespace
+
+// A window has alpha bits only when GLUT_ALPHA asks for them, as an X visual chosen by
+// freeglut for GLUT_RGBA: without them alpha reads as 1 and GL_DST_ALPHA blends as 1 (the
+// figures are Mesa 22.3's under Xvfb for the same calls).
+TEST(GlutWindow, AlphaBitsOnlyWhenAskedFor) {
+  window();
+  auto probe = [](GLint& bits, GLubyte cleared[4], GLubyte blended[4]) {
+    glGetIntegerv(GL_ALPHA_BITS, &bits);
+    glClearColor(0.2f, 0.4f, 0.6f, 0.3f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, cleared);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_DST_ALPHA, GL_ZERO);
+    glColor4f(1, 1, 1, 1);
+    glRectf(-1, -1, 1, 1);
+    glDisable(GL_BLEND);
+    glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, blended);
+  };
+  GLint bits = -1;
+  GLubyte cleared[4], blended[4];
+  probe(bits, cleared, blended);  // the GLUT_RGB window
+  EXPECT_EQ(bits, 0);
+  EXPECT_EQ(cleared[0], 51);
+  EXPECT_EQ(cleared[3], 255);
+  EXPECT_EQ(blended[0], 255);
+  EXPECT_EQ(blended[3], 255);
+  const int current = glutGetWindow();
+  glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_ALPHA);
+  const int with_alpha = glutCreateWindow("alpha");
+  probe(bits, cleared, blended);
+  EXPECT_EQ(bits, 8);
+  EXPECT_EQ(cleared[3], 76);
+  EXPECT_EQ(blended[0], 76);
+  EXPECT_EQ(blended[3], 76);
+  glutDestroyWindow(with_alpha);
+  glutSetWindow(current);
+  glutInitDisplayMode(GLUT_RGB | GLUT_DOUBLE);
+}

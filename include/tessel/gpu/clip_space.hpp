@@ -26,13 +26,14 @@ struct ViewportTransform {
   ViewportTransform(const Rect& viewport, float depth_near, float depth_far) {
     const float n = std::clamp(depth_near, 0.0f, 1.0f), f = std::clamp(depth_far, 0.0f, 1.0f);
     scale = {float(viewport.width) * 0.5f, float(viewport.height) * 0.5f, (f - n) * 0.5f};
-    offset = {float(viewport.x) + float(viewport.width) * 0.5f, float(viewport.y) + float(viewport.height) * 0.5f,
-              (n + f) * 0.5f};
+    offset = {float(viewport.x) + float(viewport.width) * 0.5f,
+              float(viewport.y) + float(viewport.height) * 0.5f, (n + f) * 0.5f};
   }
   // The window position of a clip-space position (after the divide by w).
   glm::vec3 window(const glm::vec4& clip) const {
     const float oow = 1.0f / clip.w;
-    return {clip.x * oow * scale.x + offset.x, clip.y * oow * scale.y + offset.y, clip.z * oow * scale.z + offset.z};
+    return {clip.x * oow * scale.x + offset.x, clip.y * oow * scale.y + offset.y,
+            clip.z * oow * scale.z + offset.z};
   }
 };
 
@@ -48,7 +49,8 @@ inline bool front_facing(FrontFace front_face, bool counter_clockwise) {
   return (front_face == FrontFace::CCW) == counter_clockwise;
 }
 inline bool culled(CullMode mode, bool front) {
-  return mode == CullMode::FrontAndBack || (mode == CullMode::Front && front) || (mode == CullMode::Back && !front);
+  return mode == CullMode::FrontAndBack || (mode == CullMode::Front && front) ||
+         (mode == CullMode::Back && !front);
 }
 
 // --- clipping ----------------------------------------------------------------------------------
@@ -105,8 +107,8 @@ inline unsigned clip_code(const ClipPlanes& planes, const glm::vec4& pos, const 
 // to from + (to - from) * t. a and b each have room for max_out vertices; returns the count
 // (0 when fewer than three are left) and points *out at the buffer that holds them.
 template <class V, class Distance, class Lerp>
-int clip_polygon(int plane_count, unsigned mask, V* a, int n, V* b, int max_out, Distance&& distance, Lerp&& lerp,
-                 V** out) {
+int clip_polygon(int plane_count, unsigned mask, V* a, int n, V* b, int max_out, Distance&& distance,
+                 Lerp&& lerp, V** out) {
   V* src = a;
   V* dst = b;
   for (int i = 0; i < plane_count && n > 0; ++i) {
