@@ -1,13 +1,16 @@
 // Tessel's GLU 1.3: error strings, the matrix helpers, projection, image scaling and mipmap
 // building. Everything here is written on top of OpenGL 1.1 entry points only (glGet*,
-// glMultMatrix*, glOrtho, glTranslate*, glScale*, glPixelStorei, glTexImage1D/2D), so it runs
-// unchanged on Tessel's own GL and on any other GL 1.x implementation.
+// glMultMatrix*, glOrtho, glTranslate*, glScale*, glPixelStorei, glTexImage1D/2D), and
+// glTexImage3D (GL 1.2) for 3D mipmaps, so it runs unchanged on Tessel's own GL and on any
+// other GL implementation.
 //
 // Section numbers refer to "The OpenGL Graphics System Utility Library, Version 1.3" (GLU 1.3).
 // Where the specification leaves the numerics open (rounding, filtering at the image edges) the
 // behaviour follows the reference GLU that Mesa ships, so that images agree with it.
 
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
+#include <GL/glext.h>
 #include <GL/glu.h>
 
 #include <algorithm>
@@ -527,6 +530,193 @@ GLint build1DCore(GLenum target, GLint internalFormat, int width, int newWidth, 
   return result;
 }
 
+// --- 3D mipmaps (GLU 1.3 section 3.2) -------------------------------------------------------
+struct Volume {
+  int width = 0, height = 0, depth = 0, comps = 0;
+  std::vector<double> v;
+  double* at(int x, int y, int z) {
+    return v.data() + ((static_cast<size_t>(z) * height + y) * width + x) * comps;
+  }
+  const double* at(int x, int y, int z) const {
+    return v.data() + ((static_cast<size_t>(z) * height + y) * width + x) * comps;
+  }
+};
+
+// The images of a 3D block as GL 1.2 section 3.8.1 unpacks them: image z starts
+// (skipImages + z) image heights of rows after the first row.
+Volume unpackVolume(const void* data, const PixelStore& ps, GLint imageHeight, GLint skipImages, int width,
+                    int height, int depth, int comps, GLenum type) {
+  Volume vol;
+  vol.width = width;
+  vol.height = height;
+  vol.depth = depth;
+  vol.comps = comps;
+  vol.v.resize(static_cast<size_t>(width) * height * depth * comps);
+  const Layout l = layoutOf(data, ps, width, comps, sizeOfType(type));
+  const size_t imageBytes = l.rowBytes * static_cast<size_t>(imageHeight > 0 ? imageHeight : height);
+  size_t o = 0;
+  for (int z = 0; z < depth; z++)
+    for (int y = 0; y < height; y++) {
+      const unsigned char* row =
+          l.base + (static_cast<size_t>(skipImages) + z) * imageBytes + static_cast<size_t>(y) * l.rowBytes;
+      for (int x = 0; x < width; x++)
+        for (int k = 0; k < comps; k++)
+          vol.v[o++] =
+              readValue(row + x * l.groupBytes + static_cast<size_t>(k) * l.elementBytes, type, l.swap);
+    }
+  return vol;
+}
+
+// scale16 in three dimensions, as the reference GLU's scaleInternal3D (which, unlike its 2D
+// scale, has no shortcut for an exact halving): a box around each output texel's centre, of
+// one output texel when shrinking and one input texel when magnifying, wrapping at the edges,
+// weights and sums in single precision, the mean rounded.
+void scale16Volume(int comps, int win, int hin, int din, const uint16_t* in, int wout, int hout, int dout,
+                   uint16_t* out) {
+  const float convz = static_cast<float>(din) / dout, convy = static_cast<float>(hin) / hout,
+              convx = static_cast<float>(win) / wout;
+  auto box = [](float centre, float conv, bool shrinking, float& lo, float& hi) {
+    if (shrinking) {
+      hi = centre + conv / 2;
+      lo = centre - conv / 2;
+    } else {
+      hi = static_cast<float>(centre + 0.5);
+      lo = static_cast<float>(centre - 0.5);
+    }
+  };
+  float acc[4];
+  for (int od = 0; od < dout; od++) {
+    float z0, z1;
+    box(static_cast<float>(convz * (od + 0.5)), convz, din > dout, z0, z1);
+    for (int oy = 0; oy < hout; oy++) {
+      float y0, y1;
+      box(static_cast<float>(convy * (oy + 0.5)), convy, hin > hout, y0, y1);
+      for (int ox = 0; ox < wout; ox++) {
+        float x0, x1;
+        box(static_cast<float>(convx * (ox + 0.5)), convx, win > wout, x0, x1);
+        for (int k = 0; k < comps; k++) acc[k] = 0.0f;
+        float volume = 0.0f;
+        float z = z0;
+        for (int iz = static_cast<int>(std::floor(z0)); z < z1; iz++, z = static_cast<float>(iz)) {
+          const float wz = z1 < static_cast<float>(iz + 1) ? z1 - z : static_cast<float>(iz + 1) - z;
+          const int rz = ((iz % din) + din) % din;
+          float y = y0;
+          for (int iy = static_cast<int>(std::floor(y0)); y < y1; iy++, y = static_cast<float>(iy)) {
+            const float wy = y1 < static_cast<float>(iy + 1) ? y1 - y : static_cast<float>(iy + 1) - y;
+            const int ry = ((iy % hin) + hin) % hin;
+            float x = x0;
+            for (int ix = static_cast<int>(std::floor(x0)); x < x1; ix++, x = static_cast<float>(ix)) {
+              const float wx = x1 < static_cast<float>(ix + 1) ? x1 - x : static_cast<float>(ix + 1) - x;
+              const int rx = ((ix % win) + win) % win;
+              const float w = wx * wy * wz;
+              volume += w;
+              const uint16_t* src = in + ((static_cast<size_t>(rz) * hin + ry) * win + rx) * comps;
+              for (int k = 0; k < comps; k++) acc[k] += src[k] * w;
+            }
+          }
+        }
+        uint16_t* dst = out + ((static_cast<size_t>(od) * hout + oy) * wout + ox) * comps;
+        for (int k = 0; k < comps; k++) {
+          const double v = (acc[k] + 0.5) / volume;
+          dst[k] = static_cast<uint16_t>(std::clamp(v, 0.0, 65535.0));
+        }
+      }
+    }
+  }
+}
+
+// One 3D mipmap step: each dimension larger than one is halved; the new texel is the mean of
+// the 2, 4 or 8 it replaces, truncated for integer types (the reference GLU's 3D averages
+// go through a double and its conversion back). A volume given with depth 1 is halved as an
+// image (`image`: the mean of four rounded, as halve() does).
+Volume halveVolume(const Volume& in, GLenum type, bool image) {
+  Volume out;
+  out.width = std::max(1, in.width / 2);
+  out.height = std::max(1, in.height / 2);
+  out.depth = std::max(1, in.depth / 2);
+  out.comps = in.comps;
+  out.v.resize(static_cast<size_t>(out.width) * out.height * out.depth * out.comps);
+  const int sx = in.width > 1 ? 2 : 1, sy = in.height > 1 ? 2 : 1, sz = in.depth > 1 ? 2 : 1;
+  const int n = sx * sy * sz;
+  for (int z = 0; z < out.depth; z++)
+    for (int y = 0; y < out.height; y++)
+      for (int x = 0; x < out.width; x++)
+        for (int k = 0; k < in.comps; k++) {
+          double sum = 0;
+          for (int c = 0; c < sz; c++)
+            for (int j = 0; j < sy; j++)
+              for (int i = 0; i < sx; i++) sum += in.at(x * sx + i, y * sy + j, z * sz + c)[k];
+          out.at(x, y, z)[k] = type == GL_FLOAT ? sum / n : std::trunc((image && n == 4 ? sum + 2 : sum) / n);
+        }
+  return out;
+}
+
+// Builds levels userLevel.. of a 3D mipmap from data of (width, height, depth), first scaled to
+// (newWidth, newHeight, newDepth), uploading those in [baseLevel, maxLevel].
+GLint build3DCore(GLenum target, GLint internalFormat, int width, int height, int depth, int newWidth,
+                  int newHeight, int newDepth, GLenum format, GLenum type, GLint userLevel, GLint baseLevel,
+                  GLint maxLevel, const void* data) {
+  const int comps = componentsOf(format);
+  const PixelStore saved = getUnpack();
+  GLint imageHeight = 0, skipImages = 0;
+  glGetIntegerv(GL_UNPACK_IMAGE_HEIGHT, &imageHeight);
+  glGetIntegerv(GL_UNPACK_SKIP_IMAGES, &skipImages);
+  Volume vol;
+  try {
+    if (width == newWidth && height == newHeight && depth == newDepth) {
+      vol = unpackVolume(data, saved, imageHeight, skipImages, width, height, depth, comps, type);
+    } else {
+      // Scaled through the 16-bit intermediate, as gluScaleImage does, and back to the type.
+      const Layout l = layoutOf(data, saved, width, comps, sizeOfType(type));
+      const size_t imageBytes = l.rowBytes * static_cast<size_t>(imageHeight > 0 ? imageHeight : height);
+      std::vector<uint16_t> in16;
+      for (int z = 0; z < depth; z++) {
+        const unsigned char* image =
+            static_cast<const unsigned char*>(data) + (static_cast<size_t>(skipImages) + z) * imageBytes;
+        const std::vector<uint16_t> one = unpack16(image, saved, width, height, comps, type);
+        in16.insert(in16.end(), one.begin(), one.end());
+      }
+      std::vector<uint16_t> out16(static_cast<size_t>(newWidth) * newHeight * newDepth * comps);
+      scale16Volume(comps, width, height, depth, in16.data(), newWidth, newHeight, newDepth, out16.data());
+      vol.width = newWidth;
+      vol.height = newHeight;
+      vol.depth = newDepth;
+      vol.comps = comps;
+      vol.v.resize(out16.size());
+      unsigned char element[4];
+      for (size_t i = 0; i < out16.size(); i++) {
+        narrow16(element, out16[i], type, false);
+        vol.v[i] = readValue(element, type, false);
+      }
+    }
+  } catch (const std::bad_alloc&) {
+    return GLU_OUT_OF_MEMORY;
+  }
+  const int levels = std::max({floorLog2(newWidth), floorLog2(newHeight), floorLog2(newDepth)});
+  setTightUnpack();
+  glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
+  glPixelStorei(GL_UNPACK_SKIP_IMAGES, 0);
+  GLint result = 0;
+  try {
+    for (int level = userLevel; level <= userLevel + levels; level++) {
+      if (level > userLevel) vol = halveVolume(vol, type, depth == 1);
+      if (baseLevel <= level && level <= maxLevel) {
+        Image flat;  // the volume's values, for packImage
+        flat.v = vol.v;
+        const std::vector<unsigned char> bytes = packImage(flat, type);
+        glTexImage3D(target, level, internalFormat, vol.width, vol.height, vol.depth, 0, format, type,
+                     bytes.data());
+      }
+    }
+  } catch (const std::bad_alloc&) {
+    result = GLU_OUT_OF_MEMORY;
+  }
+  setUnpack(saved);
+  glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, imageHeight);
+  glPixelStorei(GL_UNPACK_SKIP_IMAGES, skipImages);
+  return result;
+}
+
 bool legalLevels(GLint userLevel, GLint baseLevel, GLint maxLevel, GLint totalLevels) {
   return !(baseLevel < 0 || baseLevel < userLevel || maxLevel < baseLevel || totalLevels < maxLevel);
 }
@@ -885,6 +1075,32 @@ GLint GLAPIENTRY gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei 
   const int levels = std::max(floorLog2(newWidth), floorLog2(newHeight));
   return build2DCore(target, internalFormat, width, height, newWidth, newHeight, format, type, 0, 0, levels,
                      data);
+}
+
+GLint GLAPIENTRY gluBuild3DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width, GLsizei height,
+                                        GLsizei depth, GLenum format, GLenum type, GLint level, GLint base,
+                                        GLint max, const void* data) {
+  if (const GLint rc = checkMipmapArgs(format, type)) return rc;
+  if (width < 1 || height < 1 || depth < 1) return GLU_INVALID_VALUE;
+  const int levels = std::max({log2Exact(width), log2Exact(height), log2Exact(depth)}) + level;
+  if (!legalLevels(level, base, max, levels)) return GLU_INVALID_VALUE;
+  return build3DCore(target, internalFormat, width, height, depth, width, height, depth, format, type, level,
+                     base, max, data);
+}
+
+GLint GLAPIENTRY gluBuild3DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height,
+                                   GLsizei depth, GLenum format, GLenum type, const void* data) {
+  if (const GLint rc = checkMipmapArgs(format, type)) return rc;
+  if (width < 1 || height < 1 || depth < 1) return GLU_INVALID_VALUE;
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
+  if (maxSize < 1) maxSize = 16;  // GL 1.2 guarantees at least 16
+  const int newWidth = std::min(nearestPower(width), int(maxSize));
+  const int newHeight = std::min(nearestPower(height), int(maxSize));
+  const int newDepth = std::min(nearestPower(depth), int(maxSize));
+  const int levels = std::max({floorLog2(newWidth), floorLog2(newHeight), floorLog2(newDepth)});
+  return build3DCore(target, internalFormat, width, height, depth, newWidth, newHeight, newDepth, format,
+                     type, 0, 0, levels, data);
 }
 
 }  // extern "C"

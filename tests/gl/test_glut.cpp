@@ -219,3 +219,45 @@ TEST(GlutWindow, AlphaBitsOnlyWhenAskedFor) {
   glutSetWindow(current);
   glutInitDisplayMode(GLUT_RGB | GLUT_DOUBLE);
 }
+
+// gluBuild3DMipmaps / gluBuild3DMipmapLevels (GLU 1.3 §3.2): the levels and sizes they make,
+// and the errors they return before touching any texture.
+TEST(Glu, Build3DMipmapsLevelsAndErrors) {
+  window();
+  GLuint t = 0;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_3D, t);
+  std::vector<GLubyte> texels(5 * 3 * 2 * 4, 200);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  // 5x3x2 becomes 4x4x2 (GLU's nearest powers of two), then 2x2x1 and 1x1x1.
+  ASSERT_EQ(gluBuild3DMipmaps(GL_TEXTURE_3D, GL_RGBA8, 5, 3, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels.data()), 0);
+  const GLint sizes[3][3] = {{4, 4, 2}, {2, 2, 1}, {1, 1, 1}};
+  for (int level = 0; level < 3; ++level) {
+    GLint w = 0, h = 0, d = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_3D, level, GL_TEXTURE_WIDTH, &w);
+    glGetTexLevelParameteriv(GL_TEXTURE_3D, level, GL_TEXTURE_HEIGHT, &h);
+    glGetTexLevelParameteriv(GL_TEXTURE_3D, level, GL_TEXTURE_DEPTH, &d);
+    EXPECT_EQ(w, sizes[level][0]) << level;
+    EXPECT_EQ(h, sizes[level][1]) << level;
+    EXPECT_EQ(d, sizes[level][2]) << level;
+  }
+  GLubyte texel[4] = {};
+  glGetTexImage(GL_TEXTURE_3D, 2, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  EXPECT_EQ(texel[0], 200);  // a constant volume stays constant through scaling and halving
+  EXPECT_EQ(gluBuild3DMipmaps(GL_TEXTURE_3D, GL_RGBA8, 0, 3, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels.data()),
+            GLU_INVALID_VALUE);
+  EXPECT_EQ(gluBuild3DMipmaps(GL_TEXTURE_3D, GL_RGBA8, 5, 3, 2, GL_RGBA, GL_BITMAP, texels.data()),
+            GLU_INVALID_ENUM);
+  // Levels: base below the user's level, max past the last, max below base.
+  EXPECT_EQ(gluBuild3DMipmapLevels(GL_TEXTURE_3D, GL_RGBA8, 4, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, 1, 0, 2,
+                                   texels.data()),
+            GLU_INVALID_VALUE);
+  EXPECT_EQ(gluBuild3DMipmapLevels(GL_TEXTURE_3D, GL_RGBA8, 4, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, 0, 0, 3,
+                                   texels.data()),
+            GLU_INVALID_VALUE);
+  EXPECT_EQ(gluBuild3DMipmapLevels(GL_TEXTURE_3D, GL_RGBA8, 4, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, 0, 2, 1,
+                                   texels.data()),
+            GLU_INVALID_VALUE);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glDeleteTextures(1, &t);
+}
