@@ -9,9 +9,9 @@
  * leaves a level whose depth reaches 1 before its width and height unwritten: the volumes here
  * stay clear of both.) glTexImage3D is GL 1.2: the program asks for it through GL/glext.h. */
 #define GL_GLEXT_PROTOTYPES 1
-#include <GL/glut.h>
 #include <GL/glext.h>
 #include <GL/glu.h>
+#include <GL/glut.h>
 
 static GLuint tex[2];
 
@@ -93,8 +93,8 @@ static void display(void) {
   glBindTexture(GL_TEXTURE_3D, tex[0]);
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  slices(4, 180, 24);  /* about level 0 */
-  slices(4, 150, 7);   /* level 1 */
+  slices(4, 180, 24);   /* about level 0 */
+  slices(4, 150, 7);    /* level 1 */
   slices(4, 130, 3.3f); /* level 2 */
   slices(4, 120, 1.5f); /* level 3 */
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
@@ -121,8 +121,8 @@ static void display(void) {
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glBindTexture(GL_TEXTURE_3D, tex[1]);
-  slices(165, 170, 27);  /* level 1 */
-  slices(165, 120, 11);  /* level 2 */
+  slices(165, 170, 27); /* level 1 */
+  slices(165, 120, 11); /* level 2 */
   slices(165, 90, 5);   /* level 3 */
   glDisable(GL_BLEND);
   glDisable(GL_TEXTURE_3D);
