@@ -215,6 +215,10 @@ gpu::RenderState Context::render_state(bool for_clear) const {
     r.line_width = std::clamp(s.line.width, 1.0f, 255.0f);
     r.point_size = std::clamp(s.point.size, 1.0f, 255.0f);
     r.point_sprite_lower_left = s.point.sprite_lower_left;
+    // Antialiased points and lines as llvmpipe draws them; Mesa leaves points aliased while
+    // point sprites are on, and polygons are aliased (llvmpipe has no smooth polygons).
+    r.point_smooth = s.point.smooth && !s.point.sprite;
+    r.line_smooth = s.line.smooth;
     for (int i = 0; i < kMaxClipPlanes; ++i) {
       if (!s.transform.clip_enabled[size_t(i)]) continue;
       r.clip_plane_enable |= uint8_t(1u << i);

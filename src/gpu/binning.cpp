@@ -14,7 +14,7 @@ void Context::Frame::bin_tiles(Worker& w, uint32_t chunk, const DrawRecord* d, c
   const int ty0 = p->miny >> kTileShift, ty1 = p->maxy >> kTileShift;
   for (int ty = ty0; ty <= ty1; ++ty) {
     for (int tx = tx0; tx <= tx1; ++tx) {
-      if (p->kind == PrimKind::Triangle && (tx1 > tx0 || ty1 > ty0)) {
+      if (p->kind != PrimKind::Clear && (tx1 > tx0 || ty1 > ty0)) {
         // Trivial reject of tiles the bbox touches but the triangle misses.
         const int x0 = std::max(tx * kTileSize, p->minx),
                   x1 = std::min(tx * kTileSize + kTileSize - 1, p->maxx);

@@ -103,13 +103,65 @@ void finish_vertices(const DrawRecord& d, const ClipPlanes& planes, const float*
 
 Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2,
                      const float* flat_src, uint32_t prim_id, Facing facing, bool apply_offset, Arena& arena,
-                     Counters& c, bool* culled) {
+                     Counters& c, bool* culled, const SmoothCoverage* smooth) {
   return setup_triangle_inline(d, SetupConstants(d), v0, v1, v2, flat_src, prim_id, facing, apply_offset,
-                               arena, c, culled);
+                               arena, c, culled, smooth);
 }
+
+namespace {
+
+// An antialiased line as llvmpipe's draw module draws it (draw_pipe_aaline.c): a quad half
+// a pixel longer than the line at each end and `half width` to each side, with half width 1
+// for lines up to 1 wide and width/2 + 1/2 above, drawn as two triangles (never culled) whose
+// fragments get the coverage of SmoothCoverage.
+int setup_smooth_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const float* flat_src,
+                      uint32_t prim_id, bool front, float z_offset, Arena& arena, Counters& c, Prim** out) {
+  const float dx = v1.x - v0.x, dy = v1.y - v0.y;
+  const float length = std::sqrt(dx * dx + dy * dy);
+  if (!(length > 0.0f)) return 0;
+  const float ca = dx / length, sa = dy / length;
+  const float hw = d.state.line_width <= 1.0f ? 1.0f : 0.5f * d.state.line_width + 0.5f;
+  const float hl = 0.5f * length + 0.5f;
+  constexpr float tl = 0.5f;
+  // Corners: 0 and 1 at v0's end (+ and - the perpendicular), 2 and 3 at v1's.
+  WinVert q[4] = {v0, v0, v1, v1};
+  q[0].x += -tl * ca - hw * sa;
+  q[0].y += -tl * sa + hw * ca;
+  q[1].x += -tl * ca + hw * sa;
+  q[1].y += -tl * sa - hw * ca;
+  q[2].x += tl * ca - hw * sa;
+  q[2].y += tl * sa + hw * ca;
+  q[3].x += tl * ca + hw * sa;
+  q[3].y += tl * sa - hw * ca;
+  for (auto& w : q) {
+    w.z += z_offset;
+    snap_vertex(w);
+  }
+  SmoothCoverage cov;
+  cov.ox = 0.5f * (v0.x + v1.x);
+  cov.oy = 0.5f * (v0.y + v1.y);
+  cov.ux = -sa;  // across the line
+  cov.uy = ca;
+  cov.vx = ca;  // along it
+  cov.vy = sa;
+  cov.a = hw;
+  cov.b = hl;
+  cov.point = false;
+  const Facing f = front ? Facing::Front : Facing::Back;
+  int n = 0;
+  if (Prim* p = setup_triangle(d, q[2], q[1], q[0], flat_src, prim_id, f, false, arena, c, nullptr, &cov))
+    out[n++] = p;
+  if (Prim* p = setup_triangle(d, q[3], q[1], q[2], flat_src, prim_id, f, false, arena, c, nullptr, &cov))
+    out[n++] = p;
+  return n;
+}
+
+}  // namespace
 
 int setup_line(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const float* flat_src,
                uint32_t prim_id, bool front, float z_offset, Arena& arena, Counters& c, Prim** out) {
+  if (d.state.line_smooth)
+    return setup_smooth_line(d, v0, v1, flat_src, prim_id, front, z_offset, arena, c, out);
   const float dx = v1.x - v0.x, dy = v1.y - v0.y;
   if (dx == 0.0f && dy == 0.0f) return 0;
   const float half = std::max(d.state.line_width, 1.0f) * 0.5f;
@@ -204,9 +256,31 @@ int setup_point(const DrawRecord& d, const WinVert& v, uint32_t prim_id, bool fr
   // The size: the vertex shader's (gl_PointSize) with program_point_size, clamped as GL clamps
   // the derived size to ALIASED_POINT_SIZE_RANGE, which is 1..255 here as on llvmpipe.
   float size = d.state.point_size;
-  if (d.state.program_point_size && prog.point_size_var >= 0) size = v.var[prog.point_size_var];
-  size = size >= 1.0f ? std::min(size, 255.0f) : 1.0f;  // NaN: 1
-  const float half = size * 0.5f;
+  const bool per_vertex = d.state.program_point_size && prog.point_size_var >= 0;
+  if (per_vertex) size = v.var[prog.point_size_var];
+  // An antialiased point (llvmpipe's draw_pipe_aapoint.c): a square of radius 1 for sizes up to
+  // 2, size/2 above (the vertex's size / 2 as it is, with a per-vertex size), whose fragments
+  // get the coverage of SmoothCoverage.
+  const bool smooth = d.state.point_smooth;
+  float half;
+  if (smooth) {
+    half = per_vertex ? 0.5f * size : size <= 2.0f ? 1.0f : 0.5f * std::min(size, 255.0f);
+    if (!(half > 0.0f) || !std::isfinite(half)) return 0;
+  } else {
+    size = size >= 1.0f ? std::min(size, 255.0f) : 1.0f;  // NaN: 1
+    half = size * 0.5f;
+  }
+  SmoothCoverage cov;
+  if (smooth) {
+    const float k = 1.0f / half;
+    cov.ox = v.x;
+    cov.oy = v.y;
+    cov.ux = cov.vy = 1.0f / half;
+    cov.uy = cov.vx = 0.0f;
+    cov.a = 1.0f - 2.0f * k + k * k;  // (1 - 1/r)^2: the squared distance where attenuation starts
+    cov.b = 0.0f;
+    cov.point = true;
+  }
   WinVert q[4] = {v, v, v, v};
   // gl_PointCoord (GL 3.3 §3.4.1): s = 1/2 + (x_f + 1/2 - x_w) / size, and t = 1/2 - (y_f + 1/2 -
   // y_w) / size with the upper-left origin (+ with the lower-left one): linear in the window,
@@ -234,10 +308,11 @@ int setup_point(const DrawRecord& d, const WinVert& v, uint32_t prim_id, bool fr
     snap_vertex(w);
   }
   const Facing f = front ? Facing::Front : Facing::Back;
+  const SmoothCoverage* sm = smooth ? &cov : nullptr;
   int n = 0;
-  if (Prim* p = setup_triangle(d, q[0], q[1], q[2], v.var, prim_id, f, false, arena, c, nullptr))
+  if (Prim* p = setup_triangle(d, q[0], q[1], q[2], v.var, prim_id, f, false, arena, c, nullptr, sm))
     out[n++] = p;
-  if (Prim* p = setup_triangle(d, q[0], q[2], q[3], v.var, prim_id, f, false, arena, c, nullptr))
+  if (Prim* p = setup_triangle(d, q[0], q[2], q[3], v.var, prim_id, f, false, arena, c, nullptr, sm))
     out[n++] = p;
   return n;
 }

@@ -100,12 +100,10 @@ struct SetupConstants {
 };
 
 // setup_triangle (stages.hpp), inline for the geometry phase's loop over a chunk's triangles.
-__attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawRecord& d,
-                                                                  const SetupConstants& sc, const WinVert& v0,
-                                                                  const WinVert& v1, const WinVert& v2,
-                                                                  const float* flat_src, uint32_t prim_id,
-                                                                  Facing facing, bool apply_offset,
-                                                                  Arena& arena, Counters& c, bool* culled) {
+__attribute__((always_inline)) inline Prim* setup_triangle_inline(
+    const DrawRecord& d, const SetupConstants& sc, const WinVert& v0, const WinVert& v1, const WinVert& v2,
+    const float* flat_src, uint32_t prim_id, Facing facing, bool apply_offset, Arena& arena, Counters& c,
+    bool* culled, const SmoothCoverage* smooth = nullptr) {
   if (culled) *culled = false;
   // Clipping keeps positions finite and inside the guard band; a vertex that still is not
   // (w rounded to 0, overflow in the interpolation) drops the triangle.
@@ -161,18 +159,19 @@ __attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawReco
   // raster work, and the raster phase reads the others' groups from a mask.
   uint64_t cover = 0;
   const int gx0 = minx & ~3, gy0 = miny & ~1;
-  if (maxx < gx0 + 8 && maxy < gy0 + 8 && small_edges(e)) {
+  if (!smooth && maxx < gx0 + 8 && maxy < gy0 + 8 && small_edges(e)) {
     cover = small_coverage(e, minx, miny, maxx, maxy);
     if (!cover) return nullptr;
   }
 
   const int K = sc.varyings;
-  auto* p = static_cast<Prim*>(arena.allocate(Prim::bytes(K, cover == 0)));
+  auto* p =
+      static_cast<Prim*>(arena.allocate(Prim::bytes(K, cover == 0) + (smooth ? sizeof(SmoothCoverage) : 0)));
   // The frame's Prims do not fit in any cache: the lines a few Prims ahead are requested
   // now, so that their first stores do not wait on memory.
   for (int o = 0; o < 256; o += 64) __builtin_prefetch(reinterpret_cast<char*>(p) + 1024 + o, 1);
   new (p) Prim;  // no zeroing: every field is set below
-  p->kind = PrimKind::Triangle;
+  p->kind = smooth ? PrimKind::Smooth : PrimKind::Triangle;
   p->front = front;
   p->prim_id = prim_id;
   p->minx = minx;
@@ -181,6 +180,7 @@ __attribute__((always_inline)) inline Prim* setup_triangle_inline(const DrawReco
   p->maxy = maxy;
   p->cover = cover;
   if (!cover) std::copy_n(e, 3, p->edges(K));
+  if (smooth) *p->smooth(K) = *smooth;
 
   // Planes from the float window positions, anchored at v0.
   PlaneSolver s;

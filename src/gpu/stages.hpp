@@ -131,9 +131,10 @@ enum class Facing : int8_t { FromArea = -1, Back = 0, Front = 1 };
 // equations with the fill rule, the bbox cut to the render area, and the planes of depth,
 // 1/w and every varying (flat components from `flat_src`). z_offset is added to depth.
 // Returns nullptr when the triangle is culled, has zero area or covers no pixel.
+// With `smooth`, the Prim is a Smooth one carrying that coverage (antialiased points and lines).
 Prim* setup_triangle(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2,
                      const float* flat_src, uint32_t prim_id, Facing facing, bool apply_offset, Arena& arena,
-                     Counters& c, bool* culled);
+                     Counters& c, bool* culled, const SmoothCoverage* smooth = nullptr);
 // Polygon offset of GL 4.6 §14.6.5 for the plane through three window vertices.
 float polygon_offset(const DrawRecord& d, const WinVert& v0, const WinVert& v1, const WinVert& v2);
 // A line of the draw's line width between two window vertices, as up to two Prims

@@ -282,11 +282,26 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   d->depth_float = d->target.depth && d->target.depth_format == Format::Depth32F;
   d->depth_resolution = 1.0f / 16777216.0f;  // 2^-24 for 24-bit depth
   d->early_depth = !d->program->discards && !d->program->writes_depth;
+  // Antialiased points and lines get their coverage per fragment (and points discard): not
+  // for packed shading, and points not with early depth. Only when the draw rasterizes points
+  // or lines (a program may leave GL_LINE_SMOOTH on while it draws triangles).
+  if (state.point_smooth || state.line_smooth) {
+    const Topology out = gs_input ? d->program->geometry_output : d->topology;
+    const int size = out == Topology::TriangleStrip ? 3 : out == Topology::LineStrip ? 2 : prim_size(out);
+    auto mode = [&](PolygonMode m) {
+      return size == 3 && (state.polygon_mode == m || state.polygon_mode_back == m);
+    };
+    const bool points = state.point_smooth && (size == 1 || mode(PolygonMode::Point));
+    const bool lines = state.line_smooth && (size == 2 || size == 4 || mode(PolygonMode::Line));
+    d->state.point_smooth = points;
+    d->state.line_smooth = lines;
+    if (points) d->early_depth = false;
+  }
   d->fast_depth = d->target.depth && d->state.depth_test && !(d->state.stencil_test && d->target.has_stencil);
   d->fast_color = d->target.color_count == 1 && d->target.color[0].data &&
                   d->target.color[0].format == Format::RGBA8 && !d->state.blend[0].enabled &&
                   !d->state.logic_op_enabled && d->state.blend[0].write_mask == 0xF &&
-                  d->program->outputs >= 1;
+                  d->program->outputs >= 1 && !d->state.point_smooth && !d->state.line_smooth;
 
   frame_->pending_prims += uint64_t(d->prim_count) * d->instance_count;
   frame_->commands.push_back({false, uint32_t(frame_->draws.size())});

@@ -199,6 +199,13 @@ struct RenderState {
   // GL_RASTERIZER_DISCARD (GL 3.3 §3.1): primitives go no further than transform feedback
   // (DrawCall::capture) and the counters; nothing is rasterized.
   bool rasterizer_discard = false;
+
+  // GL_POINT_SMOOTH and GL_LINE_SMOOTH (GL 3.3 §3.4.2, §3.5.2) as llvmpipe draws them: a
+  // point or line becomes a quad whose fragments' alpha is multiplied by their coverage (and
+  // a point's corners outside its circle are discarded). gpu/detail/pipeline.hpp's
+  // SmoothCoverage says how.
+  bool point_smooth = false;
+  bool line_smooth = false;
 };
 
 }  // namespace tessel::gpu

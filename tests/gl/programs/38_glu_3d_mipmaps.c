@@ -9,8 +9,8 @@
  * leaves a level whose depth reaches 1 before its width and height unwritten: the volumes here
  * stay clear of both.) glTexImage3D is GL 1.2: the program asks for it through GL/glext.h. */
 #define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h> /* before GL/glext.h, which needs its types */
 #include <GL/glext.h>
-#include <GL/glu.h>
 #include <GL/glut.h>
 
 static GLuint tex[2];

@@ -33,7 +33,22 @@ inline constexpr int kSubpixelOne = 1 << kSubpixelBits;
 // With 8 sub-pixel bits that keeps positions under 2^24 and edge products under 2^49.
 inline constexpr float kGuardBand = 32768.0f;
 
-enum class PrimKind : uint8_t { Triangle, Clear };
+// Smooth: a triangle of an antialiased point or line (GL_POINT_SMOOTH, GL_LINE_SMOOTH), whose
+// SmoothCoverage follows its edges.
+enum class PrimKind : uint8_t { Triangle, Clear, Smooth };
+
+// The coverage of an antialiased point or line at a pixel, as llvmpipe's draw module computes
+// it (draw_pipe_aapoint.c, draw_pipe_aaline.c): from the pixel centre p, u = dot(p - origin,
+// u_axis) and v = dot(p - origin, v_axis). A point (u, v in units of its radius) discards
+// where d = u^2 + v^2 > 1 and multiplies alpha by (1 - d) / (1 - a) where d <= a, else by 1
+// (the selection llvmpipe's NIR lowering makes). A line multiplies alpha by
+// saturate(a - |u|) * saturate(b - |v|), a the quad's half width and b its half length.
+struct SmoothCoverage {
+  float ox, oy;  // origin: the point's centre, the line's midpoint (window coordinates)
+  float ux, uy, vx, vy;
+  float a, b;
+  bool point;
+};
 
 // Edge function at pixel (i, j): E = c + a*i + b*j; the pixel centre is inside when E > 0
 // (c already carries the fill rule's +1 for edges that own their samples).
@@ -110,6 +125,11 @@ struct Prim {
   static size_t bytes(int varyings, bool with_edges) {
     return sizeof(Prim) + edges_offset(varyings) + (with_edges ? 3 * sizeof(EdgeEq) : 0);
   }
+  // A Smooth prim's coverage, after its edges (it always has them).
+  const SmoothCoverage* smooth(int varyings) const {
+    return reinterpret_cast<const SmoothCoverage*>(edges(varyings) + 3);
+  }
+  SmoothCoverage* smooth(int varyings) { return reinterpret_cast<SmoothCoverage*>(edges(varyings) + 3); }
 };
 static_assert(sizeof(Prim) == 64);
 

@@ -673,10 +673,43 @@ class Program final : public ProgramBase {
     return true;
   }
 
+  // Antialiased points and lines (PrimKind::Smooth): each lane's coverage (SmoothCoverage)
+  // multiplies the alpha of every colour output; returns the lanes of a point outside its
+  // circle, which are dropped.
+  template <class F>
+  __attribute__((noinline)) unsigned smooth_coverage(const Shading<F>& s, Fragment<F>& f, int outputs) const {
+    constexpr int N = lane_width<F>;
+    constexpr int K = varying_count<S>();
+    alignas(64) float x[N], y[N], cov[N];
+    f.coord.x.store(x);
+    f.coord.y.store(y);
+    unsigned killed = 0;
+    for (int l = 0; l < N; ++l) {
+      const Prim& p = N == 16 && l >= 8 ? *s.pb : *s.pa;
+      if (p.kind != PrimKind::Smooth) {
+        cov[l] = 1.0f;
+        continue;
+      }
+      const SmoothCoverage& sc = *p.smooth(K);
+      const float px = x[l] - sc.ox, py = y[l] - sc.oy;
+      const float u = px * sc.ux + py * sc.uy, v = px * sc.vx + py * sc.vy;
+      if (sc.point) {
+        const float dist = u * u + v * v;
+        if (dist > 1.0f) killed |= 1u << l;
+        cov[l] = sc.a >= dist ? (1.0f / (1.0f - sc.a)) * (1.0f - dist) : 1.0f;
+      } else {
+        cov[l] = std::clamp(sc.a - std::fabs(u), 0.0f, 1.0f) * std::clamp(sc.b - std::fabs(v), 0.0f, 1.0f);
+      }
+    }
+    const F c = F::load(cov);
+    for (int i = 0; i < std::max(outputs, 1); ++i) f.color[size_t(i)].w = f.color[size_t(i)].w * c;
+    return killed;
+  }
+
   // After the shader: discards, depth tested now when the test is late, colours written.
   template <class F>
   __attribute__((always_inline)) void end_shading(const DrawRecord& d, const TargetView& t,
-                                                  const Shading<F>& s, const Fragment<F>& f,
+                                                  const Shading<F>& s, Fragment<F>& f,
                                                   FragmentCounts& c) const {
     constexpr int N = lane_width<F>;
     constexpr int max_outputs = shader_outputs<S>();
@@ -685,6 +718,8 @@ class Program final : public ProgramBase {
     F z = s.z;
     const Pos a = s.a, b = s.b;
     if constexpr (shader_discards<S>()) mask &= ~f.killed.bits();
+    if (s.pa->kind == PrimKind::Smooth || s.pb->kind == PrimKind::Smooth)
+      mask &= ~smooth_coverage(s, f, outputs);
     if constexpr (shader_writes_depth<S>()) z = clamp(f.depth, F(0.0f), F(1.0f));
     c.fragments_shaded += unsigned(__builtin_popcount(mask));
     const bool tests = d.state.depth_test || d.state.stencil_test;
