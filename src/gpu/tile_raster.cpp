@@ -119,7 +119,12 @@ void Context::Frame::raster_tile(Worker& w, int tile) {
   int run_n = 0;
   const DrawRecord* run_draw = nullptr;
   auto flush_run = [&] {
-    if (run_n) run_draw->program->raster(*run_draw, view, run, run_n, x0, y0, x1, y1, w.counters);
+    if (run_n) {
+      if (run_draw->state.point_smooth || run_draw->state.line_smooth)
+        run_draw->program->raster_smooth(*run_draw, view, run, run_n, x0, y0, x1, y1, w.counters);
+      else
+        run_draw->program->raster(*run_draw, view, run, run_n, x0, y0, x1, y1, w.counters);
+    }
     run_n = 0;
   };
   for (; e; e = second ? std::exchange(second, nullptr) : next()) {

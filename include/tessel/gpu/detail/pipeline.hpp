@@ -255,6 +255,9 @@ class ProgramBase {
   // phase's tile-local copies of them).
   virtual void raster(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0,
                       int y0, int x1, int y1, Counters& c) const = 0;
+  // The same for a draw of antialiased points or lines (RenderState::point_smooth, line_smooth).
+  virtual void raster_smooth(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n,
+                             int x0, int y0, int x1, int y1, Counters& c) const = 0;
 };
 
 // --- stage functions (each in its own .cpp) --------------------------------------------------

@@ -75,6 +75,19 @@ class Program final : public ProgramBase {
 
   void raster(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0, int y0,
               int x1, int y1, Counters& counters) const override {
+    raster_loop<false>(d, t, prims, n, x0, y0, x1, y1, counters);
+  }
+  // Antialiased points and lines (their Prims carry coverage): a loop of their own, so that the
+  // common one has no trace of them.
+  void raster_smooth(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0,
+                     int y0, int x1, int y1, Counters& counters) const override {
+    raster_loop<true>(d, t, prims, n, x0, y0, x1, y1, counters);
+  }
+
+ private:
+  template <bool Smooth>
+  void raster_loop(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0, int y0,
+                   int x1, int y1, Counters& counters) const {
     [[maybe_unused]] const auto mode = float_mode();
     // Fragment counts are kept in registers here and added to the worker's counters once.
     FragmentCounts c;
@@ -94,10 +107,10 @@ class Program final : public ProgramBase {
       if (n_pending < kBatch) return;
       n_pending = 0;
       if constexpr (kBatch == 4)
-        shade_pair(d, t, pending, c);
+        shade_pair<Smooth>(d, t, pending, c);
       else
-        shade<Float16>(d, t, *pending[0].prim, *pending[1].prim, pending[0].pos, pending[1].pos,
-                       pending[0].mask | (pending[1].mask << 8), c);
+        shade<Float16, Smooth>(d, t, *pending[0].prim, *pending[1].prim, pending[0].pos, pending[1].pos,
+                               pending[0].mask | (pending[1].mask << 8), c);
     };
     // (shade<Float16> has one call site for a C++ shader: with two, GCC does not flatten it.)
     auto flush_pending = [&] {
@@ -105,12 +118,14 @@ class Program final : public ProgramBase {
       if constexpr (kBatch == 4) {
         if (n_pending == 3) {
           Group four[4] = {g[0], g[1], g[2], {g[2].prim, g[2].pos, 0}};
-          shade_pair(d, t, four, c);
+          shade_pair<Smooth>(d, t, four, c);
         } else if (n_pending == 2) {
-          shade<Float16>(d, t, *g[0].prim, *g[1].prim, g[0].pos, g[1].pos, g[0].mask | (g[1].mask << 8), c);
+          shade<Float16, Smooth>(d, t, *g[0].prim, *g[1].prim, g[0].pos, g[1].pos,
+                                 g[0].mask | (g[1].mask << 8), c);
         }
       }
-      if (n_pending == 1) shade<Float8>(d, t, *g[0].prim, *g[0].prim, g[0].pos, g[0].pos, g[0].mask, c);
+      if (n_pending == 1)
+        shade<Float8, Smooth>(d, t, *g[0].prim, *g[0].prim, g[0].pos, g[0].pos, g[0].mask, c);
       n_pending = 0;
     };
     [[maybe_unused]] const bool packed = kPacked && d.fast_color;
@@ -133,7 +148,6 @@ class Program final : public ProgramBase {
     counters.fragments_rejected += c.fragments_rejected;
   }
 
- private:
   struct Pos {
     int x, y;
   };
@@ -552,7 +566,7 @@ class Program final : public ProgramBase {
   // of triangle pb (sixteen lanes: a in lanes 0-7, b in lanes 8-15). flatten: the shader and
   // every GLSL function it calls are inlined here, so lane values stay in registers (lane values passed to an
   // out-of-line call go through memory); always_inline: with two call sites GCC would outline it.
-  template <class F>
+  template <class F, bool Smooth>
   __attribute__((flatten, always_inline)) inline void shade(const DrawRecord& d, const TargetView& t,
                                                             const Prim& pa, const Prim& pb, Pos a, Pos b,
                                                             unsigned mask, FragmentCounts& c) const {
@@ -564,12 +578,14 @@ class Program final : public ProgramBase {
       shader_.fragment_stored(uniforms_, f);
     else
       shader_.fragment(uniforms_, vary, f);
+    if constexpr (Smooth) apply_smooth(s, f);
     end_shading(d, t, s, f, c);
   }
 
   // Four groups of a run-time shader (g[0] and g[1] in slot 0, g[2] and g[3] in slot 1; a
   // group may have no lanes), shaded by one fragment_pair call: depth is tested, and colour
   // written, group by group in order, as by two shade() calls.
+  template <bool Smooth>
   __attribute__((noinline)) void shade_pair(const DrawRecord& d, const TargetView& t, const Group* g,
                                             FragmentCounts& c) const {
     if constexpr (shader_runtime<S>()) {
@@ -586,6 +602,10 @@ class Program final : public ProgramBase {
         shader_.fragment_stored(uniforms_, f0, 0);
       else if (go1)
         shader_.fragment_stored(uniforms_, f1, 1);
+      if constexpr (Smooth) {
+        if (go0) apply_smooth(s0, f0);
+        if (go1) apply_smooth(s1, f1);
+      }
       if (go0) end_shading(d, t, s0, f0, c);
       if (go1) end_shading(d, t, s1, f1, c);
     }
@@ -673,19 +693,26 @@ class Program final : public ProgramBase {
     return true;
   }
 
-  // Antialiased points and lines (PrimKind::Smooth): each lane's coverage (SmoothCoverage)
-  // multiplies the alpha of every colour output; returns the lanes of a point outside its
-  // circle, which are dropped.
+  // Antialiased points and lines (PrimKind::Smooth): each lane's coverage (SmoothCoverage) at
+  // the pixel centres (x, y), of pa's lanes 0-7 and pb's 8-15, and the lanes of a point outside
+  // its circle, which are dropped. Out of line, and given values rather than the fragment, so
+  // that the shading loop keeps its fragment in registers.
   template <class F>
-  __attribute__((noinline)) unsigned smooth_coverage(const Shading<F>& s, Fragment<F>& f, int outputs) const {
+  struct SmoothResult {
+    F coverage;
+    unsigned killed;
+  };
+  template <class F>
+  __attribute__((noinline)) static SmoothResult<F> smooth_coverage(const Prim* pa, const Prim* pb, F cx,
+                                                                   F cy) {
     constexpr int N = lane_width<F>;
     constexpr int K = varying_count<S>();
     alignas(64) float x[N], y[N], cov[N];
-    f.coord.x.store(x);
-    f.coord.y.store(y);
+    cx.store(x);
+    cy.store(y);
     unsigned killed = 0;
     for (int l = 0; l < N; ++l) {
-      const Prim& p = N == 16 && l >= 8 ? *s.pb : *s.pa;
+      const Prim& p = N == 16 && l >= 8 ? *pb : *pa;
       if (p.kind != PrimKind::Smooth) {
         cov[l] = 1.0f;
         continue;
@@ -701,15 +728,22 @@ class Program final : public ProgramBase {
         cov[l] = std::clamp(sc.a - std::fabs(u), 0.0f, 1.0f) * std::clamp(sc.b - std::fabs(v), 0.0f, 1.0f);
       }
     }
-    const F c = F::load(cov);
-    for (int i = 0; i < std::max(outputs, 1); ++i) f.color[size_t(i)].w = f.color[size_t(i)].w * c;
-    return killed;
+    return {F::load(cov), killed};
+  }
+  // The coverage applied: alpha of every colour output multiplied, a point's outside lanes
+  // taken out of the shading's mask.
+  template <class F>
+  __attribute__((always_inline)) void apply_smooth(Shading<F>& s, Fragment<F>& f) const {
+    const SmoothResult<F> r = smooth_coverage(s.pa, s.pb, f.coord.x, f.coord.y);
+    s.mask &= ~r.killed;
+    for (int i = 0; i < std::max(output_count(), 1); ++i)
+      f.color[size_t(i)].w = f.color[size_t(i)].w * r.coverage;
   }
 
   // After the shader: discards, depth tested now when the test is late, colours written.
   template <class F>
   __attribute__((always_inline)) void end_shading(const DrawRecord& d, const TargetView& t,
-                                                  const Shading<F>& s, Fragment<F>& f,
+                                                  const Shading<F>& s, const Fragment<F>& f,
                                                   FragmentCounts& c) const {
     constexpr int N = lane_width<F>;
     constexpr int max_outputs = shader_outputs<S>();
@@ -718,8 +752,6 @@ class Program final : public ProgramBase {
     F z = s.z;
     const Pos a = s.a, b = s.b;
     if constexpr (shader_discards<S>()) mask &= ~f.killed.bits();
-    if (s.pa->kind == PrimKind::Smooth || s.pb->kind == PrimKind::Smooth)
-      mask &= ~smooth_coverage(s, f, outputs);
     if constexpr (shader_writes_depth<S>()) z = clamp(f.depth, F(0.0f), F(1.0f));
     c.fragments_shaded += unsigned(__builtin_popcount(mask));
     const bool tests = d.state.depth_test || d.state.stencil_test;
