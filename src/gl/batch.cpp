@@ -58,13 +58,7 @@ void Context::send_batch_unchecked() {
   auto ib = std::make_unique<gpu::Buffer>(b.indices.data(), b.indices.size() * sizeof(uint32_t));
   if (executable) {
     // A GLSL program reads the batch's vertices as the compatibility attributes.
-    gpu::DrawCall call;
-    call.topology = b.cls == PrimClass::Points  ? gpu::Topology::Points
-                    : b.cls == PrimClass::Lines ? gpu::Topology::Lines
-                                                : gpu::Topology::Triangles;
-    call.count = uint32_t(b.indices.size());
-    call.index_buffer = ib.get();
-    call.index_type = gpu::IndexType::U32;
+    const gpu::DrawCall call = b.call(*ib);
     gpu::RenderState rs = render_state(false);
     rs.edge_flag_varying = -1;
     draw_program_batch(executable_run(), vbuf, b.verts.x, call, rs);
@@ -98,13 +92,7 @@ void Context::draw_fixed_function(const Batch& b, const gpu::Buffer& vbuf, const
   build_uniforms(*u, tex);
   gpu::RenderState rs = render_state(false);
   rs.edge_flag_varying = kEdgeFlagVarying;
-  gpu::DrawCall call;
-  call.topology = b.cls == PrimClass::Points  ? gpu::Topology::Points
-                  : b.cls == PrimClass::Lines ? gpu::Topology::Lines
-                                              : gpu::Topology::Triangles;
-  call.count = uint32_t(b.indices.size());
-  call.index_buffer = &ib;
-  call.index_type = gpu::IndexType::U32;
+  const gpu::DrawCall call = b.call(ib);
   const bool flat = s.light.shade_model == GL_FLAT;
   const bool discards = u->alpha_test || (u->stipple && b.cls == PrimClass::Triangles);
   if (b.cls != PrimClass::Triangles) u->stipple = false;

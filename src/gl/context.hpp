@@ -787,6 +787,17 @@ class Context {
     FFVertices verts;
     std::vector<uint32_t> indices;
     std::shared_ptr<const gpu::Buffer> shared;  // when set: the vertices, instead of `verts`
+    // The gpu draw of the batch's indices, 32-bit in `indices` (its class as the topology).
+    gpu::DrawCall call(const gpu::Buffer& index_buffer) const {
+      gpu::DrawCall c;
+      c.topology = cls == PrimClass::Points  ? gpu::Topology::Points
+                   : cls == PrimClass::Lines ? gpu::Topology::Lines
+                                             : gpu::Topology::Triangles;
+      c.count = uint32_t(indices.size());
+      c.index_buffer = &index_buffer;
+      c.index_type = gpu::IndexType::U32;
+      return c;
+    }
   };
   void send_batch();
   void send_batch_unchecked();

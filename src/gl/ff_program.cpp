@@ -501,13 +501,7 @@ void Context::draw_ff_program(const FFProgramKey& k, const Batch& b, const gpu::
     for (size_t i = 0; i < 32; ++i) rows[i] = int32_t(s.polygon_stipple[i]);
     p.set_uniform(p.uniform_location("ff_stipple"), rows.data(), 1, 32);
   }
-  gpu::DrawCall call;
-  call.topology = b.cls == PrimClass::Points  ? gpu::Topology::Points
-                  : b.cls == PrimClass::Lines ? gpu::Topology::Lines
-                                              : gpu::Topology::Triangles;
-  call.count = uint32_t(b.indices.size());
-  call.index_buffer = &ib;
-  call.index_type = gpu::IndexType::U32;
+  const gpu::DrawCall call = b.call(ib);
   gpu::RenderState rs = render_state(false);
   rs.edge_flag_varying = -1;
   draw_program_batch({p, entry.cache}, vbuf, b.verts.x, call, rs);

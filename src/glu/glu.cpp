@@ -215,6 +215,64 @@ void narrow16(unsigned char* p, uint16_t v, GLenum type, bool swap) {
   }
 }
 
+// The box filter of GLU's 16-bit scaling, in three dimensions as the reference GLU's
+// scaleInternal3D has it (scale16 below is its one-image case, plus a shortcut for halving): a box around
+// each output texel's centre, of one output texel when shrinking and one input texel when magnifying,
+// wrapping at the edges, weights and sums in single precision, the mean rounded.
+void scale16Volume(int comps, int win, int hin, int din, const uint16_t* in, int wout, int hout, int dout,
+                   uint16_t* out) {
+  const float convz = static_cast<float>(din) / dout, convy = static_cast<float>(hin) / hout,
+              convx = static_cast<float>(win) / wout;
+  auto box = [](float centre, float conv, bool shrinking, float& lo, float& hi) {
+    if (shrinking) {
+      hi = centre + conv / 2;
+      lo = centre - conv / 2;
+    } else {
+      hi = static_cast<float>(centre + 0.5);
+      lo = static_cast<float>(centre - 0.5);
+    }
+  };
+  float acc[4];
+  for (int od = 0; od < dout; od++) {
+    float z0, z1;
+    box(static_cast<float>(convz * (od + 0.5)), convz, din > dout, z0, z1);
+    for (int oy = 0; oy < hout; oy++) {
+      float y0, y1;
+      box(static_cast<float>(convy * (oy + 0.5)), convy, hin > hout, y0, y1);
+      for (int ox = 0; ox < wout; ox++) {
+        float x0, x1;
+        box(static_cast<float>(convx * (ox + 0.5)), convx, win > wout, x0, x1);
+        for (int k = 0; k < comps; k++) acc[k] = 0.0f;
+        float volume = 0.0f;
+        float z = z0;
+        for (int iz = static_cast<int>(std::floor(z0)); z < z1; iz++, z = static_cast<float>(iz)) {
+          const float wz = z1 < static_cast<float>(iz + 1) ? z1 - z : static_cast<float>(iz + 1) - z;
+          const int rz = ((iz % din) + din) % din;
+          float y = y0;
+          for (int iy = static_cast<int>(std::floor(y0)); y < y1; iy++, y = static_cast<float>(iy)) {
+            const float wy = y1 < static_cast<float>(iy + 1) ? y1 - y : static_cast<float>(iy + 1) - y;
+            const int ry = ((iy % hin) + hin) % hin;
+            float x = x0;
+            for (int ix = static_cast<int>(std::floor(x0)); x < x1; ix++, x = static_cast<float>(ix)) {
+              const float wx = x1 < static_cast<float>(ix + 1) ? x1 - x : static_cast<float>(ix + 1) - x;
+              const int rx = ((ix % win) + win) % win;
+              const float w = wx * wy * wz;
+              volume += w;
+              const uint16_t* src = in + ((static_cast<size_t>(rz) * hin + ry) * win + rx) * comps;
+              for (int k = 0; k < comps; k++) acc[k] += src[k] * w;
+            }
+          }
+        }
+        uint16_t* dst = out + ((static_cast<size_t>(od) * hout + oy) * wout + ox) * comps;
+        for (int k = 0; k < comps; k++) {
+          const double v = (acc[k] + 0.5) / volume;
+          dst[k] = static_cast<uint16_t>(std::clamp(v, 0.0, 65535.0));
+        }
+      }
+    }
+  }
+}
+
 // Box filter on 16-bit data (GLU 1.3 section 3.1). Each output pixel covers a box of the input
 // as wide as one output pixel when shrinking and one input pixel wide when magnifying (which
 // interpolates linearly between input pixel centres). Like the reference GLU, boxes that stick
@@ -232,49 +290,9 @@ void scale16(int comps, int win, int hin, const uint16_t* in, int wout, int hout
         }
     return;
   }
-  const float sy = static_cast<float>(hin) / static_cast<float>(hout);
-  const float sx = static_cast<float>(win) / static_cast<float>(wout);
-  // Half the box: half an output pixel when shrinking, half an input pixel when magnifying.
-  auto box = [](float centre, float scale, bool shrinking, float& lo, float& hi) {
-    if (shrinking) {
-      hi = centre + scale / 2;
-      lo = centre - scale / 2;
-    } else {
-      hi = static_cast<float>(centre + 0.5);
-      lo = static_cast<float>(centre - 0.5);
-    }
-  };
-  float acc[4];
-  for (int oy = 0; oy < hout; oy++) {
-    float y0, y1;
-    box(static_cast<float>(sy * (oy + 0.5)), sy, hin > hout, y0, y1);
-    for (int ox = 0; ox < wout; ox++) {
-      float x0, x1;
-      box(static_cast<float>(sx * (ox + 0.5)), sx, win > wout, x0, x1);
-      for (int k = 0; k < comps; k++) acc[k] = 0.0f;
-      float area = 0.0f;
-      // Walk the input pixels the box overlaps, weighting each by the overlap's area.
-      float y = y0;
-      for (int iy = static_cast<int>(std::floor(y0)); y < y1; iy++, y = static_cast<float>(iy)) {
-        const float wy = y1 < static_cast<float>(iy + 1) ? y1 - y : static_cast<float>(iy + 1) - y;
-        const int ry = ((iy % hin) + hin) % hin;
-        float x = x0;
-        for (int ix = static_cast<int>(std::floor(x0)); x < x1; ix++, x = static_cast<float>(ix)) {
-          const float wx = x1 < static_cast<float>(ix + 1) ? x1 - x : static_cast<float>(ix + 1) - x;
-          const int rx = ((ix % win) + win) % win;
-          const float w = wx * wy;
-          area += w;
-          const uint16_t* src = in + (static_cast<size_t>(ry) * win + rx) * comps;
-          for (int k = 0; k < comps; k++) acc[k] += src[k] * w;
-        }
-      }
-      uint16_t* dst = out + (static_cast<size_t>(oy) * wout + ox) * comps;
-      for (int k = 0; k < comps; k++) {
-        const double v = (acc[k] + 0.5) / area;
-        dst[k] = static_cast<uint16_t>(std::clamp(v, 0.0, 65535.0));
-      }
-    }
-  }
+  // Otherwise the box filter of scale16Volume on one image (its depth weights are all 1, so
+  // the sums and the rounding are the same as a 2D filter's).
+  scale16Volume(comps, win, hin, 1, in, wout, hout, 1, out);
 }
 
 // Reads a width x height image of the given format/type with the given unpack modes into
@@ -565,64 +583,6 @@ Volume unpackVolume(const void* data, const PixelStore& ps, GLint imageHeight, G
               readValue(row + x * l.groupBytes + static_cast<size_t>(k) * l.elementBytes, type, l.swap);
     }
   return vol;
-}
-
-// scale16 in three dimensions, as the reference GLU's scaleInternal3D (which, unlike its 2D
-// scale, has no shortcut for an exact halving): a box around each output texel's centre, of
-// one output texel when shrinking and one input texel when magnifying, wrapping at the edges,
-// weights and sums in single precision, the mean rounded.
-void scale16Volume(int comps, int win, int hin, int din, const uint16_t* in, int wout, int hout, int dout,
-                   uint16_t* out) {
-  const float convz = static_cast<float>(din) / dout, convy = static_cast<float>(hin) / hout,
-              convx = static_cast<float>(win) / wout;
-  auto box = [](float centre, float conv, bool shrinking, float& lo, float& hi) {
-    if (shrinking) {
-      hi = centre + conv / 2;
-      lo = centre - conv / 2;
-    } else {
-      hi = static_cast<float>(centre + 0.5);
-      lo = static_cast<float>(centre - 0.5);
-    }
-  };
-  float acc[4];
-  for (int od = 0; od < dout; od++) {
-    float z0, z1;
-    box(static_cast<float>(convz * (od + 0.5)), convz, din > dout, z0, z1);
-    for (int oy = 0; oy < hout; oy++) {
-      float y0, y1;
-      box(static_cast<float>(convy * (oy + 0.5)), convy, hin > hout, y0, y1);
-      for (int ox = 0; ox < wout; ox++) {
-        float x0, x1;
-        box(static_cast<float>(convx * (ox + 0.5)), convx, win > wout, x0, x1);
-        for (int k = 0; k < comps; k++) acc[k] = 0.0f;
-        float volume = 0.0f;
-        float z = z0;
-        for (int iz = static_cast<int>(std::floor(z0)); z < z1; iz++, z = static_cast<float>(iz)) {
-          const float wz = z1 < static_cast<float>(iz + 1) ? z1 - z : static_cast<float>(iz + 1) - z;
-          const int rz = ((iz % din) + din) % din;
-          float y = y0;
-          for (int iy = static_cast<int>(std::floor(y0)); y < y1; iy++, y = static_cast<float>(iy)) {
-            const float wy = y1 < static_cast<float>(iy + 1) ? y1 - y : static_cast<float>(iy + 1) - y;
-            const int ry = ((iy % hin) + hin) % hin;
-            float x = x0;
-            for (int ix = static_cast<int>(std::floor(x0)); x < x1; ix++, x = static_cast<float>(ix)) {
-              const float wx = x1 < static_cast<float>(ix + 1) ? x1 - x : static_cast<float>(ix + 1) - x;
-              const int rx = ((ix % win) + win) % win;
-              const float w = wx * wy * wz;
-              volume += w;
-              const uint16_t* src = in + ((static_cast<size_t>(rz) * hin + ry) * win + rx) * comps;
-              for (int k = 0; k < comps; k++) acc[k] += src[k] * w;
-            }
-          }
-        }
-        uint16_t* dst = out + ((static_cast<size_t>(od) * hout + oy) * wout + ox) * comps;
-        for (int k = 0; k < comps; k++) {
-          const double v = (acc[k] + 0.5) / volume;
-          dst[k] = static_cast<uint16_t>(std::clamp(v, 0.0, 65535.0));
-        }
-      }
-    }
-  }
 }
 
 // One 3D mipmap step: each dimension larger than one is halved; the new texel is the mean of

@@ -118,25 +118,6 @@ static GLuint cap_buf[4], cap_vao[4];
 static GLint cap_count[4];
 static int current = 0;
 
-static GLuint link_feedback(const char* vs, const char* gs, const char* fs, int n, const char* const* names,
-                            GLenum mode) {
-  GLuint p = glCreateProgram();
-  GLint ok = 0;
-  glAttachShader(p, compile_shader(GL_VERTEX_SHADER, vs));
-  if (gs) glAttachShader(p, compile_shader(GL_GEOMETRY_SHADER, gs));
-  if (fs) glAttachShader(p, compile_shader(GL_FRAGMENT_SHADER, fs));
-  glTransformFeedbackVaryings(p, n, names, mode);
-  glLinkProgram(p);
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[4096];
-    glGetProgramInfoLog(p, sizeof log, NULL, log);
-    fprintf(stderr, "program link failed:\n%s\n", log);
-    exit(1);
-  }
-  return p;
-}
-
 /* A vertex array reading vec2 positions and vec2 velocities interleaved from buffer b. */
 static GLuint particle_array(GLuint b) {
   GLuint vao;
@@ -223,11 +204,11 @@ static void setup(void) {
   GLsizei length = 0, size = 0;
   GLenum type = 0;
 
-  update_prog = link_feedback(update_vs, NULL, NULL, 2, particle_names, GL_INTERLEAVED_ATTRIBS);
+  update_prog = link_shaders_feedback(update_vs, NULL, NULL, 2, particle_names, GL_INTERLEAVED_ATTRIBS);
   particle_prog = link_program(particle_vs, colour_fs);
-  quad_prog = link_feedback(quad_vs, quad_gs, NULL, 2, quad_names, GL_SEPARATE_ATTRIBS);
+  quad_prog = link_shaders_feedback(quad_vs, quad_gs, NULL, 2, quad_names, GL_SEPARATE_ATTRIBS);
   flat_prog = link_program(flat_vs, flat_fs);
-  id_prog = link_feedback(id_vs, NULL, colour_fs, 2, id_names, GL_INTERLEAVED_ATTRIBS);
+  id_prog = link_shaders_feedback(id_vs, NULL, colour_fs, 2, id_names, GL_INTERLEAVED_ATTRIBS);
   id_draw_prog = link_program(id_draw_vs, flat_fs);
   glGetTransformFeedbackVarying(quad_prog, 1, sizeof name, &length, &size, &type, name);
   if (strcmp(name, "gcol") != 0 || length != 4 || size != 1 || type != GL_FLOAT_VEC3)

@@ -30,15 +30,19 @@ static inline GLuint compile_shader(GLenum type, const char* src) {
   return s;
 }
 
-/* A program of a vertex, an optional geometry (NULL: none) and a fragment shader. */
-static inline GLuint link_shaders(const char* vs, const char* gs, const char* fs) {
+/* A program of a vertex shader, and a geometry and a fragment shader where not NULL, the n
+ * outputs named in `feedback` captured by transform feedback in `mode` (n = 0: none). */
+static inline GLuint link_shaders_feedback(const char* vs, const char* gs, const char* fs, int n,
+                                           const char* const* feedback, GLenum mode) {
   GLuint p = glCreateProgram();
-  GLuint v = compile_shader(GL_VERTEX_SHADER, vs), f = compile_shader(GL_FRAGMENT_SHADER, fs);
+  GLuint v = compile_shader(GL_VERTEX_SHADER, vs);
   GLuint g = gs ? compile_shader(GL_GEOMETRY_SHADER, gs) : 0;
+  GLuint f = fs ? compile_shader(GL_FRAGMENT_SHADER, fs) : 0;
   GLint ok = 0;
   glAttachShader(p, v);
   if (g) glAttachShader(p, g);
-  glAttachShader(p, f);
+  if (f) glAttachShader(p, f);
+  if (n > 0) glTransformFeedbackVaryings(p, n, feedback, mode);
   glLinkProgram(p);
   glGetProgramiv(p, GL_LINK_STATUS, &ok);
   if (!ok) {
@@ -49,8 +53,13 @@ static inline GLuint link_shaders(const char* vs, const char* gs, const char* fs
   }
   glDeleteShader(v);
   if (g) glDeleteShader(g);
-  glDeleteShader(f);
+  if (f) glDeleteShader(f);
   return p;
+}
+
+/* A program of a vertex, an optional geometry (NULL: none) and a fragment shader. */
+static inline GLuint link_shaders(const char* vs, const char* gs, const char* fs) {
+  return link_shaders_feedback(vs, gs, fs, 0, NULL, 0);
 }
 
 static inline GLuint link_program(const char* vs, const char* fs) { return link_shaders(vs, NULL, fs); }
