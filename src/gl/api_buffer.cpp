@@ -150,10 +150,10 @@ void GLAPIENTRY glDeleteBuffers(GLsizei n, const GLuint* names) {
     for (BufferRef* r : {&c.array_buffer, &c.copy_read_buffer, &c.copy_write_buffer, &c.pixel_pack_buffer,
                          &c.pixel_unpack_buffer, &c.uniform_buffer, &c.texture_buffer, &c.feedback_buffer})
       if (*r == b) r->reset();
-    for (auto& u : c.uniform_bindings)
-      if (u.buffer == b) u = {};
-    for (auto& u : c.feedback_bindings)  // an active transform feedback keeps writing it
-      if (u.buffer == b) u = {};
+    // (An active transform feedback keeps writing a buffer deleted from its binding point.)
+    for (GLenum target : {GL_UNIFORM_BUFFER, GL_TRANSFORM_FEEDBACK_BUFFER})
+      for (auto& u : c.indexed_bindings(target))
+        if (u.buffer == b) u = {};
     if (c.vertex_arrays.count(c.bound_vertex_array)) {
       VertexArrayObject& va = c.vao();
       if (va.element_buffer == b) va.element_buffer.reset();
@@ -373,10 +373,10 @@ namespace {
 void bind_indexed(Context& c, GLenum target, GLuint index, GLuint name, GLintptr offset, GLsizeiptr size,
                   bool whole) {
   GL_OUTSIDE_BEGIN();
+  const std::span<Context::IndexedBuffer> points = c.indexed_bindings(target);
+  if (points.empty()) return c.error(GL_INVALID_ENUM);
+  if (index >= points.size()) return c.error(GL_INVALID_VALUE);
   const bool feedback = target == GL_TRANSFORM_FEEDBACK_BUFFER;
-  if (!feedback && target != GL_UNIFORM_BUFFER) return c.error(GL_INVALID_ENUM);
-  if (index >= GLuint(feedback ? glsl::kMaxFeedbackSeparateAttribs : kMaxUniformBufferBindings))
-    return c.error(GL_INVALID_VALUE);
   if (feedback && c.feedback.active) return c.error(GL_INVALID_OPERATION);
   // Feedback ranges are of whole words, uniform blocks start at GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT.
   if (name != 0 && !whole &&
@@ -394,14 +394,8 @@ void bind_indexed(Context& c, GLenum target, GLuint index, GLuint name, GLintptr
     obj = slot;
   }
   c.touch();
-  const Context::IndexedBuffer binding{obj, obj && !whole ? offset : 0, obj && !whole ? size : 0};
-  if (feedback) {
-    c.feedback_bindings[index] = binding;
-    c.feedback_buffer = obj;
-  } else {
-    c.uniform_bindings[index] = binding;
-    c.uniform_buffer = obj;
-  }
+  points[index] = {obj, obj && !whole ? offset : 0, obj && !whole ? size : 0};
+  *target_binding(c, target) = obj;
 }
 
 }  // namespace

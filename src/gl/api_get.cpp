@@ -511,8 +511,8 @@ void get(GLenum pname, T* out, auto convert) {
   for (size_t i = 0; i < v.v.size(); ++i) out[i] = convert(v.v[i], v.kind);
 }
 
-// Indexed state (GL 3.3 §6.1.1): the uniform buffer binding points. False, with the error
-// recorded and nothing written, for a name that is not indexed state or an index past it.
+// Indexed state (GL 3.3 §6.1.1): the uniform and transform feedback buffer binding points. False, with the
+// error recorded and nothing written, for a name that is not indexed state or an index past it.
 bool indexed_value(Context& c, GLenum pname, GLuint index, GLint64& out) {
   if (pname == GL_SAMPLE_MASK_VALUE) {  // one word (GL_MAX_SAMPLE_MASK_WORDS)
     if (index != 0) {
@@ -522,23 +522,27 @@ bool indexed_value(Context& c, GLenum pname, GLuint index, GLint64& out) {
     out = GLint64(c.sample_mask);
     return true;
   }
-  const bool feedback = pname == GL_TRANSFORM_FEEDBACK_BUFFER_BINDING ||
-                        pname == GL_TRANSFORM_FEEDBACK_BUFFER_START ||
-                        pname == GL_TRANSFORM_FEEDBACK_BUFFER_SIZE;
-  if (!feedback && pname != GL_UNIFORM_BUFFER_BINDING && pname != GL_UNIFORM_BUFFER_START &&
-      pname != GL_UNIFORM_BUFFER_SIZE) {
-    c.error(GL_INVALID_ENUM);
-    return false;
+  // Which binding points, and which of their fields.
+  GLenum target = GL_NONE;
+  int field = 0;  // buffer name, start, size
+  switch (pname) {
+    case GL_UNIFORM_BUFFER_SIZE: ++field; [[fallthrough]];
+    case GL_UNIFORM_BUFFER_START: ++field; [[fallthrough]];
+    case GL_UNIFORM_BUFFER_BINDING: target = GL_UNIFORM_BUFFER; break;
+    case GL_TRANSFORM_FEEDBACK_BUFFER_SIZE: ++field; [[fallthrough]];
+    case GL_TRANSFORM_FEEDBACK_BUFFER_START: ++field; [[fallthrough]];
+    case GL_TRANSFORM_FEEDBACK_BUFFER_BINDING: target = GL_TRANSFORM_FEEDBACK_BUFFER; break;
+    default: c.error(GL_INVALID_ENUM); return false;
   }
-  if (index >= GLuint(feedback ? glsl::kMaxFeedbackSeparateAttribs : kMaxUniformBufferBindings)) {
+  const std::span<Context::IndexedBuffer> points = c.indexed_bindings(target);
+  if (index >= points.size()) {
     c.error(GL_INVALID_VALUE);
     return false;
   }
-  const Context::IndexedBuffer& ib = feedback ? c.feedback_bindings[index] : c.uniform_bindings[index];
-  out = pname == GL_UNIFORM_BUFFER_BINDING || pname == GL_TRANSFORM_FEEDBACK_BUFFER_BINDING
-            ? GLint64(ib.buffer ? ib.buffer->name : 0)
-        : pname == GL_UNIFORM_BUFFER_START || pname == GL_TRANSFORM_FEEDBACK_BUFFER_START ? GLint64(ib.offset)
-                                                                                          : GLint64(ib.size);
+  const Context::IndexedBuffer& ib = points[index];
+  out = field == 0   ? GLint64(ib.buffer ? ib.buffer->name : 0)
+        : field == 1 ? GLint64(ib.offset)
+                     : GLint64(ib.size);
   return true;
 }
 

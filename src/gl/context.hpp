@@ -17,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <new>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
@@ -712,7 +713,14 @@ class Context {
     std::vector<BufferRef> buffers;
     gpu::Capture capture;
   } feedback;
-  bool rasterizer_discard = false;                                               // GL_RASTERIZER_DISCARD
+  bool rasterizer_discard = false;  // GL_RASTERIZER_DISCARD
+  // The indexed binding points of GL_UNIFORM_BUFFER or GL_TRANSFORM_FEEDBACK_BUFFER (empty
+  // for any other target).
+  std::span<IndexedBuffer> indexed_bindings(GLenum target) {
+    if (target == GL_UNIFORM_BUFFER) return uniform_bindings;
+    if (target == GL_TRANSFORM_FEEDBACK_BUFFER) return feedback_bindings;
+    return {};
+  }
   std::unordered_map<GLuint, std::unique_ptr<VertexArrayObject>> vertex_arrays;  // 0: the default
   GLuint next_vertex_array_name = 1;
   GLuint bound_vertex_array = 0;

@@ -210,6 +210,14 @@ std::vector<uint32_t> expand_restart(Topology& t, const std::vector<uint32_t>& i
 // becomes lines, a line strip, triangles or a triangle strip (GL 3.3 §2.6.1).
 std::vector<uint32_t> drop_adjacency(Topology& t, const std::vector<uint32_t>& idx);
 
+// The list topology of what a geometry stage emitting `out` (Points, LineStrip or
+// TriangleStrip) gives once its strips are cut.
+inline Topology emitted_list(Topology out) {
+  return out == Topology::TriangleStrip ? Topology::Triangles
+         : out == Topology::LineStrip   ? Topology::Lines
+                                        : Topology::Points;
+}
+
 // The list topology of a primitive of `size` vertices (1, 2, 3, 4 or 6).
 inline Topology list_topology(int size) {
   switch (size) {

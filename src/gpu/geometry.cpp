@@ -114,16 +114,13 @@ void Context::Frame::process_draw_chunk(Worker& w, uint32_t chunk_index, const C
   w.counters.primitives_in += nprims;
   if (d.program->geometry_input) {
     run_geometry(w, ch, d, nprims);
-    const int out = prim_size(d.program->geometry_output == Topology::TriangleStrip ? Topology::Triangles
-                              : d.program->geometry_output == Topology::LineStrip   ? Topology::Lines
-                                                                                    : Topology::Points);
-    const uint32_t n_out = uint32_t(w.gs_slots.size() / size_t(out));
+    const Topology list = emitted_list(d.program->geometry_output);
+    const uint32_t n_out = uint32_t(w.gs_slots.size() / size_t(prim_size(list)));
     if (d.capture)
-      capture(chunk_index, d, list_topology(out), n_out, w.gs_slots.data(), w.gs_pos.data(), w.gs_vars.data(),
-              0);
+      capture(chunk_index, d, list, n_out, w.gs_slots.data(), w.gs_pos.data(), w.gs_vars.data(), 0);
     if (d.raster)
-      assemble(w, chunk_index, d, list_topology(out), n_out, w.gs_slots.data(), w.gs_pos.size(),
-               w.gs_pos.data(), w.gs_vars.data(), w.gs_soa.data(), w.gs_prim_ids.data(), 0);
+      assemble(w, chunk_index, d, list, n_out, w.gs_slots.data(), w.gs_pos.size(), w.gs_pos.data(),
+               w.gs_vars.data(), w.gs_soa.data(), w.gs_prim_ids.data(), 0);
     return;
   }
   w.counters.primitives_generated += nprims;

@@ -275,7 +275,7 @@ int setup_point(const DrawRecord& d, const WinVert& v, uint32_t prim_id, bool fr
     const float k = 1.0f / half;
     cov.ox = v.x;
     cov.oy = v.y;
-    cov.ux = cov.vy = 1.0f / half;
+    cov.ux = cov.vy = k;
     cov.uy = cov.vx = 0.0f;
     cov.a = 1.0f - 2.0f * k + k * k;  // (1 - 1/r)^2: the squared distance where attenuation starts
     cov.b = 0.0f;

@@ -286,13 +286,12 @@ void Context::submit(std::unique_ptr<ProgramBase> program, const VertexLayout& l
   // for packed shading, and points not with early depth. Only when the draw rasterizes points
   // or lines (a program may leave GL_LINE_SMOOTH on while it draws triangles).
   if (state.point_smooth || state.line_smooth) {
-    const Topology out = gs_input ? d->program->geometry_output : d->topology;
-    const int size = out == Topology::TriangleStrip ? 3 : out == Topology::LineStrip ? 2 : prim_size(out);
+    const int size = prim_size(gs_input ? emitted_list(d->program->geometry_output) : d->topology);
     auto mode = [&](PolygonMode m) {
       return size == 3 && (state.polygon_mode == m || state.polygon_mode_back == m);
     };
     const bool points = state.point_smooth && (size == 1 || mode(PolygonMode::Point));
-    const bool lines = state.line_smooth && (size == 2 || size == 4 || mode(PolygonMode::Line));
+    const bool lines = state.line_smooth && (size == 2 || mode(PolygonMode::Line));
     d->state.point_smooth = points;
     d->state.line_smooth = lines;
     if (points) d->early_depth = false;
@@ -318,8 +317,7 @@ void Context::check_capture(const Capture& cap, const DrawRecord& d) const {
     throw Error("draw: transform feedback needs 1 to " + std::to_string(kMaxCaptureBuffers) +
                 " buffers, not " + std::to_string(cap.buffers.size()));
   const ProgramBase& prog = *d.program;
-  const Topology out = prog.geometry_input ? prog.geometry_output : d.topology;
-  const int size = out == Topology::TriangleStrip ? 3 : out == Topology::LineStrip ? 2 : prim_size(out);
+  const int size = prim_size(prog.geometry_input ? emitted_list(prog.geometry_output) : d.topology);
   if (size != prim_size(cap.mode))
     throw Error("draw: the draw gives primitives of " + std::to_string(size) +
                 " vertices, but transform feedback writes primitives of " +
