@@ -458,6 +458,11 @@ class Runner {
   }
 };
 
+// Lane l of three consecutive rows from row k (a derivative or a direction).
+glm::vec3 lane_vec3(const TexLanes& tl, int k, int l) {
+  return {f(tl.in[k][l]), f(tl.in[k + 1][l]), f(tl.in[k + 2][l])};
+}
+
 const TextureUnit* unit_of(const ir::TexOp& t, const RunInputs& in_) {
   const int32_t unit = in_.uniform_words
                            ? s(in_.uniforms[std::min<uint32_t>(uint32_t(t.sampler), in_.uniform_words - 1)])
@@ -544,7 +549,10 @@ void run_texture_layered(const ir::TexOp& t, const TextureUnit* unit, const RunI
     float lod = 0.0f;
     if (t.has_lod) {
       lod = lanef(TexLanes::kLod, l);
-    } else if (t.has_grad && !cube) {
+    } else if (t.has_grad && cube) {
+      lod = gpu::detail::cube_grad_lod({c[0][l], c[1][l], c[2][l]}, lane_vec3(tl, TexLanes::kDx, l),
+                                       lane_vec3(tl, TexLanes::kDy, l), w);
+    } else if (t.has_grad) {
       const glm::vec3 dx(lanef(TexLanes::kDx, l), spatial >= 2 ? lanef(TexLanes::kDx + 1, l) : 0.0f,
                          d3 ? lanef(TexLanes::kDx + 2, l) : 0.0f);
       const glm::vec3 dy(lanef(TexLanes::kDy, l), spatial >= 2 ? lanef(TexLanes::kDy + 1, l) : 0.0f,
@@ -732,8 +740,12 @@ static void run_texture_unswizzled(const ir::TexOp& t, const RunInputs& in_, Tex
       for (int l = 0; l < L; ++l) put(t, l, glm::vec4(r.x[l], r.y[l], r.z[l], r.w[l]));
     } else {
       for (int l = 0; l < L; ++l) {
-        const float lod = t.has_lod ? lanef(TexLanes::kLod, l) : 0.0f;
-        put(t, l, gpu::detail::sample_cube(sc, lanef(0, l), lanef(1, l), lanef(2, l), lod));
+        const glm::vec3 dir(lanef(0, l), lanef(1, l), lanef(2, l));
+        float lod = t.has_lod ? lanef(TexLanes::kLod, l) : 0.0f;
+        if (t.has_grad)
+          lod = gpu::detail::cube_grad_lod(dir, lane_vec3(tl, TexLanes::kDx, l),
+                                           lane_vec3(tl, TexLanes::kDy, l), cube->size());
+        put(t, l, gpu::detail::sample_cube(sc, dir.x, dir.y, dir.z, lod));
       }
     }
     return;

@@ -338,6 +338,10 @@ float lod_from_derivatives_3d(const glm::vec3& ddx, const glm::vec3& ddy, const 
 // The LOD of a cube lookup in a 2x2 quad from its origin lane and its x and y neighbours,
 // all projected on the origin's face (as texture(SamplerCube) takes it).
 float cube_quad_lod(const glm::vec3& origin, const glm::vec3& right, const glm::vec3& up, int size);
+// The LOD of textureGrad on a cube: the direction's derivatives carried onto its face by the
+// quotient rule (s = sc / |ma| / 2 + 1/2, so ds = (dsc - sc dma / ma) / ma / 2, and t alike),
+// then eq. 8.7 as for a 2D texture of the face's size, as llvmpipe derives explicit gradients.
+float cube_grad_lod(const glm::vec3& dir, const glm::vec3& ddx, const glm::vec3& ddy, int size);
 // texelFetch: (0, 0, 0, 0) outside the level (and for a missing level), (0,0,0,1) without a texture.
 glm::vec4 texel_fetch(const Texture3D* t, int x, int y, int z, int level);
 glm::vec4 texel_fetch(const Texture2DArray* t, int x, int y, int layer, int level);
