@@ -6,10 +6,12 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <string>
 
 namespace tessel::glsl {
 namespace {
@@ -37,6 +39,40 @@ const TBuiltInResource& resources() {
   return r;
 }
 
+// glslang's log in the form GL drivers give: "ERROR: 0:4: 'foo' : undeclared identifier"
+// becomes "0:4: error: 'foo' : undeclared identifier" (string:line first, as Mesa and the
+// proprietary drivers print it, so editors and course tools find the line), WARNING lines
+// alike, and a line without a location ("ERROR: 1 compilation errors...") starts "error: ".
+std::string gl_log_form(const std::string& log) {
+  std::string out;
+  size_t at = 0;
+  while (at < log.size()) {
+    size_t end = log.find('\n', at);
+    if (end == std::string::npos) end = log.size();
+    std::string line = log.substr(at, end - at);
+    at = end + 1;
+    for (const char* kind : {"ERROR", "WARNING"}) {
+      const std::string tag = std::string(kind) + ": ";
+      if (line.compare(0, tag.size(), tag) != 0) continue;
+      const std::string lower = kind[0] == 'E' ? "error: " : "warning: ";
+      std::string rest = line.substr(tag.size());
+      // A location is "<string>:<line>: " of digits.
+      size_t p = 0;
+      while (p < rest.size() && std::isdigit(static_cast<unsigned char>(rest[p]))) ++p;
+      size_t q = p < rest.size() && rest[p] == ':' && p > 0 ? p + 1 : 0;
+      const size_t line_start = q;
+      while (q > 0 && q < rest.size() && std::isdigit(static_cast<unsigned char>(rest[q]))) ++q;
+      if (q > line_start && rest.compare(q, 2, ": ") == 0)
+        line = rest.substr(0, q + 2) + lower + rest.substr(q + 2);
+      else
+        line = lower + rest;
+      break;
+    }
+    if (!line.empty()) out += line + "\n";
+  }
+  return out;
+}
+
 // Parses one stage at its #version (1.10 without one); the shader object must outlive any
 // program that links it.
 bool parse(glslang::TShader& sh, const std::string& source, std::string& log) {
@@ -58,7 +94,7 @@ bool parse(glslang::TShader& sh, const std::string& source, std::string& log) {
       "#define ftransform() (gl_ModelViewProjectionMatrix * gl_Vertex)\n" + kInverse140;
   sh.setPreamble((sh.getStage() == EShLangVertex ? kVertex : kInverse140).c_str());
   const bool ok = sh.parse(&resources(), 110, ENoProfile, false, false, EShMsgDefault);
-  log = sh.getInfoLog();
+  log = gl_log_form(sh.getInfoLog());
   return ok;
 }
 
@@ -97,7 +133,7 @@ bool front_link(const std::vector<std::string>& vertex, const std::vector<std::s
       }
     }
     if (!prog.link(EShMsgDefault)) {
-      log = prog.getInfoLog();
+      log = gl_log_form(prog.getInfoLog());
       if (log.empty()) log = "error: link failed\n";
       return false;
     }

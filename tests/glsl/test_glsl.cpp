@@ -57,8 +57,17 @@ TEST(Glsl, CompileErrorNamesTheLine) {
   auto s =
       Shader::compile(Stage::Fragment, "#version 330\nout vec4 c;\nvoid main() {\n  c = vec4(foo);\n}\n");
   EXPECT_FALSE(s->ok());
-  EXPECT_NE(s->info_log().find("0:4"), std::string::npos) << s->info_log();
+  // The form GL drivers print: string:line, then the kind.
+  EXPECT_EQ(s->info_log().rfind("0:4: error: ", 0), 0u) << s->info_log();
   EXPECT_NE(s->info_log().find("foo"), std::string::npos) << s->info_log();
+  EXPECT_EQ(s->info_log().find("ERROR"), std::string::npos) << s->info_log();
+  // A program that fails to link says why, in the same form.
+  auto vs = Shader::compile(Stage::Vertex, "#version 330\nvoid main() { gl_Position = vec4(0.0); }\n");
+  auto fs = Shader::compile(Stage::Fragment, "#version 330\nout vec4 c;\nvoid helper() { c = vec4(1.0); }\n");
+  ASSERT_TRUE(vs->ok() && fs->ok()) << fs->info_log();
+  auto p = Program::link(*vs, *fs);
+  EXPECT_FALSE(p->ok());
+  EXPECT_EQ(p->info_log().rfind("error: ", 0), 0u) << p->info_log();
 }
 
 TEST(Glsl, VersionsAndCompatibilityBuiltinsCompile) {
@@ -477,7 +486,15 @@ TEST(Glsl, BadInputGetsALogOrADefinedResult) {
   deep += "1.0";
   for (int i = 0; i < 10000; ++i) deep += ")";
   deep += "; c = vec4(x); }";
-  (void)Shader::compile(Stage::Fragment, deep);  // a log or success, never a crash
+  {
+    // A log, or a program that runs: the parentheses are no operations.
+    std::string dlog;
+    const std::vector<float> dp = draw(deep, &dlog);
+    if (dp.empty())
+      EXPECT_NE(dlog.find("error"), std::string::npos) << dlog;
+    else
+      EXPECT_EQ(dp[0], 1.0f);
+  }
   std::string huge = "#version 330\nout vec4 c;\n";
   while (huge.size() < 10u * 1024 * 1024)
     huge += "// padding padding padding padding padding padding padding padding\n";
@@ -508,6 +525,17 @@ TEST(Glsl, BadInputGetsALogOrADefinedResult) {
       &log);
   ASSERT_FALSE(px.empty()) << log;
   for (float x : px) EXPECT_FALSE(std::isnan(x));
+  // Pixel (0, 0): p.x = 1/32, so k = -47. As on llvmpipe (the conformance set compares these
+  // edges with Mesa): a signed quotient by 0 is 0, a remainder by 0 all ones; indices are
+  // clamped into the array.
+  EXPECT_EQ(px[0], 0.0f);
+  EXPECT_EQ(px[1], -1.0f);
+  EXPECT_EQ(px[2], 1.0f);
+  EXPECT_EQ(px[3], 3.0f);
+  // A fragment shader that writes no output links (as in Mesa; the colour is undefined by GL)
+  // and draws; so does one that discards every fragment.
+  EXPECT_FALSE(draw("#version 330\nvoid main() {}", &log).empty()) << log;
+  EXPECT_FALSE(draw("#version 110\nvoid main() { discard; }", &log).empty()) << log;
 }
 
 }  // namespace
