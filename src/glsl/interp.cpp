@@ -740,11 +740,12 @@ static void run_texture_unswizzled(const ir::TexOp& t, const RunInputs& in_, Tex
       for (int l = 0; l < L; ++l) put(t, l, glm::vec4(r.x[l], r.y[l], r.z[l], r.w[l]));
     } else {
       for (int l = 0; l < L; ++l) {
-        const glm::vec3 dir(lanef(0, l), lanef(1, l), lanef(2, l));
-        float lod = t.has_lod ? lanef(TexLanes::kLod, l) : 0.0f;
-        if (t.has_grad)
-          lod = gpu::detail::cube_grad_lod(dir, lane_vec3(tl, TexLanes::kDx, l),
-                                           lane_vec3(tl, TexLanes::kDy, l), cube->size());
+        const glm::vec3 dir = lane_vec3(tl, 0, l);
+        const float lod = t.has_grad
+                              ? gpu::detail::cube_grad_lod(dir, lane_vec3(tl, TexLanes::kDx, l),
+                                                           lane_vec3(tl, TexLanes::kDy, l), cube->size())
+                          : t.has_lod ? lanef(TexLanes::kLod, l)
+                                      : 0.0f;
         put(t, l, gpu::detail::sample_cube(sc, dir.x, dir.y, dir.z, lod));
       }
     }

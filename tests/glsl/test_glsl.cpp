@@ -500,6 +500,17 @@ TEST(Glsl, BadInputGetsALogOrADefinedResult) {
     huge += "// padding padding padding padding padding padding padding padding\n";
   huge += "void main() { c = vec4(1.0); }\n";
   EXPECT_TRUE(Shader::compile(Stage::Fragment, huge)->ok());
+  {
+    // An #error of 300,000 characters: the log quotes it whole on one line, and rewriting
+    // that line into GL's form must neither recurse per character nor lose it.
+    std::string text = "q";
+    while (text.size() < 300000) text += " q";
+    auto bad =
+        Shader::compile(Stage::Fragment, "#version 330\n#error " + text + "\nout vec4 c; void main() {}");
+    ASSERT_FALSE(bad->ok());
+    EXPECT_EQ(bad->info_log().rfind("0:2: error: ", 0), 0u) << bad->info_log().substr(0, 80);
+    EXPECT_NE(bad->info_log().find(text), std::string::npos) << bad->info_log().substr(0, 300);
+  }
   // Recursion is a compile or link error.
   auto v = Shader::compile(Stage::Vertex, kVs);
   auto f = Shader::compile(

@@ -1141,9 +1141,8 @@ TEST(GlslConformance, Texture1DRectCubeAndShadow) {
       "outf(textureGrad(s, vec3(1.8, p - 0.5), vec3(0.0, 0.1 * p.x, 0.0), vec3(0.0, 0.0, 0.05)));",
       // Gradients that minify (LOD 0 to about 3), with a major-axis part: the face's s and t
       // derivatives follow the quotient rule.
-      "outf(textureGrad(s, vec3(p.x - 0.5, -1.5, p.y - 0.5), vec3(p.x * 2.0, 0.3, 0.0), vec3(0.0, -0.2 * "
-      "p.y, "
-      "p.y * 1.5)));",
+      "outf(textureGrad(s, vec3(p.x - 0.5, -1.5, p.y - 0.5), vec3(p.x * 2.0, 0.3, 0.0),"
+      " vec3(0.0, -0.2 * p.y, p.y * 1.5)));",
       "outf(texture(s, vec3(p.x - 0.5, 1.1, p.y * 1.8 - 0.9)) + texture(s, vec3(p.yx - 0.5, -1.2)));",
       "outf(vec4(textureSize(s, 1), textureSize(s, 2)) + vec4(textureSize(s, 0), textureSize(s, 3)));",
   };
