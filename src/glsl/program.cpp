@@ -13,10 +13,12 @@
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
+#include <list>
 #include <mutex>
 #include <optional>
 #include <set>
 #include <string_view>
+#include <unordered_map>
 #if defined(__SSE__) || defined(_M_X64)
 #endif
 
@@ -36,13 +38,97 @@ struct Copy {
 
 }  // namespace
 
+// --- What this process has compiled and linked ----------------------------------------------
+
+namespace {
+
+// Results kept by key, the least recently used dropped first beyond kProgramCacheEntries. The
+// whole key is compared (its hash only picks the bucket), so two inputs never share a result.
+// A key longer than kMaxKeyBytes (sources of megabytes) is not kept.
+template <class V>
+class Kept {
+ public:
+  static constexpr size_t kMaxKeyBytes = 256 * 1024;
+
+  std::optional<V> find(const std::string& key) {
+    std::lock_guard lock(m_);
+    auto it = index_.find(key);
+    if (it == index_.end()) {
+      ++misses_;
+      return std::nullopt;
+    }
+    order_.splice(order_.begin(), order_, it->second);
+    ++hits_;
+    return it->second->second;
+  }
+  void put(std::string key, V value) {
+    if (key.size() > kMaxKeyBytes) return;
+    std::lock_guard lock(m_);
+    if (auto it = index_.find(key); it != index_.end()) {
+      order_.erase(it->second);
+      index_.erase(it);
+    }
+    order_.emplace_front(std::move(key), std::move(value));
+    index_.emplace(order_.front().first, order_.begin());  // the view is of the list's own string
+    while (order_.size() > kProgramCacheEntries) {
+      index_.erase(order_.back().first);
+      order_.pop_back();
+    }
+  }
+  void clear() {
+    std::lock_guard lock(m_);
+    index_.clear();
+    order_.clear();
+    hits_ = misses_ = 0;
+  }
+  ProgramCacheStats stats() {
+    std::lock_guard lock(m_);
+    return {hits_, misses_, order_.size()};
+  }
+
+ private:
+  std::mutex m_;
+  std::list<std::pair<std::string, V>> order_;  // most recent first
+  std::unordered_map<std::string_view, typename std::list<std::pair<std::string, V>>::iterator> index_;
+  uint64_t hits_ = 0, misses_ = 0;
+};
+
+// Appends a length and the bytes: keys made of these never run two fields together.
+void key_add(std::string& key, std::string_view s) {
+  const uint64_t n = s.size();
+  key.append(reinterpret_cast<const char*>(&n), sizeof n);
+  key.append(s);
+}
+void key_add(std::string& key, int64_t v) { key.append(reinterpret_cast<const char*>(&v), sizeof v); }
+
+struct CompiledShader {
+  bool ok;
+  std::string log;
+};
+Kept<CompiledShader>& compiled_shaders() {
+  static Kept<CompiledShader> k;
+  return k;
+}
+
+}  // namespace
+
 // --- Shader ---------------------------------------------------------------------------------
 
 std::shared_ptr<Shader> Shader::compile(Stage stage, std::string source) {
   auto s = std::make_shared<Shader>();
   s->stage_ = stage;
   s->source_ = std::move(source);
-  s->ok_ = front_compile(stage == Stage::Vertex ? 0 : stage == Stage::Fragment ? 1 : 2, s->source_, s->log_);
+  const int index = stage == Stage::Vertex ? 0 : stage == Stage::Fragment ? 1 : 2;
+  std::string key;
+  key_add(key, index);
+  key_add(key, s->source_);
+  if (auto kept = compiled_shaders().find(key)) {
+    s->ok_ = kept->ok;
+    s->log_ = kept->log;
+    return s;
+  }
+  s->ok_ = front_compile(index, s->source_, s->log_);
+  compiled_shaders().put(std::move(key), {s->ok_, s->log_});
   return s;
 }
 
@@ -116,6 +202,54 @@ struct Program::Impl {
   std::map<std::string, int, std::less<>> output_index;  // fragment output name -> index
   bool dual_source = false;
 };
+
+namespace {
+
+Kept<std::shared_ptr<const Program::Impl>>& linked_programs() {
+  static Kept<std::shared_ptr<const Program::Impl>> k;
+  return k;
+}
+
+// When a program's native code is made: as the options ask, unless TESSEL_GLSL=interp (never)
+// or TESSEL_GLSL=sync (at link) says otherwise.
+NativeCode native_mode(const LinkOptions& options) {
+  NativeCode when = options.native_code;
+  if (const char* mode = std::getenv("TESSEL_GLSL")) {
+    if (std::string_view(mode) == "interp") when = NativeCode::Off;
+    if (std::string_view(mode) == "sync") when = NativeCode::AtLink;
+  }
+  return when;
+}
+
+// The program cache's key: every stage's sources in order and every binding that changes
+// what linking gives. Native code made in the background or at link is the same code.
+std::string program_key(const std::vector<std::string> (&sources)[3], const LinkOptions& o, NativeCode when) {
+  std::string key;
+  for (const auto& stage : sources) {
+    key_add(key, int64_t(stage.size()));
+    for (const std::string& src : stage) key_add(key, src);
+  }
+  for (const auto* bindings : {&o.attribute_locations, &o.frag_data_locations, &o.frag_data_indices}) {
+    key_add(key, int64_t(bindings->size()));
+    for (const auto& [name, value] : *bindings) {
+      key_add(key, name);
+      key_add(key, value);
+    }
+  }
+  key_add(key, int64_t(o.feedback_varyings.size()));
+  for (const std::string& v : o.feedback_varyings) key_add(key, v);
+  key_add(key, int64_t(o.feedback_separate));
+  key_add(key, int64_t(when == NativeCode::Off));
+  return key;
+}
+
+}  // namespace
+
+ProgramCacheStats program_cache_stats() { return linked_programs().stats(); }
+void clear_program_cache() {
+  linked_programs().clear();
+  compiled_shaders().clear();
+}
 
 namespace {
 
@@ -302,6 +436,15 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
   // Without a fragment shader (a depth-only pass), fragments get no colour (GL 3.3 §3.9:
   // the colour values are undefined): a shader that writes none.
   if (sources[1].empty()) sources[1].push_back("#version 110\nvoid main() {}\n");
+  // The same sources and bindings linked before: that link's result, with uniform values of
+  // the program's own.
+  const NativeCode when = native_mode(options);
+  std::string key = program_key(sources, options, when);
+  if (auto kept = linked_programs().find(key)) {
+    *p->impl_ = **kept;
+    if (when == NativeCode::AtLink) p->wait_native();
+    return p;
+  }
   auto linked = std::make_shared<Linked>();
   LoweredStage vs, fs, gs;
   const bool has_gs = !sources[2].empty();
@@ -792,11 +935,6 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
   }
   // Native code for both stages, unless the options or TESSEL_GLSL=interp ask for the
   // interpreter. A program LLVM cannot compile still runs, on the interpreter (same results).
-  NativeCode when = options.native_code;
-  if (const char* mode = std::getenv("TESSEL_GLSL")) {
-    if (std::string_view(mode) == "interp") when = NativeCode::Off;
-    if (std::string_view(mode) == "sync") when = NativeCode::AtLink;
-  }
   if (when != NativeCode::Off) {
     linked->env = jit_environment();
     StageIO& vio = linked->vio;
@@ -842,6 +980,7 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
     const uint32_t base = m.layout.slots[it->second].word;
     for (size_t i = 0; i < words.size() && base + i < m.values.size(); ++i) m.values[base + i] = words[i];
   }
+  linked_programs().put(std::move(key), std::make_shared<const Impl>(m));
   return p;
 }
 

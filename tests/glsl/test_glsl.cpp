@@ -367,6 +367,7 @@ TEST(Glsl, BackgroundCompileDrawsAtOnceWithTheSameBits) {
 
   auto v = Shader::compile(Stage::Vertex, kVs);
   auto f = Shader::compile(Stage::Fragment, s.fragment);
+  glsl::clear_program_cache();  // else this link takes the native code linked above
   glsl::hold_background_compiles(true);
   auto p = Program::link(*v, *f);
   ASSERT_TRUE(p->ok()) << p->info_log();
@@ -418,6 +419,81 @@ TEST(Glsl, LoopLimitsHoldPerSixteenLanesInPairedCalls) {
     }
 }
 
+// The process's cache: linking the same sources with the same bindings again compiles
+// nothing (the second program has native code at once, sharing the first's), gives a program
+// with uniform values of its own at their initial state, and draws the same image; other
+// sources, other bindings or the interpreter's tier are other programs; 64 are kept.
+TEST(Glsl, LinkingTheSameProgramAgainCompilesNothing) {
+  glsl::clear_program_cache();
+  const std::string fs =
+      "#version 330\nin vec2 p; out vec4 c; uniform float k = 2.0; uniform vec3 tint;\n"
+      "void main() { c = vec4(sin(p.x * k) * tint.x, p.y, tint.z, 1.0); }";
+  auto link = [&](const LinkOptions& o = {}, const std::string& f = "") {
+    return Program::link(*Shader::compile(Stage::Vertex, kVs),
+                         *Shader::compile(Stage::Fragment, f.empty() ? fs : f), o);
+  };
+  auto first = link();
+  ASSERT_TRUE(first->ok()) << first->info_log();
+  EXPECT_EQ(glsl::program_cache_stats().misses, 1u);
+  EXPECT_EQ(glsl::program_cache_stats().hits, 0u);
+  ASSERT_TRUE(first->wait_native());
+  const float k = 7.0f, tint[3] = {0.5f, 0.25f, 0.75f};
+  ASSERT_TRUE(first->set_uniform(first->uniform_location("k"), &k, 1));
+  ASSERT_TRUE(first->set_uniform(first->uniform_location("tint"), tint, 3));
+
+  auto second = link();
+  ASSERT_TRUE(second->ok());
+  EXPECT_EQ(glsl::program_cache_stats().hits, 1u);
+  EXPECT_TRUE(second->native());  // no compile to wait for
+  EXPECT_EQ(second->uniforms().size(), first->uniforms().size());
+  EXPECT_EQ(second->attribute_location("pos"), 0);
+  float got[3] = {};
+  ASSERT_TRUE(second->get_uniform(second->uniform_location("k"), got));
+  EXPECT_EQ(got[0], 2.0f);  // its own values, from the initializer: not the first program's 7
+  ASSERT_TRUE(second->get_uniform(second->uniform_location("tint"), got));
+  EXPECT_EQ(got[2], 0.0f);
+  // A drawing through a kept program gives the image of one linked afresh.
+  reference::GlslDrawSpec spec = quad(fs);
+  spec.uniforms.push_back({.name = "k", .f = {k}});
+  spec.uniforms.push_back({.name = "tint", .f = {tint[0], tint[1], tint[2]}});
+  const TesselResult warm = run_tessel(spec, 2, NativeCode::Background);
+  EXPECT_EQ(glsl::program_cache_stats().hits, 2u);
+  glsl::clear_program_cache();
+  const TesselResult cold = run_tessel(spec, 2, NativeCode::Background);
+  EXPECT_EQ(glsl::program_cache_stats().misses, 1u);
+  ASSERT_TRUE(warm.ok && cold.ok) << warm.log << cold.log;
+  EXPECT_EQ(warm.outputs, cold.outputs);
+  spec.uniforms.pop_back();
+  EXPECT_NE(run_tessel(spec, 2, NativeCode::Background).outputs, cold.outputs);  // the values count
+
+  // Other bindings, another source, the interpreter's tier: links of their own.
+  LinkOptions bound;
+  bound.frag_data_locations["c"] = 1;
+  auto rebound = link(bound);
+  EXPECT_EQ(rebound->frag_data_location("c"), 1);
+  EXPECT_EQ(second->frag_data_location("c"), 0);
+  LinkOptions off;
+  off.native_code = NativeCode::Off;
+  EXPECT_FALSE(link(off)->native());
+  EXPECT_TRUE(link({}, fs + " ")->ok());
+  EXPECT_EQ(glsl::program_cache_stats().misses, 4u);  // the cold draw's and these three
+  // A program that failed to link is not kept: linking it again gives the log again.
+  auto bad = link({}, "#version 330\nin vec3 nowhere; out vec4 c; void main() { c = vec4(nowhere, 1.0); }");
+  EXPECT_FALSE(bad->ok());
+  EXPECT_EQ(link({}, "#version 330\nin vec3 nowhere; out vec4 c; void main() { c = vec4(nowhere, 1.0); }")
+                ->info_log(),
+            bad->info_log());
+  // The least recently linked go first.
+  for (int i = 0; i < int(glsl::kProgramCacheEntries); ++i)
+    ASSERT_TRUE(link(off, fs + "// " + std::to_string(i))->ok());
+  EXPECT_EQ(glsl::program_cache_stats().entries, glsl::kProgramCacheEntries);
+  const uint64_t misses = glsl::program_cache_stats().misses;
+  EXPECT_TRUE(link()->ok());
+  EXPECT_EQ(glsl::program_cache_stats().misses, misses + 1);
+  glsl::clear_program_cache();
+  EXPECT_EQ(glsl::program_cache_stats().entries, 0u);
+}
+
 // The disk cache: a program's second link loads its code; the images are the same; a damaged
 // or truncated file is ignored and the program compiled again.
 TEST(Glsl, DiskCacheOfCompiledPrograms) {
@@ -428,6 +504,7 @@ TEST(Glsl, DiskCacheOfCompiledPrograms) {
       "#version 330\nin vec2 p; out vec4 c; uniform float k; void main() { c = vec4(sin(p.x * k), p.y, 0.5, "
       "1.0); }";
   auto link = [&] {
+    glsl::clear_program_cache();  // the disk's, not the process's
     auto v = Shader::compile(Stage::Vertex, kVs);
     auto f = Shader::compile(Stage::Fragment, fs);
     return Program::link(*v, *f);

@@ -156,6 +156,22 @@ int builtin_attribute_location(std::string_view name);
 // the interpreter tier.
 void hold_background_compiles(bool hold);
 
+// The programs this process has linked, kept in memory by their sources and LinkOptions:
+// linking the same sources with the same bindings again takes the earlier link's result
+// (no glslang, no lowering, no native compile) and gives the new program its own uniform
+// values, at their initial state. At most kProgramCacheEntries programs are kept, the least
+// recently linked dropped first; only programs that linked are kept. Shader::compile keeps
+// its results the same way. The disk cache (jit.hpp) is the one that outlives the process.
+inline constexpr size_t kProgramCacheEntries = 64;
+struct ProgramCacheStats {
+  uint64_t hits = 0, misses = 0;  // links that took a kept program, links that did the work
+  size_t entries = 0;
+};
+ProgramCacheStats program_cache_stats();
+// Forgets every kept program and compiled shader (programs already linked keep their code)
+// and counts from zero again.
+void clear_program_cache();
+
 class Program {
  public:
   // Links a vertex and a fragment shader. Never throws; a program that failed to link has
