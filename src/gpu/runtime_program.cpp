@@ -41,35 +41,44 @@ struct RuntimeBridge {
   // The components the program reads (K rounds them up).
   int live_varyings() const { return shape_.varyings; }
 
-  template <class F>
-  Vec4<F> vertex(const Uniforms& u, const VertexIn<F>& in, Varyings<F>& out) const {
-    constexpr int N = lane_width<F>;
+  // Two batches of eight vertices (the pipeline fetches eight at a time) as one call of the
+  // program's sixteen lanes; the second batch only when `both` (else lanes 8-15 hold an
+  // earlier call's vertices, and their results are not read).
+  void vertex_pair(const Uniforms& u, const VertexIn<Float8> (&in)[2], bool both, Varyings<Float8> (&out)[2],
+                   Vec4<Float8> (&pos)[2]) const {
     thread_local VertexLanes lanes;
     const RuntimeShape& shape = shape_;
-    for (uint32_t m = shape.attributes; m; m &= m - 1) {
-      const int loc = __builtin_ctz(m);
-      if (loc >= kMaxVertexAttribs) break;
-      in.attr[size_t(loc)].x.store(lanes.attr[loc][0]);
-      in.attr[size_t(loc)].y.store(lanes.attr[loc][1]);
-      in.attr[size_t(loc)].z.store(lanes.attr[loc][2]);
-      in.attr[size_t(loc)].w.store(lanes.attr[loc][3]);
+    for (int h = 0; h < (both ? 2 : 1); ++h) {
+      const int at = h * 8;
+      for (uint32_t m = shape.attributes; m; m &= m - 1) {
+        const int loc = __builtin_ctz(m);
+        if (loc >= kMaxVertexAttribs) break;
+        const Vec4<Float8>& a = in[h].attr[size_t(loc)];
+        a.x.store(lanes.attr[loc][0] + at);
+        a.y.store(lanes.attr[loc][1] + at);
+        a.z.store(lanes.attr[loc][2] + at);
+        a.w.store(lanes.attr[loc][3] + at);
+      }
+      float_from_bits(in[h].vertex_id).store(reinterpret_cast<float*>(lanes.vertex_id) + at);
+      float_from_bits(in[h].instance_id).store(reinterpret_cast<float*>(lanes.instance_id) + at);
     }
-    float_from_bits(in.vertex_id).store(reinterpret_cast<float*>(lanes.vertex_id));
-    float_from_bits(in.instance_id).store(reinterpret_cast<float*>(lanes.instance_id));
-    lanes.count = N;
+    lanes.count = both ? 16 : 8;
     u->vertex(lanes);
-    if constexpr (K > 0) {
-      // With a geometry stage the vertex stage's components are that stage's inputs.
-      const bool gs = shape.geometry_input != 0;
-      const int n = std::min(K, gs ? shape.vertex_varyings : shape.varyings);
-      for (int k = 0; k < n; ++k) out.v[k] = F::load(lanes.varyings[k]);
-      for (int k = n; k < K; ++k) out.v[k] = F(0.0f);
-      // gl_PointCoord is set by setup on points; the program does not write it (zero elsewhere).
-      if (!gs && shape.point_coord >= 0 && shape.point_coord + 1 < K)
-        out.v[shape.point_coord] = out.v[shape.point_coord + 1] = F(0.0f);
+    for (int h = 0; h < (both ? 2 : 1); ++h) {
+      const int at = h * 8;
+      if constexpr (K > 0) {
+        // With a geometry stage the vertex stage's components are that stage's inputs.
+        const bool gs = shape.geometry_input != 0;
+        const int n = std::min(K, gs ? shape.vertex_varyings : shape.varyings);
+        for (int k = 0; k < n; ++k) out[h].v[k] = Float8::load(lanes.varyings[k] + at);
+        for (int k = n; k < K; ++k) out[h].v[k] = Float8(0.0f);
+        // gl_PointCoord is set by setup on points; the program does not write it (zero elsewhere).
+        if (!gs && shape.point_coord >= 0 && shape.point_coord + 1 < K)
+          out[h].v[shape.point_coord] = out[h].v[shape.point_coord + 1] = Float8(0.0f);
+      }
+      pos[h] = Vec4<Float8>(Float8::load(lanes.position[0] + at), Float8::load(lanes.position[1] + at),
+                            Float8::load(lanes.position[2] + at), Float8::load(lanes.position[3] + at));
     }
-    return Vec4<F>(F::load(lanes.position[0]), F::load(lanes.position[1]), F::load(lanes.position[2]),
-                   F::load(lanes.position[3]));
   }
 
   void geometry(const Uniforms& u, GeometryLanes& lanes) const { u->geometry(lanes); }

@@ -259,6 +259,65 @@ TEST(Glsl, DrawsAndIsIdenticalForAnyThreadCount) {
   EXPECT_NEAR(px[1], 11.5f / 23.0f, 1e-5f);
 }
 
+// The vertex stage runs sixteen vertices a call, two fetched batches of eight: every count
+// of vertices from 1 to 40 (whole calls, a lone first batch, a part-filled second one), with
+// an attribute per vertex, one per instance and one for both instances, captures each vertex's own
+// values in order, and the same bytes on the interpreter.
+TEST(Glsl, VertexStageTakesSixteenVerticesACallForEveryCount) {
+  auto v = Shader::compile(Stage::Vertex, R"(#version 330
+layout(location = 0) in float a;
+layout(location = 1) in float per_instance;
+layout(location = 2) in vec2 constant;
+out vec4 r;
+void main() {
+  r = vec4(float(gl_VertexID), a * 2.0 + 1.0, per_instance, constant.y - constant.x);
+  gl_Position = vec4(a * 0.01, 0.0, 0.0, 1.0);
+})");
+  auto f = Shader::compile(Stage::Fragment, "#version 330\nout vec4 c;\nvoid main() { c = vec4(1.0); }");
+  std::vector<float> a(40), inst = {5.0f, 6.0f};
+  for (int i = 0; i < 40; ++i) a[size_t(i)] = float(i * i) * 0.25f;
+  gpu::Buffer va(std::vector<uint8_t>(reinterpret_cast<const uint8_t*>(a.data()),
+                                      reinterpret_cast<const uint8_t*>(a.data() + a.size())));
+  gpu::Buffer vi(std::vector<uint8_t>(reinterpret_cast<const uint8_t*>(inst.data()),
+                                      reinterpret_cast<const uint8_t*>(inst.data() + inst.size())));
+  gpu::VertexLayout layout;
+  layout.attrib(0, va, 1, gpu::AttribType::F32, 4, 0);
+  layout.attrib(1, vi, 1, gpu::AttribType::F32, 4, 0, false, 1);
+  const float both[2] = {1.5f, 4.0f};
+  gpu::Buffer vc(std::vector<uint8_t>(reinterpret_cast<const uint8_t*>(both),
+                                      reinterpret_cast<const uint8_t*>(both + 2)));
+  layout.attrib(2, vc, 2, gpu::AttribType::F32, 8, 0, false, 2);  // one value for both instances
+  for (NativeCode tier : {NativeCode::AtLink, NativeCode::Off}) {
+    LinkOptions options;
+    options.native_code = tier;
+    options.feedback_varyings = {"r"};
+    auto prog = Program::link(*v, *f, options);
+    ASSERT_TRUE(prog->ok()) << prog->info_log();
+    for (uint32_t n = 1; n <= 40; ++n) {
+      gpu::Context ctx(2);
+      gpu::Texture2D color(gpu::Format::RGBA8, 8, 8);
+      gpu::Framebuffer fb(&color);
+      ctx.bind_framebuffer(&fb);
+      gpu::Buffer out(std::vector<uint8_t>(size_t(n) * 2 * 16, 0));
+      gpu::Capture cap;
+      cap.mode = gpu::Topology::Points;
+      cap.buffers.push_back({&out, 0, out.size(), prog->feedback_words()[0]});
+      prog->draw(ctx, layout, gpu::RenderState{},
+                 {.topology = gpu::Topology::Points, .count = n, .instance_count = 2, .capture = &cap});
+      ctx.finish();
+      ASSERT_EQ(cap.written, uint64_t(n) * 2) << n;
+      const auto* r = reinterpret_cast<const float*>(out.data());
+      for (uint32_t k = 0; k < n * 2; ++k) {
+        const uint32_t i = k % n, instance = k / n;
+        EXPECT_EQ(r[k * 4 + 0], float(i)) << n << " " << k;
+        EXPECT_EQ(r[k * 4 + 1], a[i] * 2.0f + 1.0f) << n << " " << k;
+        EXPECT_EQ(r[k * 4 + 2], inst[instance]) << n << " " << k;
+        EXPECT_EQ(r[k * 4 + 3], 2.5f) << n << " " << k;
+      }
+    }
+  }
+}
+
 // Transform feedback through the gpu layer (gpu::Capture): a triangle strip of several chunks
 // and three instances, written as independent triangles in draw order (odd strip triangles
 // as (i + 1, i, i + 2), each instance after the one before), the same bytes for any thread

@@ -42,12 +42,8 @@ class Program final : public ProgramBase {
                       float* vars, float* soa) const override {
     [[maybe_unused]] const auto mode = float_mode();
     constexpr int K = varying_count<S>();
-    VertexIn<Float8> in;  // the constant locations are written by the first batch only
-    for (int base = 0; base < n; base += kLanes) {
-      const int m = std::min(kLanes, n - base);
-      fetch_attributes8(d.layout, ids + base, m, instance, in, base > 0);
-      Varyings<Float8> out{};
-      Vec4<Float8> p = shader_.vertex(uniforms_, in, out);
+    // One batch's results: m vertices from `base`.
+    auto store = [&](int base, int m, const Vec4<Float8>& p, const Varyings<Float8>& out) {
       for (int l = 0; l < m; ++l) pos[base + l] = glm::vec4(p.x[l], p.y[l], p.z[l], p.w[l]);
       if (soa) {
         float* b = soa + size_t(base) * 4;
@@ -61,6 +57,28 @@ class Program final : public ProgramBase {
         std::memcpy(lanes, &out, sizeof lanes);
         for (int l = 0; l < m; ++l)
           for (int k = 0; k < K; ++k) vars[size_t(base + l) * K + k] = lanes[k][l];
+      }
+    };
+    if constexpr (shader_runtime<S>()) {
+      // A run-time program has sixteen lanes a call: two batches of eight go in each.
+      VertexIn<Float8> in[2];  // the constant locations are written by the first batches only
+      for (int base = 0; base < n; base += 2 * kLanes) {
+        const int m0 = std::min(kLanes, n - base), m1 = std::clamp(n - base - kLanes, 0, kLanes);
+        fetch_attributes8(d.layout, ids + base, m0, instance, in[0], base > 0);
+        if (m1 > 0) fetch_attributes8(d.layout, ids + base + kLanes, m1, instance, in[1], base > 0);
+        Varyings<Float8> out[2]{};
+        Vec4<Float8> p[2];
+        shader_.vertex_pair(uniforms_, in, m1 > 0, out, p);
+        store(base, m0, p[0], out[0]);
+        if (m1 > 0) store(base + kLanes, m1, p[1], out[1]);
+      }
+    } else {
+      VertexIn<Float8> in;  // the constant locations are written by the first batch only
+      for (int base = 0; base < n; base += kLanes) {
+        const int m = std::min(kLanes, n - base);
+        fetch_attributes8(d.layout, ids + base, m, instance, in, base > 0);
+        Varyings<Float8> out{};
+        store(base, m, shader_.vertex(uniforms_, in, out), out);
       }
     }
   }
