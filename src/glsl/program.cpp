@@ -682,6 +682,28 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
     if (i.noperspective) linked->shape.noperspective |= bits;
     slot += i.components;
   }
+  // GLSL 1.30 §4.3.7: when gl_Color is redeclared with an interpolation qualifier, the
+  // gl_FrontColor and gl_BackColor the program uses must be redeclared with the same one, and
+  // the other way round; likewise the secondary colours. Only variables the shaders use count.
+  // GL counts "no qualifier" as a value of its own, unlike smooth said; glslang gives both
+  // the same qualifier, so here they are one (piglit's 16 tests of that pairing fail).
+  for (const auto& group : {std::array<const char*, 3>{"gl_FrontColor", "gl_BackColor", "gl_Color"},
+                            {"gl_FrontSecondaryColor", "gl_BackSecondaryColor", "gl_SecondaryColor"}}) {
+    const Interface* first = nullptr;
+    auto qualifier = [](const Interface& i) {
+      return i.flat ? "flat" : i.noperspective ? "noperspective" : "smooth";
+    };
+    for (int k = 0; k < 3; ++k)
+      for (const Interface& i : k < 2 ? producer.outputs : fs.inputs) {
+        if (i.name != group[size_t(k)]) continue;
+        if (!first) {
+          first = &i;
+        } else if (std::string_view(qualifier(i)) != qualifier(*first)) {
+          error(i.name + " has " + qualifier(i) + " but " + first->name + " has " + qualifier(*first) +
+                ": their interpolation qualifiers must match (GLSL 1.30 section 4.3.7)");
+        }
+      }
+  }
   // Then the components the pipeline reads (gl_PointSize, gl_ClipDistance) or sets
   // (gl_PointCoord): point coordinates are interpolated linearly in the window.
   auto take = [&](int n) {

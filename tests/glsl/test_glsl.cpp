@@ -114,6 +114,30 @@ TEST(Glsl, LinkErrors) {
       Program::link(*v, *Shader::compile(Stage::Fragment, "void main() { gl_FragColor = vec4(1.0); }"));
   EXPECT_FALSE(far->ok());
   EXPECT_NE(far->info_log().find("'far'"), std::string::npos) << far->info_log();
+  // GLSL 1.30 §4.3.7: gl_Color redeclared flat needs gl_FrontColor and gl_BackColor flat
+  // too where they are written (and the secondary colours alike); unused ones do not count.
+  auto colours = [](const std::string& vs, const std::string& fs) {
+    return Program::link(*Shader::compile(Stage::Vertex, "#version 130\n" + vs),
+                         *Shader::compile(Stage::Fragment, "#version 130\nout vec4 c;\n" + fs));
+  };
+  const std::string flat_color = "flat in vec4 gl_Color; void main() { c = gl_Color; }";
+  auto mismatch = colours("void main() { gl_Position = vec4(0); gl_BackColor = vec4(1); }", flat_color);
+  EXPECT_FALSE(mismatch->ok());
+  EXPECT_NE(mismatch->info_log().find("gl_BackColor"), std::string::npos) << mismatch->info_log();
+  EXPECT_FALSE(colours("flat out vec4 gl_FrontColor; noperspective out vec4 gl_BackColor;\n"
+                       "void main() { gl_Position = vec4(0); gl_FrontColor = gl_BackColor = vec4(1); }",
+                       "void main() { c = vec4(1); }")
+                   ->ok());
+  EXPECT_FALSE(colours("void main() { gl_Position = vec4(0); gl_FrontSecondaryColor = vec4(1); }",
+                       "noperspective in vec4 gl_SecondaryColor; void main() { c = gl_SecondaryColor; }")
+                   ->ok());
+  EXPECT_TRUE(colours("flat out vec4 gl_FrontColor; flat out vec4 gl_BackColor;\n"
+                      "void main() { gl_Position = vec4(0); gl_FrontColor = gl_BackColor = vec4(1); }",
+                      flat_color)
+                  ->ok());
+  EXPECT_TRUE(colours("void main() { gl_Position = vec4(0); gl_BackColor = vec4(1); }",
+                      "flat in vec4 gl_Color; void main() { c = vec4(1); }")  // gl_Color unused
+                  ->ok());
   // Drawing a program that did not link is an error, not a crash.
   gpu::Context ctx(1);
   gpu::Texture2D color(gpu::Format::RGBA8, 4, 4);
