@@ -850,6 +850,17 @@ class Lowerer {
         if (op == glslang::EOpIndexDirectStruct) {
           const int k = const_index(b->getRight());
           const Range m = member_range(lt, k);
+          // A member of an output block (gl_PerVertex's gl_PointSize, ...) is written: the
+          // link gives pipeline slots only to the built-in outputs a stage writes.
+          const TIntermSymbol* whole = b->getLeft()->getAsSymbolNode();
+          if (whole && lt.getBasicType() == glslang::EbtBlock &&
+              lt.getQualifier().storage == glslang::EvqVaryingOut) {
+            const std::string block = lt.getTypeName().c_str();
+            std::string member = (*lt.getStruct())[size_t(k)].type->getFieldName().c_str();
+            if (block != "gl_PerVertex") member = block + "." + member;
+            for (Interface& o : out_.outputs)
+              if (!o.block && o.name == member) o.written = true;
+          }
           p.comps = std::vector<uint32_t>(p.comps.begin() + m.first, p.comps.begin() + m.first + m.count);
           p.sampler = (*lt.getStruct())[size_t(k)].type->getBasicType() == glslang::EbtSampler;
           return p;

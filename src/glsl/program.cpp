@@ -704,8 +704,9 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
         }
       }
   }
-  // Then the components the pipeline reads (gl_PointSize, gl_ClipDistance) or sets
-  // (gl_PointCoord): point coordinates are interpolated linearly in the window.
+  // Then the components the pipeline reads (gl_PointSize, gl_ClipDistance: only when the
+  // stage writes them, as a gl_PerVertex block lists them all) or sets (gl_PointCoord):
+  // point coordinates are interpolated linearly in the window.
   auto take = [&](int n) {
     if (slot + n > gpu::kMaxVaryings) {
       error("too many varying components (at most " + std::to_string(gpu::kMaxVaryings) + ")");
@@ -725,14 +726,14 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
       slot_of[&o] = at;
       (o.name == "gl_Layer" ? linked->shape.layer : linked->shape.primitive_id) = at;
       linked->shape.flat |= uint64_t(1) << at;
-    } else if (o.name == "gl_PointSize") {
+    } else if (o.name == "gl_PointSize" && o.written) {
       const int at = take(1);
       if (at < 0) break;
       from_vertex(o, at, 1);
       slot_of[&o] = at;
       linked->shape.point_size = at;
       linked->shape.flat |= uint64_t(1) << at;
-    } else if (o.name == "gl_ClipDistance" && o.components > 0) {
+    } else if (o.name == "gl_ClipDistance" && o.components > 0 && o.written) {
       const int n = std::min(o.components, gpu::kMaxClipPlanes);
       const int at = take(n);
       if (at < 0) break;

@@ -146,6 +146,25 @@ TEST(Glsl, LinkErrors) {
   EXPECT_THROW(p->draw(ctx, gpu::VertexLayout{}, gpu::RenderState{}, {.count = 3}), gpu::Error);
 }
 
+// GL_MAX_VARYING_COMPONENTS (64) of varyings link and arrive: the gl_PerVertex members a
+// 3.30 vertex shader does not write (gl_PointSize, gl_ClipDistance) take none of them.
+TEST(Glsl, AllSixtyFourVaryingComponentsArrive) {
+  reference::GlslDrawSpec s = quad(
+      "#version 330\nin vec4 v[15]; in vec2 p; in vec2 q; out vec4 c;\n"
+      "void main() { vec4 t = vec4(0.0); for (int i = 0; i < 15; ++i) t += v[i] * float(i + 1);\n"
+      " c = vec4(t.x, t.w, p.x + q.y, 1.0); }");
+  s.vertex =
+      "#version 330\nlayout(location = 0) in vec2 pos; out vec4 v[15]; out vec2 p; out vec2 q;\n"
+      "void main() { for (int i = 0; i < 15; ++i) v[i] = vec4(1.0, 0.0, 0.0, 0.5);\n"
+      " p = pos * 0.5 + 0.5; q = vec2(0.0, 0.25); gl_Position = vec4(pos, 0.0, 1.0); }";
+  const TesselResult r = run_tessel(s);
+  ASSERT_TRUE(r.ok) << r.log;
+  const float* px = &r.outputs[0][size_t((8 * 16 + 4) * 4)];
+  EXPECT_EQ(px[0], 120.0f);  // 1 + 2 + ... + 15
+  EXPECT_EQ(px[1], 60.0f);
+  EXPECT_NEAR(px[2], 4.5f / 16.0f + 0.25f, 1e-6f);
+}
+
 // Several shader objects of one stage (glAttachShader) link as one stage's compilation units:
 // main() calls functions another unit defines, a uniform declared in two units is one
 // uniform. A function defined nowhere, or main() in two units, is a link error.
