@@ -37,7 +37,8 @@
 namespace tessel::gl {
 
 inline constexpr int kMaxLights = 8;
-inline constexpr int kMaxClipPlanes = 6;
+inline constexpr int kMaxClipPlanes =
+    8;  // GL_MAX_CLIP_PLANES == GL_MAX_CLIP_DISTANCES: at least 8 in GL 3.x, as Mesa gives
 inline constexpr int kModelviewDepth = 32, kProjectionDepth = 32, kTextureDepth = 10;
 inline constexpr int kAttribDepth = 16, kClientAttribDepth = 16;
 inline constexpr int kMaxListNesting = 64;

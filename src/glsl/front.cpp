@@ -13,6 +13,10 @@
 #include <mutex>
 #include <string>
 
+#include "tessel/gpu/buffer.hpp"
+#include "tessel/gpu/shader.hpp"
+#include "tessel/gpu/state.hpp"
+
 namespace tessel::glsl {
 namespace {
 
@@ -27,10 +31,33 @@ void init_glslang() {
   std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
-// glslang's limits, with the geometry stage's raised to llvmpipe's (GL_MAX_GEOMETRY_*).
+// The limits shaders see as built-in constants (gl_MaxVertexAttribs, gl_MaxDrawBuffers,
+// gl_MaxVaryingComponents, ...; GLSL 3.30 section 7.4): what the GL layer reports for the
+// same GL_MAX_* queries, where glslang's defaults are those of a large GPU (64 attributes, 32
+// draw buffers, 32 texture coordinate sets). gl_TexCoord[] and gl_FragData[] take their
+// sizes from them.
 const TBuiltInResource& resources() {
   static const TBuiltInResource r = [] {
     TBuiltInResource x = *GetDefaultResources();
+    x.maxVertexAttribs = gpu::kMaxVertexAttribs;
+    x.maxDrawBuffers = gpu::kMaxColorAttachments;
+    x.maxTextureCoords = 8;  // GL_MAX_TEXTURE_COORDS
+    x.maxTextureUnits = 8;   // GL_MAX_TEXTURE_UNITS
+    x.maxTextureImageUnits = 16;
+    x.maxVertexTextureImageUnits = 16;
+    x.maxGeometryTextureImageUnits = 16;
+    x.maxCombinedTextureImageUnits = 48;
+    x.maxVertexUniformComponents = 4096;
+    x.maxFragmentUniformComponents = 4096;
+    x.maxGeometryUniformComponents = 4096;
+    x.maxVaryingFloats = gpu::kMaxVaryings;
+    x.maxVaryingComponents = gpu::kMaxVaryings;
+    x.maxVaryingVectors = gpu::kMaxVaryings / 4;
+    x.maxVertexOutputComponents = gpu::kMaxVaryings;
+    x.maxGeometryInputComponents = gpu::kMaxVaryings;
+    x.maxFragmentInputComponents = gpu::kMaxVaryings;
+    x.maxClipDistances = gpu::kMaxClipPlanes;
+    x.maxClipPlanes = gpu::kMaxClipPlanes;  // GL_MAX_CLIP_PLANES is the same query
     x.maxGeometryOutputVertices = kMaxGeometryVertices;
     x.maxGeometryTotalOutputComponents = 1024;
     x.maxGeometryOutputComponents = 128;

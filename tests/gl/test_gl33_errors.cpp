@@ -1426,6 +1426,16 @@ TEST_F(GL33ErrorsTest, SyncErrorsWriteNothing) {
   glDeleteSync(s);
 }
 
+// GL 3.3 Table 6.44's minimum: eight clip distances (llvmpipe gives eight too); the eighth
+// can be enabled, a ninth is no capability.
+TEST_F(GL33ErrorsTest, EightClipDistances) {
+  EXPECT_EQ(get_int(GL_MAX_CLIP_DISTANCES), 8);
+  EXPECT_GL_ERR(glEnable(GL_CLIP_DISTANCE7), GL_NO_ERROR);
+  EXPECT_TRUE(glIsEnabled(GL_CLIP_DISTANCE7));
+  EXPECT_GL_ERR(glEnable(GL_CLIP_DISTANCE7 + 1), GL_INVALID_ENUM);
+  glDisable(GL_CLIP_DISTANCE7);
+}
+
 TEST_F(GL33ErrorsTest, IndexedAndPlainGetErrorsWriteNothing) {
   const GLint max_ubb = get_int(GL_MAX_UNIFORM_BUFFER_BINDINGS), max_draw = get_int(GL_MAX_DRAW_BUFFERS);
   const GLint max_tf = get_int(GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS);

@@ -4,8 +4,9 @@
 //   tessel_piglit [--verbose] [--list-failures] DIR_OR_FILE...
 //
 // What it understands of the format (piglit's shader_runner): [require] with GLSL and GL
-// versions (extensions, GLSL ES and other shader stages are skipped), [vertex shader],
-// [vertex shader passthrough], [fragment shader], [vertex data], and in [test]: uniform,
+// versions (extensions, GLSL ES and the stages of GL 4 are skipped), [vertex shader],
+// [vertex shader passthrough], [geometry shader], [fragment shader], [vertex data], and in
+// [test]: uniform,
 // clear color, clear, draw rect [ortho], draw arrays, probe rgb/rgba (pixel, rect, all,
 // relative), link error / link success, ortho. A test that needs anything else is counted as
 // skipped with the reason. The default window is 250x250 RGBA8, probes allow 0.01 per channel
@@ -100,6 +101,7 @@ struct Test {
   std::string vs, fs;
   // Further [vertex shader] / [fragment shader] sections: more compilation units of the stage.
   std::vector<std::string> more_vs, more_fs;
+  std::vector<std::string> gs;  // [geometry shader] sections, each a compilation unit
   bool passthrough = false;
   std::vector<std::string> vertex_data;
   std::vector<std::string> test;
@@ -116,10 +118,11 @@ Test parse(const std::string& path) {
       section = tl;
       if (tl == "[vertex shader]" && !t.vs.empty()) t.more_vs.emplace_back();
       if (tl == "[fragment shader]" && !t.fs.empty()) t.more_fs.emplace_back();
+      if (tl == "[geometry shader]") t.gs.emplace_back();
       if (section == "[vertex shader passthrough]")
         t.passthrough = true;
       else if (section != "[require]" && section != "[vertex shader]" && section != "[fragment shader]" &&
-               section != "[test]" && section != "[vertex data]")
+               section != "[geometry shader]" && section != "[test]" && section != "[vertex data]")
         t.skip = "section " + section;
       continue;
     }
@@ -153,6 +156,8 @@ Test parse(const std::string& path) {
       (t.more_vs.empty() ? t.vs : t.more_vs.back()) += line + "\n";
     } else if (section == "[fragment shader]") {
       (t.more_fs.empty() ? t.fs : t.more_fs.back()) += line + "\n";
+    } else if (section == "[geometry shader]") {
+      t.gs.back() += line + "\n";
     } else if (section == "[vertex data]") {
       if (!tl.empty() && tl[0] != '#') t.vertex_data.push_back(tl);
     } else if (section == "[test]") {
@@ -389,6 +394,8 @@ struct Runner {
       shaders.push_back(glsl::Shader::compile(glsl::Stage::Vertex, versioned(s)));
     for (const std::string& s : t.more_fs)
       shaders.push_back(glsl::Shader::compile(glsl::Stage::Fragment, versioned(s)));
+    for (const std::string& s : t.gs)
+      shaders.push_back(glsl::Shader::compile(glsl::Stage::Geometry, versioned(s)));
     std::vector<const glsl::Shader*> units;
     for (const auto& s : shaders) {
       if (!s->ok()) {

@@ -165,6 +165,28 @@ TEST(Glsl, AllSixtyFourVaryingComponentsArrive) {
   EXPECT_NEAR(px[2], 4.5f / 16.0f + 0.25f, 1e-6f);
 }
 
+// The built-in constants are the limits the GL layer reports for the same GL_MAX_* queries
+// (src/gl/api_get.cpp), not glslang's defaults (64 attributes, 32 draw buffers, ...).
+TEST(Glsl, BuiltInConstantsAreTheGlLimits) {
+  const std::vector<float> a = draw(
+      "#version 150 compatibility\nout vec4 c;\nvoid main() { c = vec4(gl_MaxVertexAttribs, "
+      "gl_MaxDrawBuffers,"
+      " gl_MaxVaryingComponents, gl_MaxTextureCoords); }");
+  ASSERT_FALSE(a.empty());
+  EXPECT_EQ(a[0], float(gpu::kMaxVertexAttribs));  // 16
+  EXPECT_EQ(a[1], 8.0f);
+  EXPECT_EQ(a[2], 64.0f);
+  EXPECT_EQ(a[3], 8.0f);
+  const std::vector<float> b = draw(
+      "#version 150 compatibility\nout vec4 c;\nvoid main() { c = vec4(gl_MaxCombinedTextureImageUnits,"
+      " gl_MaxTextureImageUnits, gl_MaxClipDistances, gl_MaxClipPlanes); }");
+  ASSERT_FALSE(b.empty());
+  EXPECT_EQ(b[0], 48.0f);
+  EXPECT_EQ(b[1], 16.0f);
+  EXPECT_EQ(b[2], 8.0f);
+  EXPECT_EQ(b[3], 8.0f);
+}
+
 // Several shader objects of one stage (glAttachShader) link as one stage's compilation units:
 // main() calls functions another unit defines, a uniform declared in two units is one
 // uniform. A function defined nowhere, or main() in two units, is a link error.
