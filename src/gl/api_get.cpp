@@ -125,7 +125,7 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT: return n(16), true;
     case GL_MAX_VERTEX_UNIFORM_COMPONENTS:
     case GL_MAX_GEOMETRY_UNIFORM_COMPONENTS:
-    case GL_MAX_FRAGMENT_UNIFORM_COMPONENTS: return n(4096), true;
+    case GL_MAX_FRAGMENT_UNIFORM_COMPONENTS: return n(glsl::kMaxUniformComponents), true;
     // The geometry stage (GL 3.3 Table 6.42's minimums and more, as Mesa's llvmpipe).
     case GL_MAX_GEOMETRY_INPUT_COMPONENTS: return n(64), true;
     case GL_MAX_GEOMETRY_OUTPUT_COMPONENTS: return n(128), true;
@@ -134,7 +134,7 @@ bool query_gl33(Context& c, GLenum pname, Values& out) {
     case GL_MAX_GEOMETRY_TEXTURE_IMAGE_UNITS: return n(kMaxTextureUnits), true;
     case GL_MAX_VARYING_COMPONENTS:  // == GL_MAX_VARYING_FLOATS
     case GL_MAX_VERTEX_OUTPUT_COMPONENTS:
-    case GL_MAX_FRAGMENT_INPUT_COMPONENTS: return n(64), true;
+    case GL_MAX_FRAGMENT_INPUT_COMPONENTS: return n(gpu::kMaxVaryings), true;
     case GL_MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS:
       return n(glsl::kMaxFeedbackInterleavedComponents), true;
     case GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS: return n(glsl::kMaxFeedbackSeparateAttribs), true;

@@ -37,14 +37,14 @@
 namespace tessel::gl {
 
 inline constexpr int kMaxLights = 8;
-inline constexpr int kMaxClipPlanes =
-    8;  // GL_MAX_CLIP_PLANES == GL_MAX_CLIP_DISTANCES: at least 8 in GL 3.x, as Mesa gives
+// GL_MAX_CLIP_PLANES == GL_MAX_CLIP_DISTANCES: at least 8 in GL 3.x, as Mesa gives.
+inline constexpr int kMaxClipPlanes = gpu::kMaxClipPlanes;
 inline constexpr int kModelviewDepth = 32, kProjectionDepth = 32, kTextureDepth = 10;
 inline constexpr int kAttribDepth = 16, kClientAttribDepth = 16;
 inline constexpr int kMaxListNesting = 64;
 // GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS (GL 3.3's minimum, Table 6.37); each stage may use 16.
-inline constexpr int kMaxTextureUnits = 48;
-inline constexpr int kMaxStageTextureUnits = 16;
+inline constexpr int kMaxTextureUnits = glsl::kMaxCombinedTextureUnits;
+inline constexpr int kMaxStageTextureUnits = glsl::kMaxStageTextureUnits;
 
 // GL_CURRENT_BIT and what glBegin/glEnd reads.
 // The texture coordinates of every set, (0, 0, 0, 1) each.

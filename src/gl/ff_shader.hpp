@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "tessel/glsl/program.hpp"
 #include "tessel/gpu/shader.hpp"
 #include "tessel/gpu/texture.hpp"
 #include "tessel/gpu/vec.hpp"
@@ -34,7 +35,7 @@ static_assert(sizeof(FFVertex) == 16 * sizeof(float));
 
 // The texture coordinate sets (GL_MAX_TEXTURE_COORDS) and fixed-function texture units
 // (GL_MAX_TEXTURE_UNITS) of the compatibility context, as Mesa has them.
-inline constexpr int kMaxTexCoords = 8;
+inline constexpr int kMaxTexCoords = glsl::kMaxTextureCoords;
 
 // The attributes of a vertex beyond FFVertex's, carried only by draws that have them (GL 1.3
 // multitexture §2.7, GL 1.4 secondary colour and fog coordinate): the texture coordinates of

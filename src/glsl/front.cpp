@@ -13,6 +13,7 @@
 #include <mutex>
 #include <string>
 
+#include "tessel/glsl/program.hpp"
 #include "tessel/gpu/buffer.hpp"
 #include "tessel/gpu/shader.hpp"
 #include "tessel/gpu/state.hpp"
@@ -41,15 +42,15 @@ const TBuiltInResource& resources() {
     TBuiltInResource x = *GetDefaultResources();
     x.maxVertexAttribs = gpu::kMaxVertexAttribs;
     x.maxDrawBuffers = gpu::kMaxColorAttachments;
-    x.maxTextureCoords = 8;  // GL_MAX_TEXTURE_COORDS
-    x.maxTextureUnits = 8;   // GL_MAX_TEXTURE_UNITS
-    x.maxTextureImageUnits = 16;
-    x.maxVertexTextureImageUnits = 16;
-    x.maxGeometryTextureImageUnits = 16;
-    x.maxCombinedTextureImageUnits = 48;
-    x.maxVertexUniformComponents = 4096;
-    x.maxFragmentUniformComponents = 4096;
-    x.maxGeometryUniformComponents = 4096;
+    x.maxTextureCoords = kMaxTextureCoords;
+    x.maxTextureUnits = kMaxTextureCoords;  // GL_MAX_TEXTURE_UNITS
+    x.maxTextureImageUnits = kMaxStageTextureUnits;
+    x.maxVertexTextureImageUnits = kMaxStageTextureUnits;
+    x.maxGeometryTextureImageUnits = kMaxStageTextureUnits;
+    x.maxCombinedTextureImageUnits = kMaxCombinedTextureUnits;
+    x.maxVertexUniformComponents = kMaxUniformComponents;
+    x.maxFragmentUniformComponents = kMaxUniformComponents;
+    x.maxGeometryUniformComponents = kMaxUniformComponents;
     x.maxVaryingFloats = gpu::kMaxVaryings;
     x.maxVaryingComponents = gpu::kMaxVaryings;
     x.maxVaryingVectors = gpu::kMaxVaryings / 4;

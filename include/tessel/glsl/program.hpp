@@ -124,6 +124,10 @@ struct FeedbackVarying {
 // Transform feedback's limits (GL_MAX_TRANSFORM_FEEDBACK_*), those of llvmpipe.
 inline constexpr int kMaxFeedbackInterleavedComponents = 64, kMaxFeedbackSeparateAttribs = 4,
                      kMaxFeedbackSeparateComponents = 64;
+// Limits the GL layer reports and shaders see as built-in constants (gl_MaxTextureCoords,
+// gl_MaxTextureImageUnits, gl_MaxCombinedTextureImageUnits, gl_Max*UniformComponents).
+inline constexpr int kMaxTextureCoords = 8, kMaxStageTextureUnits = 16, kMaxCombinedTextureUnits = 48,
+                     kMaxUniformComponents = 4096;
 
 // A uniform block as GL reports it (glGetActiveUniformBlock*, glGetActiveUniforms with
 // GL_UNIFORM_OFFSET and the strides): std140 layout, which also serves shared and packed.
