@@ -359,6 +359,7 @@ TESSEL_GLAPI void TESSEL_APIENTRY gluLoadSamplingMatrices(GLUnurbs* nurb, const 
                                                           const GLfloat* perspective, const GLint* view);
 TESSEL_GLAPI void TESSEL_APIENTRY gluNurbsCallback(GLUnurbs* nurb, GLenum which, _GLUfuncptr fn);
 TESSEL_GLAPI void TESSEL_APIENTRY gluNurbsCallbackData(GLUnurbs* nurb, GLvoid* userData);
+TESSEL_GLAPI void TESSEL_APIENTRY gluNurbsCallbackDataEXT(GLUnurbs* nurb, GLvoid* userData);
 TESSEL_GLAPI void TESSEL_APIENTRY gluBeginCurve(GLUnurbs* nurb);
 TESSEL_GLAPI void TESSEL_APIENTRY gluNurbsCurve(GLUnurbs* nurb, GLint knotCount, GLfloat* knots, GLint stride,
                                                 GLfloat* control, GLint order, GLenum type);
