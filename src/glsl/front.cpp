@@ -101,9 +101,49 @@ std::string gl_log_form(const std::string& log) {
   return out;
 }
 
+// Line continuations (a backslash at the end of a line) joined, as C's translation phase 2
+// and Mesa's preprocessor join them in every GLSL version; glslang accepts them only from
+// GLSL 4.20 (and ES 3.00). The newlines taken out are put back after the joined line, so
+// every later line keeps its number in the info log.
+std::string splice_lines(const std::string& source) {
+  if (source.find('\\') == std::string::npos) return source;
+  std::string out;
+  out.reserve(source.size());
+  int owed = 0;
+  for (size_t i = 0; i < source.size(); ++i) {
+    const char c = source[i];
+    if (c == '\\') {
+      size_t j = i + 1;
+      if (j < source.size() && source[j] == '\r') ++j;
+      if (j < source.size() && source[j] == '\n') {
+        ++owed;
+        i = j;
+        continue;
+      }
+    }
+    out += c;
+    if (c == '\n') out.append(size_t(owed), '\n'), owed = 0;
+  }
+  out.append(size_t(owed), '\n');
+  return out;
+}
+
+// The #version a source declares (110 without one).
+int declared_version(const std::string& source) {
+  const size_t at = source.find("#version");
+  if (at == std::string::npos) return 110;
+  size_t p = at + 8;
+  while (p < source.size() && (source[p] == ' ' || source[p] == '\t')) ++p;
+  int v = 0;
+  while (p < source.size() && std::isdigit(static_cast<unsigned char>(source[p])) && v < 100000)
+    v = v * 10 + (source[p++] - '0');
+  return v;
+}
+
 // Parses one stage at its #version (1.10 without one); the shader object must outlive any
 // program that links it.
-bool parse(glslang::TShader& sh, const std::string& source, std::string& log) {
+bool parse(glslang::TShader& sh, const std::string& original, std::string& log) {
+  const std::string source = splice_lines(original);
   const char* text = source.c_str();
   const int length = int(std::min<size_t>(source.size(), size_t(INT32_MAX)));
   sh.setStringsWithLengths(&text, &length, 1);
@@ -120,7 +160,14 @@ bool parse(glslang::TShader& sh, const std::string& source, std::string& log) {
       "mat4 inverse(mat4 m) { return m; }\n#endif\n";
   static const std::string kVertex =
       "#define ftransform() (gl_ModelViewProjectionMatrix * gl_Vertex)\n" + kInverse140;
-  sh.setPreamble((sh.getStage() == EShLangVertex ? kVertex : kInverse140).c_str());
+  // GLSL 1.50 lets a vertex or geometry shader redeclare the gl_PerVertex blocks (section
+  // 7.1) to list the members it uses; glslang allows that only from 4.10 or with
+  // ARB_separate_shader_objects, which a 1.50 to 4.00 shader that names gl_PerVertex gets.
+  std::string preamble = sh.getStage() == EShLangVertex ? kVertex : kInverse140;
+  const int version = declared_version(source);
+  if (version >= 150 && version < 410 && source.find("gl_PerVertex") != std::string::npos)
+    preamble = "#extension GL_ARB_separate_shader_objects : enable\n" + preamble;
+  sh.setPreamble(preamble.c_str());
   const bool ok = sh.parse(&resources(), 110, ENoProfile, false, false, EShMsgDefault);
   log = gl_log_form(sh.getInfoLog());
   return ok;

@@ -73,8 +73,10 @@ int array_length(const TType& t) {
   return n > 0 ? n : 1;
 }
 
-// Components of a value of type t.
+// Components of a value of type t (none for a member a gl_PerVertex redeclaration left out:
+// glslang keeps it, typed void).
 int count(const TType& t) {
+  if (t.getBasicType() == glslang::EbtVoid) return 0;
   if (t.isArray()) {
     TType e(t, 0);
     return array_length(t) * count(e);
@@ -116,7 +118,7 @@ void component_bases(const TType& t, std::vector<Base>& out, const TIntermNode* 
     for (int i = 0; i < array_length(t); ++i) component_bases(e, out, where);
   } else if (t.isStruct()) {
     for (const auto& m : *t.getStruct()) component_bases(*m.type, out, where);
-  } else {
+  } else if (t.getBasicType() != glslang::EbtVoid) {
     const Base b = base_of(t, where);
     for (int i = 0; i < count(t); ++i) out.push_back(b);
   }
@@ -558,32 +560,37 @@ class Lowerer {
       if (i.name == name) return i;
     const TType& t = s->getType();
     if (stage_ == 2 && !output && t.isArray()) return geometry_input(s);
-    if (t.getBasicType() == glslang::EbtBlock && !t.isArray()) {
+    if (t.getBasicType() == glslang::EbtBlock) {
       // An interface block: its members are interface variables of their own, in
       // consecutive registers. gl_PerVertex's (gl_Position in GLSL 1.50 and later) keep their
       // names; a user block's (GLSL 1.50 §4.3.7) are matched as "Block.member" (the block's
       // name, not the instance's), each with its own interpolation qualifier or the block's.
+      // An array of blocks is its elements' members in turn, "Block[i].member".
       const int total = count(t);
       const Reg base = fresh(total);
       const std::string block = t.getTypeName().c_str();
       const bool user = block != "gl_PerVertex";
+      const int elements = t.isArray() ? array_length(t) : 1;
       int off = 0;
-      for (const auto& m : *t.getStruct()) {
-        const TType& mt = *m.type;
-        Interface f;
-        f.name = (user ? block + "." : std::string()) + std::string(mt.getFieldName().c_str());
-        f.components = count(mt);
-        f.array_size = mt.isArray() ? array_length(mt) : 0;
-        TType e = mt.isArray() ? TType(mt, 0) : TType();
-        const TType& el = mt.isArray() ? e : mt;
-        set_type(f, el, s);
-        f.flat = mt.getQualifier().flat || t.getQualifier().flat;
-        f.noperspective = mt.getQualifier().nopersp || t.getQualifier().nopersp;
-        f.builtin = f.name.rfind("gl_", 0) == 0;
-        f.reg = base + Reg(off);
-        off += f.components;
-        list.push_back(f);
-      }
+      for (int e = 0; e < elements; ++e)
+        for (const auto& m : *t.getStruct()) {
+          const TType& mt = *m.type;
+          if (mt.hiddenMember()) continue;
+          Interface f;
+          const std::string prefix = t.isArray() ? block + "[" + std::to_string(e) + "]." : block + ".";
+          f.name = (user ? prefix : std::string()) + std::string(mt.getFieldName().c_str());
+          f.components = count(mt);
+          f.array_size = mt.isArray() ? array_length(mt) : 0;
+          TType e = mt.isArray() ? TType(mt, 0) : TType();
+          const TType& el = mt.isArray() ? e : mt;
+          set_type(f, el, s);
+          f.flat = mt.getQualifier().flat || t.getQualifier().flat;
+          f.noperspective = mt.getQualifier().nopersp || t.getQualifier().nopersp;
+          f.builtin = f.name.rfind("gl_", 0) == 0;
+          f.reg = base + Reg(off);
+          off += f.components;
+          list.push_back(f);
+        }
       Interface whole;
       whole.name = name;
       whole.reg = base;
@@ -646,6 +653,7 @@ class Lowerer {
       int off = 0;
       for (const auto& m : *el.getStruct()) {
         const TType& mt = *m.type;
+        if (mt.hiddenMember()) continue;
         add((user ? block + "." : std::string()) + std::string(mt.getFieldName().c_str()), mt, off,
             mt.getQualifier().flat || el.getQualifier().flat,
             mt.getQualifier().nopersp || el.getQualifier().nopersp);

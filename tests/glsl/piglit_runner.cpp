@@ -375,8 +375,9 @@ struct Runner {
     }
     std::string fs = t.fs;
     // Without a fragment shader GL's fixed-function fragment stage runs: with texturing and
-    // fog off (what the runner sets up), it writes the interpolated primary colour.
-    if (fs.empty()) fs = "void main() { gl_FragColor = gl_Color; }\n";
+    // fog off (what the runner sets up), it writes the interpolated primary colour. (As GLSL
+    // 1.10, where gl_Color is declared whatever the other stages' versions.)
+    if (fs.empty()) fs = "#version 110\nvoid main() { gl_FragColor = gl_Color; }\n";
     // A shader without #version is compiled at the version the test requires, as shader_runner
     // does.
     auto versioned = [&](const std::string& src) {

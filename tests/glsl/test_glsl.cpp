@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -148,6 +149,61 @@ TEST(Glsl, LinkErrors) {
 
 // GL_MAX_VARYING_COMPONENTS (64) of varyings link and arrive: the gl_PerVertex members a
 // 3.30 vertex shader does not write (gl_PointSize, gl_ClipDistance) take none of them.
+// What Mesa accepts and glslang takes only in later versions or with extensions: line
+// continuations in any version, gl_PerVertex redeclared in GLSL 1.50; and arrays of interface
+// blocks whose members carry interpolation qualifiers of their own.
+TEST(Glsl, GlslOneFiftyInterfacesAsMesaTakesThem) {
+  // A continued #define; an error after it still names its own line (5).
+  auto s = Shader::compile(Stage::Fragment,
+                           "#version 150\n#define GREEN vec4(0.0, \\\n  1.0, 0.0, 1.0)\nout vec4 c;\n"
+                           "void main() { c = GREEN + foo; }\n");
+  EXPECT_FALSE(s->ok());
+  EXPECT_NE(s->info_log().find("0:5: error: 'foo'"), std::string::npos) << s->info_log();
+  // The same without the error draws green.
+  reference::GlslDrawSpec d = quad(
+      "#version 150\n#define GREEN vec4(0.0, \\\n  1.0, 0.0, 1.0)\nout vec4 c;\n"
+      "void main() { c = GREEN; }\n");
+  d.vertex =
+      "#version 150\nin vec2 pos;\nout gl_PerVertex {\n  vec4 gl_Position;\n};\n"
+      "void main() { gl_Position = vec4(pos, 0.0, 1.0); }\n";
+  TesselResult r = run_tessel(d);
+  ASSERT_TRUE(r.ok) << r.log;
+  EXPECT_EQ(r.outputs[0][0], 0.0f);
+  EXPECT_EQ(r.outputs[0][1], 1.0f);
+  // An array of blocks: each element's flat, smooth and noperspective members arrive as the
+  // loose variables of the same qualifiers (a triangle with three different w).
+  reference::GlslDrawSpec t;
+  t.vertex = R"(#version 150
+in vec4 pos;
+flat out float f; smooth out float s; noperspective out float n;
+out Blk { flat float f; smooth float s; noperspective float n; } b[2];
+void main() {
+  gl_Position = pos;
+  float v = float(gl_VertexID) * 7.0;
+  f = v; s = v; n = v;
+  for (int i = 0; i < 2; ++i) { b[i].f = v; b[i].s = v; b[i].n = v; }
+})";
+  t.fragment = R"(#version 150
+flat in float f; smooth in float s; noperspective in float n;
+in Blk { flat float f; smooth float s; noperspective float n; } b[2];
+out vec4 c;
+void main() {
+  float err = 0.0;
+  for (int i = 0; i < 2; ++i) err += abs(f - b[i].f) + abs(s - b[i].s) + abs(n - b[i].n);
+  c = vec4(err, s - n, 1.0, 1.0);
+})";
+  t.attributes.push_back({"pos", 4, {-1, -1, 0, 1, 0, 2, 0, 2, 3, -3, 0, 3}});
+  t.count = 3;
+  r = run_tessel(t);
+  ASSERT_TRUE(r.ok) << r.log;
+  float differs = 0;
+  for (size_t i = 0; i < r.outputs[0].size(); i += 4) {
+    EXPECT_EQ(r.outputs[0][i], 0.0f) << "pixel " << i / 4;
+    differs = std::max(differs, std::fabs(r.outputs[0][i + 1]));
+  }
+  EXPECT_GT(differs, 0.01f);  // smooth and noperspective do differ here
+}
+
 TEST(Glsl, AllSixtyFourVaryingComponentsArrive) {
   reference::GlslDrawSpec s = quad(
       "#version 330\nin vec4 v[15]; in vec2 p; in vec2 q; out vec4 c;\n"
