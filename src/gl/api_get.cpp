@@ -400,6 +400,18 @@ bool query(Context& c, GLenum pname, Values& out) {
     case GL_DEPTH_BIAS: put(out, {s.pixel.depth_bias}); return true;
     case GL_MAP_COLOR: b(s.pixel.map_color); return true;
     case GL_MAP_STENCIL: b(s.pixel.map_stencil); return true;
+    case GL_PIXEL_MAP_I_TO_I_SIZE:
+    case GL_PIXEL_MAP_S_TO_S_SIZE:
+    case GL_PIXEL_MAP_I_TO_R_SIZE:
+    case GL_PIXEL_MAP_I_TO_G_SIZE:
+    case GL_PIXEL_MAP_I_TO_B_SIZE:
+    case GL_PIXEL_MAP_I_TO_A_SIZE:
+    case GL_PIXEL_MAP_R_TO_R_SIZE:
+    case GL_PIXEL_MAP_G_TO_G_SIZE:
+    case GL_PIXEL_MAP_B_TO_B_SIZE:
+    case GL_PIXEL_MAP_A_TO_A_SIZE:
+      put(out, {double(s.pixel_maps[size_t(pname - GL_PIXEL_MAP_I_TO_I_SIZE)].size())});
+      return true;
     case GL_INDEX_SHIFT: put(out, {double(s.pixel.index_shift)}); return true;
     case GL_INDEX_OFFSET: put(out, {double(s.pixel.index_offset)}); return true;
     // Hints.

@@ -184,12 +184,54 @@ void pixel_transfer(Context& c, GLenum pname, float v) {
   }
 }
 
-// GL 2.1 §3.7.5: scale and bias of each colour component, then clamping.
-void transfer(const PixelModeState& p, std::vector<glm::vec4>& px) {
+// GL 2.1 §3.6.5, RGBA groups: each component scaled and biased, clamped to [0, 1], and with
+// GL_MAP_COLOR looked up in its GL_PIXEL_MAP_c_TO_c (at round(c (size - 1))).
+float map_lookup(const std::vector<float>& m, float v) {
+  const float i = std::round(std::clamp(v, 0.0f, 1.0f) * float(m.size() - 1));
+  return m[size_t(std::clamp(i, 0.0f, float(m.size() - 1)))];
+}
+void transfer(const ServerState& s, std::vector<glm::vec4>& px) {
+  const PixelModeState& p = s.pixel;
   const glm::vec4 scale(p.red_scale, p.green_scale, p.blue_scale, p.alpha_scale);
   const glm::vec4 bias(p.red_bias, p.green_bias, p.blue_bias, p.alpha_bias);
-  if (scale == glm::vec4(1.0f) && bias == glm::vec4(0.0f)) return;
-  for (glm::vec4& v : px) v = glm::clamp(v * scale + bias, 0.0f, 1.0f);
+  if (scale != glm::vec4(1.0f) || bias != glm::vec4(0.0f))
+    for (glm::vec4& v : px) v = glm::clamp(v * scale + bias, 0.0f, 1.0f);
+  if (!p.map_color) return;
+  const size_t first = GL_PIXEL_MAP_R_TO_R - GL_PIXEL_MAP_I_TO_I;
+  for (glm::vec4& v : px)
+    for (int k = 0; k < 4; ++k) v[k] = map_lookup(s.pixel_maps[first + size_t(k)], v[k]);
+}
+
+// Index groups (colour and stencil indices, §3.6.5): shifted by GL_INDEX_SHIFT (left when
+// positive) and offset by GL_INDEX_OFFSET.
+int64_t index_arithmetic(const PixelModeState& p, int64_t i) {
+  const int sh = std::clamp(p.index_shift, -62, 62);
+  i = sh >= 0 ? int64_t(uint64_t(i) << sh) : (i >> -sh);
+  return i + p.index_offset;
+}
+// A table entry for index i of a power-of-two map (the index masked to its size).
+float index_lookup(const std::vector<float>& m, int64_t i) { return m[size_t(i & int64_t(m.size() - 1))]; }
+
+// The index an unpacked component stands for: unpack_pixels normalizes integer types, and
+// indices are integers (floats are taken as they are, bitmaps give 0 or 1).
+float index_value(float v, GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return std::round(v * 255.0f);
+    case GL_BYTE: return std::round(v * 127.0f);
+    case GL_UNSIGNED_SHORT: return std::round(v * 65535.0f);
+    case GL_SHORT: return std::round(v * 32767.0f);
+    case GL_UNSIGNED_INT: return float(std::round(double(v) * 4294967295.0));
+    case GL_INT: return float(std::round(double(v) * 2147483647.0));
+    default: return v;
+  }
+}
+
+// A stencil index after the transfer operations: arithmetic, then S_TO_S with GL_MAP_STENCIL.
+int64_t stencil_transfer(const ServerState& s, float v) {
+  int64_t i = index_arithmetic(s.pixel, int64_t(std::floor(double(v))));
+  if (s.pixel.map_stencil)
+    i = int64_t(std::lround(index_lookup(s.pixel_maps[GL_PIXEL_MAP_S_TO_S - GL_PIXEL_MAP_I_TO_I], i)));
+  return i;
 }
 
 struct Pixels {
@@ -214,13 +256,26 @@ void draw_pixels(Context& c, GLsizei w, GLsizei h, GLenum format, const std::sha
         if (format == GL_DEPTH_COMPONENT)
           t.x = std::clamp(v * c.s.pixel.depth_scale + c.s.pixel.depth_bias, 0.0f, 1.0f);
         else
-          t.y = float(uint8_t(std::lround(v)));
+          t.y = float(uint8_t(stencil_transfer(c.s, v) & 0xFF));
         d->store(0, x, y, t);
       }
     return;
   }
   std::vector<glm::vec4> px = data->px;
-  transfer(c.s.pixel, px);
+  if (format == GL_COLOR_INDEX) {
+    // §3.6.5: index arithmetic, I_TO_I with GL_MAP_COLOR, and (an RGBA window) the index to
+    // RGBA lookup through I_TO_R, I_TO_G, I_TO_B and I_TO_A.
+    const auto& maps = c.s.pixel_maps;
+    for (glm::vec4& v : px) {
+      int64_t i = index_arithmetic(c.s.pixel, int64_t(std::floor(double(v.x))));
+      if (c.s.pixel.map_color) i = int64_t(std::lround(index_lookup(maps[0], i)));
+      for (int k = 0; k < 4; ++k)
+        v[k] = std::clamp(index_lookup(maps[GL_PIXEL_MAP_I_TO_R - GL_PIXEL_MAP_I_TO_I + size_t(k)], i), 0.0f,
+                          1.0f);
+    }
+  } else {
+    transfer(c.s, px);
+  }
   std::vector<uint8_t> rgba(px.size() * 4);
   for (size_t i = 0; i < px.size(); ++i)
     for (int k = 0; k < 4; ++k) rgba[i * 4 + size_t(k)] = unorm8(px[i][k]);
@@ -346,7 +401,13 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum form
     match_integer_sign(px, integer.is_signed, type);
     return pack_pixels(c.c.pack, w, h, format, type, px, dst);
   }
-  if (!depth && !stencil) transfer(c.s.pixel, px);
+  if (!depth && !stencil) transfer(c.s, px);
+  // Depth values are scaled and biased, stencil indices go through the index operations
+  // (§4.3.2).
+  if (depth && !depth_stencil && (c.s.pixel.depth_scale != 1.0f || c.s.pixel.depth_bias != 0.0f))
+    for (glm::vec4& v : px) v.x = std::clamp(v.x * c.s.pixel.depth_scale + c.s.pixel.depth_bias, 0.0f, 1.0f);
+  if (stencil)
+    for (glm::vec4& v : px) v.x = float(stencil_transfer(c.s, v.x) & 0xFF);
   const bool fixed_point = a.format() == tessel::gpu::Format::RGBA8 ||
                            a.format() == tessel::gpu::Format::R8 || a.format() == tessel::gpu::Format::RG8;
   if (!depth && !stencil &&
@@ -377,13 +438,12 @@ void GLAPIENTRY glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, c
   if (w < 0 || h < 0) return c.error(GL_INVALID_VALUE);
   if (const GLenum e = check_format_type(format, type); e != GL_NO_ERROR) return c.error(e);
   if (format == GL_DEPTH_STENCIL || is_integer_format(format)) return c.error(GL_INVALID_OPERATION);
-  if (format == GL_COLOR_INDEX) return c.error(GL_INVALID_OPERATION);  // RGBA mode only
   std::shared_ptr<Pixels> data;
   if (pixels && w > 0 && h > 0) {
     data = std::make_shared<Pixels>();
     unpack_pixels(c.c.unpack, w, h, format, type, pixels, data->px);
-    if (format == GL_STENCIL_INDEX && type != GL_FLOAT && type != GL_HALF_FLOAT)
-      for (glm::vec4& v : data->px) v.x = std::round(v.x * 255.0f);
+    if (format == GL_STENCIL_INDEX || format == GL_COLOR_INDEX)
+      for (glm::vec4& v : data->px) v.x = index_value(v.x, type);
   }
   GL_LISTED(draw_pixels(c, w, h, format, data));
   draw_pixels(c, w, h, format, data);
@@ -406,5 +466,55 @@ void GLAPIENTRY glBitmap(GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat x
   GL_LISTED(bitmap(c, w, h, xo, yo, xm, ym, bits));
   bitmap(c, w, h, xo, yo, xm, ym, bits);
 }
+
+// Pixel maps (GL 2.1 §3.6.3). Colour component entries given as integers are normalized; index
+// entries (I_TO_I, S_TO_S) are the integers themselves, and read back as such.
+}  // extern "C"
+namespace {
+bool valid_map(GLenum m) { return m >= GL_PIXEL_MAP_I_TO_I && m <= GL_PIXEL_MAP_A_TO_A; }
+bool index_map(GLenum m) { return m == GL_PIXEL_MAP_I_TO_I || m == GL_PIXEL_MAP_S_TO_S; }
+template <class T>
+void pixel_map(GLenum map, GLsizei n, const T* values, double scale) {
+  GL_COMPAT_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  if (!valid_map(map)) return c.error(GL_INVALID_ENUM);
+  if (n < 1 || n > 256) return c.error(GL_INVALID_VALUE);
+  if (map <= GL_PIXEL_MAP_I_TO_A && (n & (n - 1))) return c.error(GL_INVALID_VALUE);
+  if (!values) return;
+  std::vector<float>& m = c.s.pixel_maps[map - GL_PIXEL_MAP_I_TO_I];
+  m.resize(size_t(n));
+  for (size_t i = 0; i < m.size(); ++i) {
+    const double v = index_map(map) ? double(values[i]) : double(values[i]) / scale;
+    m[i] = map == GL_PIXEL_MAP_S_TO_S ? float(std::round(v)) : float(v);
+  }
+}
+template <class T>
+void get_pixel_map(GLenum map, T* values, double scale) {
+  GL_COMPAT_CONTEXT();
+  GL_OUTSIDE_BEGIN();
+  if (!valid_map(map)) return c.error(GL_INVALID_ENUM);
+  if (!values) return;
+  const std::vector<float>& m = c.s.pixel_maps[map - GL_PIXEL_MAP_I_TO_I];
+  for (size_t i = 0; i < m.size(); ++i) {
+    if (index_map(map) || scale == 1.0) {
+      values[i] = T(m[i]);
+    } else {
+      values[i] = T(std::lround(std::clamp(double(m[i]), 0.0, 1.0) * scale));
+    }
+  }
+}
+}  // namespace
+extern "C" {
+
+void GLAPIENTRY glPixelMapfv(GLenum map, GLsizei n, const GLfloat* values) { pixel_map(map, n, values, 1.0); }
+void GLAPIENTRY glPixelMapuiv(GLenum map, GLsizei n, const GLuint* values) {
+  pixel_map(map, n, values, 4294967295.0);
+}
+void GLAPIENTRY glPixelMapusv(GLenum map, GLsizei n, const GLushort* values) {
+  pixel_map(map, n, values, 65535.0);
+}
+void GLAPIENTRY glGetPixelMapfv(GLenum map, GLfloat* values) { get_pixel_map(map, values, 1.0); }
+void GLAPIENTRY glGetPixelMapuiv(GLenum map, GLuint* values) { get_pixel_map(map, values, 4294967295.0); }
+void GLAPIENTRY glGetPixelMapusv(GLenum map, GLushort* values) { get_pixel_map(map, values, 65535.0); }
 
 }  // extern "C"

@@ -72,13 +72,6 @@ void clear_accum(Context& c) {
   std::fill(a.px.begin(), a.px.end(), c.s.accum_clear);
 }
 
-// Pixel maps (GL 2.1 §3.6.3): kept so they can be queried.
-std::map<GLenum, std::vector<float>>& pixel_maps() {
-  static thread_local std::map<GLenum, std::vector<float>> maps;
-  return maps;
-}
-bool valid_map(GLenum m) { return m >= GL_PIXEL_MAP_I_TO_I && m <= GL_PIXEL_MAP_A_TO_A; }
-
 }  // namespace
 
 // glClear with GL_ACCUM_BUFFER_BIT lands here (called from Context::clear's caller).
@@ -108,53 +101,5 @@ void GLAPIENTRY glIndexs(GLshort) { GL_REMOVED_IN_CORE(); }
 void GLAPIENTRY glIndexsv(const GLshort*) { GL_REMOVED_IN_CORE(); }
 void GLAPIENTRY glIndexub(GLubyte) { GL_REMOVED_IN_CORE(); }
 void GLAPIENTRY glIndexubv(const GLubyte*) { GL_REMOVED_IN_CORE(); }
-
-void GLAPIENTRY glPixelMapfv(GLenum map, GLsizei n, const GLfloat* values) {
-  GL_COMPAT_CONTEXT();
-  GL_OUTSIDE_BEGIN();
-  if (!valid_map(map)) return c.error(GL_INVALID_ENUM);
-  if (n < 1 || n > 256) return c.error(GL_INVALID_VALUE);
-  if (map <= GL_PIXEL_MAP_I_TO_A && (n & (n - 1))) return c.error(GL_INVALID_VALUE);
-  pixel_maps()[map].assign(values, values + n);
-}
-void GLAPIENTRY glPixelMapuiv(GLenum map, GLsizei n, const GLuint* values) {
-  GL_REMOVED_IN_CORE();
-  std::vector<float> v(size_t(std::max(n, 0)));
-  for (size_t i = 0; i < v.size() && values; ++i) v[i] = float(double(values[i]) / 4294967295.0);
-  glPixelMapfv(map, n, v.data());
-}
-void GLAPIENTRY glPixelMapusv(GLenum map, GLsizei n, const GLushort* values) {
-  GL_REMOVED_IN_CORE();
-  std::vector<float> v(size_t(std::max(n, 0)));
-  for (size_t i = 0; i < v.size() && values; ++i) v[i] = float(values[i]) / 65535.0f;
-  glPixelMapfv(map, n, v.data());
-}
-void GLAPIENTRY glGetPixelMapfv(GLenum map, GLfloat* values) {
-  GL_COMPAT_CONTEXT();
-  GL_OUTSIDE_BEGIN();
-  if (!valid_map(map)) return c.error(GL_INVALID_ENUM);
-  const auto it = pixel_maps().find(map);
-  if (!values) return;
-  if (it == pixel_maps().end())
-    values[0] = 0.0f;
-  else
-    std::copy(it->second.begin(), it->second.end(), values);
-}
-void GLAPIENTRY glGetPixelMapuiv(GLenum map, GLuint* values) {
-  GL_REMOVED_IN_CORE();
-  GLfloat tmp[256] = {};
-  glGetPixelMapfv(map, tmp);
-  const auto it = pixel_maps().find(map);
-  const size_t n = it == pixel_maps().end() ? 1 : it->second.size();
-  for (size_t i = 0; i < n && values; ++i) values[i] = GLuint(double(tmp[i]) * 4294967295.0);
-}
-void GLAPIENTRY glGetPixelMapusv(GLenum map, GLushort* values) {
-  GL_REMOVED_IN_CORE();
-  GLfloat tmp[256] = {};
-  glGetPixelMapfv(map, tmp);
-  const auto it = pixel_maps().find(map);
-  const size_t n = it == pixel_maps().end() ? 1 : it->second.size();
-  for (size_t i = 0; i < n && values; ++i) values[i] = GLushort(tmp[i] * 65535.0f);
-}
 
 }  // extern "C"

@@ -308,6 +308,13 @@ struct ServerState {
   const TextureUnitState& unit() const { return units[active_unit]; }
   HintState hint;
   PixelModeState pixel;
+  // The pixel maps (GL 2.1 §3.6.3), in the order of GL_PIXEL_MAP_I_TO_I .. GL_PIXEL_MAP_A_TO_A:
+  // one entry of 0 each at first. No attribute group holds them (as in Mesa).
+  std::array<std::vector<float>, 10> pixel_maps{std::vector<float>(1, 0.0f), std::vector<float>(1, 0.0f),
+                                                std::vector<float>(1, 0.0f), std::vector<float>(1, 0.0f),
+                                                std::vector<float>(1, 0.0f), std::vector<float>(1, 0.0f),
+                                                std::vector<float>(1, 0.0f), std::vector<float>(1, 0.0f),
+                                                std::vector<float>(1, 0.0f), std::vector<float>(1, 0.0f)};
   EvalState eval;
   GLuint list_base = 0;
   glm::vec4 accum_clear{0.0f};

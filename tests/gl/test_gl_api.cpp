@@ -304,6 +304,95 @@ TEST_F(GLTest, FeedbackTokens) {
 
 // Thousands of calls with random arguments: enums drawn from a pool of valid and invalid
 // values, numbers including negatives, NaN and huge ones, and calls inside glBegin/glEnd.
+// Pixel maps in the transfers (GL 2.1 section 3.6.5) with the values the specification gives:
+// colour maps looked up at round(c (size - 1)), index arithmetic (shift, then offset), I_TO_I
+// under GL_MAP_COLOR, the I_TO_R/G/B/A palette, S_TO_S under GL_MAP_STENCIL; maps are kept
+// per context, outside the attribute groups, and read back as given.
+TEST_F(GLTest, PixelTransferIndexOperationsAndMaps) {
+  glRasterPos2i(0, 0);  // the window's centre, (32, 24)
+  GLubyte got[4];
+  auto draw_read = [&](GLenum format, GLenum type, const void* px) {
+    glDrawPixels(1, 1, format, type, px);
+    // (Read without the colour maps: they apply to reads too.)
+    GLint map = 0;
+    glGetIntegerv(GL_MAP_COLOR, &map);
+    glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
+    glReadPixels(32, 24, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, got);
+    glPixelTransferi(GL_MAP_COLOR, map);
+  };
+  // R_TO_R of 4: red 0.75 is entry round(2.25) = 2.
+  const GLfloat r_map[4] = {0.9f, 0.6f, 0.3f, 0.1f};
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 4, r_map);
+  glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+  const GLfloat rgba[4] = {0.75f, 0.5f, 0.5f, 1.0f};
+  draw_read(GL_RGBA, GL_FLOAT, rgba);
+  EXPECT_NEAR(got[0], 77, 1);
+  EXPECT_EQ(got[1], 0);  // G_TO_G is still one entry of 0
+  glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
+  // A colour index: shifted left 1, offset 1, then the palette (masked to its size).
+  const GLfloat i_to_r[4] = {0.0f, 0.25f, 0.5f, 1.0f}, one = 1.0f;
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 4, i_to_r);
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_A, 1, &one);
+  glPixelTransferi(GL_INDEX_SHIFT, 1);
+  glPixelTransferi(GL_INDEX_OFFSET, 1);
+  const GLubyte index = 1;  // (1 << 1) + 1 = 3: red 1.0
+  draw_read(GL_COLOR_INDEX, GL_UNSIGNED_BYTE, &index);
+  EXPECT_EQ(got[0], 255);
+  EXPECT_EQ(got[3], 255);
+  const GLuint reverse[4] = {3, 2, 1, 0};  // I_TO_I: index entries are integers
+  glPixelMapuiv(GL_PIXEL_MAP_I_TO_I, 4, reverse);
+  glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+  draw_read(GL_COLOR_INDEX, GL_UNSIGNED_BYTE, &index);  // 3 -> I_TO_I -> 0: red 0
+  EXPECT_EQ(got[0], 0);
+  glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
+  glPixelTransferi(GL_INDEX_SHIFT, -1);
+  glPixelTransferi(GL_INDEX_OFFSET, 0);
+  const GLushort wide = 5;  // 5 >> 1 = 2: red 0.5
+  draw_read(GL_COLOR_INDEX, GL_UNSIGNED_SHORT, &wide);
+  EXPECT_NEAR(got[0], 128, 1);
+  glPixelTransferi(GL_INDEX_SHIFT, 0);
+  // Stencil: offset 1, then S_TO_S; read back with and without the map.
+  const GLfloat s_map[4] = {5, 4, 3, 2};
+  glPixelMapfv(GL_PIXEL_MAP_S_TO_S, 4, s_map);
+  glPixelTransferi(GL_MAP_STENCIL, GL_TRUE);
+  glPixelTransferi(GL_INDEX_OFFSET, 1);
+  const GLubyte st = 2;  // 3 -> S_TO_S[3] = 2
+  glDrawPixels(1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &st);
+  glPixelTransferi(GL_INDEX_OFFSET, 0);
+  glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);
+  GLubyte sv = 0;
+  glReadPixels(32, 24, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &sv);
+  EXPECT_EQ(sv, 2);
+  glPixelTransferi(GL_MAP_STENCIL, GL_TRUE);
+  glReadPixels(32, 24, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &sv);
+  EXPECT_EQ(sv, 3);  // S_TO_S[2]
+  glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);
+  // Queries: sizes, entries as given (index entries unnormalized), not pushed with the
+  // pixel mode attributes.
+  EXPECT_EQ(get_int(GL_PIXEL_MAP_R_TO_R_SIZE), 4);
+  EXPECT_EQ(get_int(GL_PIXEL_MAP_G_TO_G_SIZE), 1);
+  GLuint back[4] = {};
+  glGetPixelMapuiv(GL_PIXEL_MAP_I_TO_I, back);
+  EXPECT_EQ(back[0], 3u);
+  GLushort rback[4] = {};
+  glGetPixelMapusv(GL_PIXEL_MAP_R_TO_R, rback);
+  EXPECT_EQ(rback[1], GLushort(39321));  // 0.6 * 65535
+  glPushAttrib(GL_PIXEL_MODE_BIT);
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 1, &one);
+  glPopAttrib();
+  EXPECT_EQ(get_int(GL_PIXEL_MAP_R_TO_R_SIZE), 1);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  // Errors: a colour index map not a power of two, too large, a bad name.
+  const GLfloat three[3] = {0, 0, 0};
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 3, three);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 257, three);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glPixelMapfv(GL_RED_SCALE, 1, three);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  EXPECT_EQ(get_int(GL_PIXEL_MAP_I_TO_G_SIZE), 1);
+}
+
 TEST_F(GLTest, RandomCallSequenceNeverCrashes) {
   std::mt19937 rng(12345);
   const GLenum enums[] = {GL_TRIANGLES,
