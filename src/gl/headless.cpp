@@ -38,6 +38,24 @@ void parse_headless(HeadlessSpec& h, const char* spec, const char* who) {
   }
 }
 
+namespace {
+std::string write_rgb(const std::vector<uint8_t>& rgb_bottom_up, int width, int height,
+                      const std::string& dir, int frame, int window) {
+  char name[64];
+  if (window == 1)
+    std::snprintf(name, sizeof name, "frame-%04d.png", frame);
+  else
+    std::snprintf(name, sizeof name, "frame-%04d-w%d.png", frame, window);
+  const std::string path = (std::filesystem::path(dir) / name).string();
+  try {
+    gpu::write_png(path, width, height, 3, rgb_bottom_up.data());
+  } catch (const std::exception& e) {
+    return "cannot write " + path + ": " + e.what();
+  }
+  return "";
+}
+}  // namespace
+
 std::string write_headless_frame(Context& c, const std::string& dir, int frame, int window) {
   const gpu::Texture2D& front = c.front();
   const int width = front.width(), height = front.height();
@@ -48,18 +66,19 @@ std::string write_headless_frame(Context& c, const std::string& dir, int frame, 
     rgb[i * 3 + 1] = src[i * 4 + 1];
     rgb[i * 3 + 2] = src[i * 4 + 2];
   }
-  char name[64];
-  if (window == 1)
-    std::snprintf(name, sizeof name, "frame-%04d.png", frame);
-  else
-    std::snprintf(name, sizeof name, "frame-%04d-w%d.png", frame, window);
-  const std::string path = (std::filesystem::path(dir) / name).string();
-  try {
-    gpu::write_png(path, width, height, 3, rgb.data());
-  } catch (const std::exception& e) {
-    return "cannot write " + path + ": " + e.what();
-  }
-  return "";
+  return write_rgb(rgb, width, height, dir, frame, window);
+}
+
+std::string write_headless_image(const std::vector<uint8_t>& rgba_top_down, int width, int height,
+                                 const std::string& dir, int frame, int window) {
+  std::vector<uint8_t> rgb(size_t(width) * size_t(height) * 3);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const uint8_t* p = &rgba_top_down[(size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4];
+      uint8_t* q = &rgb[(size_t(y) * size_t(width) + size_t(x)) * 3];
+      q[0] = p[0], q[1] = p[1], q[2] = p[2];
+    }
+  return write_rgb(rgb, width, height, dir, frame, window);
 }
 
 }  // namespace tessel::gl

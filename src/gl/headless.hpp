@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace tessel::gl {
 
@@ -21,5 +22,8 @@ void parse_headless(HeadlessSpec& h, const char* spec, const char* who);
 // Writes the context's front buffer (RGB, top row first) as frame `frame` of window `window`
 // under `dir`. Returns "" or what went wrong.
 std::string write_headless_frame(Context& c, const std::string& dir, int frame, int window);
+// The same for an image already composed: RGBA rows, top row first (a window with subwindows).
+std::string write_headless_image(const std::vector<uint8_t>& rgba_top_down, int width, int height,
+                                 const std::string& dir, int frame, int window);
 
 }  // namespace tessel::gl

@@ -40,7 +40,16 @@ void report(const std::string& what) {
 void parse_headless(Headless& h, const char* spec) { gl::parse_headless(h, spec, "tessel glut"); }
 
 void write_frame(Window& w, int frame) {
-  const std::string problem = gl::write_headless_frame(*w.context, g_state.headless.out, frame, w.id);
+  // A subwindow is in its top-level window's image.
+  if (w.parent) return;
+  std::string problem;
+  if (w.children.empty()) {
+    problem = gl::write_headless_frame(*w.context, g_state.headless.out, frame, w.id);
+  } else {
+    std::vector<uint8_t> rgba;
+    visible_image(w, rgba);
+    problem = gl::write_headless_image(rgba, w.width, w.height, g_state.headless.out, frame, w.id);
+  }
   if (!problem.empty()) report(problem);
 }
 
@@ -139,8 +148,61 @@ void service_window(Window& w) {
     w.display();
     if (!window(id)) return;
     // A single-buffered window shows what was drawn; a double-buffered one its front buffer.
-    if (w.native) native_present(w);
+    present(w);
   }
+}
+
+Window& top_level(Window& w) {
+  Window* t = &w;
+  for (int guard = 0; t->parent && guard < 1 << 16; ++guard) {
+    Window* p = window(t->parent);
+    if (!p) break;
+    t = p;
+  }
+  return *t;
+}
+
+void present(Window& w) {
+  Window& t = top_level(w);
+  if (t.native) native_present(t);
+}
+
+void visible_image(const Window& w, std::vector<uint8_t>& out) {
+  const gpu::Texture2D& front = w.context->front();
+  const int width = front.width(), height = front.height();
+  const size_t row = size_t(width) * 4;
+  out.resize(row * size_t(height));
+  const auto* src = reinterpret_cast<const uint8_t*>(front.level(0).data.data());
+  for (int y = 0; y < height; ++y)
+    std::memcpy(&out[size_t(y) * row], src + size_t(height - 1 - y) * row, row);
+  for (size_t i = 3; i < out.size(); i += 4) out[i] = 255;  // a window is opaque
+  std::vector<uint8_t> sub;
+  for (int id : w.children) {
+    const Window* c = window(id);
+    if (!c || !c->visible) continue;
+    visible_image(*c, sub);
+    const int cw = c->context->front().width(), ch = c->context->front().height();
+    for (int y = std::max(0, -c->y); y < ch && c->y + y < height; ++y) {
+      const int x0 = std::max(0, -c->x), x1 = std::min(cw, width - c->x);
+      if (x1 <= x0) break;
+      std::memcpy(&out[size_t(c->y + y) * row + size_t(c->x + x0) * 4],
+                  &sub[(size_t(y) * size_t(cw) + size_t(x0)) * 4], size_t(x1 - x0) * 4);
+    }
+  }
+}
+
+Window& window_at(Window& top, int& x, int& y) {
+  // The last child (drawn on top) that holds the point, and so on down.
+  for (auto it = top.children.rbegin(); it != top.children.rend(); ++it) {
+    Window* c = window(*it);
+    if (!c || !c->visible) continue;
+    if (x >= c->x && y >= c->y && x < c->x + c->width && y < c->y + c->height) {
+      x -= c->x;
+      y -= c->y;
+      return window_at(*c, x, y);
+    }
+  }
+  return top;
 }
 
 void run_timers_and_idle() {
@@ -311,19 +373,41 @@ int GLAPIENTRY glutCreateWindow(const char* title) {
   return ref.id;
 }
 int GLAPIENTRY glutCreateSubWindow(int win, int x, int y, int width, int height) {
-  // Subwindows are separate windows of their own here (drawn, not nested).
+  if (!need_init("glutCreateSubWindow")) return 0;
   State& s = state();
-  if (!window(win)) return 0;
-  const int ox = s.init_x, oy = s.init_y, ow = s.init_width, oh = s.init_height;
-  s.init_x = x, s.init_y = y, s.init_width = std::max(1, width), s.init_height = std::max(1, height);
-  const int id = glutCreateWindow(window(win)->title.c_str());
-  s.init_x = ox, s.init_y = oy, s.init_width = ow, s.init_height = oh;
-  return id;
+  Window* parent = window(win);
+  if (!parent) return 0;
+  auto w = std::make_unique<Window>();
+  w->id = int(s.windows.size()) + 1;
+  w->title = parent->title;
+  w->parent = win;
+  w->x = x;
+  w->y = y;
+  w->width = std::max(1, width);
+  w->height = std::max(1, height);
+  w->mode = s.display_mode;
+  const bool dbl = (w->mode & GLUT_DOUBLE) != 0;
+  w->context = std::make_unique<gl::Context>(w->width, w->height, dbl, (w->mode & GLUT_DEPTH) != 0,
+                                             (w->mode & GLUT_STENCIL) != 0, (w->mode & GLUT_ALPHA) != 0);
+  apply_context_version(*w->context);
+  parent->children.push_back(w->id);
+  Window& ref = *w;
+  s.windows.push_back(std::move(w));
+  make_current(ref);
+  return ref.id;
 }
 void GLAPIENTRY glutDestroyWindow(int win) {
   State& s = state();
   Window* w = window(win);
   if (!w) return;
+  // Its subwindows go with it (GLUT 3.7 section 4.3).
+  const std::vector<int> children = w->children;
+  for (int c : children) glutDestroyWindow(c);
+  if (Window* p = window(w->parent)) {
+    auto& v = p->children;
+    v.erase(std::remove(v.begin(), v.end(), win), v.end());
+    p->redisplay = true;
+  }
   if (gl::current() == w->context.get()) gl::make_current(nullptr);
   s.windows[size_t(win - 1)].reset();
   if (s.current_window == win) s.current_window = 0;
@@ -342,7 +426,7 @@ void GLAPIENTRY glutSwapBuffers(void) {
   Window* w = need_window("glutSwapBuffers");
   if (!w) return;
   w->context->swap_buffers();
-  if (w->native && (w->mode & GLUT_DOUBLE)) native_present(*w);
+  if (w->mode & GLUT_DOUBLE) present(*w);
 }
 void GLAPIENTRY glutSetWindowTitle(const char* title) {
   Window* w = need_window("glutSetWindowTitle");
@@ -356,6 +440,7 @@ void GLAPIENTRY glutPositionWindow(int x, int y) {
   if (!w) return;
   w->x = x;
   w->y = y;
+  if (w->parent) present(*w);
 }
 void GLAPIENTRY glutReshapeWindow(int width, int height) {
   Window* w = need_window("glutReshapeWindow");
@@ -378,7 +463,10 @@ void GLAPIENTRY glutShowWindow(void) {
   w->redisplay = true;
 }
 void GLAPIENTRY glutHideWindow(void) {
-  if (Window* w = need_window("glutHideWindow")) w->visible = false;
+  Window* w = need_window("glutHideWindow");
+  if (!w) return;
+  w->visible = false;
+  if (w->parent) present(*w);
 }
 void GLAPIENTRY glutFullScreen(void) {
   Window* w = need_window("glutFullScreen");
@@ -535,8 +623,8 @@ int GLAPIENTRY glutGet(GLenum what) {
     case GLUT_WINDOW_ALPHA_SIZE: return 8;
     case GLUT_WINDOW_DOUBLEBUFFER: return w && (w->mode & GLUT_DOUBLE) ? 1 : 0;
     case GLUT_WINDOW_RGBA: return 1;
-    case GLUT_WINDOW_PARENT:
-    case GLUT_WINDOW_NUM_CHILDREN:
+    case GLUT_WINDOW_PARENT: return w ? w->parent : 0;
+    case GLUT_WINDOW_NUM_CHILDREN: return w ? int(w->children.size()) : 0;
     case GLUT_WINDOW_COLORMAP_SIZE:
     case GLUT_WINDOW_NUM_SAMPLES:
     case GLUT_WINDOW_STEREO:

@@ -48,6 +48,12 @@ struct OpenMenu {
 struct Window {
   int id = 0;
   std::string title;
+  // A subwindow (glutCreateSubWindow) has a parent, and its x, y are its top-left corner in
+  // the parent's pixels (y down); it has no window of the window system: the top-level
+  // window shows it over its own image, and passes it the input over it (as freeglut's
+  // child windows).
+  int parent = 0;
+  std::vector<int> children;  // in creation order: later ones are drawn on top
   int x = 0, y = 0, width = 300, height = 300;
   unsigned mode = GLUT_RGBA | GLUT_SINGLE;
   std::unique_ptr<gl::Context> context;
@@ -117,6 +123,16 @@ void make_current(Window& w);
 
 // Runs what a window needs now: pending reshape, then display when posted.
 void service_window(Window& w);
+// The top-level window that shows w (w itself when it has no parent).
+Window& top_level(Window& w);
+// What a window shows, as RGBA rows top-down of its size: its visible buffer with its
+// visible subwindows (and theirs) over it at their places, opaque.
+void visible_image(const Window& w, std::vector<uint8_t>& rgba_top_down);
+// Shows w's top-level window again (w drew): on its native window when it has one.
+void present(Window& w);
+// The subwindow of `top` (or `top`) under the point (x, y) of top's pixels, y down; x and y
+// become that window's own coordinates.
+Window& window_at(Window& top, int& x, int& y);
 // Fires the timers due by now, then idle once.
 void run_timers_and_idle();
 
@@ -132,7 +148,9 @@ void native_fullscreen(Window& w, bool on);
 void native_pump(double timeout_ms);
 
 // Pop-up menus (menu.cpp): drawing over the presented image (RGBA rows top-down) and input.
-void menu_draw(const Window& w, std::vector<uint8_t>& rgba_top_down, int width, int height);
+// (ox, oy): where w's top-left corner is in the image, for a subwindow's menus.
+void menu_draw(const Window& w, std::vector<uint8_t>& rgba_top_down, int width, int height, int ox = 0,
+               int oy = 0);
 void menu_open(Window& w, int menu_id, int button, int x, int y);
 void menu_motion(Window& w, int x, int y);
 // Button released: activates the highlighted entry (if any) and closes the menus.

@@ -73,8 +73,10 @@ void text(std::vector<uint8_t>& px, int width, int height, int x, int baseline, 
 
 }  // namespace
 
-void menu_draw(const Window& w, std::vector<uint8_t>& px, int width, int height) {
-  for (const OpenMenu& om : w.open_menus) {
+void menu_draw(const Window& w, std::vector<uint8_t>& px, int width, int height, int ox, int oy) {
+  for (OpenMenu om : w.open_menus) {
+    om.x += ox;
+    om.y += oy;
     const Menu* m = menu(om.menu);
     if (!m) continue;
     const int mw = menu_width(*m), mh = menu_height(*m);

@@ -103,6 +103,43 @@ void mouse_xy(Window& w, int x, int y, int& gx, int& gy) {
   gy = wh > 0 ? y * w.height / wh : y;
 }
 
+// The window an input event at native pixel (x, y) of top-level `top` belongs to, and the
+// point in its coordinates: the window with open menus while they are open (the menus take
+// the input), else the subwindow under the point.
+Window& target(Window& top, int nx, int ny, int& x, int& y) {
+  mouse_xy(top, nx, ny, x, y);
+  // A window (top, or a subwindow) with open menus takes the input.
+  std::vector<std::pair<Window*, std::pair<int, int>>> stack = {{&top, {0, 0}}};
+  while (!stack.empty()) {
+    const auto [win, at] = stack.back();
+    stack.pop_back();
+    if (!win->open_menus.empty()) {
+      x -= at.first;
+      y -= at.second;
+      return *win;
+    }
+    for (int id : win->children)
+      if (Window* c = window(id); c && c->visible) stack.push_back({c, {at.first + c->x, at.second + c->y}});
+  }
+  return window_at(top, x, y);
+}
+
+// Entry callbacks as the pointer moves between a top-level window and its subwindows.
+int g_pointer_window = 0;
+void pointer_over(Window& w) {
+  if (g_pointer_window == w.id) return;
+  Window* old = window(g_pointer_window);
+  g_pointer_window = w.id;
+  if (old && old->entry && (old->parent || w.parent)) {
+    make_current(*old);
+    old->entry(GLUT_LEFT);
+  }
+  if (w.entry && (old && (old->parent || w.parent))) {
+    make_current(w);
+    w.entry(GLUT_ENTERED);
+  }
+}
+
 void dispatch(const SDL_Event& e) {
   State& s = state();
   switch (e.type) {
@@ -148,13 +185,14 @@ void dispatch(const SDL_Event& e) {
       return;
     }
     case SDL_TEXTINPUT: {
-      Window* w = window_of(e.text.windowID);
-      if (!w || !w->keyboard) return;
-      const unsigned char ch = (unsigned char)e.text.text[0];
-      if (ch < 32 || ch >= 128 || e.text.text[1] != '\0') return;  // ASCII only, as GLUT
+      Window* top = window_of(e.text.windowID);
+      if (!top) return;
       int x = 0, y = 0;
       SDL_GetMouseState(&x, &y);
-      mouse_xy(*w, x, y, x, y);
+      Window* w = &target(*top, x, y, x, y);
+      if (!w->keyboard) return;
+      const unsigned char ch = (unsigned char)e.text.text[0];
+      if (ch < 32 || ch >= 128 || e.text.text[1] != '\0') return;  // ASCII only, as GLUT
       s.modifiers = modifiers_now();
       make_current(*w);
       w->keyboard(ch, x, y);
@@ -163,13 +201,13 @@ void dispatch(const SDL_Event& e) {
     }
     case SDL_KEYDOWN:
     case SDL_KEYUP: {
-      Window* w = window_of(e.key.windowID);
-      if (!w) return;
+      Window* top = window_of(e.key.windowID);
+      if (!top) return;
       const bool down = e.type == SDL_KEYDOWN;
       if (down && e.key.repeat && s.ignore_key_repeat) return;
       int x = 0, y = 0;
       SDL_GetMouseState(&x, &y);
-      mouse_xy(*w, x, y, x, y);
+      Window* w = &target(*top, x, y, x, y);
       s.modifiers = modifiers_now();
       make_current(*w);
       if (const int sp = special_key(e.key.keysym.sym)) {
@@ -188,8 +226,8 @@ void dispatch(const SDL_Event& e) {
     }
     case SDL_MOUSEBUTTONDOWN:
     case SDL_MOUSEBUTTONUP: {
-      Window* w = window_of(e.button.windowID);
-      if (!w) return;
+      Window* top = window_of(e.button.windowID);
+      if (!top) return;
       int button = -1;
       switch (e.button.button) {
         case SDL_BUTTON_LEFT: button = GLUT_LEFT_BUTTON; break;
@@ -198,37 +236,37 @@ void dispatch(const SDL_Event& e) {
         default: return;
       }
       int x = 0, y = 0;
-      mouse_xy(*w, e.button.x, e.button.y, x, y);
+      Window* w = &target(*top, e.button.x, e.button.y, x, y);
       const bool down = e.type == SDL_MOUSEBUTTONDOWN;
       if (!w->open_menus.empty()) {
         if (!down && button == w->menu_button) menu_release(*w, x, y);
-        if (w->native) native_present(*w);
+        if (window(top->id)) native_present(*top);
         return;
       }
       if (down && w->menu_for_button[button] && menu(w->menu_for_button[button])) {
         menu_open(*w, w->menu_for_button[button], button, x, y);
-        if (w->native) native_present(*w);
+        native_present(*top);
         return;
       }
       if (down)
-        w->native->buttons_down |= 1 << button;
+        top->native->buttons_down |= 1 << button;
       else
-        w->native->buttons_down &= ~(1 << button);
+        top->native->buttons_down &= ~(1 << button);
       if (w->mouse) {
         s.modifiers = modifiers_now();
         make_current(*w);
         w->mouse(button, down ? GLUT_DOWN : GLUT_UP, x, y);
         s.modifiers = 0;
-        if (window(w->id) && w->native && !(w->mode & GLUT_DOUBLE)) native_present(*w);
+        if (window(w->id) && window(top->id) && !(w->mode & GLUT_DOUBLE)) native_present(*top);
       }
       return;
     }
     case SDL_MOUSEWHEEL: {
-      Window* w = window_of(e.wheel.windowID);
-      if (!w || e.wheel.y == 0) return;
+      Window* top = window_of(e.wheel.windowID);
+      if (!top || e.wheel.y == 0) return;
       int x = 0, y = 0;
       SDL_GetMouseState(&x, &y);
-      mouse_xy(*w, x, y, x, y);
+      Window* w = &target(*top, x, y, x, y);
       make_current(*w);
       const int dir = e.wheel.y > 0 ? 1 : -1;
       if (w->mouse_wheel)
@@ -241,22 +279,25 @@ void dispatch(const SDL_Event& e) {
       return;
     }
     case SDL_MOUSEMOTION: {
-      Window* w = window_of(e.motion.windowID);
-      if (!w) return;
+      Window* top = window_of(e.motion.windowID);
+      if (!top) return;
       int x = 0, y = 0;
-      mouse_xy(*w, e.motion.x, e.motion.y, x, y);
+      Window* w = &target(*top, e.motion.x, e.motion.y, x, y);
       if (!w->open_menus.empty()) {
         menu_motion(*w, x, y);
-        if (w->native) native_present(*w);
+        native_present(*top);
         return;
       }
+      const int id = w->id;
+      pointer_over(*w);
+      if (!window(id) || !window(top->id)) return;
       make_current(*w);
-      if (w->native->buttons_down) {
+      if (top->native->buttons_down) {
         if (w->motion) w->motion(x, y);
       } else if (w->passive_motion) {
         w->passive_motion(x, y);
       }
-      if (window(w->id) && w->native && !(w->mode & GLUT_DOUBLE)) native_present(*w);
+      if (window(id) && window(top->id) && !(w->mode & GLUT_DOUBLE)) native_present(*top);
       return;
     }
     default: return;
@@ -312,12 +353,17 @@ void native_present(Window& w) {
     if (!n->texture) return;
   }
   const size_t row = size_t(width) * 4;
-  n->staging.resize(row * size_t(height));
-  const auto* src = reinterpret_cast<const uint8_t*>(front.level(0).data.data());
-  for (int y = 0; y < height; ++y)
-    std::memcpy(&n->staging[size_t(y) * row], src + size_t(height - 1 - y) * row, row);
-  for (size_t i = 3; i < n->staging.size(); i += 4) n->staging[i] = 255;  // a window is opaque
-  if (!w.open_menus.empty()) menu_draw(w, n->staging, width, height);
+  visible_image(w, n->staging);  // its subwindows over it
+  // Open pop-up menus: this window's, and its subwindows' at their places.
+  std::vector<std::pair<const Window*, std::pair<int, int>>> stack = {{&w, {0, 0}}};
+  while (!stack.empty()) {
+    const auto [win, at] = stack.back();
+    stack.pop_back();
+    if (!win->open_menus.empty()) menu_draw(*win, n->staging, width, height, at.first, at.second);
+    for (int id : win->children)
+      if (const Window* c = window(id); c && c->visible)
+        stack.push_back({c, {at.first + c->x, at.second + c->y}});
+  }
   SDL_UpdateTexture(n->texture, nullptr, n->staging.data(), int(row));
   SDL_RenderClear(n->renderer);
   SDL_RenderCopy(n->renderer, n->texture, nullptr, nullptr);

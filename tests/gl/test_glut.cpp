@@ -261,3 +261,92 @@ TEST(Glu, Build3DMipmapsLevelsAndErrors) {
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   glDeleteTextures(1, &t);
 }
+
+namespace {
+
+void clear_red() {
+  glClearColor(1, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+}
+void clear_green() {
+  glClearColor(0, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+}
+int g_sub_reshape_w = 0, g_sub_reshape_h = 0;
+void sub_reshape(int w, int h) {
+  g_sub_reshape_w = w;
+  g_sub_reshape_h = h;
+  glViewport(0, 0, w, h);
+}
+
+// Subwindows sit inside their parent (GLUT 3.7 section 4.2, as freeglut draws them): the
+// top-level window's image shows them over its own at their places (x, y from the parent's
+// top-left, y down), nested ones inside theirs; input over them goes to them in their own
+// coordinates; hidden ones are not shown; destroying the parent destroys them.
+TEST(GlutWindow, SubwindowsAreNestedInTheirParent) {
+  tessel::glut::Window& top = window();
+  const int top_id = top.id;
+  glutSetWindow(top_id);
+  const int sub = glutCreateSubWindow(top_id, 20, 30, 60, 40);
+  ASSERT_GT(sub, 0);
+  glutDisplayFunc(clear_red);
+  glutReshapeFunc(sub_reshape);
+  EXPECT_EQ(glutGet(GLUT_WINDOW_PARENT), top_id);
+  EXPECT_EQ(glutGet(GLUT_WINDOW_X), 20);
+  EXPECT_EQ(glutGet(GLUT_WINDOW_Y), 30);
+  EXPECT_EQ(glutGet(GLUT_WINDOW_WIDTH), 60);
+  const int inner = glutCreateSubWindow(sub, 10, 5, 8, 6);
+  glutDisplayFunc(clear_green);
+  glutSetWindow(top_id);
+  EXPECT_EQ(glutGet(GLUT_WINDOW_NUM_CHILDREN), 1);
+  EXPECT_EQ(glutGet(GLUT_WINDOW_PARENT), 0);
+  for (int id : {top_id, sub, inner}) {
+    tessel::glut::Window* w = tessel::glut::window(id);
+    w->redisplay = true;
+    tessel::glut::service_window(*w);
+    glutSetWindow(id);
+    glutSwapBuffers();
+  }
+  EXPECT_EQ(g_sub_reshape_w, 60);
+  EXPECT_EQ(g_sub_reshape_h, 40);
+  std::vector<uint8_t> img;
+  tessel::glut::visible_image(top, img);
+  ASSERT_EQ(img.size(), size_t(200 * 150 * 4));
+  auto px = [&](int x, int y) { return &img[(size_t(y) * 200 + size_t(x)) * 4]; };
+  EXPECT_EQ(px(5, 5)[2], 102);    // the parent's own clear (0.2, 0.3, 0.4)
+  EXPECT_EQ(px(20, 30)[0], 255);  // the subwindow's top-left corner: red
+  EXPECT_EQ(px(79, 69)[0], 255);  // its bottom-right pixel
+  EXPECT_EQ(px(80, 69)[0], 51);   // just outside it
+  EXPECT_EQ(px(19, 30)[0], 51);
+  EXPECT_EQ(px(30, 35)[1], 255);  // the nested one at (20 + 10, 30 + 5): green
+  EXPECT_EQ(px(37, 40)[1], 255);
+  EXPECT_EQ(px(38, 40)[1], 0);  // back in the red one
+  EXPECT_EQ(px(38, 40)[0], 255);
+  // Input: the window under a point of the top-level window, in its own coordinates.
+  int x = 32, y = 36;
+  EXPECT_EQ(tessel::glut::window_at(top, x, y).id, inner);
+  EXPECT_EQ(x, 2);
+  EXPECT_EQ(y, 1);
+  x = 50, y = 60;
+  EXPECT_EQ(tessel::glut::window_at(top, x, y).id, sub);
+  EXPECT_EQ(x, 30);
+  x = 150, y = 20;
+  EXPECT_EQ(tessel::glut::window_at(top, x, y).id, top_id);
+  // Moved and hidden.
+  glutSetWindow(sub);
+  glutPositionWindow(100, 10);
+  tessel::glut::visible_image(top, img);
+  EXPECT_EQ(px(20, 30)[0], 51);
+  EXPECT_EQ(px(100, 10)[0], 255);
+  glutHideWindow();
+  tessel::glut::visible_image(top, img);
+  EXPECT_EQ(px(100, 10)[0], 51);
+  // Destroying the subwindow destroys the one inside it.
+  glutDestroyWindow(sub);
+  EXPECT_EQ(tessel::glut::window(sub), nullptr);
+  EXPECT_EQ(tessel::glut::window(inner), nullptr);
+  glutSetWindow(top_id);
+  EXPECT_EQ(glutGet(GLUT_WINDOW_NUM_CHILDREN), 0);
+}
+
+}  // namespace
