@@ -37,6 +37,8 @@ bool Context::bind_draw_target(int layer) {
     if (fb_target_ == target && gpu_->framebuffer() == &fb_) return true;
     fb_ = gpu::Framebuffer(color_buffer(target), depth_.get());
     if (!fb_.color[0].texture && !depth_) fb_.color[0].texture = color_[0].get();
+    // GL_FRONT_AND_BACK: the front buffer and the back one (render_state broadcasts output 0).
+    if (target == GL_FRONT_AND_BACK && double_buffer_) fb_.color[1].texture = color_[1].get();
     fb_target_ = target;
     gpu_->bind_framebuffer(&fb_);
     return true;
@@ -83,6 +85,7 @@ Context::TargetInfo Context::target_info() const {
     t.depth = has_depth_;
     t.stencil = has_stencil_;
     t.channels[0] = has_alpha_ ? 0xF : 0x7;  // a window without alpha keeps its alpha at 1
+    if (s.color.draw_buffer == GL_FRONT_AND_BACK && double_buffer_) t.channels[1] = t.channels[0];
     return t;
   }
   const FramebufferObject& f = *draw_fbo;

@@ -198,6 +198,9 @@ gpu::RenderState Context::render_state(bool for_clear) const {
   r.depth_far = float(s.viewport.far_);
   r.scissor_test = s.scissor.test;
   r.scissor = {s.scissor.x, s.scissor.y, s.scissor.width, s.scissor.height};
+  // Fixed-function fragments (and pixel rectangles) go to every draw buffer; any fragment to
+  // both buffers of GL_FRONT_AND_BACK.
+  r.broadcast_color = !executable || (!draw_fbo && s.color.draw_buffer == GL_FRONT_AND_BACK);
   if (!for_clear) {
     const PolygonState& p = s.polygon;
     r.cull = cull_mode();

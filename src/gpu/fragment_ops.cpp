@@ -329,7 +329,10 @@ void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsi
     return write_rgba8(t.color[0], gx, gy, mask, colors[0]);
   // With dual-source blending output 1 is attachment 0's second source, not a colour.
   const bool dual = d.state.dual_source && outputs >= 2;
-  const int n = dual ? std::min(1, t.color_count) : std::min(outputs, t.color_count);
+  const bool broadcast = d.state.broadcast_color && !dual;
+  const int n = dual        ? std::min(1, t.color_count)
+                : broadcast ? t.color_count
+                            : std::min(outputs, t.color_count);
   for (int i = 0; i < n; ++i) {
     const ColorTarget& ct = t.color[i];
     if (!ct.data) continue;
@@ -337,7 +340,7 @@ void write_colors(const DrawRecord& d, const TargetView& t, int gx, int gy, unsi
     if (b.write_mask == 0) continue;
     const bool unorm = is_unorm8_format(ct.format);
     const bool logic = d.state.logic_op_enabled;
-    const Vec4<Float8>& c = colors[i];
+    const Vec4<Float8>& c = colors[broadcast ? 0 : i];
     for (unsigned m = mask; m; m &= m - 1) {
       const int l = __builtin_ctz(m);
       const int x = gx + kLaneDx[l], y = gy + kLaneDy[l];

@@ -188,6 +188,10 @@ struct RenderState {
   // Dual-source blending: fragment output 1 is the second source colour of attachment 0's
   // blend (the Src1 factors), and only attachment 0 is written.
   bool dual_source = false;
+  // Output 0 is written to every colour attachment (each with its own blend state and mask):
+  // fixed-function fragments go to every draw buffer (GL 2.1 §4.2.1), as does any fragment
+  // drawn to GL_FRONT_AND_BACK.
+  bool broadcast_color = false;
 
   // Layered rendering (GL 3.3 §4.4.7), one layer of the framebuffer a draw: with a program
   // whose geometry stage writes gl_Layer (RuntimeShape::layer), this draw keeps the primitives
