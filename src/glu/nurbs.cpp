@@ -581,22 +581,36 @@ struct GlState {
   }
 };
 
-// ---- Curves -------------------------------------------------------------------------------
-
-void draw_curve(GLUnurbs* n) {
-  std::vector<const Map*> maps;
+// The maps of the curve or surface being drawn, and its vertex map: null (NURBS error 8
+// reported) unless there is exactly one.
+const Map* gather_maps(GLUnurbs* n, std::vector<const Map*>& maps) {
   const Map* vert = nullptr;
   for (const Map& m : n->maps) {
     maps.push_back(&m);
     if (is_vertex(m.type)) {
-      if (vert) return report(n, 8);
+      if (vert) return report(n, 8), nullptr;
       vert = &m;
     }
   }
-  if (!vert) return report(n, 8);
-  double lo = -HUGE_VAL, hi = HUGE_VAL;
-  for (const Map* m : maps) lo = std::max(lo, m->lo(0)), hi = std::min(hi, m->hi(0));
-  if (!(lo < hi)) return report(n, 3);
+  if (!vert) report(n, 8);
+  return vert;
+}
+// The domain all maps share in direction d; false (NURBS error 3 reported) when it is empty.
+bool shared_domain(GLUnurbs* n, const std::vector<const Map*>& maps, int d, double& lo, double& hi) {
+  lo = -HUGE_VAL, hi = HUGE_VAL;
+  for (const Map* m : maps) lo = std::max(lo, m->lo(d)), hi = std::min(hi, m->hi(d));
+  if (lo < hi) return true;
+  report(n, 3);
+  return false;
+}
+
+// ---- Curves -------------------------------------------------------------------------------
+
+void draw_curve(GLUnurbs* n) {
+  std::vector<const Map*> maps;
+  const Map* vert = gather_maps(n, maps);
+  double lo, hi;
+  if (!vert || !shared_domain(n, maps, 0, lo, hi)) return;
   load_matrices(n);
   const Sampler sampler(n);
   const std::vector<double> br = breakpoints(maps, 0, lo, hi);
@@ -751,21 +765,9 @@ struct CellTess {
 
 void draw_surface(GLUnurbs* n) {
   std::vector<const Map*> maps;
-  const Map* vert = nullptr;
-  for (const Map& m : n->maps) {
-    maps.push_back(&m);
-    if (is_vertex(m.type)) {
-      if (vert) return report(n, 8);
-      vert = &m;
-    }
-  }
-  if (!vert) return report(n, 8);
+  const Map* vert = gather_maps(n, maps);
   double lo[2], hi[2];
-  for (int d = 0; d < 2; ++d) {
-    lo[d] = -HUGE_VAL, hi[d] = HUGE_VAL;
-    for (const Map* m : maps) lo[d] = std::max(lo[d], m->lo(d)), hi[d] = std::min(hi[d], m->hi(d));
-    if (!(lo[d] < hi[d])) return report(n, 3);
-  }
+  if (!vert || !shared_domain(n, maps, 0, lo[0], hi[0]) || !shared_domain(n, maps, 1, lo[1], hi[1])) return;
   load_matrices(n);
   const Sampler sampler(n);
   const std::vector<double> bs = breakpoints(maps, 0, lo[0], hi[0]), bt = breakpoints(maps, 1, lo[1], hi[1]);
