@@ -6,8 +6,7 @@
  *  - a framebuffer object with two colour textures and glDrawBuffers of both: a smooth quad
  *    drawn by fixed function lands in both; the two textures are shown side by side at the
  *    bottom. */
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/glext.h>
+#define GL_GLEXT_PROTOTYPES 1 /* GL/gl.h then declares the GL 2.0 and 3.0 calls of GL/glext.h */
 #include <GL/glut.h>
 
 static const int W = 320, H = 240;
