@@ -212,20 +212,6 @@ int64_t index_arithmetic(const PixelModeState& p, int64_t i) {
 // A table entry for index i of a power-of-two map (the index masked to its size).
 float index_lookup(const std::vector<float>& m, int64_t i) { return m[size_t(i & int64_t(m.size() - 1))]; }
 
-// The index an unpacked component stands for: unpack_pixels normalizes integer types, and
-// indices are integers (floats are taken as they are, bitmaps give 0 or 1).
-float index_value(float v, GLenum type) {
-  switch (type) {
-    case GL_UNSIGNED_BYTE: return std::round(v * 255.0f);
-    case GL_BYTE: return std::round(v * 127.0f);
-    case GL_UNSIGNED_SHORT: return std::round(v * 65535.0f);
-    case GL_SHORT: return std::round(v * 32767.0f);
-    case GL_UNSIGNED_INT: return float(std::round(double(v) * 4294967295.0));
-    case GL_INT: return float(std::round(double(v) * 2147483647.0));
-    default: return v;
-  }
-}
-
 // A stencil index after the transfer operations: arithmetic, then S_TO_S with GL_MAP_STENCIL.
 int64_t stencil_transfer(const ServerState& s, float v) {
   int64_t i = index_arithmetic(s.pixel, int64_t(std::floor(double(v))));
@@ -442,8 +428,6 @@ void GLAPIENTRY glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, c
   if (pixels && w > 0 && h > 0) {
     data = std::make_shared<Pixels>();
     unpack_pixels(c.c.unpack, w, h, format, type, pixels, data->px);
-    if (format == GL_STENCIL_INDEX || format == GL_COLOR_INDEX)
-      for (glm::vec4& v : data->px) v.x = index_value(v.x, type);
   }
   GL_LISTED(draw_pixels(c, w, h, format, data));
   draw_pixels(c, w, h, format, data);

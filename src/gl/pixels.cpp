@@ -255,6 +255,25 @@ float read_integer_component(const uint8_t* b, GLenum type) {
   }
 }
 
+// A colour or stencil index of an integer type: the integer itself, as a float (indices are
+// not normalized, GL 2.1 §3.6.4).
+float index_component(const uint8_t* p, GLenum type, bool swap) {
+  uint8_t b[4] = {0, 0, 0, 0};
+  const int sz = std::clamp(type_bytes(type), 1, 4);
+  std::memcpy(b, p, size_t(sz));
+  if (swap) swap_bytes(b, sz);
+  const uint32_t bits = std::bit_cast<uint32_t>(read_integer_component(b, type));
+  switch (type) {
+    case GL_BYTE: return float(int8_t(bits));
+    case GL_SHORT: return float(int16_t(bits));
+    case GL_INT: return float(int32_t(bits));
+    case GL_UNSIGNED_BYTE:
+    case GL_UNSIGNED_SHORT:
+    case GL_UNSIGNED_INT: return float(bits);
+    default: return 0.0f;
+  }
+}
+
 float read_component(const uint8_t* p, GLenum type, bool swap, bool integer) {
   uint8_t b[4] = {0, 0, 0, 0};
   const int sz = std::clamp(type_bytes(type), 1, 4);
@@ -568,6 +587,7 @@ void unpack_pixels(const PixelStore& ps, int w, int h, GLenum format, GLenum typ
   const size_t cs = size_t(type_bytes(type));
   const uint8_t* base = static_cast<const uint8_t*>(data) + L.offset;
   const bool swap = ps.swap_bytes && cs > 1;
+  const bool index = format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX;
   for (int y = 0; y < h; ++y) {
     const uint8_t* row = base + size_t(y) * L.row_stride;
     for (int x = 0; x < w; ++x) {
@@ -575,6 +595,8 @@ void unpack_pixels(const PixelStore& ps, int w, int h, GLenum format, GLenum typ
       float c[4] = {0, 0, 0, 1};
       if (packed)
         read_packed(p, type, swap, integer, c);
+      else if (index && type != GL_FLOAT && type != GL_HALF_FLOAT)
+        c[0] = index_component(p, type, swap);
       else
         for (int k = 0; k < n; ++k) c[k] = read_component(p + size_t(k) * cs, type, swap, integer);
       glm::vec4& o = out[size_t(y) * size_t(w) + size_t(x)];

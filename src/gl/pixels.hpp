@@ -46,7 +46,8 @@ PixelLayout pixel_layout(const PixelStore& ps, int width, GLenum format, GLenum 
 
 // Reads w x h pixels of `format`/`type` into RGBA floats (rows in memory order, which is
 // bottom-up in GL). Depth and stencil formats give the value in .x; DEPTH_STENCIL gives depth
-// in .x ([0, 1]) and the stencil value (an integer, not normalized) in .y. Luminance gives
+// in .x ([0, 1]) and the stencil value (an integer, not normalized) in .y; colour and stencil
+// indices give the index itself in .x (integer types not normalized). Luminance gives
 // (L, L, L, 1), alpha (0, 0, 0, A); missing components (0, 0, 0, 1). *_INTEGER formats give the
 // integer values themselves; HALF_FLOAT and FLOAT are not normalized; the fields of packed
 // types are unsigned normalized by their own width (raw with *_INTEGER formats).

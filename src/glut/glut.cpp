@@ -42,14 +42,11 @@ void parse_headless(Headless& h, const char* spec) { gl::parse_headless(h, spec,
 void write_frame(Window& w, int frame) {
   // A subwindow is in its top-level window's image.
   if (w.parent) return;
-  std::string problem;
-  if (w.children.empty()) {
-    problem = gl::write_headless_frame(*w.context, g_state.headless.out, frame, w.id);
-  } else {
-    std::vector<uint8_t> rgba;
-    visible_image(w, rgba);
-    problem = gl::write_headless_image(rgba, w.width, w.height, g_state.headless.out, frame, w.id);
-  }
+  std::vector<uint8_t> rgba;
+  visible_image(w, rgba);
+  const gpu::Texture2D& front = w.context->front();
+  const std::string problem =
+      gl::write_headless_image(rgba, front.width(), front.height(), g_state.headless.out, frame, w.id);
   if (!problem.empty()) report(problem);
 }
 

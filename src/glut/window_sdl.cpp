@@ -103,23 +103,33 @@ void mouse_xy(Window& w, int x, int y, int& gx, int& gy) {
   gy = wh > 0 ? y * w.height / wh : y;
 }
 
+// The window under `top` (or top) whose pop-up menus are open, and where its top-left corner
+// is in top's pixels (added to ox, oy); null when no menu is open (one window at a time has).
+Window* menu_window(Window& top, int& ox, int& oy) {
+  if (!top.open_menus.empty()) return &top;
+  for (int id : top.children) {
+    Window* c = window(id);
+    if (!c || !c->visible) continue;
+    int cx = c->x, cy = c->y;
+    if (Window* m = menu_window(*c, cx, cy)) {
+      ox += cx;
+      oy += cy;
+      return m;
+    }
+  }
+  return nullptr;
+}
+
 // The window an input event at native pixel (x, y) of top-level `top` belongs to, and the
 // point in its coordinates: the window with open menus while they are open (the menus take
 // the input), else the subwindow under the point.
 Window& target(Window& top, int nx, int ny, int& x, int& y) {
   mouse_xy(top, nx, ny, x, y);
-  // A window (top, or a subwindow) with open menus takes the input.
-  std::vector<std::pair<Window*, std::pair<int, int>>> stack = {{&top, {0, 0}}};
-  while (!stack.empty()) {
-    const auto [win, at] = stack.back();
-    stack.pop_back();
-    if (!win->open_menus.empty()) {
-      x -= at.first;
-      y -= at.second;
-      return *win;
-    }
-    for (int id : win->children)
-      if (Window* c = window(id); c && c->visible) stack.push_back({c, {at.first + c->x, at.second + c->y}});
+  int ox = 0, oy = 0;
+  if (Window* m = menu_window(top, ox, oy)) {
+    x -= ox;
+    y -= oy;
+    return *m;
   }
   return window_at(top, x, y);
 }
@@ -354,16 +364,9 @@ void native_present(Window& w) {
   }
   const size_t row = size_t(width) * 4;
   visible_image(w, n->staging);  // its subwindows over it
-  // Open pop-up menus: this window's, and its subwindows' at their places.
-  std::vector<std::pair<const Window*, std::pair<int, int>>> stack = {{&w, {0, 0}}};
-  while (!stack.empty()) {
-    const auto [win, at] = stack.back();
-    stack.pop_back();
-    if (!win->open_menus.empty()) menu_draw(*win, n->staging, width, height, at.first, at.second);
-    for (int id : win->children)
-      if (const Window* c = window(id); c && c->visible)
-        stack.push_back({c, {at.first + c->x, at.second + c->y}});
-  }
+  // Open pop-up menus, this window's or a subwindow's at its place.
+  int ox = 0, oy = 0;
+  if (Window* m = menu_window(w, ox, oy)) menu_draw(*m, n->staging, width, height, ox, oy);
   SDL_UpdateTexture(n->texture, nullptr, n->staging.data(), int(row));
   SDL_RenderClear(n->renderer);
   SDL_RenderCopy(n->renderer, n->texture, nullptr, nullptr);
