@@ -85,22 +85,22 @@ struct RuntimeBridge {
 
   // The lane rows the fragment stage reads and writes on this thread, two sets (`slot` 0 and
   // 1) so that two calls' worth can be shaded together. The raster loop (detail/raster.hpp)
-  // stores the interpolated varyings straight into them and calls fragment_stored or
-  // fragment_stored_pair: a run-time shader has no fragment() taking a Varyings struct.
-  static FragmentLanes& fragment_lanes(int slot = 0) {
+  // looks them up once, stores the interpolated varyings straight into them and calls
+  // fragment_stored or fragment_stored_pair with them: a run-time shader has no fragment()
+  // taking a Varyings struct.
+  static FragmentLanes& fragment_lanes(int slot) {
     thread_local FragmentLanes lanes[2];
     return lanes[slot];
   }
   template <class F>
-  void fragment_stored(const Uniforms& u, Fragment<F>& f, int slot = 0) const {
-    FragmentLanes& lanes = fragment_lanes(slot);
+  void fragment_stored(const Uniforms& u, Fragment<F>& f, FragmentLanes& lanes) const {
     put(f, lanes);
     u->fragment(lanes);
     take(lanes, f);
   }
-  // Slot 0 with f0 and slot 1 with f1, as fragment_stored on each in turn.
-  void fragment_stored_pair(const Uniforms& u, Fragment<Float16>& f0, Fragment<Float16>& f1) const {
-    FragmentLanes &a = fragment_lanes(0), &b = fragment_lanes(1);
+  // f0 in lane rows a and f1 in b, as fragment_stored on each in turn.
+  void fragment_stored_pair(const Uniforms& u, Fragment<Float16>& f0, Fragment<Float16>& f1, FragmentLanes& a,
+                            FragmentLanes& b) const {
     put(f0, a);
     put(f1, b);
     u->fragment_pair(a, b);

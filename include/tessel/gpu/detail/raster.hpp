@@ -9,6 +9,7 @@
 
 #include "tessel/gpu/detail/fast_ops.hpp"
 #include "tessel/gpu/detail/pipeline.hpp"
+#include "tessel/gpu/runtime_shader.hpp"
 
 namespace tessel::gpu::detail {
 
@@ -103,10 +104,23 @@ class Program final : public ProgramBase {
   }
 
  private:
+  // A run-time shader's two sets of lane rows on this thread (RuntimeBridge::fragment_lanes).
+  // They are thread-local: looked up once a loop and passed down, since in a shared library
+  // every look-up is a call (__tls_get_addr), which made 2% of a textured frame when made
+  // per group. Null for a C++ shader.
+  using LaneRows = std::array<FragmentLanes*, 2>;
+  static LaneRows lane_rows() {
+    if constexpr (shader_runtime<S>())
+      return {&S::fragment_lanes(0), &S::fragment_lanes(1)};
+    else
+      return {nullptr, nullptr};
+  }
+
   template <bool Smooth>
   void raster_loop(const DrawRecord& d, const TargetView& t, const Prim* const* prims, int n, int x0, int y0,
                    int x1, int y1, Counters& counters) const {
     [[maybe_unused]] const auto mode = float_mode();
+    const LaneRows rows = lane_rows();
     // Fragment counts are kept in registers here and added to the worker's counters once.
     FragmentCounts c;
     // Covered 4x2 groups are shaded two at a time as sixteen lanes (two independent halves
@@ -125,10 +139,10 @@ class Program final : public ProgramBase {
       if (n_pending < kBatch) return;
       n_pending = 0;
       if constexpr (kBatch == 4)
-        shade_pair<Smooth>(d, t, pending, c);
+        shade_pair<Smooth>(d, t, pending, c, rows);
       else
         shade<Float16, Smooth>(d, t, *pending[0].prim, *pending[1].prim, pending[0].pos, pending[1].pos,
-                               pending[0].mask | (pending[1].mask << 8), c);
+                               pending[0].mask | (pending[1].mask << 8), c, rows);
     };
     // (shade<Float16> has one call site for a C++ shader: with two, GCC does not flatten it.)
     auto flush_pending = [&] {
@@ -136,14 +150,14 @@ class Program final : public ProgramBase {
       if constexpr (kBatch == 4) {
         if (n_pending == 3) {
           Group four[4] = {g[0], g[1], g[2], {g[2].prim, g[2].pos, 0}};
-          shade_pair<Smooth>(d, t, four, c);
+          shade_pair<Smooth>(d, t, four, c, rows);
         } else if (n_pending == 2) {
           shade<Float16, Smooth>(d, t, *g[0].prim, *g[1].prim, g[0].pos, g[1].pos,
-                                 g[0].mask | (g[1].mask << 8), c);
+                                 g[0].mask | (g[1].mask << 8), c, rows);
         }
       }
       if (n_pending == 1)
-        shade<Float8, Smooth>(d, t, *g[0].prim, *g[0].prim, g[0].pos, g[0].pos, g[0].mask, c);
+        shade<Float8, Smooth>(d, t, *g[0].prim, *g[0].prim, g[0].pos, g[0].pos, g[0].mask, c, rows);
       n_pending = 0;
     };
     [[maybe_unused]] const bool packed = kPacked && d.fast_color;
@@ -154,7 +168,7 @@ class Program final : public ProgramBase {
         if (packed && packable(*prims[i])) {
           // Small triangles from here on are shaded packed (raster_packed).
           flush_pending();
-          i = raster_packed(d, t, prims, i, n, x0, y0, x1, y1, c) - 1;
+          i = raster_packed(d, t, prims, i, n, x0, y0, x1, y1, c, rows) - 1;
           continue;
         }
       }
@@ -222,7 +236,7 @@ class Program final : public ProgramBase {
   // first that is not (or n); prefetches kAhead places on, as raster() does.
   __attribute__((noinline)) int raster_packed(const DrawRecord& d, const TargetView& t,
                                               const Prim* const* prims, int i, int n, int x0, int y0, int x1,
-                                              int y1, FragmentCounts& c) const {
+                                              int y1, FragmentCounts& c, LaneRows rows) const {
     constexpr int K = varying_count<S>();
     Stage st;
     const bool tests = d.state.depth_test || d.state.stencil_test;
@@ -267,9 +281,9 @@ class Program final : public ProgramBase {
       st.fill = at + count;
       if (st.fill >= kShadeLanes) {
         if constexpr (kShadeLanes == 32)
-          shade_staged_pair(t, st, 0xFFFF);
+          shade_staged_pair(t, st, 0xFFFF, rows);
         else
-          shade_staged(t, st, 0xFFFF);
+          shade_staged(t, st, 0xFFFF, rows);
         st.fill -= kShadeLanes;
         for (int v = 0; v < kStaged; ++v) Float8::load(&st.v[v][kShadeLanes]).store(&st.v[v][0]);
       }
@@ -279,9 +293,9 @@ class Program final : public ProgramBase {
       raster_one(*prims[i], x0, y0, x1, y1, emit_packed);
     }
     if (st.fill > 16)
-      shade_staged_pair(t, st, (1u << (st.fill - 16)) - 1);
+      shade_staged_pair(t, st, (1u << (st.fill - 16)) - 1, rows);
     else if (st.fill)
-      shade_staged(t, st, (1u << st.fill) - 1);
+      shade_staged(t, st, (1u << st.fill) - 1, rows);
     return i;
   }
 
@@ -313,10 +327,10 @@ class Program final : public ProgramBase {
 #endif
   }
 
-  // Staged lanes [base, base + 16) as a fragment: the varyings divided by 1/w (into the lane
-  // rows `slot` of a run-time shader, else into vary), the centre, depth, facing and id.
-  __attribute__((always_inline)) void stage_in(const Stage& st, int base, int slot, Fragment<Float16>& f,
-                                               Varyings<Float16>& vary) const {
+  // Staged lanes [base, base + 16) as a fragment: the varyings divided by 1/w (into a run-time
+  // shader's lane rows `into`, else into vary), the centre, depth, facing and id.
+  __attribute__((always_inline)) void stage_in(const Stage& st, int base, FragmentLanes* into,
+                                               Fragment<Float16>& f, Varyings<Float16>& vary) const {
     constexpr int K = varying_count<S>();
     using F = Float16;
     const F oow = F::load(st.v[K + 3] + base);
@@ -331,11 +345,11 @@ class Program final : public ProgramBase {
         lanes[k] = F::load(st.v[k] + base);
         if (!((linear >> k) & 1)) lanes[k] = lanes[k] * w;
         // A run-time shader reads its inputs from lane rows: stored there straight away.
-        if constexpr (shader_runtime<S>()) lanes[k].store(S::fragment_lanes(slot).varyings[k]);
+        if constexpr (shader_runtime<S>()) lanes[k].store(into->varyings[k]);
       }
       if constexpr (!shader_runtime<S>()) std::memcpy(&vary, lanes, sizeof lanes);
     }
-    (void)slot;
+    (void)into;
     (void)vary;
     const F cx = F::load(st.v[K] + base), cy = F::load(st.v[K + 1] + base);
     f.coord = Vec4<F>(cx, cy, F::load(st.v[K + 2] + base), oow);
@@ -374,13 +388,13 @@ class Program final : public ProgramBase {
 
   // Runs the shader on the first sixteen staged lanes and writes the colours of the lanes
   // in `mask`.
-  __attribute__((flatten, noinline)) void shade_staged(const TargetView& t, const Stage& st,
-                                                       unsigned mask) const {
+  __attribute__((flatten, noinline)) void shade_staged(const TargetView& t, const Stage& st, unsigned mask,
+                                                       LaneRows rows) const {
     Varyings<Float16> vary;
     Fragment<Float16> f;
-    stage_in(st, 0, 0, f, vary);
+    stage_in(st, 0, rows[0], f, vary);
     if constexpr (shader_runtime<S>())
-      shader_.fragment_stored(uniforms_, f);
+      shader_.fragment_stored(uniforms_, f, *rows[0]);
     else
       shader_.fragment(uniforms_, vary, f);
     stage_out(t, f, mask);
@@ -389,13 +403,13 @@ class Program final : public ProgramBase {
   // A run-time shader on the first thirty-two staged lanes, as one fragment_pair: lanes 0-15
   // all written, lanes 16-31 those in `mask_hi`.
   __attribute__((flatten, noinline)) void shade_staged_pair(const TargetView& t, const Stage& st,
-                                                            unsigned mask_hi) const {
+                                                            unsigned mask_hi, LaneRows rows) const {
     if constexpr (shader_runtime<S>()) {
       Varyings<Float16> unused;  // a run-time shader's varyings go to its lane rows
       Fragment<Float16> f0, f1;
-      stage_in(st, 0, 0, f0, unused);
-      stage_in(st, 16, 1, f1, unused);
-      shader_.fragment_stored_pair(uniforms_, f0, f1);
+      stage_in(st, 0, rows[0], f0, unused);
+      stage_in(st, 16, rows[1], f1, unused);
+      shader_.fragment_stored_pair(uniforms_, f0, f1, *rows[0], *rows[1]);
       stage_out(t, f0, 0xFFFF);
       stage_out(t, f1, mask_hi);
     }
@@ -587,56 +601,59 @@ class Program final : public ProgramBase {
   template <class F, bool Smooth>
   __attribute__((flatten, always_inline)) inline void shade(const DrawRecord& d, const TargetView& t,
                                                             const Prim& pa, const Prim& pb, Pos a, Pos b,
-                                                            unsigned mask, FragmentCounts& c) const {
+                                                            unsigned mask, FragmentCounts& c,
+                                                            LaneRows rows) const {
     Shading<F> s;
     Fragment<F> f;
     Varyings<F> vary;
-    if (!begin_shading(d, t, pa, pb, a, b, mask, c, s, f, vary, 0)) return;
+    if (!begin_shading(d, t, pa, pb, a, b, mask, c, s, f, vary, rows[0])) return;
     if constexpr (shader_runtime<S>())
-      shader_.fragment_stored(uniforms_, f);
+      shader_.fragment_stored(uniforms_, f, *rows[0]);
     else
       shader_.fragment(uniforms_, vary, f);
     if constexpr (Smooth) apply_smooth(s, f);
     end_shading(d, t, s, f, c);
   }
 
-  // Four groups of a run-time shader (g[0] and g[1] in slot 0, g[2] and g[3] in slot 1; a
+  // Four groups of a run-time shader (g[0] and g[1] in lane rows 0, g[2] and g[3] in rows 1; a
   // group may have no lanes), shaded by one fragment_pair call: depth is tested, and colour
   // written, group by group in order, as by two shade() calls.
   template <bool Smooth>
   __attribute__((noinline)) void shade_pair(const DrawRecord& d, const TargetView& t, const Group* g,
-                                            FragmentCounts& c) const {
+                                            FragmentCounts& c, LaneRows rows) const {
     if constexpr (shader_runtime<S>()) {
       Shading<Float16> s0, s1;
       Fragment<Float16> f0, f1;
       Varyings<Float16> v0, v1;
       const bool go0 = begin_shading(d, t, *g[0].prim, *g[1].prim, g[0].pos, g[1].pos,
-                                     g[0].mask | (g[1].mask << 8), c, s0, f0, v0, 0);
+                                     g[0].mask | (g[1].mask << 8), c, s0, f0, v0, rows[0]);
       const bool go1 = begin_shading(d, t, *g[2].prim, *g[3].prim, g[2].pos, g[3].pos,
-                                     g[2].mask | (g[3].mask << 8), c, s1, f1, v1, 1);
+                                     g[2].mask | (g[3].mask << 8), c, s1, f1, v1, rows[1]);
       if (go0 && go1)
-        shader_.fragment_stored_pair(uniforms_, f0, f1);
+        shader_.fragment_stored_pair(uniforms_, f0, f1, *rows[0], *rows[1]);
       else if (go0)
-        shader_.fragment_stored(uniforms_, f0, 0);
+        shader_.fragment_stored(uniforms_, f0, *rows[0]);
       else if (go1)
-        shader_.fragment_stored(uniforms_, f1, 1);
-      if constexpr (Smooth) {
-        if (go0) apply_smooth(s0, f0);
-        if (go1) apply_smooth(s1, f1);
+        shader_.fragment_stored(uniforms_, f1, *rows[1]);
+      if (go0) {
+        if constexpr (Smooth) apply_smooth(s0, f0);
+        end_shading(d, t, s0, f0, c);
       }
-      if (go0) end_shading(d, t, s0, f0, c);
-      if (go1) end_shading(d, t, s1, f1, c);
+      if (go1) {
+        if constexpr (Smooth) apply_smooth(s1, f1);
+        end_shading(d, t, s1, f1, c);
+      }
     }
   }
 
   // The fragment's inputs: lane centres, depth (tested now when the test is early),
-  // interpolated varyings (in vary, or for a run-time shader in its lane rows `slot`).
+  // interpolated varyings (in vary, or for a run-time shader in its lane rows `into`).
   // False when no lane is left.
   template <class F>
   __attribute__((always_inline)) bool begin_shading(const DrawRecord& d, const TargetView& t, const Prim& pa,
                                                     const Prim& pb, Pos a, Pos b, unsigned mask,
                                                     FragmentCounts& c, Shading<F>& s, Fragment<F>& f,
-                                                    Varyings<F>& vary, int slot) const {
+                                                    Varyings<F>& vary, FragmentLanes* into) const {
     constexpr int K = varying_count<S>();
     constexpr int N = lane_width<F>;
     const int outputs = output_count();
@@ -676,13 +693,12 @@ class Program final : public ProgramBase {
       const float *pla = pa.planes(), *plb = pb.planes();
       // A run-time shader's unused components (its varyings round up to K) are not read.
       int n = K;
-      float* rows = nullptr;  // its lane rows (thread-local: looked up once), `stride` apart
+      float* rows = nullptr;  // its lane rows, `stride` apart
       size_t stride = 0;
       if constexpr (shader_runtime<S>()) {
         n = shader_.live_varyings();
-        auto& lanes = S::fragment_lanes(slot);
-        rows = &lanes.varyings[0][0];
-        stride = std::size(lanes.varyings[0]);
+        rows = &into->varyings[0][0];
+        stride = std::size(into->varyings[0]);
       }
       for (int k = 0; k < n; ++k) {
         F v;
@@ -699,7 +715,7 @@ class Program final : public ProgramBase {
       }
       if constexpr (!shader_runtime<S>()) std::memcpy(&vary, lanes, sizeof lanes);
     }
-    (void)slot;
+    (void)into;
     (void)vary;
     f.coord = Vec4<F>(cx, cy, z, oow);
     f.front_facing = halves<F, MaskOf<F>>(pa.front, pb.front);
