@@ -186,21 +186,32 @@ uint32_t read_index(const uint8_t* p, gpu::IndexType t, size_t i) {
 // 2i + 3, a polygon's first), split along the diagonal Mesa uses; with provoking_first
 // (glProvokingVertex(GL_FIRST_VERTEX_CONVENTION), under which Mesa keeps those vertices) each
 // triangle begins with it instead, the winding kept.
+// `masks` gets each triangle's edge flags (gpu RenderState::edge_masks: bit k for the edge
+// from its vertex k to vertex k + 1): the cuts inside a quad or polygon are not boundary
+// edges (GL 2.1 §2.6.2).
 std::vector<uint32_t> triangulate(GLenum mode, const std::vector<uint32_t>& ids, bool restart,
-                                  uint32_t restart_id, bool provoking_first) {
+                                  uint32_t restart_id, bool provoking_first, std::vector<uint8_t>& masks) {
   std::vector<uint32_t> out;
+  masks.clear();
   size_t start = 0;
   auto run = [&](size_t b, size_t e) {
     const size_t n = e - b;
     const uint32_t* v = ids.data() + b;
     if (mode == GL_QUADS) {
-      for (size_t i = 0; i + 3 < n; i += 4)
+      for (size_t i = 0; i + 3 < n; i += 4) {
         out.insert(out.end(), {v[i], v[i + 1], v[i + 3], v[i + 1], v[i + 2], v[i + 3]});
+        masks.insert(masks.end(), {0b101, 0b011});
+      }
     } else if (mode == GL_QUAD_STRIP) {
-      for (size_t i = 0; i + 3 < n; i += 2)
+      for (size_t i = 0; i + 3 < n; i += 2) {
         out.insert(out.end(), {v[i], v[i + 1], v[i + 3], v[i + 2], v[i], v[i + 3]});
+        masks.insert(masks.end(), {0b011, 0b101});
+      }
     } else {  // GL_POLYGON
-      for (size_t i = 1; i + 1 < n; ++i) out.insert(out.end(), {v[i], v[i + 1], v[0]});
+      for (size_t i = 1; i + 1 < n; ++i) {
+        out.insert(out.end(), {v[i], v[i + 1], v[0]});
+        masks.push_back(uint8_t(1u | (i + 2 == n ? 2u : 0u) | (i == 1 ? 4u : 0u)));
+      }
     }
   };
   for (size_t i = 0; i <= ids.size(); ++i) {
@@ -209,7 +220,10 @@ std::vector<uint32_t> triangulate(GLenum mode, const std::vector<uint32_t>& ids,
       start = i + 1;
     }
   }
-  if (provoking_first) rotate_provoking_first(out);
+  if (provoking_first) {
+    rotate_provoking_first(out);  // (a, b, c) becomes (c, a, b): edge c-a comes first
+    for (uint8_t& m : masks) m = uint8_t(((m << 1) | (m >> 2)) & 7u);
+  }
   return out;
 }
 
@@ -375,6 +389,7 @@ void Context::draw_generic(const GenericDraw& d) {
 
   // GL_QUADS, GL_QUAD_STRIP, GL_POLYGON (compatibility): triangles over an index list; a
   // primitive restart index other than the type's largest value: indices rewritten to 32 bits.
+  std::vector<uint8_t> masks;
   if (d.decompose || (restart && restart_id != restart_value(d.index_type))) {
     std::vector<uint32_t> ids(size_t(d.count));
     for (size_t i = 0; i < ids.size(); ++i) {
@@ -387,7 +402,7 @@ void Context::draw_generic(const GenericDraw& d) {
     }
     if (d.decompose)
       ids = triangulate(d.mode, ids, restart, 0xFFFFFFFFu,
-                        s.light.provoking_vertex == GL_FIRST_VERTEX_CONVENTION);
+                        s.light.provoking_vertex == GL_FIRST_VERTEX_CONVENTION, masks);
     if (ids.empty()) return;
     keep.push_back(std::make_unique<gpu::Buffer>(ids.data(), ids.size() * sizeof(uint32_t)));
     call.first = 0;
@@ -400,6 +415,18 @@ void Context::draw_generic(const GenericDraw& d) {
   bind_current_values(layout, keep);
   gpu::RenderState rs = render_state(false);
   rs.primitive_restart = restart;
+  // Polygon-mode lines and points draw only boundary edges: not the cuts of decomposed
+  // polygons, and none with the current edge flag false (the flag is a vertex attribute the
+  // program passes through, GL 2.1 §2.6.2). An edge flag array is not read here.
+  const bool unfilled = s.polygon.mode_front != GL_FILL || s.polygon.mode_back != GL_FILL;
+  if (unfilled && (d.decompose || !s.current.edge)) {
+    const size_t tris = d.decompose ? masks.size() : size_t(d.count) * call.instance_count;
+    masks.resize(tris, 0);
+    if (!s.current.edge) std::fill(masks.begin(), masks.end(), uint8_t(0));
+    keep.push_back(std::make_unique<gpu::Buffer>(masks.data(), masks.size()));
+    rs.edge_masks = reinterpret_cast<const uint8_t*>(keep.back()->data());
+    rs.edge_mask_count = uint32_t(masks.size());
+  }
   run_program(executable_run(), layout, call, rs);
   for (auto& b : keep) keep_until_finished(std::move(b));
 }
@@ -431,6 +458,28 @@ void Context::draw_program_batch(ProgramRun run, const gpu::Buffer& vbuf, const 
                 uint32_t(offsetof(FFExtra, secondary)), false, divisor);
   layout.attrib(glsl::kLocationFogCoord, xb, 1, gpu::AttribType::F32, xstride,
                 uint32_t(offsetof(FFExtra, fog_coord)), false, divisor);
+  // Polygon-mode lines and points: the vertices' edge flags (each triangle of a decomposed
+  // polygon has vertices of its own, decompose.cpp) as the triangles' edge masks, since a
+  // program has no varying to carry them.
+  const bool unfilled = s.polygon.mode_front != GL_FILL || s.polygon.mode_back != GL_FILL;
+  if (unfilled && call.topology == gpu::Topology::Triangles && call.index_buffer &&
+      call.index_type == gpu::IndexType::U32) {
+    const auto* v = reinterpret_cast<const FFVertex*>(vbuf.data());
+    const size_t nv = vbuf.size() / sizeof(FFVertex);
+    const auto* idx = reinterpret_cast<const uint32_t*>(call.index_buffer->data() + call.index_offset);
+    std::vector<uint8_t> masks(call.count / 3);
+    for (size_t t = 0; t < masks.size(); ++t) {
+      unsigned m = 0;
+      for (unsigned k = 0; k < 3; ++k) {
+        const uint32_t i = idx[t * 3 + k];
+        if (i < nv && v[i].edge != 0.0f) m |= 1u << k;
+      }
+      masks[t] = uint8_t(m);
+    }
+    keep.push_back(std::make_unique<gpu::Buffer>(masks.data(), masks.size()));
+    rs.edge_masks = reinterpret_cast<const uint8_t*>(keep.back()->data());
+    rs.edge_mask_count = uint32_t(masks.size());
+  }
   bind_current_values(layout, keep);
   run_program(run, layout, call, rs);
   for (auto& b : keep) keep_until_finished(std::move(b));

@@ -34,12 +34,13 @@ ClipPlanes make_clip_planes(const DrawRecord& d) {
       p.add(glm::vec4(0.0f), 0.0f, d.program->clip_distance_var + i);
     else
       p.add(d.state.clip_planes[i]);
+    p.user_planes |= 1u << (p.count - 1);
   }
   return p;
 }
 
 int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, ClipVert* b, int varyings,
-                 ClipVert** out) {
+                 ClipVert** out, int edge_flag) {
   constexpr int kMaxOut = 3 + 6 + kMaxClipPlanes + 1;
   return gpu::clip_polygon(
       planes.count, mask, a, n, b, kMaxOut,
@@ -48,7 +49,15 @@ int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, Cl
         r.pos = from.pos + (to.pos - from.pos) * t;
         for (int k = 0; k < varyings; ++k) r.var[k] = from.var[k] + (to.var[k] - from.var[k]) * t;
       },
-      out);
+      out,
+      [&](ClipVert& v, const ClipVert& prev, int plane, bool entering) {
+        // Edge flags as Mesa's draw module (and NVIDIA) set them: a point where the polygon
+        // comes back inside starts the rest of the edge it lies on; one where it leaves starts
+        // an edge along the plane, drawn for a user clip plane and not for the view volume's.
+        if (edge_flag < 0) return;
+        const float along = (planes.user_planes >> plane) & 1u ? 1.0f : 0.0f;
+        v.var[edge_flag] = entering ? prev.var[edge_flag] : along;
+      });
 }
 
 bool clip_line(const ClipPlanes& planes, unsigned mask, const glm::vec4& p0, const glm::vec4& p1,

@@ -349,20 +349,39 @@ void Context::Frame::assemble(Worker& w, uint32_t chunk_index, const DrawRecord&
     if (c0 & c1 & c2) continue;
     WinVert wv[24];
     int nw;
+    // Polygon modes Line and Point: whether the edge that starts at each vertex is a boundary
+    // edge, from the triangle's edge mask and the edge flag varying. Clipping sets the flags of
+    // the vertices it makes as GL draws their edges (clip_polygon), in the component past the
+    // K varyings.
+    bool boundary[24];
+    unsigned flags = 7u;
+    if (!fill) {
+      if (d.state.edge_masks && prim_id < d.state.edge_mask_count) flags = d.state.edge_masks[prim_id] & 7u;
+      const int ef = d.state.edge_flag_varying;
+      if (ef >= 0 && ef < K)
+        for (int k = 0; k < 3; ++k)
+          if (var_of(s[k])[ef] == 0.0f) flags &= ~(1u << k);
+    }
     if ((c0 | c1 | c2) == 0) {
       wv[0] = w.win[s[0]];
       wv[1] = w.win[s[1]];
       wv[2] = w.win[s[2]];
       nw = 3;
+      for (int k = 0; k < 3; ++k) boundary[k] = (flags >> k) & 1u;
     } else {
       ++w.counters.primitives_clipped;
+      const int slot = !fill && K < kMaxVaryings ? K : -1;
       for (int k = 0; k < 3; ++k) {
         w.clip_a[k].pos = pos[s[k]];
         std::copy_n(var_of(s[k]), K, w.clip_a[k].var);
+        if (slot >= 0) w.clip_a[k].var[slot] = float((flags >> k) & 1u);
       }
       ClipVert* poly;
-      nw = clip_polygon(planes, c0 | c1 | c2, w.clip_a, 3, w.clip_b, K, &poly);
-      for (int i = 0; i < nw; ++i) wv[i] = to_window(d, poly[i].pos, poly[i].var);
+      nw = clip_polygon(planes, c0 | c1 | c2, w.clip_a, 3, w.clip_b, K, &poly, slot);
+      for (int i = 0; i < nw; ++i) {
+        wv[i] = to_window(d, poly[i].pos, poly[i].var);
+        boundary[i] = slot < 0 || poly[i].var[slot] != 0.0f;
+      }
     }
     if (nw < 3) continue;
     if (fill) {
@@ -401,10 +420,8 @@ void Context::Frame::assemble(Worker& w, uint32_t chunk_index, const DrawRecord&
     const bool line = mode == PolygonMode::Line;
     const bool offset = line ? d.state.offset_line : d.state.offset_point;
     const float zoff = offset ? polygon_offset(d, wv[0], wv[1], wv[2]) : 0.0f;
-    const int ef = d.state.edge_flag_varying;
     for (int i = 0; i < nw; ++i) {
-      // A vertex made by clipping carries the flag interpolated from its edge's ends.
-      if (ef >= 0 && ef < K && wv[i].var[ef] == 0.0f) continue;
+      if (!boundary[i]) continue;
       const int n = line ? setup_line(d, wv[i], wv[(i + 1) % nw], flat_src, prim_id, front, zoff, w.arena,
                                       w.counters, out)
                          : setup_point(d, wv[i], prim_id, front, zoff, w.arena, w.counters, out);

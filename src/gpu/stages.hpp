@@ -69,9 +69,12 @@ ClipPlanes make_clip_planes(const DrawRecord& draw);
 inline constexpr unsigned kNotFinite = 1u << 31;  // a clip code for NaN/Inf positions
 // Clips the convex polygon in[0..n) against the planes in `mask` (clip_space.hpp's
 // clip_polygon, with K varyings); returns the vertex count (0 when nothing is left) and
-// points *out at the result (one of the two buffers).
+// points *out at the result (one of the two buffers). With edge_flag >= 0, var[edge_flag] is
+// each vertex's edge flag (nonzero: the edge that starts there is drawn in polygon modes Line
+// and Point), set for the vertices clipping makes as GL draws their edges; it is not
+// interpolated, and may lie past the `varyings` components.
 int clip_polygon(const ClipPlanes& planes, unsigned mask, ClipVert* a, int n, ClipVert* b, int varyings,
-                 ClipVert** out);
+                 ClipVert** out, int edge_flag = -1);
 // Clips the segment p0-p1 (varyings v0, v1), as clip_space.hpp's clip_segment: t0 is cut
 // from p0's end, t1 from p1's; false if nothing is left.
 bool clip_line(const ClipPlanes& planes, unsigned mask, const glm::vec4& p0, const glm::vec4& p1,

@@ -63,7 +63,8 @@ struct ClipPlanes {
   glm::vec4 n[kMax];
   float d[kMax];
   int8_t var[kMax];
-  unsigned var_planes = 0;  // bit i: plane i is a clip distance
+  unsigned var_planes = 0;   // bit i: plane i is a clip distance
+  unsigned user_planes = 0;  // bit i: plane i is a user clip plane or clip distance
   void add(const glm::vec4& normal, float offset = 0.0f, int varying = -1) {
     n[count] = normal;
     d[count] = offset;
@@ -106,9 +107,16 @@ inline unsigned clip_code(const ClipPlanes& planes, const glm::vec4& pos, const 
 // both). `distance(plane, v)` is a vertex's signed distance; `lerp(from, to, t, out)` sets out
 // to from + (to - from) * t. a and b each have room for max_out vertices; returns the count
 // (0 when fewer than three are left) and points *out at the buffer that holds them.
-template <class V, class Distance, class Lerp>
+// `made(v, prev, plane, entering)` is told of each crossing point v made on the edge from prev
+// (entering: the edge comes back inside plane; else it leaves, and the polygon's next edge
+// runs along the plane), for edge flags.
+struct NoCrossingHook {
+  template <class V>
+  void operator()(V&, const V&, int, bool) const {}
+};
+template <class V, class Distance, class Lerp, class Made = NoCrossingHook>
 int clip_polygon(int plane_count, unsigned mask, V* a, int n, V* b, int max_out, Distance&& distance,
-                 Lerp&& lerp, V** out) {
+                 Lerp&& lerp, V** out, Made&& made = {}) {
   V* src = a;
   V* dst = b;
   for (int i = 0; i < plane_count && n > 0; ++i) {
@@ -122,10 +130,12 @@ int clip_polygon(int plane_count, unsigned mask, V* a, int n, V* b, int max_out,
       const bool in_prev = dprev >= 0.0f, in_cur = dcur >= 0.0f;
       if (in_prev && m < max_out) dst[m++] = prev;
       if (in_prev != in_cur && m < max_out) {
+        V& v = dst[m++];
         if (in_prev)
-          lerp(cur, prev, dcur / (dcur - dprev), dst[m++]);
+          lerp(cur, prev, dcur / (dcur - dprev), v);
         else
-          lerp(prev, cur, dprev / (dprev - dcur), dst[m++]);
+          lerp(prev, cur, dprev / (dprev - dcur), v);
+        made(v, prev, i, !in_prev);
       }
       dprev = dcur;
     }

@@ -156,6 +156,13 @@ struct RenderState {
   // component of a triangle's vertex says whether the edge that starts at it is a boundary
   // edge (nonzero) to be drawn, or an inner edge of a decomposed polygon (zero).
   int8_t edge_flag_varying = -1;
+  // Edge flags by triangle, for programs whose varyings have no room for them: when set, bit
+  // k of edge_masks[id] (id: the triangle's primitive id, below edge_mask_count) says whether
+  // the edge from its vertex k to vertex k + 1 is a boundary edge; a triangle past the count
+  // has all three. With edge_flag_varying, an edge is drawn when both say so. The bytes are the
+  // caller's and must outlive the draw.
+  const uint8_t* edge_masks = nullptr;
+  uint32_t edge_mask_count = 0;
 
   // User clip planes in clip space: a vertex is kept where dot(plane, clip_position) >= 0.
   // For a run-time shader that writes clip distances (gl_ClipDistance, RuntimeShape), an
