@@ -80,7 +80,19 @@ void Context::resize(int width, int height) {
   }
 }
 
-const std::vector<const char*>& extensions(const Context&) {
+const std::vector<const char*>& extensions(const Context& c) {
+  // A compatibility context also has the extensions whose entry points old code calls by
+  // their ARB and EXT names (ext_aliases.cpp): Mesa lists them too. A core context lists
+  // those whose names are the core ones.
+  static const std::vector<const char*> compat = [] {
+    std::vector<const char*> l = {
+#include "ext_names.inc"
+    };
+    l.push_back("GL_ARB_explicit_attrib_location");  // GLSL only: nothing in the registry to alias
+    std::sort(l.begin(), l.end(), [](const char* a, const char* b) { return std::strcmp(a, b) < 0; });
+    return l;
+  }();
+  if (!c.core_profile) return compat;
   static const std::vector<const char*> list = {
       "GL_ARB_copy_buffer",
       "GL_ARB_depth_clamp",

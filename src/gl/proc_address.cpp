@@ -1,8 +1,9 @@
 // The address of a GL entry point by name, for loaders (glad, GLEW's own, SDL's and GLFW's
 // GetProcAddress users): glutGetProcAddress, eglGetProcAddress and glfwGetProcAddress answer
-// with it. The table lists every entry point of GL 1.0 to 3.3 (proc_names.inc, from the
-// Khronos registry); those Tessel does not define are weak references, so their address is
-// null, as a driver's GetProcAddress gives for what it does not have.
+// with it. The table lists every entry point of GL 1.0 to 3.3 and their ARB and EXT names
+// (proc_names.inc, from the Khronos registry); those Tessel does not define are weak
+// references, so their address is null, as a driver's GetProcAddress gives for what it does
+// not have.
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 

@@ -9,16 +9,28 @@ namespace tessel::gl {
 
 extern void (*const kProcAnchors[])();
 [[gnu::used]] void (*const kProcAnchors[])() = {
-    reinterpret_cast<void (*)()>(&glVertexPointer), reinterpret_cast<void (*)()>(&glGenBuffers),
-    reinterpret_cast<void (*)()>(&glGetBooleanv),   reinterpret_cast<void (*)()>(&glLightf),
-    reinterpret_cast<void (*)()>(&glMatrixMode),    reinterpret_cast<void (*)()>(&glPixelStoref),
-    reinterpret_cast<void (*)()>(&glCreateShader),  reinterpret_cast<void (*)()>(&glGetError),
-    reinterpret_cast<void (*)()>(&glGenTextures),   reinterpret_cast<void (*)()>(&glAccum),
-    reinterpret_cast<void (*)()>(&glBegin),         reinterpret_cast<void (*)()>(&glDrawArraysInstanced),
-    reinterpret_cast<void (*)()>(&glMap1d),         reinterpret_cast<void (*)()>(&glFeedbackBuffer),
-    reinterpret_cast<void (*)()>(&glRenderMode),    reinterpret_cast<void (*)()>(&glTexEnvf),
-    reinterpret_cast<void (*)()>(&glGenSamplers),   reinterpret_cast<void (*)()>(&glGenFramebuffers),
-    reinterpret_cast<void (*)()>(&glGenQueries),    reinterpret_cast<void (*)()>(&glWindowPos2f),
+    reinterpret_cast<void (*)()>(&glVertexPointer),
+    reinterpret_cast<void (*)()>(&glGenBuffers),
+    reinterpret_cast<void (*)()>(&glGetBooleanv),
+    reinterpret_cast<void (*)()>(&glLightf),
+    reinterpret_cast<void (*)()>(&glMatrixMode),
+    reinterpret_cast<void (*)()>(&glPixelStoref),
+    reinterpret_cast<void (*)()>(&glCreateShader),
+    reinterpret_cast<void (*)()>(&glGetError),
+    reinterpret_cast<void (*)()>(&glGenTextures),
+    reinterpret_cast<void (*)()>(&glAccum),
+    reinterpret_cast<void (*)()>(&glBegin),
+    reinterpret_cast<void (*)()>(&glDrawArraysInstanced),
+    reinterpret_cast<void (*)()>(&glMap1d),
+    reinterpret_cast<void (*)()>(&glFeedbackBuffer),
+    reinterpret_cast<void (*)()>(&glRenderMode),
+    reinterpret_cast<void (*)()>(&glTexEnvf),
+    reinterpret_cast<void (*)()>(&glGenSamplers),
+    reinterpret_cast<void (*)()>(&glGenFramebuffers),
+    reinterpret_cast<void (*)()>(&glGenQueries),
+    reinterpret_cast<void (*)()>(&glWindowPos2f),
+    reinterpret_cast<void (*)()>(&glGenFramebuffersEXT),
+    reinterpret_cast<void (*)()>(&glGetHandleARB),
 };
 
 }  // namespace tessel::gl

@@ -8,11 +8,14 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstring>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "../../src/gl/context.hpp"
+#include "../../src/gl/proc_address.hpp"
 #include "gl33_test_util.hpp"
 
 namespace {
@@ -60,6 +63,99 @@ TEST_F(GL33Test, VersionAndLimits) {
   EXPECT_NE(glGetStringi(GL_EXTENSIONS, 0), nullptr);
   EXPECT_EQ(glGetStringi(GL_EXTENSIONS, 1000), nullptr);
   EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+}
+
+// Code from before the calls were core: EXT_framebuffer_object, ARB_vertex_buffer_object and
+// ARB_shader_objects by their own names (the registry's aliases, and the hand-written calls),
+// listed in the compatibility context's extensions and by GetProcAddress.
+TEST_F(GL33Test, ExtensionNamesAreTheCoreCalls) {
+  const std::string ext = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
+  for (const char* e : {"GL_EXT_framebuffer_object ", "GL_ARB_vertex_buffer_object ",
+                        "GL_ARB_shader_objects ", "GL_ARB_multitexture ", "GL_EXT_framebuffer_blit "})
+    EXPECT_NE(ext.find(e), std::string::npos) << e;
+  EXPECT_NE(tessel::gl::proc_address("glGenFramebuffersEXT"), nullptr);
+  EXPECT_NE(tessel::gl::proc_address("glGetObjectParameterivARB"), nullptr);
+  EXPECT_EQ(tessel::gl::proc_address("glGenFramebuffersNV"), nullptr);
+
+  // Render to a texture through the EXT names: a name bound without glGen* is made (§4.4.1).
+  GLuint tex = 0, depth = 0;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 77);
+  EXPECT_EQ(glIsFramebufferEXT(77), GL_TRUE);
+  glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_TEXTURE_2D, tex, 0);
+  glGenRenderbuffersEXT(1, &depth);
+  glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, depth);
+  glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_DEPTH_COMPONENT24, 8, 8);
+  glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT, depth);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT), GLenum(GL_FRAMEBUFFER_COMPLETE_EXT));
+  glClearColor(0.0f, 1.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  std::array<GLubyte, 4> px{};
+  glReadPixels(3, 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
+  EXPECT_EQ(px, (std::array<GLubyte, 4>{0, 255, 0, 255}));
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+  GLuint fbo = 77;
+  glDeleteFramebuffersEXT(1, &fbo);
+  glDeleteRenderbuffersEXT(1, &depth);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+
+  // ARB_shader_objects: handles, the object queries, the log, the current program.
+  const char* vs = "void main() { gl_Position = ftransform(); }";
+  const char* bad = "void main() { gl_FragColor = nonsense; }";
+  const GLhandleARB v = glCreateShaderObjectARB(GL_VERTEX_SHADER_ARB);
+  const GLhandleARB f = glCreateShaderObjectARB(GL_FRAGMENT_SHADER_ARB);
+  glShaderSourceARB(v, 1, &vs, nullptr);
+  glShaderSourceARB(f, 1, &bad, nullptr);
+  glCompileShaderARB(v);
+  glCompileShaderARB(f);
+  GLint status = -1, type = 0, length = 0;
+  glGetObjectParameterivARB(v, GL_OBJECT_COMPILE_STATUS_ARB, &status);
+  EXPECT_EQ(status, GL_TRUE);
+  glGetObjectParameterivARB(f, GL_OBJECT_COMPILE_STATUS_ARB, &status);
+  EXPECT_EQ(status, GL_FALSE);
+  glGetObjectParameterivARB(f, GL_OBJECT_TYPE_ARB, &type);
+  EXPECT_EQ(type, GL_SHADER_OBJECT_ARB);
+  glGetObjectParameterivARB(f, GL_OBJECT_SUBTYPE_ARB, &type);
+  EXPECT_EQ(type, GL_FRAGMENT_SHADER_ARB);
+  glGetObjectParameterivARB(f, GL_OBJECT_INFO_LOG_LENGTH_ARB, &length);
+  EXPECT_GT(length, 1);
+  std::vector<GLcharARB> log(size_t(length) + 1, 'x');
+  glGetInfoLogARB(f, length, nullptr, log.data());
+  EXPECT_NE(std::string(log.data()).find("nonsense"), std::string::npos);
+  const GLhandleARB p = glCreateProgramObjectARB();
+  glAttachObjectARB(p, v);
+  glLinkProgramARB(p);
+  GLfloat linked = -1.0f;
+  glGetObjectParameterfvARB(p, GL_OBJECT_LINK_STATUS_ARB, &linked);
+  EXPECT_EQ(linked, 1.0f);
+  glGetObjectParameterivARB(p, GL_OBJECT_TYPE_ARB, &type);
+  EXPECT_EQ(type, GL_PROGRAM_OBJECT_ARB);
+  GLsizei count = 0;
+  GLhandleARB attached[2] = {0, 0};
+  glGetAttachedObjectsARB(p, 2, &count, attached);
+  EXPECT_EQ(count, 1);
+  EXPECT_EQ(attached[0], v);
+  glUseProgramObjectARB(p);
+  EXPECT_EQ(glGetHandleARB(GL_PROGRAM_OBJECT_ARB), p);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  // Errors: a pname the call does not take, a name that is no object (the value untouched).
+  GLfloat kept = 5.0f;
+  glGetObjectParameterfvARB(9999, GL_OBJECT_TYPE_ARB, &kept);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(kept, 5.0f);
+  glGetObjectParameterivARB(p, GL_OBJECT_SUBTYPE_ARB, &type);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  EXPECT_EQ(glGetHandleARB(GL_VERTEX_SHADER_ARB), 0u);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  glUseProgramObjectARB(0);
+  glDeleteObjectARB(p);
+  glDeleteObjectARB(v);
+  glDeleteObjectARB(f);
+  EXPECT_EQ(glIsProgram(p), GL_FALSE);
+  EXPECT_EQ(glIsShader(f), GL_FALSE);
   EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
 }
 

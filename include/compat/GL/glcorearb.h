@@ -63,6 +63,12 @@ typedef uint64_t GLuint64;
 typedef struct __GLsync* GLsync;
 typedef void (*GLDEBUGPROC)(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                             const GLchar* message, const void* userParam);
+typedef char GLcharARB;
+typedef unsigned int GLhandleARB;
+typedef ptrdiff_t GLintptrARB;
+typedef ptrdiff_t GLsizeiptrARB;
+typedef int64_t GLint64EXT;
+typedef uint64_t GLuint64EXT;
 #endif
 
 #ifndef TESSEL_GLCOREARB_VERSION_1_0
