@@ -80,8 +80,8 @@ def gl_versions(xml_path):
     return versions, removed
 
 
-def table(rows):
-    out = ["| entry point | Tessel | |", "|---|---|---|"]
+def table(rows, head="entry point"):
+    out = [f"| {head} | Tessel | |", "|---|---|---|"]
     for name, ok, note in rows:
         out.append(f"| `{name}` | {'yes' if ok else 'no'} | {note} |")
     return "\n".join(out)
@@ -133,8 +133,25 @@ def main():
     rows = [(n, n in have_glfw, "Vulkan" if "Vulkan" in n or "Instance" in n else "") for n in glfw_funcs]
     parts.append(f"### GLFW 3.3: {sum(1 for r in rows if r[1])} of {len(rows)}\n")
     parts.append(table(rows) + "\n")
+    # The ARB and EXT names of core calls (scripts/gen_gl_headers.py declares them), by extension.
+    ext_rows = []
+    names = set(re.findall(r'^"(GL_[A-Za-z0-9_]+)",', (ROOT / "src/gl/ext_names.inc").read_text(), re.M))
+    for e in ET.parse("/usr/share/khronos-api/gl.xml").getroot().find("extensions"):
+        if e.get("name") not in names:
+            continue
+        cmds = [c.get("name") for req in e.findall("require") for c in req.findall("command")]
+        defined = sum(1 for c in cmds if c in have_gl)
+        ext_rows.append((e.get("name"), defined == len(cmds),
+                         f"{defined} of {len(cmds)} calls" if cmds else "tokens only"))
+    parts.append(f"### ARB and EXT names of core calls: {sum(1 for r in ext_rows if r[1])} of "
+                 f"{len(ext_rows)} extensions\n")
+    parts.append("Listed in a compatibility context's `GL_EXTENSIONS`; `src/gl/ext_aliases.cpp`.\n")
+    parts.append(table(sorted(ext_rows), "extension") + "\n")
+    glew_text = (ROOT / "include/compat/GL/glew.h").read_text()
     glew_funcs = header_functions(ROOT / "include/compat/GL/glew.h", "glew")
-    rows = [(n, n in have_gl, "") for n in glew_funcs]
+    # A name GLEW itself defines as a macro (glewIsExtensionSupported) is one here too.
+    macros = set(re.findall(r"#define (glew[A-Z][A-Za-z0-9]*)\(", glew_text))
+    rows = [(n, n in have_gl or n in macros, "a macro, as in GLEW" if n in macros else "") for n in glew_funcs]
     parts.append(f"### GLEW: {sum(1 for r in rows if r[1])} of {len(rows)}\n")
     parts.append(table(rows) + "\n")
     parts.append(END)
