@@ -1,7 +1,6 @@
 // Batches of fixed-function primitives into gpu draws: the generated fixed-function shaders
-// (one template instance per flat / textured / discarding combination), the draw of a batch,
-// the vertex stage on the CPU (post_vertex) for the paths that need transformed vertices, and
-// stippled lines cut into their dashes.
+// (one template instance per flat / textured / discarding combination), the draw of a batch
+// with its edge flags, and the vertex stage on the CPU (post_vertex) for feedback mode.
 #include "context.hpp"
 
 #include <algorithm>
@@ -51,7 +50,6 @@ void Context::send_batch_unchecked() {
   std::swap(b, batch_);
   if (b.indices.empty()) return;
   if (!bind_draw_target()) return;
-  if (b.cls == PrimClass::Lines && s.line.stipple) return send_stippled_lines(b.verts, b.indices);
   std::unique_ptr<gpu::Buffer> own;
   if (!b.shared) own = std::make_unique<gpu::Buffer>(b.verts.v.data(), b.verts.size() * sizeof(FFVertex));
   const gpu::Buffer& vbuf = b.shared ? *b.shared : *own;
@@ -102,7 +100,14 @@ void Context::draw_fixed_function(const Batch& b, const gpu::Buffer& vbuf, const
   if (lean) rs.edge_flag_varying = -1;
   const DrawFn draw = lean ? kDrawLean[(flat ? 2 : 0) + (discards ? 1 : 0)]
                            : kDraw[(flat ? 4 : 0) + (tex ? 2 : 0) + (discards ? 1 : 0)];
+  // Stippled lines: where the counter restarts (triangles carry their flags in a varying).
+  std::unique_ptr<gpu::Buffer> masks = b.cls == PrimClass::Lines ? batch_edge_masks(vbuf, call) : nullptr;
+  if (masks) {
+    rs.edge_masks = reinterpret_cast<const uint8_t*>(masks->data());
+    rs.edge_mask_count = uint32_t(masks->size());
+  }
   draw(*gpu_, *u, layout, rs, call);
+  if (masks) keep_until_finished(std::move(masks));
 }
 
 // The fixed-function vertex stage on one lane (the same shader the draws use).
@@ -130,118 +135,31 @@ FFPostVertex Context::post_vertex(const FFVertex& v, const FFUniforms& u, bool t
   return o;
 }
 
-// Stippled lines (GL 2.1 §3.4.2) are cut into their drawn pieces on the CPU, as Mesa's draw
-// module does: each vertex goes through the fixed-function vertex stage (the same shader on
-// one lane), each segment is clipped to the view volume and taken to window coordinates,
-// and the pieces where the pattern is on are drawn as pre-transformed lines. The counter
-// steps once per pixel along the major axis and carries over between the segments of a
-// strip; the pieces' ends are interpolated linearly in window space.
-void Context::send_stippled_lines(const FFVertices& verts, const std::vector<uint32_t>& indices) {
-  TextureObject* tex = texture_for_draw();
-  FFUniforms u;
-  build_uniforms(u, tex);
-  u.stipple = false;
-  // The vertex stage on one lane for every vertex the lines use.
-  std::vector<FFPostVertex> post(verts.size());
-  std::vector<bool> done(verts.size(), false);
-  auto process = [&](uint32_t i) -> const FFPostVertex& {
-    if (!done[i]) {
-      post[i] = post_vertex(verts[i], u, tex != nullptr);
-      done[i] = true;
+// The edge masks (gpu RenderState::edge_masks) of a batch drawn as 32-bit indices into its
+// FFVertex records, from the vertices' edge flags: for triangles, bit k says whether the edge
+// from vertex k is a boundary edge (decomposed polygons have vertices of their own,
+// decompose.cpp); for lines, bit 0 whether the stipple counter restarts at the segment (its
+// first vertex's flag, emit_mode). Null unless polygon mode or line stipple needs them.
+std::unique_ptr<gpu::Buffer> Context::batch_edge_masks(const gpu::Buffer& vbuf,
+                                                       const gpu::DrawCall& call) const {
+  const bool triangles = call.topology == gpu::Topology::Triangles &&
+                         (s.polygon.mode_front != GL_FILL || s.polygon.mode_back != GL_FILL);
+  const bool lines = call.topology == gpu::Topology::Lines && s.line.stipple;
+  if ((!triangles && !lines) || !call.index_buffer || call.index_type != gpu::IndexType::U32) return nullptr;
+  const auto* v = reinterpret_cast<const FFVertex*>(vbuf.data());
+  const size_t nv = vbuf.size() / sizeof(FFVertex);
+  const auto* idx = reinterpret_cast<const uint32_t*>(call.index_buffer->data() + call.index_offset);
+  const unsigned per = triangles ? 3 : 2, corners = triangles ? 3 : 1;
+  std::vector<uint8_t> masks(call.count / per);
+  for (size_t p = 0; p < masks.size(); ++p) {
+    unsigned m = 0;
+    for (unsigned k = 0; k < corners; ++k) {
+      const uint32_t i = idx[p * per + k];
+      if (i < nv && v[i].edge != 0.0f) m |= 1u << k;
     }
-    return post[i];
-  };
-  const auto lerp = lerp_post;
-
-  const gpu::ViewportTransform xf = viewport_transform();
-  const gpu::ClipPlanes planes = cpu_clip_planes();
-  const unsigned all = (1u << planes.count) - 1;
-  const float fw = float(fb_.width()), fh = float(fb_.height());
-  // Window coordinates of a clip-space vertex; the pieces are drawn in the clip space of the
-  // whole framebuffer (viewport = framebuffer, depth range [0, 1], w = 1).
-  auto to_window = [&](const FFPostVertex& c) {
-    return xf.window(glm::vec4(c.pos[0], c.pos[1], c.pos[2], c.pos[3]));
-  };
-  const bool flat = s.light.shade_model == GL_FLAT;
-  std::vector<FFPostVertex> out;
-  float counter = 0.0f;  // pixels along the major axis so far; whole pixels select the bit
-  const int factor = std::max(1, s.line.stipple_factor);
-  const unsigned pattern = s.line.stipple_pattern;
-  for (size_t k = 0; k + 1 < indices.size(); k += 2) {
-    const FFVertex& src0 = verts[indices[k]];
-    FFPostVertex a = process(indices[k]), b = process(indices[k + 1]);
-    if (src0.edge != 0.0f) counter = 0.0f;
-    if (flat) {
-      std::memcpy(a.front, b.front, sizeof a.front);
-      std::memcpy(a.back, b.back, sizeof a.back);
-    }
-    // Clipped against the view volume and the user planes (gpu/clip_space.hpp).
-    float t0, t1;
-    const FFPostVertex* ends[2] = {&a, &b};
-    if (!gpu::clip_segment(
-            planes.count, all,
-            [&](int i, int end) {
-              const float* p = ends[end]->pos;
-              return gpu::plane_distance(planes, i, glm::vec4(p[0], p[1], p[2], p[3]));
-            },
-            t0, t1))
-      continue;
-    const FFPostVertex ca = lerp(a, b, t0), cb = lerp(b, a, t1);
-    const glm::vec3 wa = to_window(ca), wb = to_window(cb);
-    // In window space from here on: the pieces interpolate linearly between the ends.
-    FFPostVertex sa = ca, sb = cb;
-    const float ws[2][3] = {{wa.x, wa.y, wa.z}, {wb.x, wb.y, wb.z}};
-    FFPostVertex* e[2] = {&sa, &sb};
-    for (int j = 0; j < 2; ++j) {
-      e[j]->pos[0] = ws[j][0] * 2.0f / fw - 1.0f;
-      e[j]->pos[1] = ws[j][1] * 2.0f / fh - 1.0f;
-      e[j]->pos[2] = ws[j][2] * 2.0f - 1.0f;
-      e[j]->pos[3] = 1.0f;
-    }
-    const float length = std::max(std::fabs(wb.x - wa.x), std::fabs(wb.y - wa.y));
-    bool on = false;
-    float start = 0.0f;
-    auto piece = [&](float p0, float p1) {
-      out.push_back(lerp(sa, sb, p0 / length));
-      out.push_back(lerp(sa, sb, p1 / length));
-    };
-    for (int i = 0; float(i) < length; ++i) {
-      const unsigned bit = unsigned((int(counter) + i) / factor) & 15u;
-      const bool result = (pattern >> bit) & 1u;
-      if (result != on) {
-        if (on) {
-          if (start != float(i)) piece(start, float(i));
-        } else {
-          start = float(i);
-        }
-        on = result;
-      }
-    }
-    if (on && start < length) piece(start, length);
-    counter += length;
+    masks[p] = uint8_t(m);
   }
-  if (out.empty()) return;
-  auto vb = std::make_unique<gpu::Buffer>(out.data(), out.size() * sizeof(FFPostVertex));
-  gpu::VertexLayout layout;
-  constexpr uint32_t stride = sizeof(FFPostVertex);
-  layout.attrib(0, *vb, 4, gpu::AttribType::F32, stride, offsetof(FFPostVertex, pos));
-  layout.attrib(1, *vb, 4, gpu::AttribType::F32, stride, offsetof(FFPostVertex, back));
-  layout.attrib(2, *vb, 4, gpu::AttribType::F32, stride, offsetof(FFPostVertex, front));
-  layout.attrib(3, *vb, 4, gpu::AttribType::F32, stride, offsetof(FFPostVertex, tex));
-  layout.attrib(4, *vb, 2, gpu::AttribType::F32, stride, offsetof(FFPostVertex, edge));
-  u.pretransformed = true;
-  gpu::RenderState rs = render_state(false);
-  rs.viewport = {0, 0, fb_.width(), fb_.height()};
-  rs.depth_near = 0.0f;
-  rs.depth_far = 1.0f;
-  rs.clip_plane_enable = 0;
-  gpu::DrawCall call;
-  call.topology = gpu::Topology::Lines;
-  call.count = uint32_t(out.size());
-  const bool discards = u.alpha_test;
-  kDraw[(flat ? 4 : 0) + (tex ? 2 : 0) + (discards ? 1 : 0)](*gpu_, u, layout, rs, call);
-  transient_bytes_ += vb->size();
-  transient_buffers_.push_back(std::move(vb));
+  return std::make_unique<gpu::Buffer>(masks.data(), masks.size());
 }
 
 }  // namespace tessel::gl

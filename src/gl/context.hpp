@@ -841,7 +841,7 @@ class Context {
       error(GL_INVALID_OPERATION);
     }
   }
-  void send_stippled_lines(const FFVertices& verts, const std::vector<uint32_t>& indices);
+  std::unique_ptr<gpu::Buffer> batch_edge_masks(const gpu::Buffer& vertices, const gpu::DrawCall& call) const;
   FFPostVertex post_vertex(const FFVertex& v, const FFUniforms& u, bool textured) const;
   void feedback_primitives(PrimClass cls, const FFVertices& verts, const std::vector<uint32_t>& idx);
   void feedback_value(float v);

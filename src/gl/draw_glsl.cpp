@@ -458,27 +458,12 @@ void Context::draw_program_batch(ProgramRun run, const gpu::Buffer& vbuf, const 
                 uint32_t(offsetof(FFExtra, secondary)), false, divisor);
   layout.attrib(glsl::kLocationFogCoord, xb, 1, gpu::AttribType::F32, xstride,
                 uint32_t(offsetof(FFExtra, fog_coord)), false, divisor);
-  // Polygon-mode lines and points: the vertices' edge flags (each triangle of a decomposed
-  // polygon has vertices of its own, decompose.cpp) as the triangles' edge masks, since a
-  // program has no varying to carry them.
-  const bool unfilled = s.polygon.mode_front != GL_FILL || s.polygon.mode_back != GL_FILL;
-  if (unfilled && call.topology == gpu::Topology::Triangles && call.index_buffer &&
-      call.index_type == gpu::IndexType::U32) {
-    const auto* v = reinterpret_cast<const FFVertex*>(vbuf.data());
-    const size_t nv = vbuf.size() / sizeof(FFVertex);
-    const auto* idx = reinterpret_cast<const uint32_t*>(call.index_buffer->data() + call.index_offset);
-    std::vector<uint8_t> masks(call.count / 3);
-    for (size_t t = 0; t < masks.size(); ++t) {
-      unsigned m = 0;
-      for (unsigned k = 0; k < 3; ++k) {
-        const uint32_t i = idx[t * 3 + k];
-        if (i < nv && v[i].edge != 0.0f) m |= 1u << k;
-      }
-      masks[t] = uint8_t(m);
-    }
-    keep.push_back(std::make_unique<gpu::Buffer>(masks.data(), masks.size()));
-    rs.edge_masks = reinterpret_cast<const uint8_t*>(keep.back()->data());
-    rs.edge_mask_count = uint32_t(masks.size());
+  // Polygon-mode lines and points, and stippled lines: the vertices' edge flags as edge masks,
+  // since a program has no varying to carry them.
+  if (std::unique_ptr<gpu::Buffer> masks = batch_edge_masks(vbuf, call)) {
+    rs.edge_masks = reinterpret_cast<const uint8_t*>(masks->data());
+    rs.edge_mask_count = uint32_t(masks->size());
+    keep.push_back(std::move(masks));
   }
   bind_current_values(layout, keep);
   run_program(run, layout, call, rs);

@@ -117,14 +117,9 @@ struct FFUniforms {
 
   bool stipple = false;
   std::array<uint32_t, 32> stipple_rows{};  // bit x of row y: pixel (x mod 32, y mod 32) drawn
-
-  // Vertices already processed on the CPU (stippled lines): attribute 0 is the clip-space
-  // position, 1 the back colour, 2 the front colour, 3 the texture coordinates, 4 (edge, fog).
-  bool pretransformed = false;
 };
 
-// A vertex after the fixed-function vertex stage, in the attribute layout `pretransformed`
-// reads.
+// A vertex after the fixed-function vertex stage (feedback mode: post_vertex).
 struct FFPostVertex {
   float pos[4];
   float back[4];
@@ -231,16 +226,6 @@ struct FixedFunction {
   template <class F>
   gpu::Vec4<F> vertex(const Uniforms& u, const gpu::VertexIn<F>& in, Varyings<F>& out) const {
     using namespace ffdetail;
-    if constexpr (!Lean) {
-      if (u.pretransformed) {
-        out.back = in.attr[1];
-        out.front = in.attr[2];
-        out.tex = in.attr[3];
-        out.edge = in.attr[4].x;
-        out.fog = in.attr[4].y;
-        return in.attr[0];
-      }
-    }
     const Vec4<F>& pos = in.attr[0];
     const Vec4<F>& color = in.attr[2];
     const Vec4<F> eye = u.modelview * pos;

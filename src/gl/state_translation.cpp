@@ -216,6 +216,12 @@ gpu::RenderState Context::render_state(bool for_clear) const {
     // Any positive width or size is accepted and used clamped to the supported range
     // (GL 2.1 §3.3, §3.4: ALIASED_POINT_SIZE_RANGE and ALIASED_LINE_WIDTH_RANGE are 1..255).
     r.line_width = std::clamp(s.line.width, 1.0f, 255.0f);
+    // Lines are stippled by the gpu layer after the vertex stage, fixed function or a program's,
+    // as Mesa's draw module does; immediate mode says where the counter restarts with each
+    // segment's edge mask (batch_edge_masks).
+    r.line_stipple = s.line.stipple;
+    r.line_stipple_pattern = s.line.stipple_pattern;
+    r.line_stipple_factor = uint16_t(std::clamp(s.line.stipple_factor, 1, 256));
     r.point_size = std::clamp(s.point.size, 1.0f, 255.0f);
     r.point_sprite_lower_left = s.point.sprite_lower_left;
     // Antialiased points and lines as llvmpipe draws them; Mesa leaves points aliased while

@@ -135,9 +135,12 @@ void Context::flush() {
     }
     const DrawRecord& d = *fr.draws[cmd.index];
     const size_t first_chunk = fr.chunks.size();
+    // Stippled lines carry the stipple counter from segment to segment: one chunk an instance.
+    const bool stippled = d.state.line_stipple && prim_size(d.topology) == 2 && !d.program->geometry_input;
+    const uint32_t step = stippled ? std::max(d.prim_count, 1u) : kChunkPrims;
     for (uint32_t inst = 0; inst < d.instance_count; ++inst)
-      for (uint32_t b = 0; b < d.prim_count; b += kChunkPrims)
-        fr.chunks.push_back({c, d.base_instance + inst, b, std::min(d.prim_count, b + kChunkPrims)});
+      for (uint32_t b = 0; b < d.prim_count; b += step)
+        fr.chunks.push_back({c, d.base_instance + inst, b, std::min(d.prim_count, b + step)});
     if (d.capture) captures.push_back({d.capture, first_chunk, fr.chunks.size() - first_chunk});
   }
   if (fr.captured.size() < fr.chunks.size()) fr.captured.resize(fr.chunks.size());

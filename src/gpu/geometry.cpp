@@ -285,6 +285,37 @@ void Context::Frame::assemble(Worker& w, uint32_t chunk_index, const DrawRecord&
   const int list_provoking = provoking_first ? 0 : ps - 1;  // of a point, line or triangle list
   const bool is_list = topo == Topology::Points || topo == Topology::Lines || topo == Topology::Triangles;
   uint64_t culled_count = 0;
+  // Stippled lines: a chunk holds every segment of an instance (Frame::run), so the counter
+  // carries along strips here.
+  const bool stipple = ps == 2 && d.state.line_stipple && !d.program->geometry_input;
+  const bool strip = topo == Topology::LineStrip || topo == Topology::LineLoop;
+  float stipple_counter = 0.0f;
+  uint32_t stipple_end = ~0u;
+  // The drawn pieces of the window-space segment a-b: their ends, and their varyings
+  // (clip-space values), interpolated linearly in window space, as Mesa's stipple stage does.
+  auto stipple_line = [&](const WinVert& a, const WinVert& b, const float* flat_src, uint32_t prim_id) {
+    const float length = std::max(std::fabs(b.x - a.x), std::fabs(b.y - a.y));
+    float va[kMaxVaryings], vb[kMaxVaryings];
+    auto at = [&](float p, float* var) {
+      const float t = p / length;
+      WinVert v;
+      v.x = a.x + (b.x - a.x) * t;
+      v.y = a.y + (b.y - a.y) * t;
+      v.z = a.z + (b.z - a.z) * t;
+      v.oow = a.oow + (b.oow - a.oow) * t;
+      for (int k = 0; k < K; ++k) var[k] = a.var[k] + (b.var[k] - a.var[k]) * t;
+      v.var = var;
+      snap_vertex(v);
+      return v;
+    };
+    stipple_segment(length, stipple_counter, d.state.line_stipple_factor, d.state.line_stipple_pattern,
+                    [&](float p0, float p1) {
+                      const WinVert pa = at(p0, va), pb = at(p1, vb);
+                      const int n =
+                          setup_line(d, pa, pb, flat_src, prim_id, true, 0.0f, w.arena, w.counters, out);
+                      for (int i = 0; i < n; ++i) bin(w, chunk_index, &d, out[i]);
+                    });
+  };
   for (uint32_t p = 0; p < nprims; ++p) {
     const uint32_t prim_id = prim_ids ? prim_ids[p] : first_prim + p;
     const uint32_t* s = slots + size_t(p) * ps;
@@ -337,6 +368,18 @@ void Context::Frame::assemble(Worker& w, uint32_t chunk_index, const DrawRecord&
         }
         a = to_window(d, ca.pos, ca.var);
         b = to_window(d, cb.pos, cb.var);
+      }
+      if (stipple) {
+        // The counter restarts at each independent segment, at each strip's first (a segment
+        // not starting where the one before ended: a restart, or a new instance's chunk), or
+        // where the draw's edge mask says.
+        const bool reset = d.state.edge_masks
+                               ? prim_id >= d.state.edge_mask_count || (d.state.edge_masks[prim_id] & 1u)
+                               : !strip || s[0] != stipple_end;
+        stipple_end = s[1];
+        if (reset) stipple_counter = 0.0f;
+        stipple_line(a, b, flat_src, prim_id);
+        continue;
       }
       const int n = setup_line(d, a, b, flat_src, prim_id, true, 0.0f, w.arena, w.counters, out);
       for (int i = 0; i < n; ++i) bin(w, chunk_index, &d, out[i]);

@@ -146,6 +146,26 @@ int clip_polygon(int plane_count, unsigned mask, V* a, int n, V* b, int max_out,
   return n < 3 ? 0 : n;
 }
 
+// Line stipple (GL 2.1 §3.4.2) of one segment `length` pixels long along its major axis, after
+// clipping, as Mesa's draw module cuts it: piece(p0, p1) for each drawn piece, p0 and p1 in
+// pixels from the segment's start. The counter (pixels since the stipple was reset) selects
+// bit (counter / factor) mod 16 of the pattern for each pixel, and advances by `length`.
+template <class Piece>
+void stipple_segment(float length, float& counter, int factor, unsigned pattern, Piece&& piece) {
+  factor = std::max(factor, 1);
+  bool on = false;
+  float start = 0.0f;
+  for (int i = 0; float(i) < length; ++i) {
+    const bool bit = (pattern >> (unsigned((int(counter) + i) / factor) & 15u)) & 1u;
+    if (bit == on) continue;
+    if (on && start != float(i)) piece(start, float(i));
+    start = float(i);
+    on = bit;
+  }
+  if (on && start < length) piece(start, length);
+  counter += length;
+}
+
 // Clips the segment from end 0 to end 1 against the planes in `mask`, as Mesa's draw module
 // does: t0 is the part cut from end 0 (the new end 0 is p0 + (p1 - p0) * t0), t1 the part cut
 // from end 1 (the new end 1 is p1 + (p0 - p1) * t1). `distance(plane, end)` is an end's signed

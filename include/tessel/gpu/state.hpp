@@ -145,6 +145,13 @@ struct RenderState {
   bool offset_fill = false, offset_line = false, offset_point = false;
   float offset_factor = 0.0f, offset_units = 0.0f;
   float line_width = 1.0f;
+  // Line stipple (GL 2.1 §3.4.2): line segments are drawn where the pattern's bit
+  // (counter / factor) mod 16 is set, the counter counting pixels along the major axis from
+  // the start of each independent segment, strip or loop (and, for a draw with edge_masks,
+  // from each segment whose mask has bit 0 set). Not for lines a geometry stage makes.
+  bool line_stipple = false;
+  uint16_t line_stipple_pattern = 0xFFFF;
+  uint16_t line_stipple_factor = 1;
   float point_size = 1.0f;
   // GL_PROGRAM_POINT_SIZE: a point's size is the one its vertex shader wrote (gl_PointSize,
   // RuntimeShape::point_size) instead of point_size.
