@@ -456,6 +456,16 @@ void GLAPIENTRY glLinkProgram(GLuint program) {
   p->linked = glsl::Program::link(units, options);
   p->log = p->linked->info_log();
   c.compat_cache.erase(program);
+  // Without a fragment shader, a compatibility context's draws add fixed function's
+  // (Context::executable_run): what that needs to link the program again.
+  p->vertex_only_shaders.clear();
+  std::erase_if(c.vertex_only_runs, [&](const auto& e) { return e.first.first == program; });
+  const bool has_fragment = std::any_of(
+      units.begin(), units.end(), [](const glsl::Shader* s) { return s->stage() == glsl::Stage::Fragment; });
+  if (!has_fragment && p->linked->ok()) {
+    p->vertex_only_shaders = keep;
+    p->vertex_only_options = options;
+  }
   // A successful link of the current program replaces what draws run (GL 3.3 §2.11.2).
   if (c.current_program == program && p->usable()) c.executable = p->linked;
 }
@@ -875,6 +885,77 @@ std::string ShaderObject::joined() const {
   std::string s;
   for (const std::string& part : source) s += part;
   return s;
+}
+
+// GL 2.0 §2.15.4 (GL 2.1 §3.11): with no fragment shader in the current program, fixed
+// function's fragment processing (texturing, colour sum, fog, alpha test) follows the
+// program's vertex shader. A compatibility context links the program's shaders again with
+// fixed function's generated fragment stage (ff_fragment_source_after_vertex_shader) for the
+// state of the draw, once per state, and gives that program the executable's uniform values.
+// A core context draws with the executable, whose fragments then have no colour defined.
+Context::ProgramRun Context::executable_run(PrimClass cls) {
+  ProgramObject* po = nullptr;
+  if (!core_profile) {
+    auto it = programs.find(current_program);
+    if (it != programs.end() && !it->second.vertex_only_shaders.empty() && it->second.linked == executable)
+      po = &it->second;
+  }
+  if (!po) return {*executable, compat_cache[current_program]};
+  FFProgramKey key;
+  TextureObject* unit0 = nullptr;
+  ff_program_key(cls, key, unit0);
+  key.lighting = key.two_side = 0;  // lighting is the vertex shader's
+  VertexOnlyRun& run = vertex_only_runs[{current_program, key.bytes()}];
+  if (!run.program) {
+    std::vector<const glsl::Shader*> units;
+    for (const auto& s : po->vertex_only_shaders) units.push_back(s.get());
+    const auto fs = glsl::Shader::compile(glsl::Stage::Fragment, ff_fragment_source_after_vertex_shader(key));
+    units.push_back(fs.get());
+    run.program = glsl::Program::link(units, po->vertex_only_options);
+    if (!run.program->ok()) {  // never: the executable linked, and the fragment stage is Tessel's
+      vertex_only_runs.erase({current_program, key.bytes()});
+      return {*executable, compat_cache[current_program]};
+    }
+  }
+  glsl::Program& p = *run.program;
+  // The executable's uniform values, element by element (uniform blocks keep their bindings).
+  for (const glsl::Variable& u : executable->uniforms()) {
+    const int to = p.uniform_location(u.name);
+    if (to < 0) continue;
+    const TypeInfo t = type_info(u.type);
+    for (int i = 0; i < u.size; ++i) {
+      uint32_t words[16] = {};
+      if (!executable->get_uniform_words(u.location + i, words)) continue;
+      if (t.base == Base::Float)
+        p.set_uniform(to + i, reinterpret_cast<const float*>(words), t.components);
+      else if (t.base == Base::Uint)
+        p.set_uniform(to + i, words, t.components);
+      else
+        p.set_uniform(to + i, reinterpret_cast<const int32_t*>(words), t.components);
+    }
+  }
+  for (const glsl::UniformBlock& b : executable->uniform_blocks())
+    p.set_uniform_block_binding(p.uniform_block_index(b.name), b.binding);
+  // Fixed function's own uniforms, as draw_ff_program sets them.
+  for (int u = 0; u < kMaxTexCoords; ++u) {
+    if (key.units[size_t(u)].target == 0) continue;  // the unit does not texture
+    const int32_t unit = u;
+    p.set_uniform(p.uniform_location("ff_tex" + std::to_string(u)), &unit, 1);
+    if (key.units[size_t(u)].bias) {
+      const float bias = std::clamp(s.units[size_t(u)].lod_bias, -16.0f, 16.0f);
+      p.set_uniform(p.uniform_location("ff_bias" + std::to_string(u)), &bias, 1);
+    }
+  }
+  if (key.alpha_func) {
+    const float ref = std::clamp(s.color.alpha_ref, 0.0f, 1.0f);
+    p.set_uniform(p.uniform_location("ff_alpha_ref"), &ref, 1);
+  }
+  if (key.stipple) {
+    std::array<int32_t, 32> rows;
+    for (size_t i = 0; i < 32; ++i) rows[i] = int32_t(s.polygon_stipple[i]);
+    p.set_uniform(p.uniform_location("ff_stipple"), rows.data(), 1, 32);
+  }
+  return {p, run.cache};
 }
 
 }  // namespace tessel::gl

@@ -59,7 +59,7 @@ void Context::send_batch_unchecked() {
     const gpu::DrawCall call = b.call(*ib);
     gpu::RenderState rs = render_state(false);
     rs.edge_flag_varying = -1;
-    draw_program_batch(executable_run(), vbuf, b.verts.x, call, rs);
+    draw_program_batch(executable_run(b.cls), vbuf, b.verts.x, call, rs);
   } else {
     draw_fixed_function(b, vbuf, *ib);
   }

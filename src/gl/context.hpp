@@ -441,6 +441,7 @@ std::array<uint8_t, 2> color_material_track(const LightState& L);
 float rescale_factor(const glm::mat4& modelview);
 std::string ff_vertex_source(const FFProgramKey& k);
 std::string ff_fragment_source(const FFProgramKey& k);
+std::string ff_fragment_source_after_vertex_shader(const FFProgramKey& k);
 
 // The current values of the attributes an FFExtra holds.
 void current_extra(const CurrentState& cur, FFExtra& e);
@@ -764,7 +765,15 @@ class Context {
     glsl::Program& program;
     CompatCache& cache;
   };
-  ProgramRun executable_run() { return {*executable, compat_cache[current_program]}; }
+  // The executable, or for a compatibility program without a fragment shader, that program
+  // linked again with fixed function's fragment stage for the current state (api_program.cpp).
+  ProgramRun executable_run(PrimClass cls = PrimClass::Triangles);
+  struct VertexOnlyRun {
+    std::shared_ptr<glsl::Program> program;
+    CompatCache cache;
+  };
+  // By program name and fixed-function fragment key; a program's go when it is linked again.
+  std::map<std::pair<GLuint, std::string>, VertexOnlyRun> vertex_only_runs;
   void draw_program_batch(ProgramRun run, const gpu::Buffer& vertices, const std::vector<FFExtra>& extra,
                           const gpu::DrawCall& call, gpu::RenderState rs);
   void draw_generic(const GenericDraw& d);

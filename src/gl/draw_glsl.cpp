@@ -427,7 +427,14 @@ void Context::draw_generic(const GenericDraw& d) {
     rs.edge_masks = reinterpret_cast<const uint8_t*>(keep.back()->data());
     rs.edge_mask_count = uint32_t(masks.size());
   }
-  run_program(executable_run(), layout, call, rs);
+  using T = gpu::Topology;
+  const T t = d.topology;
+  const PrimClass cls = t == T::Points ? PrimClass::Points
+                        : t == T::Lines || t == T::LineStrip || t == T::LineLoop || t == T::LinesAdjacency ||
+                                t == T::LineStripAdjacency
+                            ? PrimClass::Lines
+                            : PrimClass::Triangles;
+  run_program(executable_run(cls), layout, call, rs);
   for (auto& b : keep) keep_until_finished(std::move(b));
 }
 

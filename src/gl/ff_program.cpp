@@ -370,6 +370,31 @@ std::string FFProgramKey::bytes() const {
 }
 
 std::string ff_vertex_source(const FFProgramKey& k) { return vertex_source(k); }
+
+// The fragment stage of fixed function after an application's vertex shader (a program
+// without a fragment shader, GL 2.0 §2.15.4): the same code, reading the built-in varyings
+// the vertex shader writes (gl_FrontColor and the rest arrive as gl_Color, gl_SecondaryColor,
+// gl_TexCoord[] and gl_FogFragCoord) instead of the generated vertex shader's.
+std::string ff_fragment_source_after_vertex_shader(const FFProgramKey& k) {
+  const std::string generated = fragment_source(k);
+  std::string s =
+      "#version 130\n#define ff_front gl_Color\n#define ff_back gl_Color\n"
+      "#define ff_front2 gl_SecondaryColor\n#define ff_back2 gl_SecondaryColor\n"
+      "#define ff_fogc gl_FogFragCoord\n";
+  for (int u = 0; u < kMaxTexCoords; ++u)
+    s += "#define ff_tc" + std::to_string(u) + " gl_TexCoord[" + std::to_string(u) + "]\n";
+  // The generated declarations of those inputs (whole lines "in ..." or "flat in ...") go.
+  size_t at = generated.find('\n') + 1;  // past #version
+  while (at < generated.size()) {
+    const size_t end = generated.find('\n', at);
+    const std::string line =
+        generated.substr(at, end == std::string::npos ? std::string::npos : end - at + 1);
+    if (line.rfind("in ", 0) != 0 && line.rfind("flat in ", 0) != 0) s += line;
+    if (end == std::string::npos) break;
+    at = end + 1;
+  }
+  return s;
+}
 std::string ff_fragment_source(const FFProgramKey& k) { return fragment_source(k); }
 
 // The texture a unit's fixed-function texturing reads: its highest enabled target (cube map,

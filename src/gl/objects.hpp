@@ -77,6 +77,10 @@ struct ProgramObject {
   bool link_attempted = false, validated = false;
   bool delete_pending = false;
   bool usable() const { return linked && linked->ok(); }
+  // A program linked without a fragment shader: its shaders and options, to link it again
+  // with fixed function's fragment stage in a compatibility context (GL 2.0 §2.15.4).
+  std::vector<std::shared_ptr<glsl::Shader>> vertex_only_shaders;
+  glsl::LinkOptions vertex_only_options;
 };
 
 }  // namespace tessel::gl

@@ -661,26 +661,32 @@ std::shared_ptr<Program> Program::link(std::span<const Shader* const> shaders, c
       fs.ir.variables.push_back({i.reg, uint32_t(i.components)});
       continue;
     }
+    int n = i.components;
     if (o->gl_type != i.gl_type || o->components != i.components) {
-      error("'" + i.name + "' has different types in the " + (has_gs ? "geometry" : "vertex") +
-            " and fragment shaders");
-      continue;
+      // gl_TexCoord is sized in each shader by the elements it uses (GLSL 1.10 §7.6, as Mesa
+      // links it): the elements both have pass, the fragment shader's others read zero.
+      if (!(i.builtin && i.name == "gl_TexCoord" && o->gl_type == i.gl_type)) {
+        error("'" + i.name + "' has different types in the " + (has_gs ? "geometry" : "vertex") +
+              " and fragment shaders");
+        continue;
+      }
+      n = std::min(o->components, i.components);  // to_fragment zeroes the rest
     }
     if (i.base != Base::Float && !i.flat) {
       error("integer fragment input '" + i.name + "' must be qualified flat");
       continue;
     }
-    if (slot + i.components > gpu::kMaxVaryings) {
+    if (slot + n > gpu::kMaxVaryings) {
       error("too many varying components (at most " + std::to_string(gpu::kMaxVaryings) + ")");
       break;
     }
-    from_vertex(*o, slot, i.components);
+    from_vertex(*o, slot, n);
     slot_of[o] = slot;
-    to_fragment(i, slot, i.components);
-    const uint64_t bits = (i.components >= 64 ? ~uint64_t(0) : (uint64_t(1) << i.components) - 1) << slot;
+    to_fragment(i, slot, n);
+    const uint64_t bits = (n >= 64 ? ~uint64_t(0) : (uint64_t(1) << n) - 1) << slot;
     if (i.flat || i.base != Base::Float) linked->shape.flat |= bits;
     if (i.noperspective) linked->shape.noperspective |= bits;
-    slot += i.components;
+    slot += n;
   }
   // GLSL 1.30 §4.3.7: when gl_Color is redeclared with an interpolation qualifier, the
   // gl_FrontColor and gl_BackColor the program uses must be redeclared with the same one, and

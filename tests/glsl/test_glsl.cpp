@@ -152,6 +152,25 @@ TEST(Glsl, LinkErrors) {
 // What Mesa accepts and glslang takes only in later versions or with extensions: line
 // continuations in any version, gl_PerVertex redeclared in GLSL 1.50; and arrays of interface
 // blocks whose members carry interpolation qualifiers of their own.
+// gl_TexCoord is sized in each shader by the elements it uses: a vertex shader that writes two
+// and a fragment shader that reads one (or three) link, as in Mesa; elements the vertex shader
+// does not write read zero.
+TEST(Glsl, TexCoordArraysAreSizedPerShader) {
+  reference::GlslDrawSpec d = quad("#version 110\nvoid main() { gl_FragColor = gl_TexCoord[0]; }\n");
+  d.vertex =
+      "#version 110\nattribute vec2 pos;\nvoid main() {\n  gl_Position = vec4(pos, 0.0, 1.0);\n"
+      "  gl_TexCoord[0] = vec4(0.25, 0.5, 0.75, 1.0);\n  gl_TexCoord[1] = vec4(1.0);\n}\n";
+  TesselResult r = run_tessel(d);
+  ASSERT_TRUE(r.ok) << r.log;
+  EXPECT_EQ(r.outputs[0][0], 0.25f);
+  EXPECT_EQ(r.outputs[0][2], 0.75f);
+  d.fragment = "#version 110\nvoid main() { gl_FragColor = gl_TexCoord[1] + gl_TexCoord[2]; }\n";
+  r = run_tessel(d);
+  ASSERT_TRUE(r.ok) << r.log;
+  EXPECT_EQ(r.outputs[0][0], 1.0f);
+  EXPECT_EQ(r.outputs[0][3], 1.0f);
+}
+
 TEST(Glsl, GlslOneFiftyInterfacesAsMesaTakesThem) {
   // A continued #define; an error after it still names its own line (5).
   auto s = Shader::compile(Stage::Fragment,
