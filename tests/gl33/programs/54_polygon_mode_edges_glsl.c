@@ -38,23 +38,6 @@ static const char* generic_fs =
 
 static GLuint compat, generic, strip_vbo, quads_vbo, tex[2];
 
-static GLuint build(const char* vs, const char* fs) {
-  GLuint p = glCreateProgram(), v = compile_shader(GL_VERTEX_SHADER, vs),
-         f = compile_shader(GL_FRAGMENT_SHADER, fs);
-  GLint ok = 0;
-  glAttachShader(p, v);
-  glAttachShader(p, f);
-  glBindAttribLocation(p, 1, "position");
-  glBindAttribLocation(p, 6, "colour");
-  glLinkProgram(p);
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    fprintf(stderr, "link failed\n");
-    exit(1);
-  }
-  return p;
-}
-
 /* The panel (column, row) of a 4x2 grid of 80x120 cells, in [-1, 1] units inside it. */
 static void panel(int col, int row) {
   glViewport(col * 80, row * 120, 80, 120);
@@ -231,8 +214,8 @@ int main(int argc, char** argv) {
   static GLubyte checker[8][8][3], ramp[4][4][3];
   int i, j;
   open_window(&argc, argv, 0, 0, 0, "polygon mode edges with glsl");
-  compat = build(compat_vs, compat_fs);
-  generic = build(generic_vs, generic_fs);
+  compat = link_program_bound(compat_vs, compat_fs, "position", 1, "colour", 6);
+  generic = link_program_bound(generic_vs, generic_fs, "position", 1, "colour", 6);
   for (i = 0; i < 10; ++i) {
     strip[i][0] = (i & 1) ? 0.9f : -1.0f + 0.05f * (float)i;
     strip[i][1] = -1.6f + 0.36f * (float)(i / 2) * 2.0f + ((i & 1) ? 0.1f : 0.0f);
@@ -269,17 +252,8 @@ int main(int argc, char** argv) {
       ramp[j][i][1] = (GLubyte)(255 - 30 * j);
       ramp[j][i][2] = 255;
     }
-  glGenTextures(2, tex);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glBindTexture(GL_TEXTURE_2D, tex[0]);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 8, 8, 0, GL_RGB, GL_UNSIGNED_BYTE, checker);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glBindTexture(GL_TEXTURE_2D, tex[1]);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 4, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, ramp);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glBindTexture(GL_TEXTURE_2D, 0);
+  tex[0] = rgb_texture(8, 8, checker, GL_NEAREST);
+  tex[1] = rgb_texture(4, 4, ramp, GL_NEAREST);
   check_gl("setup");
   glutDisplayFunc(display);
   glutMainLoop();

@@ -142,17 +142,8 @@ int main(int argc, char** argv) {
       ramp[j][i][1] = (GLubyte)(15 * j);
       ramp[j][i][2] = (GLubyte)(10 * (i + j));
     }
-  glGenTextures(2, tex);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glBindTexture(GL_TEXTURE_2D, tex[0]);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 8, 8, 0, GL_RGB, GL_UNSIGNED_BYTE, checker);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glBindTexture(GL_TEXTURE_2D, tex[1]);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 4, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, ramp);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glBindTexture(GL_TEXTURE_2D, 0);
+  tex[0] = rgb_texture(8, 8, checker, GL_NEAREST);
+  tex[1] = rgb_texture(4, 4, ramp, GL_LINEAR);
   check_gl("setup");
   glutDisplayFunc(display);
   glutMainLoop();

@@ -64,6 +64,40 @@ static inline GLuint link_shaders(const char* vs, const char* gs, const char* fs
 
 static inline GLuint link_program(const char* vs, const char* fs) { return link_shaders(vs, NULL, fs); }
 
+/* A program of a vertex and a fragment shader, attribute `a` bound to location la and `b` to lb
+ * before linking (glBindAttribLocation, as GLSL 1.10/1.20 code does it). */
+static inline GLuint link_program_bound(const char* vs, const char* fs, const char* a, GLuint la,
+                                        const char* b, GLuint lb) {
+  GLuint p = glCreateProgram(), v = compile_shader(GL_VERTEX_SHADER, vs),
+         f = compile_shader(GL_FRAGMENT_SHADER, fs);
+  GLint ok = 0;
+  glAttachShader(p, v);
+  glAttachShader(p, f);
+  glBindAttribLocation(p, la, a);
+  glBindAttribLocation(p, lb, b);
+  glLinkProgram(p);
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    fprintf(stderr, "program link failed\n");
+    exit(1);
+  }
+  return p;
+}
+
+/* An RGB8 2D texture of w x h tightly packed texels, `filter` for both filters, no mipmaps;
+ * GL_TEXTURE_2D is left unbound. */
+static inline GLuint rgb_texture(int w, int h, const void* texels, GLint filter) {
+  GLuint t;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, w, h, 0, GL_RGB, GL_UNSIGNED_BYTE, texels);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return t;
+}
+
 /* A vertex array of n vec2 positions at attribute 0, in a buffer of its own; left bound. */
 static inline GLuint vertex_array2(const float* xy, int n) {
   GLuint vao, vbo;
