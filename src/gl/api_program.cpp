@@ -936,25 +936,7 @@ Context::ProgramRun Context::executable_run(PrimClass cls) {
   }
   for (const glsl::UniformBlock& b : executable->uniform_blocks())
     p.set_uniform_block_binding(p.uniform_block_index(b.name), b.binding);
-  // Fixed function's own uniforms, as draw_ff_program sets them.
-  for (int u = 0; u < kMaxTexCoords; ++u) {
-    if (key.units[size_t(u)].target == 0) continue;  // the unit does not texture
-    const int32_t unit = u;
-    p.set_uniform(p.uniform_location("ff_tex" + std::to_string(u)), &unit, 1);
-    if (key.units[size_t(u)].bias) {
-      const float bias = std::clamp(s.units[size_t(u)].lod_bias, -16.0f, 16.0f);
-      p.set_uniform(p.uniform_location("ff_bias" + std::to_string(u)), &bias, 1);
-    }
-  }
-  if (key.alpha_func) {
-    const float ref = std::clamp(s.color.alpha_ref, 0.0f, 1.0f);
-    p.set_uniform(p.uniform_location("ff_alpha_ref"), &ref, 1);
-  }
-  if (key.stipple) {
-    std::array<int32_t, 32> rows;
-    for (size_t i = 0; i < 32; ++i) rows[i] = int32_t(s.polygon_stipple[i]);
-    p.set_uniform(p.uniform_location("ff_stipple"), rows.data(), 1, 32);
-  }
+  set_ff_uniforms(p, key);  // fixed function's own, as draw_ff_program sets them
   return {p, run.cache};
 }
 

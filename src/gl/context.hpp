@@ -831,6 +831,8 @@ class Context {
   TextureObject* ff_texture(int unit, TexTarget& target);
   // False when the C++ shader can draw the state; `unit0` is then unit 0's 2D texture, if any.
   bool ff_program_key(PrimClass cls, FFProgramKey& key, TextureObject*& unit0);
+  // The generated program's uniforms that are not compatibility state (ff_program.cpp).
+  void set_ff_uniforms(glsl::Program& p, const FFProgramKey& k) const;
   void draw_ff_program(const FFProgramKey& key, const Batch& b, const gpu::Buffer& vertices,
                        const gpu::Buffer& indices);
   struct FFProgram {

@@ -491,17 +491,10 @@ bool Context::ff_program_key(PrimClass cls, FFProgramKey& k, TextureObject*& uni
   return needed;
 }
 
-void Context::draw_ff_program(const FFProgramKey& k, const Batch& b, const gpu::Buffer& vbuf,
-                              const gpu::Buffer& ib) {
-  FFProgram& entry = ff_programs_[k.bytes()];
-  if (!entry.program) {
-    const auto vs = glsl::Shader::compile(glsl::Stage::Vertex, ff_vertex_source(k));
-    const auto fs = glsl::Shader::compile(glsl::Stage::Fragment, ff_fragment_source(k));
-    entry.program = glsl::Program::link(*vs, *fs);
-  }
-  if (!entry.program->ok()) return error(GL_INVALID_OPERATION);  // never: the sources are Tessel's own
-  glsl::Program& p = *entry.program;
-  // The uniforms of the key's program that are not compatibility state.
+// The uniforms of a generated program (key k) that are not compatibility state: the units'
+// samplers and LOD biases, the rescale factor, the alpha reference, the polygon stipple. A
+// uniform the program does not have (location -1) is left alone.
+void Context::set_ff_uniforms(glsl::Program& p, const FFProgramKey& k) const {
   for (int u = 0; u < kMaxTexCoords; ++u) {
     if (k.units[size_t(u)].target == kNoTexture) continue;
     const int32_t unit = u;
@@ -526,6 +519,19 @@ void Context::draw_ff_program(const FFProgramKey& k, const Batch& b, const gpu::
     for (size_t i = 0; i < 32; ++i) rows[i] = int32_t(s.polygon_stipple[i]);
     p.set_uniform(p.uniform_location("ff_stipple"), rows.data(), 1, 32);
   }
+}
+
+void Context::draw_ff_program(const FFProgramKey& k, const Batch& b, const gpu::Buffer& vbuf,
+                              const gpu::Buffer& ib) {
+  FFProgram& entry = ff_programs_[k.bytes()];
+  if (!entry.program) {
+    const auto vs = glsl::Shader::compile(glsl::Stage::Vertex, ff_vertex_source(k));
+    const auto fs = glsl::Shader::compile(glsl::Stage::Fragment, ff_fragment_source(k));
+    entry.program = glsl::Program::link(*vs, *fs);
+  }
+  if (!entry.program->ok()) return error(GL_INVALID_OPERATION);  // never: the sources are Tessel's own
+  glsl::Program& p = *entry.program;
+  set_ff_uniforms(p, k);
   const gpu::DrawCall call = b.call(ib);
   gpu::RenderState rs = render_state(false);
   rs.edge_flag_varying = -1;
